@@ -1,0 +1,35 @@
+/* Acclaim AMC motion, streamed: one frame at a time through a text_lines
+ * reader, so memory use does not grow with the clip. */
+#ifndef AMC_H
+#define AMC_H
+
+#include "skel.h"
+#include "skp_error.h"
+#include "text_lines.h"
+
+typedef struct amc_frame {
+	long number;                 /* frame number as written in the file */
+	long line;                   /* line of that number, for messages */
+	/* Bone b's i-th dof is value[bone[b].dof_offset + i]: rotations in
+	 * radians, translations in ASF length units. Absent bones stay 0. */
+	float value[SKP_MAX_DOF];
+} amc_frame;
+
+typedef struct amc_stream {
+	const skel *s;
+	text_lines *tl;
+	int angle_in_degrees;        /* :DEGREES / :RADIANS, else the ASF's unit */
+	long pending_number;         /* number line read ahead, or -1 */
+	long pending_line;
+	int at_end;
+	int hint;                    /* next bone expected: exporters repeat their order */
+	uint8_t seen[SKP_MAX_BONES];
+} amc_stream;
+
+void amc_open(amc_stream *a, const skel *s, text_lines *tl);
+
+/* Returns 1 with the next frame in *f, 0 after the last frame, or a
+ * negative skp_status (err names the line and what was expected). */
+int amc_next(amc_stream *a, amc_frame *f, skp_error *err);
+
+#endif

@@ -1,0 +1,79 @@
+#include "cli_common.h"
+
+#include <stdio.h>
+#include <string.h>
+
+#include "asf.h"
+#include "text_tokens.h"
+
+void tool_report(const char *path, const skp_error *err)
+{
+	if (err->line > 0)
+		fprintf(stderr, "%s:%ld: %s\n", path, err->line, err->msg);
+	else if (err->block >= 0)
+		fprintf(stderr, "%s: block %ld: %s\n", path, err->block, err->msg);
+	else
+		fprintf(stderr, "%s: %s\n", path, err->msg);
+}
+
+static int open_lines(const char *path, file_reader *fr, text_lines *tl)
+{
+	int rc = file_reader_open(fr, path);
+	if (rc < 0) {
+		fprintf(stderr, "%s: cannot open: %s\n", path, strerror(-rc));
+		return -1;
+	}
+	text_lines_init(tl, file_reader_as_reader(fr));
+	return 0;
+}
+
+int tool_load_skel(const char *path, skel *out)
+{
+	static file_reader fr;
+	static text_lines tl;
+	skp_error err;
+
+	if (open_lines(path, &fr, &tl) < 0)
+		return -1;
+	skp_status rc = asf_parse(out, &tl, &err);
+	file_reader_close(&fr);
+	if (rc != SKP_OK) {
+		tool_report(path, &err);
+		return -1;
+	}
+	return 0;
+}
+
+int tool_motion_open(tool_motion *m, const char *path, const skel *s)
+{
+	m->path = path;
+	if (open_lines(path, &m->file, &m->lines) < 0)
+		return -1;
+	amc_open(&m->stream, s, &m->lines);
+	return 0;
+}
+
+int tool_motion_next(tool_motion *m, amc_frame *f)
+{
+	skp_error err;
+	int r = amc_next(&m->stream, f, &err);
+	if (r < 0) {
+		tool_report(m->path, &err);
+		return -1;
+	}
+	return r;
+}
+
+void tool_motion_close(tool_motion *m)
+{
+	file_reader_close(&m->file);
+}
+
+int tool_parse_long(const char *opt, const char *text, long *out)
+{
+	if (!text || tok_parse_long(text, out) != 0) {
+		fprintf(stderr, "skintool: %s expects an integer, got '%s'\n", opt, text ? text : "");
+		return -1;
+	}
+	return 0;
+}

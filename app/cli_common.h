@@ -1,0 +1,34 @@
+/* Shared by the skintool commands: loading inputs and reporting errors as
+ * FILE:LINE: message on stderr. */
+#ifndef CLI_COMMON_H
+#define CLI_COMMON_H
+
+#include "amc.h"
+#include "file_reader.h"
+#include "skel.h"
+#include "skp_error.h"
+#include "text_lines.h"
+
+/* Prints "FILE:LINE: message" (or "FILE: message" without a line). */
+void tool_report(const char *path, const skp_error *err);
+
+/* Loads an ASF; on failure reports and returns -1. */
+int tool_load_skel(const char *path, skel *out);
+
+/* An AMC opened for streaming against s. */
+typedef struct tool_motion {
+	const char *path;
+	file_reader file;
+	text_lines lines;
+	amc_stream stream;
+} tool_motion;
+
+int tool_motion_open(tool_motion *m, const char *path, const skel *s);
+/* 1 frame, 0 end, -1 error (already reported). */
+int tool_motion_next(tool_motion *m, amc_frame *f);
+void tool_motion_close(tool_motion *m);
+
+/* Parses a whole decimal integer argument; -1 (reported) when it is not. */
+int tool_parse_long(const char *opt, const char *text, long *out);
+
+#endif

@@ -1,0 +1,64 @@
+#include "fk.h"
+
+/* Rotation of a bone's rotational channels, first listed applied first;
+ * translational channels go to *trans and `l` to *stretch. */
+static quat channel_motion(const skel_bone *b, const float *v, vec3 *trans, float *stretch)
+{
+	quat m = quat_identity();
+	float t[3] = { 0.0f, 0.0f, 0.0f };
+	*stretch = 0.0f;
+	for (int i = 0; i < b->channel_count; i++) {
+		int c = b->channel[i];
+		if (c <= SKEL_RZ)
+			m = quat_mul(quat_from_basis_angle(c - SKEL_RX, v[i]), m);
+		else if (c <= SKEL_TZ)
+			t[c - SKEL_TX] = v[i];
+		else
+			*stretch = v[i];
+	}
+	*trans = vec3_make(t[0], t[1], t[2]);
+	return m;
+}
+
+static quat conjugate_by(quat c, quat m)
+{
+	return quat_mul(quat_mul(c, m), quat_conj(c));
+}
+
+static void pose_root(const skel *s, const float *values, skel_pose *out)
+{
+	const skel_bone *r = &s->bone[0];
+	static const float zero[SKEL_MAX_CHANNELS];
+	const float *v = values ? values + r->dof_offset : zero;
+	vec3 trans;
+	float stretch;
+	quat m = channel_motion(r, v, &trans, &stretch);
+	out->rot[0] = quat_normalize(conjugate_by(r->axis_rot, m));
+	out->head[0] = out->tip[0] = vec3_add(s->root_position, trans);
+}
+
+static void pose_bone(const skel *s, int i, const float *values, skel_pose *out)
+{
+	const skel_bone *b = &s->bone[i];
+	static const float zero[SKEL_MAX_CHANNELS];
+	const float *v = values ? values + b->dof_offset : zero;
+	vec3 trans;
+	float stretch;
+	quat m = channel_motion(b, v, &trans, &stretch);
+	quat gp = out->rot[b->parent];
+	quat g = quat_normalize(quat_mul(gp, conjugate_by(b->axis_rot, m)));
+	/* a joint translation lives in the bone's local (axis) frame at rest */
+	vec3 head = out->tip[b->parent];
+	if (trans.x != 0.0f || trans.y != 0.0f || trans.z != 0.0f)
+		head = vec3_add(head, quat_rotate(quat_mul(gp, b->axis_rot), trans));
+	out->rot[i] = g;
+	out->head[i] = head;
+	out->tip[i] = vec3_madd(head, quat_rotate(g, b->direction), b->length + stretch);
+}
+
+void fk_pose(const skel *s, const float *values, skel_pose *out)
+{
+	pose_root(s, values, out);
+	for (int k = 1; k < s->count; k++)
+		pose_bone(s, s->eval_order[k], values, out);
+}

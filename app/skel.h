@@ -1,0 +1,53 @@
+/* The skeleton layer: an Acclaim ASF skeleton in fixed arrays. Bone 0 is the
+ * root; bones 1..count-1 follow the ASF :bonedata order. */
+#ifndef SKEL_H
+#define SKEL_H
+
+#include <stdint.h>
+
+#include "board_limits.h"
+#include "quat.h"
+#include "vec3.h"
+
+typedef enum skel_channel {
+	SKEL_RX, SKEL_RY, SKEL_RZ, SKEL_TX, SKEL_TY, SKEL_TZ, SKEL_L
+} skel_channel;
+
+#define SKEL_MAX_CHANNELS 7
+
+typedef struct skel_bone {
+	char name[SKP_MAX_NAME];
+	long id;
+	int parent;                     /* bone index, -1 for the root */
+	vec3 direction;                 /* unit vector in world space at rest */
+	float length;
+	vec3 axis_angle;                /* `axis a b c` (root: orientation), ASF angle units */
+	uint8_t axis_order[3];          /* rotation axes (0 x,1 y,2 z), first applied first */
+	uint8_t channel[SKEL_MAX_CHANNELS]; /* dof (root: order) as skel_channel */
+	uint8_t channel_count;
+	float limit[SKEL_MAX_CHANNELS][2];  /* per dof: min, max (may be +-inf) */
+	uint8_t has_limits;
+	uint16_t dof_offset;            /* index of the first value in a frame */
+	quat axis_rot;                  /* C from the axis line */
+} skel_bone;
+
+typedef struct skel {
+	char name[SKP_MAX_NAME];
+	char version[16];
+	float length_scale;             /* :units length (recorded, not applied) */
+	float mass_scale;               /* :units mass */
+	uint8_t angle_in_degrees;       /* :units angle deg (1) or rad (0) */
+	vec3 root_position;             /* :root position */
+	int count;                      /* bones including the root */
+	int dof_count;                  /* values in one frame */
+	uint8_t eval_order[SKP_MAX_BONES]; /* parents before children */
+	skel_bone bone[SKP_MAX_BONES];
+} skel;
+
+/* Index of the bone with that name ("root" is 0), or -1. */
+int skel_find(const skel *s, const char *name);
+
+/* Converts an angle in the skeleton's ASF units to radians. */
+float skel_angle_to_rad(const skel *s, float value);
+
+#endif

@@ -1,0 +1,36 @@
+/* skintool: the host tool (parse, pose, bind, skin, pack, measure). */
+#include <stdio.h>
+#include <string.h>
+
+#include "skintool_cmds.h"
+
+typedef struct command {
+	const char *name;
+	int (*run)(int argc, char **argv);
+	const char *usage;
+} command;
+
+static const command commands[] = {
+	{ "fk", cmd_fk, "fk SKELETON.asf MOTION.amc [--frame N]    joint positions and rotations as CSV" },
+};
+
+static void usage(FILE *to)
+{
+	fprintf(to, "usage: skintool COMMAND [ARGS]\n\ncommands:\n");
+	for (size_t i = 0; i < sizeof commands / sizeof commands[0]; i++)
+		fprintf(to, "  %s\n", commands[i].usage);
+}
+
+int main(int argc, char **argv)
+{
+	if (argc < 2 || strcmp(argv[1], "--help") == 0 || strcmp(argv[1], "-h") == 0) {
+		usage(argc < 2 ? stderr : stdout);
+		return argc < 2 ? 1 : 0;
+	}
+	for (size_t i = 0; i < sizeof commands / sizeof commands[0]; i++)
+		if (strcmp(argv[1], commands[i].name) == 0)
+			return commands[i].run(argc - 2, argv + 2);
+	fprintf(stderr, "skintool: unknown command '%s'\n", argv[1]);
+	usage(stderr);
+	return 1;
+}

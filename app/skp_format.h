@@ -1,0 +1,13 @@
+/* A small, allocation-free formatter so that app/ needs no stdio. */
+#ifndef SKP_FORMAT_H
+#define SKP_FORMAT_H
+
+#include <stdarg.h>
+#include <stddef.h>
+
+/* Writes at most cap-1 characters plus NUL; returns the length written.
+ * Conversions: %s %d %ld %u %lu %c %% %g (6 significant digits). */
+size_t skp_vformat(char *buf, size_t cap, const char *fmt, va_list ap);
+size_t skp_format(char *buf, size_t cap, const char *fmt, ...);
+
+#endif

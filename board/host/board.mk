@@ -1,0 +1,8 @@
+# board/host: x86-64 Debian 12 (desktop, headless, CI).
+BOARD_DESC    := x86-64 Debian 12 host (desktop, headless, CI)
+CC            ?= cc
+BOARD_CFLAGS  := -O2 -g
+# Debian packages `make deps` installs and the pkg-config modules that prove them.
+DEB_PKGS      := pkg-config libcmocka-dev libegl-dev libgles-dev libosmesa6-dev \
+                 libgbm-dev libdrm-dev libgpiod-dev libpng-dev libx11-dev
+PC_MODULES    := cmocka egl glesv2 osmesa gbm libdrm libgpiod libpng x11

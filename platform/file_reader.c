@@ -1,0 +1,36 @@
+#include "file_reader.h"
+
+#include <errno.h>
+#include <fcntl.h>
+#include <unistd.h>
+
+int file_reader_open(file_reader *fr, const char *path)
+{
+	fr->fd = open(path, O_RDONLY | O_CLOEXEC);
+	return fr->fd < 0 ? -errno : 0;
+}
+
+static long fd_read(void *ctx, void *buf, size_t len)
+{
+	file_reader *fr = ctx;
+	for (;;) {
+		ssize_t n = read(fr->fd, buf, len);
+		if (n >= 0)
+			return (long)n;
+		if (errno != EINTR)
+			return -1;
+	}
+}
+
+skp_reader file_reader_as_reader(file_reader *fr)
+{
+	skp_reader rd = { fd_read, fr };
+	return rd;
+}
+
+void file_reader_close(file_reader *fr)
+{
+	if (fr->fd >= 0)
+		close(fr->fd);
+	fr->fd = -1;
+}

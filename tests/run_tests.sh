@@ -1,0 +1,33 @@
+#!/bin/sh
+# Runs every cmocka test program given, shows its output, and ends with one
+# summary in cmocka's own format plus a plain "N passed, N failed" line.
+out=$1; shift
+export SKP_BUILD="$out"
+export SKP_SHARED="${SKP_SHARED:-../shared}"
+[ -d "$SKP_SHARED/data" ] || echo "note: $SKP_SHARED/data not found: tests that need the shared data report themselves skipped"
+run=0; passed=0; failed=0; skipped=0; failed_progs=""
+log=$(mktemp); trap 'rm -f "$log"' EXIT
+for t in "$@"; do
+	"$t" >"$log" 2>&1; rc=$?
+	cat "$log"
+	r=$(sed -n 's/^\[==========\] \([0-9]*\) test(s) run\./\1/p' "$log" | tail -n 1)
+	p=$(sed -n 's/^\[  PASSED  \] \([0-9]*\) test(s)\./\1/p' "$log" | tail -n 1)
+	f=$(sed -n 's/^\[  FAILED  \] \([0-9]*\) test(s), listed below:/\1/p' "$log" | tail -n 1)
+	s=$(sed -n 's/^\[  SKIPPED \] \([0-9]*\) test(s), listed below:/\1/p' "$log" | tail -n 1)
+	run=$((run + ${r:-0})); passed=$((passed + ${p:-0}))
+	failed=$((failed + ${f:-0})); skipped=$((skipped + ${s:-0}))
+	if [ "$rc" -ne 0 ] || [ -z "$r" ]; then
+		[ -z "$f" ] && failed=$((failed + 1))
+		failed_progs="$failed_progs $(basename "$t")"
+	fi
+done
+echo
+echo "[==========] $run test(s) run from $# program(s)."
+echo "[  PASSED  ] $passed test(s)."
+[ "$skipped" -gt 0 ] && echo "[  SKIPPED ] $skipped test(s)."
+if [ -n "$failed_progs" ]; then
+	echo "[  FAILED  ] $failed test(s), in:$failed_progs"
+	echo "tests: $passed passed, $failed failed, $skipped skipped"
+	exit 1
+fi
+echo "tests: $passed passed, 0 failed, $skipped skipped"
