@@ -9,6 +9,10 @@
 #define SKP_MAX_TOKENS      32  /* tokens on one line */
 #define SKP_READ_CHUNK    4096  /* bytes a text reader pulls per callback */
 
+#define SKP_MAX_VERTS    65536  /* mesh vertices (MakeHuman body: 13380) */
+#define SKP_MAX_TRIS    131072  /* mesh triangles after triangulation */
+#define SKP_MAX_INFLUENCES   4  /* bones per vertex */
+
 /* Each bone has at most 7 dof (rx ry rz tx ty tz l); the root has 6. */
 #define SKP_MAX_DOF (7 * SKP_MAX_BONES)
 
