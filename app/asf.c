@@ -300,8 +300,10 @@ static skp_status hierarchy_line(asf_state *st, char **t, int n)
 		return syntax(st, ":hierarchy: unknown bone '%s'", t[0]);
 	for (int i = 1; i < n; i++) {
 		int child = skel_find(s, t[i]);
-		if (child <= 0)
-			return syntax(st, ":hierarchy: '%s' is not a bone that can have a parent", t[i]);
+		if (child < 0)
+			return syntax(st, ":hierarchy: unknown bone '%s'", t[i]);
+		if (child == 0)
+			return syntax(st, ":hierarchy: the root cannot have a parent");
 		if (st->has_parent[child])
 			return syntax(st, ":hierarchy: bone '%s' has two parents", t[i]);
 		st->has_parent[child] = 1;

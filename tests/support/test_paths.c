@@ -1,0 +1,52 @@
+#include "test_paths.h"
+
+#include <stdio.h>
+#include <stdlib.h>
+#include <sys/stat.h>
+
+const char *test_data_path(const char *rel)
+{
+	static char buf[4][1024];
+	static int next;
+	const char *root = getenv("SKP_SHARED");
+	struct stat st;
+	char *out = buf[next++ % 4];
+
+	if (!root || !*root)
+		root = "../shared";
+	snprintf(out, sizeof buf[0], "%s/data", root);
+	if (stat(out, &st) != 0)
+		return NULL;
+	snprintf(out, sizeof buf[0], "%s/data/%s", root, rel);
+	return out;
+}
+
+const char *test_tool_path(const char *tool)
+{
+	static char buf[1024];
+	const char *b = getenv("SKP_BUILD");
+	snprintf(buf, sizeof buf, "%s/%s", b && *b ? b : "build", tool);
+	return buf;
+}
+
+char *test_read_file(const char *path, size_t *size)
+{
+	FILE *f = fopen(path, "rb");
+	if (!f)
+		return NULL;
+	fseek(f, 0, SEEK_END);
+	long n = ftell(f);
+	fseek(f, 0, SEEK_SET);
+	char *data = malloc((size_t)n + 1);
+	if (data && fread(data, 1, (size_t)n, f) != (size_t)n) {
+		free(data);
+		data = NULL;
+	}
+	fclose(f);
+	if (data) {
+		data[n] = '\0';
+		if (size)
+			*size = (size_t)n;
+	}
+	return data;
+}

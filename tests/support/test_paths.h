@@ -1,0 +1,17 @@
+/* Where tests find the shared data and the built tools. */
+#ifndef TEST_PATHS_H
+#define TEST_PATHS_H
+
+#include <stddef.h>
+
+/* "<SKP_SHARED or ../shared>/data/<rel>" in a static buffer; NULL when the
+ * shared data directory is absent (tests then skip()). */
+const char *test_data_path(const char *rel);
+
+/* "<SKP_BUILD or build>/<tool>" in a static buffer. */
+const char *test_tool_path(const char *tool);
+
+/* Reads a whole file into a static-per-call heap buffer the caller frees. */
+char *test_read_file(const char *path, size_t *size);
+
+#endif
