@@ -125,6 +125,7 @@ deps:
 # app/ core objects must not allocate or do stdio: the runtime is fixed-memory.
 check-core: $(CORE_OBJ)
 	@sh tests/check_core_symbols.sh $(CORE_OBJ)
+	@sh tests/check_fixed_integer.sh $(CC) -Iapp -Iboard/$(BOARD)
 
 test: deps
 	@$(MAKE) --no-print-directory all $(UNIT_BIN) check-core

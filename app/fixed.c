@@ -1,0 +1,237 @@
+/* Integer-only: tests/check_fixed_integer.sh builds this file with the FPU
+ * registers disabled. Overflow bounds are argued in fixed.h. */
+#include "fixed.h"
+
+static const fx_quat fx_quat_identity = { FX_Q30_ONE, 0, 0, 0 };
+
+int64_t fx_quat_dot(fx_quat a, fx_quat b)
+{
+	return (int64_t)a.w * b.w + (int64_t)a.x * b.x + (int64_t)a.y * b.y +
+	       (int64_t)a.z * b.z;
+}
+
+/* Hamilton product with every component summed exactly and rounded once by
+ * 2^s; int64 results so callers can add two products before saturating. */
+static void qmul_shr(fx_quat a, fx_quat b, int s, int64_t r[4])
+{
+	r[0] = fx_shr_round((int64_t)a.w * b.w - (int64_t)a.x * b.x -
+			    (int64_t)a.y * b.y - (int64_t)a.z * b.z, s);
+	r[1] = fx_shr_round((int64_t)a.w * b.x + (int64_t)a.x * b.w +
+			    (int64_t)a.y * b.z - (int64_t)a.z * b.y, s);
+	r[2] = fx_shr_round((int64_t)a.w * b.y - (int64_t)a.x * b.z +
+			    (int64_t)a.y * b.w + (int64_t)a.z * b.x, s);
+	r[3] = fx_shr_round((int64_t)a.w * b.z + (int64_t)a.x * b.y -
+			    (int64_t)a.y * b.x + (int64_t)a.z * b.w, s);
+}
+
+static fx_quat quat_sat(const int64_t r[4])
+{
+	fx_quat q = { fx_sat32(r[0]), fx_sat32(r[1]), fx_sat32(r[2]), fx_sat32(r[3]) };
+	return q;
+}
+
+fx_quat fx_quat_mul(fx_quat a, fx_quat b)
+{
+	int64_t r[4];
+
+	qmul_shr(a, b, 30, r);
+	return quat_sat(r);
+}
+
+fx_vec3 fx_quat_rotate(fx_quat q, fx_vec3 v)
+{
+	/* a = u x v + w v: each sum uses three components of the unit q once,
+	 * whose magnitudes add up to at most sqrt(3): below sqrt(3) 2^61, and
+	 * |a_i| < sqrt(3) 2^31 after the shift. */
+	int64_t ax = fx_shr_round((int64_t)q.y * v.z - (int64_t)q.z * v.y +
+				  (int64_t)q.w * v.x, 30);
+	int64_t ay = fx_shr_round((int64_t)q.z * v.x - (int64_t)q.x * v.z +
+				  (int64_t)q.w * v.y, 30);
+	int64_t az = fx_shr_round((int64_t)q.x * v.y - (int64_t)q.y * v.x +
+				  (int64_t)q.w * v.z, 30);
+	/* 2 u x a: two components of q (|sum| <= sqrt(2) 2^30) times |a_i|:
+	 * below sqrt(6) 2^61 < 2^62.3. The factor 2 goes into the shift (29)
+	 * so it costs no precision. */
+	fx_vec3 r = {
+		fx_sat32(v.x + fx_shr_round(q.y * az - q.z * ay, 29)),
+		fx_sat32(v.y + fx_shr_round(q.z * ax - q.x * az, 29)),
+		fx_sat32(v.z + fx_shr_round(q.x * ay - q.y * ax, 29)),
+	};
+	return r;
+}
+
+/* Shift-and-subtract square root; leaves x - floor(sqrt(x))^2 in *rem. */
+static uint64_t isqrt_rem(uint64_t x, uint64_t *rem)
+{
+	uint64_t r = 0, bit = (uint64_t)1 << 62;
+
+	while (bit > x)
+		bit >>= 2;
+	while (bit) {
+		if (x >= r + bit) {
+			x -= r + bit;
+			r = (r >> 1) + bit;
+		} else {
+			r >>= 1;
+		}
+		bit >>= 2;
+	}
+	*rem = x;
+	return r;
+}
+
+uint32_t fx_isqrt64(uint64_t x)
+{
+	uint64_t rem;
+
+	return (uint32_t)isqrt_rem(x, &rem);
+}
+
+uint32_t fx_rsqrt_q60(uint64_t x, int *shift)
+{
+	uint64_t s, rem, m;
+	int e = 0;
+
+	*shift = 0;
+	if (x == 0 || x >= (uint64_t)1 << 62)
+		return 0;
+	/* Scale by 4^e into [2^60, 2^62) so the root has a full 31 bits. */
+	while (x < (uint64_t)1 << 60) {
+		x <<= 2;
+		e++;
+	}
+	s = isqrt_rem(x, &rem);
+	/* sqrt(x) >= s + 1/2 exactly when x - s^2 > s: round, don't floor. */
+	if (rem > s)
+		s++;
+	/* s in [2^30, 2^31], so the quotient is in [2^30, 2^31]; 1/sqrt of
+	 * x/2^60 (before scaling) is 2^(30+e) / s = m / 2^(31-e). One divide
+	 * per call, i.e. per vertex. */
+	m = (((uint64_t)1 << 61) + s / 2) / s;
+	*shift = 31 - e;
+	return (uint32_t)m;
+}
+
+fx_dq fx_dq_from_quat_trans(fx_quat q, fx_vec3 t)
+{
+	fx_quat tq = { 0, t.x, t.y, t.z };
+	int64_t d[4];
+
+	/* Shift 31 instead of 30: the 0.5 of dual = 0.5 t q. */
+	qmul_shr(tq, q, 31, d);
+	fx_dq r = { q, quat_sat(d) };
+	return r;
+}
+
+fx_vec3 fx_dq_translation(const fx_dq *d)
+{
+	const fx_quat *r = &d->real, *u = &d->dual;
+	/* vector part of 2 dual conj(real) = 2 (rw dv - dw rv + rv x dv); each
+	 * sum uses every real component once: below 2 * 2^30 * 2^31. */
+	int64_t tx = (int64_t)r->w * u->x - (int64_t)u->w * r->x +
+		     (int64_t)r->y * u->z - (int64_t)r->z * u->y;
+	int64_t ty = (int64_t)r->w * u->y - (int64_t)u->w * r->y +
+		     (int64_t)r->z * u->x - (int64_t)r->x * u->z;
+	int64_t tz = (int64_t)r->w * u->z - (int64_t)u->w * r->z +
+		     (int64_t)r->x * u->y - (int64_t)r->y * u->x;
+	fx_vec3 t = { fx_sat32(fx_shr_round(tx, 29)), fx_sat32(fx_shr_round(ty, 29)),
+		      fx_sat32(fx_shr_round(tz, 29)) };
+	return t;
+}
+
+fx_dq fx_dq_mul(const fx_dq *a, const fx_dq *b)
+{
+	int64_t rd[4], dr[4], sum[4];
+
+	qmul_shr(a->real, b->dual, 30, rd);
+	qmul_shr(a->dual, b->real, 30, dr);
+	for (int i = 0; i < 4; i++)
+		sum[i] = rd[i] + dr[i];
+	fx_dq r = { fx_quat_mul(a->real, b->real), quat_sat(sum) };
+	return r;
+}
+
+static int32_t scale_rs(int32_t c, uint32_t m, int shift)
+{
+	/* |c| <= 2^31 and m <= 2^31: the product is below 2^62. */
+	return fx_sat32(fx_shr_round((int64_t)c * m, shift));
+}
+
+static fx_quat quat_scale_rs(fx_quat q, uint32_t m, int shift)
+{
+	fx_quat r = { scale_rs(q.w, m, shift), scale_rs(q.x, m, shift),
+		      scale_rs(q.y, m, shift), scale_rs(q.z, m, shift) };
+	return r;
+}
+
+fx_dq fx_dq_normalize(fx_dq d)
+{
+	int shift;
+	uint32_t m = fx_rsqrt_q60((uint64_t)fx_quat_dot(d.real, d.real), &shift);
+
+	if (m == 0) {
+		fx_dq id = { fx_quat_identity, { 0, 0, 0, 0 } };
+		return id;
+	}
+	d.real = quat_scale_rs(d.real, m, shift);
+	d.dual = quat_scale_rs(d.dual, m, shift);
+	return d;
+}
+
+fx_vec3 fx_dq_transform_point(const fx_dq *d, fx_vec3 p)
+{
+	fx_vec3 r = fx_quat_rotate(d->real, p);
+	fx_vec3 t = fx_dq_translation(d);
+	fx_vec3 o = { fx_sat32((int64_t)r.x + t.x), fx_sat32((int64_t)r.y + t.y),
+		      fx_sat32((int64_t)r.z + t.z) };
+	return o;
+}
+
+fx_vec3 fx_dq_transform_normal(const fx_dq *d, fx_vec3 n)
+{
+	return fx_quat_rotate(d->real, n);
+}
+
+fx_quat fx_dq_blend_pivot(const fx_dq *bone_dqs, const uint16_t *bone_idx,
+			  const fx_w15 *weights, int count)
+{
+	int best = 0;
+
+	for (int i = 1; i < count; i++)
+		if (weights[i] > weights[best])
+			best = i;
+	return count > 0 ? bone_dqs[bone_idx[best]].real : fx_quat_identity;
+}
+
+fx_dq fx_dq_blend(const fx_dq *bone_dqs, const uint16_t *bone_idx,
+		  const fx_w15 *weights, int count, fx_quat pivot)
+{
+	/* Q45 for the real part, F+15 for the dual: each term is below
+	 * 2^16 * 2^31 = 2^47, so even 65535 influences cannot overflow. */
+	int64_t r[4] = { 0, 0, 0, 0 }, u[4] = { 0, 0, 0, 0 };
+
+	for (int i = 0; i < count; i++) {
+		const fx_dq *d = &bone_dqs[bone_idx[i]];
+		/* q and -q are the same rotation: keep every influence on the
+		 * pivot's hemisphere so the sum takes the short way round. */
+		int64_t w = fx_quat_dot(d->real, pivot) < 0 ? -(int64_t)weights[i]
+							    : (int64_t)weights[i];
+
+		r[0] += w * d->real.w; r[1] += w * d->real.x;
+		r[2] += w * d->real.y; r[3] += w * d->real.z;
+		u[0] += w * d->dual.w; u[1] += w * d->dual.x;
+		u[2] += w * d->dual.y; u[3] += w * d->dual.z;
+	}
+	for (int k = 0; k < 4; k++) {
+		r[k] = fx_shr_round(r[k], 15);
+		u[k] = fx_shr_round(u[k], 15);
+	}
+	fx_dq b = { quat_sat(r), quat_sat(u) };
+	return b;
+}
+
+fx_dq fx_dq_blend_normalized(const fx_dq *bone_dqs, const uint16_t *bone_idx,
+			     const fx_w15 *weights, int count, fx_quat pivot)
+{
+	return fx_dq_normalize(fx_dq_blend(bone_dqs, bone_idx, weights, count, pivot));
+}
