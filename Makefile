@@ -14,13 +14,20 @@ else
   OUT       := $(BUILD)
 endif
 
+# SIMD kernels chosen at build time (board.mk sets SIMD; `make SIMD=scalar`
+# builds the portable path only).
+ifeq ($(SIMD),avx2)
+  SIMD_DEFS  := -DSKP_SIMD_AVX2
+  SIMD_FLAGS := -mavx2 -mfma
+endif
+
 WARN     := -Wall -Wextra -Werror -Wshadow -Wstrict-prototypes -Wvla
-CPPFLAGS := -Iapp -Iboard/$(BOARD) -MMD -MP
+CPPFLAGS := -Iapp -Iboard/$(BOARD) $(SIMD_DEFS) -MMD -MP
 CFLAGS_APP  := -std=c11 $(WARN) $(BOARD_CFLAGS) $(SAN_FLAGS) $(EXTRA_CFLAGS)
 # Platform code talks to Linux and POSIX APIs, so it may use GNU extensions.
 CFLAGS_PLAT := -std=gnu11 $(WARN) $(BOARD_CFLAGS) $(SAN_FLAGS) $(EXTRA_CFLAGS)
 LDFLAGS  := $(SAN_FLAGS) $(EXTRA_LDFLAGS)
-LDLIBS   := -lm
+LDLIBS   := -lm -pthread
 
 # app/: the front ends (skintool*, skinplay*, and cli_* shared by both) may
 # use stdio and platform/; the portable core may not.
@@ -34,6 +41,8 @@ UNIT_SRC    := $(wildcard tests/unit/test_*.c tests/integration/test_*.c)
 TESTLIB_SRC := $(wildcard tests/support/*.c)
 
 CORE_OBJ    := $(CORE_SRC:%.c=$(OUT)/%.o)
+# The fixed-point skinning path: proven free of floating point by `make test`.
+FIXED_SRC   := app/fixed.c app/skin_fixed.c
 PLAT_OBJ    := $(PLAT_SRC:%.c=$(OUT)/%.o)
 TOOL_OBJ    := $(TOOL_SRC:%.c=$(OUT)/%.o)
 PLAY_OBJ    := $(PLAY_SRC:%.c=$(OUT)/%.o)
@@ -63,9 +72,20 @@ $(BUILD)/assets/demo_motion: assets/demo_motion.c
 $(DEMO_AMC): $(BUILD)/assets/demo_motion
 	$< > $@.tmp && mv $@.tmp $@
 
+# Objects depend on the flags they were built with, so switching SIMD or
+# board flags rebuilds them.
+FLAGS_STAMP := $(OUT)/flags.stamp
+FLAGS_NOW   := $(CC) $(CPPFLAGS) $(CFLAGS_APP) $(CFLAGS_PLAT) $(SIMD_FLAGS)
+ifneq ($(strip $(shell cat $(FLAGS_STAMP) 2>/dev/null)),$(strip $(FLAGS_NOW)))
+  $(shell mkdir -p $(OUT) && echo '$(FLAGS_NOW)' > $(FLAGS_STAMP))
+endif
+$(CORE_OBJ) $(PLAT_OBJ) $(FRONT_SRC:%.c=$(OUT)/%.o): $(FLAGS_STAMP)
+
 $(OUT)/app/%.o: app/%.c
 	@mkdir -p $(@D)
 	$(CC) $(CPPFLAGS) $(CFLAGS_APP) -c $< -o $@
+
+$(OUT)/app/skin_avx2.o: CFLAGS_APP += $(SIMD_FLAGS)
 
 # Front ends see the platform headers and POSIX.
 $(FRONT_SRC:%.c=$(OUT)/%.o): $(OUT)/app/%.o: app/%.c
@@ -125,7 +145,7 @@ deps:
 # app/ core objects must not allocate or do stdio: the runtime is fixed-memory.
 check-core: $(CORE_OBJ)
 	@sh tests/check_core_symbols.sh $(CORE_OBJ)
-	@sh tests/check_fixed_integer.sh $(CC) -Iapp -Iboard/$(BOARD)
+	@for f in $(FIXED_SRC); do sh tests/check_fixed_integer.sh $(CC) -Iapp -Iboard/$(BOARD) $$f || exit 1; done
 
 test: deps
 	@$(MAKE) --no-print-directory all $(UNIT_BIN) check-core

@@ -2,6 +2,8 @@
 BOARD_DESC    := x86-64 Debian 12 host (desktop, headless, CI)
 CC            ?= cc
 BOARD_CFLAGS  := -O2 -g
+# Skinning kernels: avx2 (AVX2+FMA, any x86-64 since 2013) or scalar.
+SIMD          ?= avx2
 # Debian packages `make deps` installs and the pkg-config modules that prove them.
 DEB_PKGS      := pkg-config libcmocka-dev libegl-dev libgles-dev libosmesa6-dev \
                  libgbm-dev libdrm-dev libgpiod-dev libpng-dev libx11-dev

@@ -1,0 +1,105 @@
+/* Skinning: per-frame bone transforms and the three kernels (LBS, DQBS in
+ * float, DQBS in fixed point) over vertex data laid out for SIMD.
+ *
+ * Bone transforms (contract): R_b = G_pose_b * G_bind_b^T and
+ * t_b = head_pose_b - R_b * head_bind_b, with head the bone's start (its
+ * parent's tip; the root's position) and G the FK rotation.
+ *
+ * Vertex data is a structure of arrays padded to SKIN_LANES vertices, with
+ * exactly SKP_MAX_INFLUENCES (bone, weight) slots per vertex, largest weight
+ * first (the DQBS pivot), unused slots weight 0. All arrays live in one
+ * caller-provided block (skin_soa_bytes), so the runtime keeps it static and
+ * a benchmark may allocate a bigger one. */
+#ifndef SKIN_H
+#define SKIN_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "dq.h"
+#include "fixed.h"
+#include "fk.h"
+#include "mesh.h"
+#include "rigid.h"
+#include "skin_weights.h"
+#include "skp_error.h"
+
+#define SKIN_LANES 8
+#define SKIN_ALIGN 32
+/* Slot of an identity transform after the skeleton's bones: vertices with
+ * no influence stay where they were bound. */
+#define SKIN_IDENTITY_BONE SKP_MAX_BONES
+
+typedef enum skin_algo {
+	SKIN_LBS,
+	SKIN_DQBS,
+	SKIN_DQBS_FIXED,
+	SKIN_ALGO_COUNT
+} skin_algo;
+
+/* "lbs", "dqbs", "dqbs-fixed" */
+const char *skin_algo_name(skin_algo a);
+/* -1 when the name is not an algorithm */
+int skin_algo_parse(const char *name);
+
+typedef struct skin_soa {
+	int count;                 /* vertices */
+	int padded;                /* count rounded up to SKIN_LANES */
+	float *px, *py, *pz;       /* bind-pose positions */
+	float *nx, *ny, *nz;       /* bind-pose unit normals */
+	uint16_t *bone[SKP_MAX_INFLUENCES];
+	float *weight[SKP_MAX_INFLUENCES];
+	/* the fixed-point kernel's copies: its per-frame path never converts */
+	fx_pos *fpx, *fpy, *fpz;   /* Q15.16 */
+	fx_q30 *fnx, *fny, *fnz;   /* Q2.30 */
+	fx_w15 *fweight[SKP_MAX_INFLUENCES];
+} skin_soa;
+
+/* Bytes of the block skin_soa_attach needs for count vertices. */
+size_t skin_soa_bytes(int count);
+
+/* Carves the arrays of s out of mem (SKIN_ALIGN-aligned, skin_soa_bytes
+ * long) for count vertices. */
+void skin_soa_attach(skin_soa *s, void *mem, int count);
+
+/* Fills s (attached for m->vert_count vertices) from a mesh and its weights.
+ * Fails on a weight naming a bone index >= bone_count, or a position out
+ * of the fixed-point range. */
+skp_status skin_soa_load(skin_soa *s, const mesh *m, const skin_weights *w, int bone_count,
+			 skp_error *err);
+
+/* Per-frame transforms of every bone, in the forms the kernels read. */
+typedef struct skin_bones {
+	int count;
+	rigid mat[SKP_MAX_BONES + 1];
+	dq dq[SKP_MAX_BONES + 1];
+	fx_dq fdq[SKP_MAX_BONES + 1];
+	/* flat copies for SIMD gathers: 3x4 row-major, and real|dual */
+	float lbs12[SKP_MAX_BONES + 1][12];
+	float dq8[SKP_MAX_BONES + 1][8];
+} skin_bones;
+
+void skin_bones_compute(skin_bones *out, const skel *s, const skel_pose *bind,
+			const skel_pose *pose);
+
+/* Where a kernel writes: float kernels xyz triples in pos/nrm, the
+ * fixed-point kernel Q16.16 triples (GL_FIXED) in fpos/fnrm. */
+typedef struct skin_out {
+	float *pos, *nrm;
+	int32_t *fpos, *fnrm;
+} skin_out;
+
+/* Skins vertices [first, first + count) of in; first must be a multiple of
+ * SKIN_LANES (worker threads split the mesh on lane boundaries). */
+void skin_run(skin_algo algo, const skin_soa *in, const skin_bones *b, int first, int count,
+	      const skin_out *out);
+
+/* The portable kernels (always built; the SIMD ones fall back to them). */
+void skin_lbs_scalar(const skin_soa *in, const skin_bones *b, int first, int end, const skin_out *out);
+void skin_dqbs_scalar(const skin_soa *in, const skin_bones *b, int first, int end, const skin_out *out);
+void skin_dqbs_fixed(const skin_soa *in, const skin_bones *b, int first, int end, const skin_out *out);
+
+/* "avx2+fma" or "scalar": which float kernels skin_run uses. */
+const char *skin_simd_name(void);
+
+#endif

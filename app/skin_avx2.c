@@ -1,0 +1,196 @@
+/* AVX2+FMA kernels: eight vertices per step in structure-of-arrays form,
+ * bone data fetched with gathers. Built when the board sets SIMD=avx2;
+ * results match skin_scalar.c to float rounding. */
+#include "skin.h"
+
+#ifdef SKP_SIMD_AVX2
+
+#include <immintrin.h>
+#include <string.h>
+
+typedef struct v3x8 {
+	__m256 x, y, z;
+} v3x8;
+
+/* 8 xyz triples from SoA registers to 24 interleaved floats */
+static void store_interleaved(float *dst, v3x8 a, int valid)
+{
+	__m256 rxy = _mm256_shuffle_ps(a.x, a.y, _MM_SHUFFLE(2, 0, 2, 0));
+	__m256 ryz = _mm256_shuffle_ps(a.y, a.z, _MM_SHUFFLE(3, 1, 3, 1));
+	__m256 rzx = _mm256_shuffle_ps(a.z, a.x, _MM_SHUFFLE(3, 1, 2, 0));
+	__m256 r03 = _mm256_shuffle_ps(rxy, rzx, _MM_SHUFFLE(2, 0, 2, 0));
+	__m256 r14 = _mm256_shuffle_ps(ryz, rxy, _MM_SHUFFLE(3, 1, 2, 0));
+	__m256 r25 = _mm256_shuffle_ps(rzx, ryz, _MM_SHUFFLE(3, 1, 3, 1));
+	__m256 o0 = _mm256_permute2f128_ps(r03, r14, 0x20);
+	__m256 o1 = _mm256_permute2f128_ps(r25, r03, 0x30);
+	__m256 o2 = _mm256_permute2f128_ps(r14, r25, 0x31);
+	if (valid == SKIN_LANES) {
+		_mm256_storeu_ps(dst, o0);
+		_mm256_storeu_ps(dst + 8, o1);
+		_mm256_storeu_ps(dst + 16, o2);
+		return;
+	}
+	float tmp[24];
+	_mm256_storeu_ps(tmp, o0);
+	_mm256_storeu_ps(tmp + 8, o1);
+	_mm256_storeu_ps(tmp + 16, o2);
+	memcpy(dst, tmp, sizeof(float) * 3 * (size_t)valid);
+}
+
+static v3x8 load3(const float *x, const float *y, const float *z, int v)
+{
+	v3x8 r = { _mm256_load_ps(x + v), _mm256_load_ps(y + v), _mm256_load_ps(z + v) };
+	return r;
+}
+
+static __m256i bone_offsets(const uint16_t *bone, int v, int stride)
+{
+	__m128i b16 = _mm_load_si128((const __m128i *)(bone + v));
+	return _mm256_mullo_epi32(_mm256_cvtepu16_epi32(b16), _mm256_set1_epi32(stride));
+}
+
+static v3x8 normalize8(v3x8 a)
+{
+	__m256 len2 = _mm256_fmadd_ps(a.x, a.x, _mm256_fmadd_ps(a.y, a.y, _mm256_mul_ps(a.z, a.z)));
+	__m256 inv = _mm256_div_ps(_mm256_set1_ps(1.0f), _mm256_sqrt_ps(len2));
+	v3x8 r = { _mm256_mul_ps(a.x, inv), _mm256_mul_ps(a.y, inv), _mm256_mul_ps(a.z, inv) };
+	return r;
+}
+
+static void lbs_block(const skin_soa *in, const skin_bones *b, int v, __m256 m[12])
+{
+	const float *base = &b->lbs12[0][0];
+	for (int i = 0; i < 12; i++)
+		m[i] = _mm256_setzero_ps();
+	for (int k = 0; k < SKP_MAX_INFLUENCES; k++) {
+		__m256 w = _mm256_load_ps(in->weight[k] + v);
+		__m256i off = bone_offsets(in->bone[k], v, 12);
+		for (int i = 0; i < 12; i++)
+			m[i] = _mm256_fmadd_ps(w, _mm256_i32gather_ps(base + i, off, 4), m[i]);
+	}
+}
+
+static v3x8 apply_rows(const __m256 m[12], v3x8 p, int with_translation)
+{
+	v3x8 r;
+	__m256 *out[3] = { &r.x, &r.y, &r.z };
+	for (int row = 0; row < 3; row++) {
+		const __m256 *q = m + 4 * row;
+		__m256 acc = with_translation ? q[3] : _mm256_setzero_ps();
+		acc = _mm256_fmadd_ps(q[0], p.x, acc);
+		acc = _mm256_fmadd_ps(q[1], p.y, acc);
+		*out[row] = _mm256_fmadd_ps(q[2], p.z, acc);
+	}
+	return r;
+}
+
+void skin_lbs_avx2(const skin_soa *in, const skin_bones *b, int first, int end, const skin_out *out)
+{
+	for (int v = first; v < end; v += SKIN_LANES) {
+		__m256 m[12];
+		lbs_block(in, b, v, m);
+		int valid = end - v < SKIN_LANES ? end - v : SKIN_LANES;
+		v3x8 p = apply_rows(m, load3(in->px, in->py, in->pz, v), 1);
+		v3x8 n = normalize8(apply_rows(m, load3(in->nx, in->ny, in->nz, v), 0));
+		store_interleaved(out->pos + 3 * v, p, valid);
+		store_interleaved(out->nrm + 3 * v, n, valid);
+	}
+}
+
+typedef struct dq8 {
+	__m256 rw, rx, ry, rz, dw, dx, dy, dz;
+} dq8;
+
+static dq8 gather_dq(const skin_bones *b, __m256i off)
+{
+	const float *base = &b->dq8[0][0];
+	dq8 d = {
+		_mm256_i32gather_ps(base + 0, off, 4), _mm256_i32gather_ps(base + 1, off, 4),
+		_mm256_i32gather_ps(base + 2, off, 4), _mm256_i32gather_ps(base + 3, off, 4),
+		_mm256_i32gather_ps(base + 4, off, 4), _mm256_i32gather_ps(base + 5, off, 4),
+		_mm256_i32gather_ps(base + 6, off, 4), _mm256_i32gather_ps(base + 7, off, 4),
+	};
+	return d;
+}
+
+static void dq_accumulate(dq8 *acc, const dq8 *d, __m256 w)
+{
+	acc->rw = _mm256_fmadd_ps(w, d->rw, acc->rw);
+	acc->rx = _mm256_fmadd_ps(w, d->rx, acc->rx);
+	acc->ry = _mm256_fmadd_ps(w, d->ry, acc->ry);
+	acc->rz = _mm256_fmadd_ps(w, d->rz, acc->rz);
+	acc->dw = _mm256_fmadd_ps(w, d->dw, acc->dw);
+	acc->dx = _mm256_fmadd_ps(w, d->dx, acc->dx);
+	acc->dy = _mm256_fmadd_ps(w, d->dy, acc->dy);
+	acc->dz = _mm256_fmadd_ps(w, d->dz, acc->dz);
+}
+
+/* Weighted sum with each influence's sign flipped when its real part
+ * points away from the pivot (influence 0, the largest weight). */
+static dq8 dq_blend8(const skin_soa *in, const skin_bones *b, int v)
+{
+	const __m256 sign = _mm256_set1_ps(-0.0f);
+	dq8 pivot = gather_dq(b, bone_offsets(in->bone[0], v, 8));
+	dq8 acc = { 0 };
+	dq_accumulate(&acc, &pivot, _mm256_load_ps(in->weight[0] + v));
+	for (int k = 1; k < SKP_MAX_INFLUENCES; k++) {
+		dq8 d = gather_dq(b, bone_offsets(in->bone[k], v, 8));
+		__m256 dot = _mm256_mul_ps(d.rw, pivot.rw);
+		dot = _mm256_fmadd_ps(d.rx, pivot.rx, dot);
+		dot = _mm256_fmadd_ps(d.ry, pivot.ry, dot);
+		dot = _mm256_fmadd_ps(d.rz, pivot.rz, dot);
+		__m256 w = _mm256_xor_ps(_mm256_load_ps(in->weight[k] + v), _mm256_and_ps(dot, sign));
+		dq_accumulate(&acc, &d, w);
+	}
+	return acc;
+}
+
+static v3x8 cross8(v3x8 a, v3x8 b)
+{
+	v3x8 r = { _mm256_fmsub_ps(a.y, b.z, _mm256_mul_ps(a.z, b.y)),
+		   _mm256_fmsub_ps(a.z, b.x, _mm256_mul_ps(a.x, b.z)),
+		   _mm256_fmsub_ps(a.x, b.y, _mm256_mul_ps(a.y, b.x)) };
+	return r;
+}
+
+static v3x8 madd8(v3x8 a, v3x8 b, __m256 s)
+{
+	v3x8 r = { _mm256_fmadd_ps(b.x, s, a.x), _mm256_fmadd_ps(b.y, s, a.y),
+		   _mm256_fmadd_ps(b.z, s, a.z) };
+	return r;
+}
+
+/* v + 2 r x (r x v + w v): rotation by the unit quaternion (w, r) */
+static v3x8 rotate8(__m256 w, v3x8 r, v3x8 v)
+{
+	v3x8 t = madd8(cross8(r, v), v, w);
+	return madd8(v, cross8(r, t), _mm256_set1_ps(2.0f));
+}
+
+void skin_dqbs_avx2(const skin_soa *in, const skin_bones *b, int first, int end, const skin_out *out)
+{
+	const __m256 two = _mm256_set1_ps(2.0f);
+	for (int v = first; v < end; v += SKIN_LANES) {
+		dq8 d = dq_blend8(in, b, v);
+		__m256 n2 = _mm256_fmadd_ps(d.rw, d.rw, _mm256_fmadd_ps(d.rx, d.rx,
+					    _mm256_fmadd_ps(d.ry, d.ry, _mm256_mul_ps(d.rz, d.rz))));
+		__m256 inv = _mm256_div_ps(_mm256_set1_ps(1.0f), _mm256_sqrt_ps(n2));
+		__m256 rw = _mm256_mul_ps(d.rw, inv), dw = _mm256_mul_ps(d.dw, inv);
+		v3x8 r = { _mm256_mul_ps(d.rx, inv), _mm256_mul_ps(d.ry, inv), _mm256_mul_ps(d.rz, inv) };
+		v3x8 dv = { _mm256_mul_ps(d.dx, inv), _mm256_mul_ps(d.dy, inv), _mm256_mul_ps(d.dz, inv) };
+		/* translation 2 (w_r d_v - w_d r_v + r_v x d_v) */
+		v3x8 t = cross8(r, dv);
+		t = madd8(t, dv, rw);
+		t = madd8(t, r, _mm256_sub_ps(_mm256_setzero_ps(), dw));
+		v3x8 p = rotate8(rw, r, load3(in->px, in->py, in->pz, v));
+		p = madd8(p, t, two);
+		v3x8 n = rotate8(rw, r, load3(in->nx, in->ny, in->nz, v));
+		int valid = end - v < SKIN_LANES ? end - v : SKIN_LANES;
+		store_interleaved(out->pos + 3 * v, p, valid);
+		store_interleaved(out->nrm + 3 * v, n, valid);
+	}
+}
+
+#else
+typedef int skin_avx2_not_built; /* the board chose the scalar kernels */
+#endif

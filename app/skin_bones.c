@@ -1,0 +1,41 @@
+#include "skin.h"
+
+#include "fixed_convert.h"
+
+static void flatten(skin_bones *out, int b)
+{
+	const rigid *m = &out->mat[b];
+	for (int r = 0; r < 3; r++) {
+		out->lbs12[b][r * 4 + 0] = m->r[r][0];
+		out->lbs12[b][r * 4 + 1] = m->r[r][1];
+		out->lbs12[b][r * 4 + 2] = m->r[r][2];
+	}
+	out->lbs12[b][3] = m->t.x;
+	out->lbs12[b][7] = m->t.y;
+	out->lbs12[b][11] = m->t.z;
+	const dq *d = &out->dq[b];
+	float v[8] = { d->real.w, d->real.x, d->real.y, d->real.z,
+		       d->dual.w, d->dual.x, d->dual.y, d->dual.z };
+	for (int i = 0; i < 8; i++)
+		out->dq8[b][i] = v[i];
+}
+
+static void set_bone(skin_bones *out, int b, quat q, vec3 t)
+{
+	out->mat[b] = rigid_from_quat_trans(q, t);
+	out->dq[b] = dq_from_quat_trans(q, t);
+	out->fdq[b] = fx_dq_from_dq(&out->dq[b]);
+	flatten(out, b);
+}
+
+void skin_bones_compute(skin_bones *out, const skel *s, const skel_pose *bind,
+			const skel_pose *pose)
+{
+	out->count = s->count;
+	for (int b = 0; b < s->count; b++) {
+		quat q = quat_normalize(quat_mul(pose->rot[b], quat_conj(bind->rot[b])));
+		vec3 t = vec3_sub(pose->head[b], quat_rotate(q, bind->head[b]));
+		set_bone(out, b, q, t);
+	}
+	set_bone(out, SKIN_IDENTITY_BONE, quat_identity(), vec3_make(0, 0, 0));
+}

@@ -1,0 +1,110 @@
+#include "skin.h"
+
+#include <string.h>
+
+#include "fixed_convert.h"
+
+static int padded_count(int count)
+{
+	return (count + SKIN_LANES - 1) / SKIN_LANES * SKIN_LANES;
+}
+
+static size_t align_up(size_t n)
+{
+	return (n + SKIN_ALIGN - 1) / SKIN_ALIGN * SKIN_ALIGN;
+}
+
+/* Arrays per vertex: 6 float + 3 fx_pos + 3 fx_q30 + 4 float weights of 4
+ * bytes, and 4 bone + 4 fx_w15 of 2 bytes. */
+size_t skin_soa_bytes(int count)
+{
+	size_t n = (size_t)padded_count(count);
+	size_t four = align_up(n * 4), two = align_up(n * 2);
+	return (6 + 3 + 3 + SKP_MAX_INFLUENCES) * four + 2 * SKP_MAX_INFLUENCES * two;
+}
+
+static void *take(char **cursor, size_t bytes)
+{
+	void *p = *cursor;
+	*cursor += align_up(bytes);
+	return p;
+}
+
+void skin_soa_attach(skin_soa *s, void *mem, int count)
+{
+	char *c = mem;
+	size_t n = (size_t)padded_count(count);
+	s->count = count;
+	s->padded = (int)n;
+	s->px = take(&c, n * 4); s->py = take(&c, n * 4); s->pz = take(&c, n * 4);
+	s->nx = take(&c, n * 4); s->ny = take(&c, n * 4); s->nz = take(&c, n * 4);
+	s->fpx = take(&c, n * 4); s->fpy = take(&c, n * 4); s->fpz = take(&c, n * 4);
+	s->fnx = take(&c, n * 4); s->fny = take(&c, n * 4); s->fnz = take(&c, n * 4);
+	for (int k = 0; k < SKP_MAX_INFLUENCES; k++) {
+		s->weight[k] = take(&c, n * 4);
+		s->bone[k] = take(&c, n * 2);
+		s->fweight[k] = take(&c, n * 2);
+	}
+}
+
+/* Influences of one vertex, largest weight first (the DQBS pivot), unused
+ * slots weight 0 on the identity slot. */
+static skp_status load_influences(skin_soa *s, int v, const skin_weights *w, int bone_count,
+				  skp_error *err)
+{
+	uint16_t bone[SKP_MAX_INFLUENCES];
+	float weight[SKP_MAX_INFLUENCES];
+	int n = w && v < w->vert_count ? w->count[v] : 0;
+	for (int k = 0; k < SKP_MAX_INFLUENCES; k++) {
+		bone[k] = k < n ? w->bone[v][k] : SKIN_IDENTITY_BONE;
+		weight[k] = k < n ? w->weight[v][k] : 0.0f;
+		if (k < n && bone[k] >= bone_count)
+			return skp_fail(err, SKP_ERR_RANGE, 0, "vertex %d: bone index %d out of range",
+					v, bone[k]);
+	}
+	if (n == 0)
+		weight[0] = 1.0f; /* no influence: stay in the bind pose */
+	for (int i = 1; i < SKP_MAX_INFLUENCES; i++)
+		for (int j = i; j > 0 && weight[j] > weight[j - 1]; j--) {
+			float tw = weight[j]; weight[j] = weight[j - 1]; weight[j - 1] = tw;
+			uint16_t tb = bone[j]; bone[j] = bone[j - 1]; bone[j - 1] = tb;
+		}
+	fx_w15 fw[SKP_MAX_INFLUENCES];
+	if (fx_weights_from_float(weight, fw, SKP_MAX_INFLUENCES) != SKP_OK)
+		return skp_fail(err, SKP_ERR_RANGE, 0, "vertex %d: weights do not sum to 1", v);
+	for (int k = 0; k < SKP_MAX_INFLUENCES; k++) {
+		s->bone[k][v] = bone[k];
+		s->weight[k][v] = weight[k];
+		s->fweight[k][v] = fw[k];
+	}
+	return SKP_OK;
+}
+
+static void load_vertex(skin_soa *s, int v, vec3 p, vec3 n)
+{
+	s->px[v] = p.x; s->py[v] = p.y; s->pz[v] = p.z;
+	s->nx[v] = n.x; s->ny[v] = n.y; s->nz[v] = n.z;
+	fx_vec3 fp = fx_vec3_from_vec3(p), fn = fx_normal_from_vec3(n);
+	s->fpx[v] = fp.x; s->fpy[v] = fp.y; s->fpz[v] = fp.z;
+	s->fnx[v] = fn.x; s->fny[v] = fn.y; s->fnz[v] = fn.z;
+}
+
+skp_status skin_soa_load(skin_soa *s, const mesh *m, const skin_weights *w, int bone_count,
+			 skp_error *err)
+{
+	const float limit = 32767.0f; /* fx_pos range */
+	for (int v = 0; v < s->padded; v++) {
+		int real = v < m->vert_count;
+		vec3 p = real ? m->pos[v] : vec3_make(0, 0, 0);
+		vec3 n = real ? m->normal[v] : vec3_make(0, 1, 0);
+		if (!(p.x > -limit && p.x < limit && p.y > -limit && p.y < limit && p.z > -limit &&
+		      p.z < limit))
+			return skp_fail(err, SKP_ERR_RANGE, 0,
+					"vertex %d lies outside +-32767 units (fixed-point range)", v);
+		load_vertex(s, v, p, n);
+		skp_status rc = load_influences(s, v, real ? w : NULL, bone_count, err);
+		if (rc)
+			return rc;
+	}
+	return SKP_OK;
+}

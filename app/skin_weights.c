@@ -1,0 +1,60 @@
+#include "skin_weights.h"
+
+#include <math.h>
+#include <string.h>
+
+int skin_weights_dominant(const skin_weights *w, int v)
+{
+	int best = 0;
+	for (int k = 1; k < w->count[v]; k++)
+		if (w->weight[v][k] > w->weight[v][best])
+			best = k;
+	return w->count[v] ? w->bone[v][best] : -1;
+}
+
+float skin_weights_of(const skin_weights *w, int v, int b)
+{
+	for (int k = 0; k < w->count[v]; k++)
+		if (w->bone[v][k] == b)
+			return w->weight[v][k];
+	return 0.0f;
+}
+
+/* Total variation between the weight vectors of two vertices: walk a's
+ * influences against b's, then b's that a lacks. */
+static double edge_diff(const skin_weights *w, int a, int b)
+{
+	double d = 0.0;
+	for (int k = 0; k < w->count[a]; k++)
+		d += fabs((double)w->weight[a][k] - skin_weights_of(w, b, w->bone[a][k]));
+	for (int k = 0; k < w->count[b]; k++)
+		if (skin_weights_of(w, a, w->bone[b][k]) == 0.0f)
+			d += w->weight[b][k];
+	return 0.5 * d;
+}
+
+void skin_weights_stats_compute(const skin_weights *w, int bone_count,
+				const uint32_t (*tri)[3], int tri_count,
+				skin_weights_stats *out)
+{
+	memset(out, 0, sizeof *out);
+	for (int v = 0; v < w->vert_count; v++) {
+		if (w->count[v] > out->max_influences)
+			out->max_influences = w->count[v];
+		for (int k = 0; k < w->count[v]; k++)
+			if (w->bone[v][k] < bone_count && w->weight[v][k] > 0.0f)
+				out->bone_verts[w->bone[v][k]]++;
+	}
+	double sum = 0.0;
+	for (int t = 0; t < tri_count; t++) {
+		for (int e = 0; e < 3; e++) {
+			uint32_t a = tri[t][e], b = tri[t][(e + 1) % 3];
+			if (a >= (uint32_t)w->vert_count || b >= (uint32_t)w->vert_count)
+				continue;
+			sum += edge_diff(w, (int)a, (int)b);
+			out->edge_count++;
+		}
+	}
+	if (out->edge_count)
+		out->edge_diff_mean = sum / (double)out->edge_count;
+}
