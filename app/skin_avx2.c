@@ -5,37 +5,11 @@
 
 #ifdef SKP_SIMD_AVX2
 
-#include <immintrin.h>
-#include <string.h>
+#include "skin_avx2.h"
 
 typedef struct v3x8 {
 	__m256 x, y, z;
 } v3x8;
-
-/* 8 xyz triples from SoA registers to 24 interleaved floats */
-static void store_interleaved(float *dst, v3x8 a, int valid)
-{
-	__m256 rxy = _mm256_shuffle_ps(a.x, a.y, _MM_SHUFFLE(2, 0, 2, 0));
-	__m256 ryz = _mm256_shuffle_ps(a.y, a.z, _MM_SHUFFLE(3, 1, 3, 1));
-	__m256 rzx = _mm256_shuffle_ps(a.z, a.x, _MM_SHUFFLE(3, 1, 2, 0));
-	__m256 r03 = _mm256_shuffle_ps(rxy, rzx, _MM_SHUFFLE(2, 0, 2, 0));
-	__m256 r14 = _mm256_shuffle_ps(ryz, rxy, _MM_SHUFFLE(3, 1, 2, 0));
-	__m256 r25 = _mm256_shuffle_ps(rzx, ryz, _MM_SHUFFLE(3, 1, 3, 1));
-	__m256 o0 = _mm256_permute2f128_ps(r03, r14, 0x20);
-	__m256 o1 = _mm256_permute2f128_ps(r25, r03, 0x30);
-	__m256 o2 = _mm256_permute2f128_ps(r14, r25, 0x31);
-	if (valid == SKIN_LANES) {
-		_mm256_storeu_ps(dst, o0);
-		_mm256_storeu_ps(dst + 8, o1);
-		_mm256_storeu_ps(dst + 16, o2);
-		return;
-	}
-	float tmp[24];
-	_mm256_storeu_ps(tmp, o0);
-	_mm256_storeu_ps(tmp + 8, o1);
-	_mm256_storeu_ps(tmp + 16, o2);
-	memcpy(dst, tmp, sizeof(float) * 3 * (size_t)valid);
-}
 
 static v3x8 load3(const float *x, const float *y, const float *z, int v)
 {
@@ -92,8 +66,8 @@ void skin_lbs_avx2(const skin_soa *in, const skin_bones *b, int first, int end, 
 		int valid = end - v < SKIN_LANES ? end - v : SKIN_LANES;
 		v3x8 p = apply_rows(m, load3(in->px, in->py, in->pz, v), 1);
 		v3x8 n = normalize8(apply_rows(m, load3(in->nx, in->ny, in->nz, v), 0));
-		store_interleaved(out->pos + 3 * v, p, valid);
-		store_interleaved(out->nrm + 3 * v, n, valid);
+		skin_store_xyz8(out->pos + 3 * v, p.x, p.y, p.z, valid);
+		skin_store_xyz8(out->nrm + 3 * v, n.x, n.y, n.z, valid);
 	}
 }
 
@@ -101,15 +75,14 @@ typedef struct dq8 {
 	__m256 rw, rx, ry, rz, dw, dx, dy, dz;
 } dq8;
 
-static dq8 gather_dq(const skin_bones *b, __m256i off)
+/* The 8-float dual quaternions of 8 vertices' bones */
+static dq8 gather_dq(const skin_bones *b, const uint16_t *bone, int v)
 {
-	const float *base = &b->dq8[0][0];
-	dq8 d = {
-		_mm256_i32gather_ps(base + 0, off, 4), _mm256_i32gather_ps(base + 1, off, 4),
-		_mm256_i32gather_ps(base + 2, off, 4), _mm256_i32gather_ps(base + 3, off, 4),
-		_mm256_i32gather_ps(base + 4, off, 4), _mm256_i32gather_ps(base + 5, off, 4),
-		_mm256_i32gather_ps(base + 6, off, 4), _mm256_i32gather_ps(base + 7, off, 4),
-	};
+	__m256 r[8];
+	for (int j = 0; j < 8; j++)
+		r[j] = _mm256_loadu_ps(b->dq8[bone[v + j]]);
+	skin_transpose8(r);
+	dq8 d = { r[0], r[1], r[2], r[3], r[4], r[5], r[6], r[7] };
 	return d;
 }
 
@@ -130,11 +103,11 @@ static void dq_accumulate(dq8 *acc, const dq8 *d, __m256 w)
 static dq8 dq_blend8(const skin_soa *in, const skin_bones *b, int v)
 {
 	const __m256 sign = _mm256_set1_ps(-0.0f);
-	dq8 pivot = gather_dq(b, bone_offsets(in->bone[0], v, 8));
+	dq8 pivot = gather_dq(b, in->bone[0], v);
 	dq8 acc = { 0 };
 	dq_accumulate(&acc, &pivot, _mm256_load_ps(in->weight[0] + v));
 	for (int k = 1; k < SKP_MAX_INFLUENCES; k++) {
-		dq8 d = gather_dq(b, bone_offsets(in->bone[k], v, 8));
+		dq8 d = gather_dq(b, in->bone[k], v);
 		__m256 dot = _mm256_mul_ps(d.rw, pivot.rw);
 		dot = _mm256_fmadd_ps(d.rx, pivot.rx, dot);
 		dot = _mm256_fmadd_ps(d.ry, pivot.ry, dot);
@@ -186,8 +159,8 @@ void skin_dqbs_avx2(const skin_soa *in, const skin_bones *b, int first, int end,
 		p = madd8(p, t, two);
 		v3x8 n = rotate8(rw, r, load3(in->nx, in->ny, in->nz, v));
 		int valid = end - v < SKIN_LANES ? end - v : SKIN_LANES;
-		store_interleaved(out->pos + 3 * v, p, valid);
-		store_interleaved(out->nrm + 3 * v, n, valid);
+		skin_store_xyz8(out->pos + 3 * v, p.x, p.y, p.z, valid);
+		skin_store_xyz8(out->nrm + 3 * v, n.x, n.y, n.z, valid);
 	}
 }
 

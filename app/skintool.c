@@ -12,6 +12,11 @@ typedef struct command {
 
 static const command commands[] = {
 	{ "fk", cmd_fk, "fk SKELETON.asf MOTION.amc [--frame N]    joint positions and rotations as CSV" },
+	{ "bench", cmd_bench, "bench [--verts N] [--threads T]    skinning speed against the memory-bandwidth bound" },
+	{ "bind", cmd_bind, "bind SKELETON.asf MESH.obj [--group G] [--fit] [--bind-pose P.amc[:F]] [--weights IN.csv] [--report] -o W.csv    skin weights as CSV (report on stderr)" },
+	{ "mannequin", cmd_mannequin, "mannequin SKELETON.asf -o BODY.obj [--detail N]    closed body mesh around the rest pose" },
+	{ "skin", cmd_skin, "skin SKELETON.asf MOTION.amc MESH.obj --frame N --algo lbs|dqbs|dqbs-fixed [--group G] [--fit] [--bind-pose P.amc[:F]] [--weights IN.csv] -o OUT.obj    the mesh deformed for frame N" },
+	{ "metrics", cmd_metrics, "metrics SKELETON.asf MOTION.amc MESH.obj [bind options] [--algo LIST] | metrics --scene twist|bend --angle DEG [--algo LIST]    volume and radius ratios per frame as CSV" },
 };
 
 static void usage(FILE *to)

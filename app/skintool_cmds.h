@@ -3,5 +3,10 @@
 #define SKINTOOL_CMDS_H
 
 int cmd_fk(int argc, char **argv);
+int cmd_bench(int argc, char **argv);
+int cmd_bind(int argc, char **argv);
+int cmd_mannequin(int argc, char **argv);
+int cmd_skin(int argc, char **argv);
+int cmd_metrics(int argc, char **argv);
 
 #endif

@@ -1,0 +1,218 @@
+#include "bind.h"
+
+#include <math.h>
+#include <string.h>
+
+const bind_params bind_default_params = {
+	.radius = 0.35f,
+	.radius_min = 0.05f,
+	.radius_max = 0.10f,
+	.radius_cap = 1.0f,
+	.blend = 0.20f,
+};
+
+static float clampf(float x, float lo, float hi)
+{
+	return x < lo ? lo : (x > hi ? hi : x);
+}
+
+/* Largest side of the bounding box of every joint of the pose. */
+static float pose_size(const skel *s, const skel_pose *pose)
+{
+	vec3 lo = pose->head[0], hi = pose->head[0];
+	for (int b = 0; b < s->count; b++) {
+		const vec3 pt[2] = { pose->head[b], pose->tip[b] };
+		for (int k = 0; k < 2; k++) {
+			lo = vec3_make(fminf(lo.x, pt[k].x), fminf(lo.y, pt[k].y), fminf(lo.z, pt[k].z));
+			hi = vec3_make(fmaxf(hi.x, pt[k].x), fmaxf(hi.y, pt[k].y), fmaxf(hi.z, pt[k].z));
+		}
+	}
+	return fmaxf(hi.x - lo.x, fmaxf(hi.y - lo.y, hi.z - lo.z));
+}
+
+/* Nearest ancestor that has a box, or -1 when only zero-length bones (the
+ * root) lie above: such bones all start at the root joint. */
+static int boxed_ancestor(const skel *s, const bind_rig *rig, int b)
+{
+	int a = s->bone[b].parent;
+	while (a > 0 && rig->seg[a].length <= 0.0f)
+		a = s->bone[a].parent;
+	return a > 0 ? a : -1;
+}
+
+/* A ramp is only needed where a neighbour takes over: count the boxed
+ * bones meeting at each joint (keyed by the bone ending there, -1 for the
+ * root joint). */
+static void find_ramps(bind_rig *rig, const skel *s)
+{
+	int anc[SKP_MAX_BONES];
+	uint8_t starting[SKP_MAX_BONES + 1];  /* [k + 1]: boxed bones starting at joint k */
+
+	memset(starting, 0, sizeof starting);
+	for (int b = 1; b < s->count; b++) {
+		anc[b] = boxed_ancestor(s, rig, b);
+		if (rig->seg[b].length > 0.0f && starting[anc[b] + 1] < 255)
+			starting[anc[b] + 1]++;
+	}
+	for (int b = 1; b < s->count; b++) {
+		bind_segment *g = &rig->seg[b];
+		if (g->length <= 0.0f)
+			continue;
+		int meeting = starting[anc[b] + 1] + (anc[b] >= 0);
+		g->ramp_head = meeting >= 2;
+		g->ramp_tip = starting[b + 1] >= 1;
+	}
+}
+
+void bind_prepare(bind_rig *rig, const skel *s, const skel_pose *pose,
+		  const bind_params *p)
+{
+	if (!p)
+		p = &bind_default_params;
+	memset(rig, 0, sizeof *rig);
+	rig->bone_count = s->count;
+	rig->size = pose_size(s, pose);
+	float min_len = 1e-6f * rig->size;
+	for (int b = 1; b < s->count; b++) {
+		bind_segment *g = &rig->seg[b];
+		vec3 axis = vec3_sub(pose->tip[b], pose->head[b]);
+		float len = vec3_length(axis);
+		g->head = pose->head[b];
+		if (!(len > min_len))
+			continue;
+		g->length = len;
+		g->dir = vec3_scale(axis, 1.0f / len);
+		g->radius = fminf(clampf(p->radius * len, p->radius_min * rig->size,
+					 p->radius_max * rig->size), p->radius_cap * len);
+		g->half = p->blend * len;
+		rig->boxed++;
+	}
+	find_ramps(rig, s);
+}
+
+/* Weight at distance x past a joint into the bone: 0.5 at the joint,
+ * linear to 1 at x = h and to 0 at x = -h. h 0 means a hard step. */
+static float ramp(float x, float h)
+{
+	if (h > 0.0f)
+		return 0.5f + x / (2.0f * h);
+	return x > 0.0f ? 1.0f : (x < 0.0f ? 0.0f : 0.5f);
+}
+
+float bind_segment_weight(const bind_segment *g, vec3 p, int *inside)
+{
+	if (inside)
+		*inside = 0;
+	if (g->length <= 0.0f)
+		return 0.0f;
+	vec3 q = vec3_sub(p, g->head);
+	float s = vec3_dot(q, g->dir);
+	if (s < -g->half || s > g->length + g->half)
+		return 0.0f;
+	vec3 perp = vec3_madd(q, g->dir, -s);
+	if (vec3_dot(perp, perp) > g->radius * g->radius)
+		return 0.0f;
+	if (inside)
+		*inside = 1;
+	float w = 1.0f;
+	if (g->ramp_head)
+		w = fminf(w, ramp(s, g->half));
+	if (g->ramp_tip)
+		w = fminf(w, ramp(g->length - s, g->half));
+	return clampf(w, 0.0f, 1.0f);
+}
+
+float bind_segment_distance(const bind_segment *g, vec3 p)
+{
+	vec3 q = vec3_sub(p, g->head);
+	float s = clampf(vec3_dot(q, g->dir), 0.0f, g->length);
+	return vec3_length(vec3_madd(q, g->dir, -s));
+}
+
+typedef struct top_influences {
+	int count;
+	uint16_t bone[SKP_MAX_INFLUENCES];
+	float weight[SKP_MAX_INFLUENCES];
+} top_influences;
+
+/* Keeps the SKP_MAX_INFLUENCES largest, sorted, largest first; on equal
+ * weights the earlier (lower) bone stays ahead. */
+static void top_insert(top_influences *t, int bone, float w)
+{
+	int k = t->count < SKP_MAX_INFLUENCES ? t->count++ : SKP_MAX_INFLUENCES;
+	if (k == SKP_MAX_INFLUENCES && !(w > t->weight[k - 1]))
+		return;
+	if (k == SKP_MAX_INFLUENCES)
+		k--;
+	while (k > 0 && w > t->weight[k - 1]) {
+		t->bone[k] = t->bone[k - 1];
+		t->weight[k] = t->weight[k - 1];
+		k--;
+	}
+	t->bone[k] = (uint16_t)bone;
+	t->weight[k] = w;
+}
+
+static int nearest_bone(const bind_rig *rig, vec3 p)
+{
+	int best = 0;
+	float best_d = INFINITY;
+	for (int b = 1; b < rig->bone_count; b++) {
+		if (rig->seg[b].length <= 0.0f)
+			continue;
+		float d = bind_segment_distance(&rig->seg[b], p);
+		if (d < best_d) {
+			best_d = d;
+			best = b;
+		}
+	}
+	return best;
+}
+
+/* Returns 1 when the vertex fell back to the nearest bone. */
+static int bind_vertex(const bind_rig *rig, vec3 p, skin_weights *out, int v)
+{
+	top_influences t = { 0 };
+	for (int b = 1; b < rig->bone_count; b++) {
+		float w = bind_segment_weight(&rig->seg[b], p, NULL);
+		if (w > 0.0f)
+			top_insert(&t, b, w);
+	}
+	float sum = 0.0f;
+	for (int k = 0; k < t.count; k++)
+		sum += t.weight[k];
+	int fallback = !(sum > 0.0f);
+	if (fallback) {
+		t.count = 1;
+		t.bone[0] = (uint16_t)nearest_bone(rig, p);
+		t.weight[0] = sum = 1.0f;
+	}
+	out->count[v] = (uint8_t)t.count;
+	for (int k = 0; k < t.count; k++) {
+		out->bone[v][k] = t.bone[k];
+		out->weight[v][k] = t.weight[k] / sum;
+	}
+	return fallback;
+}
+
+skp_status bind_weights(const bind_rig *rig, const vec3 *pos, int n,
+			skin_weights *out, bind_info *info, skp_error *err)
+{
+	if (n < 0 || n > SKP_MAX_VERTS)
+		return skp_fail(err, SKP_ERR_LIMIT, 0, "%d vertices: the board takes at most %d",
+				n, SKP_MAX_VERTS);
+	for (int v = 0; v < n; v++)
+		if (!isfinite(pos[v].x) || !isfinite(pos[v].y) || !isfinite(pos[v].z))
+			return skp_fail(err, SKP_ERR_RANGE, 0, "vertex %d has a non-finite position", v);
+	bind_info local;
+	if (!info)
+		info = &local;
+	memset(info, 0, sizeof *info);
+	out->vert_count = n;
+	for (int v = 0; v < n; v++) {
+		info->fallback += bind_vertex(rig, pos[v], out, v);
+		if (out->count[v] > info->max_influences)
+			info->max_influences = out->count[v];
+	}
+	return SKP_OK;
+}

@@ -1,0 +1,54 @@
+/* The binding options shared by the skintool commands that need a bound
+ * body (bind, skin, metrics, pack):
+ *   --group G               keep only the faces of OBJ group/object G
+ *   --fit                   scale and move the mesh onto the skeleton (bind_fit.h)
+ *   --bind-pose P.amc[:F]   bind in frame F of P (the number written in the
+ *                           file; default its first frame), not the ASF rest pose
+ *   --weights W.csv         read the weights instead of computing them (bind.h)
+ * and the one call that turns them into a skeleton, a mesh and weights. */
+#ifndef CLI_BIND_ARGS_H
+#define CLI_BIND_ARGS_H
+
+#include "bind.h"
+#include "bind_fit.h"
+#include "mesh.h"
+
+#define BIND_ARGS_USAGE "[--group G] [--fit] [--bind-pose P.amc[:F]] [--weights IN.csv]"
+
+typedef struct bind_args {
+	const char *group;          /* NULL: every face */
+	int fit;
+	const char *pose_path;      /* NULL: ASF rest pose */
+	long pose_frame;            /* -1: the file's first frame */
+	const char *weights_path;   /* NULL: automatic weights */
+	char pose_buf[1024];        /* pose_path without its :F */
+} bind_args;
+
+void bind_args_init(bind_args *a);
+
+/* When argv[*i] is one of the options above, takes it (and its value,
+ * advancing *i) and returns 1; returns 0 when it is not one of them, -1
+ * after reporting a missing or bad value. */
+int bind_args_parse(bind_args *a, int argc, char **argv, int *i);
+
+/* Everything bind_args_load produces: tens of MB, keep it static. */
+typedef struct bound_body {
+	skel skel;
+	skel_pose pose;             /* the bind pose */
+	long pose_frame;            /* frame bound in, -1 for the ASF rest pose */
+	mesh mesh;                  /* fitted when --fit */
+	int fitted;
+	bind_fit_result fit;
+	bind_rig rig;
+	skin_weights weights;
+	int automatic;              /* 1: computed (info, bind_ns valid), 0: --weights */
+	bind_info info;
+	unsigned long long bind_ns; /* time bind_prepare + bind_weights took */
+} bound_body;
+
+/* Loads skeleton asf, mesh obj (group), the bind pose, fits the mesh when
+ * asked, then computes the weights (default bind_params) or reads them.
+ * Returns 0, or -1 after reporting the error on stderr. */
+int bind_args_load(const bind_args *a, const char *asf, const char *obj, bound_body *body);
+
+#endif

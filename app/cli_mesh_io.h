@@ -1,0 +1,19 @@
+/* Mesh files for the front ends: OBJ in (through the core parser, errors
+ * reported as FILE:LINE: message) and OBJ out. */
+#ifndef CLI_MESH_IO_H
+#define CLI_MESH_IO_H
+
+#include "mesh.h"
+#include "obj.h"
+
+/* Loads an OBJ, keeping only the faces of group when it is not NULL.
+ * Returns the parser's work area (vertex mapping in ->source, counts), or
+ * NULL after reporting the error. The work area is static: the next call
+ * overwrites it. */
+const obj_work *tool_load_obj(const char *path, const char *group, mesh *out);
+
+/* Writes v (9 significant digits), vn and `f a//a b//b c//c` lines.
+ * Returns 0, or -1 after reporting the error. */
+int mesh_write_obj(const char *path, const mesh *m);
+
+#endif

@@ -1,0 +1,98 @@
+#include "cli_skin.h"
+
+#include <stdio.h>
+
+#include "cli_common.h"
+
+/* skin_soa_bytes(SKP_MAX_VERTS) and the alignment of its 24 arrays. */
+#define BLOCK_BYTES ((size_t)SKP_MAX_VERTS * (16 * 4 + 8 * 2) + 32 * SKIN_ALIGN)
+
+static _Alignas(SKIN_ALIGN) unsigned char block[BLOCK_BYTES];
+/* The fixed-point kernel's output before conversion. */
+static int32_t fpos[3 * SKP_MAX_VERTS], fnrm[3 * SKP_MAX_VERTS];
+
+int tool_skin_init(tool_skin *t, const skel *s, const skel_pose *bind, const mesh *m,
+		   const skin_weights *w, const char *what)
+{
+	skp_error err;
+	if (m->vert_count > SKP_MAX_VERTS || skin_soa_bytes(m->vert_count) > sizeof block) {
+		fprintf(stderr, "%s: %d vertices do not fit the skinning buffers\n", what,
+			m->vert_count);
+		return -1;
+	}
+	t->skel = s;
+	t->bind = bind;
+	skin_soa_attach(&t->soa, block, m->vert_count);
+	if (skin_soa_load(&t->soa, m, w, s->count, &err) != SKP_OK) {
+		tool_report(what, &err);
+		return -1;
+	}
+	tool_skin_pose(t, bind);
+	return 0;
+}
+
+void tool_skin_pose(tool_skin *t, const skel_pose *pose)
+{
+	if (pose != &t->pose)
+		t->pose = *pose;
+	skin_bones_compute(&t->bones, t->skel, t->bind, &t->pose);
+}
+
+void tool_skin_frame(tool_skin *t, const float *values)
+{
+	fk_pose(t->skel, values, &t->pose);
+	tool_skin_pose(t, &t->pose);
+}
+
+static void from_q16(const int32_t *in, float *out, int n)
+{
+	for (int i = 0; i < n; i++)
+		out[i] = (float)in[i] * (1.0f / 65536.0f);
+}
+
+void tool_skin_run(tool_skin *t, skin_algo algo, float *pos, float *nrm)
+{
+	int n = t->soa.count;
+	if (algo != SKIN_DQBS_FIXED) {
+		skin_out out = { pos, nrm, NULL, NULL };
+		skin_run(algo, &t->soa, &t->bones, 0, n, &out);
+		return;
+	}
+	skin_out out = { NULL, NULL, fpos, fnrm };
+	skin_run(algo, &t->soa, &t->bones, 0, n, &out);
+	from_q16(fpos, pos, 3 * n);
+	from_q16(fnrm, nrm, 3 * n);
+}
+
+static void no_frame(const char *path, long number, long first, long last)
+{
+	if (first < 0)
+		fprintf(stderr, "%s: no frames\n", path);
+	else
+		fprintf(stderr, "%s: no frame %ld (the file has frames %ld..%ld)\n", path, number,
+			first, last);
+}
+
+int tool_read_frame(const char *path, const skel *s, long number, amc_frame *f)
+{
+	static tool_motion m;
+	if (tool_motion_open(&m, path, s) < 0)
+		return -1;
+	int r;
+	long first = -1, last = -1;
+	while ((r = tool_motion_next(&m, f)) > 0) {
+		if (first < 0)
+			first = f->number;
+		last = f->number;
+		if (f->number == number)
+			break;
+	}
+	tool_motion_close(&m);
+	if (r < 0)
+		return -1;
+	if (r == 0) {
+		no_frame(path, number, first, last);
+		return -1;
+	}
+	return 0;
+}

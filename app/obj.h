@@ -1,0 +1,59 @@
+/* Wavefront OBJ import into a mesh: v, vn, vt (checked, not stored), f with
+ * any polygon (quads split along the shorter diagonal, larger polygons
+ * fanned), the v, v/vt, v/vt/vn and v//vn corner forms, negative (relative)
+ * indices, and an optional group filter on o/g names. s, usemtl, mtllib,
+ * l, p, comments and the other OBJ statements are ignored.
+ *
+ * Kept vertices are numbered in ascending file order. Without a group
+ * filter every `v` is kept, so mesh vertex i is the file's i-th `v`; with a
+ * filter only the vertices the kept faces use are, and work->source maps
+ * them back (weights files index the mesh order). */
+#ifndef OBJ_H
+#define OBJ_H
+
+#include <stdint.h>
+
+#include "mesh.h"
+#include "skp_error.h"
+#include "text_lines.h"
+
+/* Positions are stored before the faces tell which vertices are kept, so
+ * the file (not only the kept part) must fit these. */
+#define OBJ_MAX_FILE_VERTS   (2 * SKP_MAX_VERTS)  /* `v` lines in one file */
+#define OBJ_MAX_FILE_NORMALS (2 * SKP_MAX_VERTS)  /* `vn` lines in one file */
+/* A corner takes at least two bytes of a line ("1 "). */
+#define OBJ_MAX_CORNERS      (SKP_MAX_LINE / 2)
+
+typedef struct obj_options {
+	const char *group;  /* keep faces of the o/g of that name; NULL: all */
+	int max_verts;      /* 0: SKP_MAX_VERTS (lower values test the check) */
+	int max_tris;       /* 0: SKP_MAX_TRIS */
+} obj_options;
+
+typedef struct obj_corner {
+	uint32_t v;         /* 0-based file vertex */
+	int32_t vn;         /* 0-based file normal, -1 when absent */
+} obj_corner;
+
+/* Working memory of obj_parse (several MB: callers keep it static). After
+ * a successful parse, source and the counts describe the import. */
+typedef struct obj_work {
+	vec3 pos[OBJ_MAX_FILE_VERTS];
+	vec3 nsum[OBJ_MAX_FILE_VERTS];      /* sum of the kept corners' vn */
+	int32_t kept[OBJ_MAX_FILE_VERTS];   /* file vertex -> mesh vertex or -1 */
+	vec3 vn[OBJ_MAX_FILE_NORMALS];
+	obj_corner corner[OBJ_MAX_CORNERS];
+	char *tok[OBJ_MAX_CORNERS + 1];
+	uint32_t source[SKP_MAX_VERTS];     /* mesh vertex -> 0-based file `v` */
+	long file_verts, file_normals, file_texcoords;
+	long file_faces, kept_faces;
+	int normals_from_file;              /* 1: every kept corner had a vn */
+} obj_work;
+
+/* Parses the OBJ text from tl (initialised by the caller) into out.
+ * opt may be NULL (no filter, board limits). On error returns the status
+ * and err names the line. */
+skp_status obj_parse(mesh *out, obj_work *work, text_lines *tl,
+		     const obj_options *opt, skp_error *err);
+
+#endif

@@ -1,0 +1,285 @@
+/* skintool bind through the real command line: generated mannequins of
+ * three skeletons and the MakeHuman body in its A-pose give a complete,
+ * valid weights CSV; --weights round-trips; bad input fails cleanly. */
+#include <stdarg.h>
+#include <stddef.h>
+#include <setjmp.h>
+#include <stdint.h>
+#include <cmocka.h>
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include "test_paths.h"
+
+#define MAX_V 65536
+
+static char dir[] = "/tmp/skp_bind_XXXXXX";
+
+static int setup(void **state)
+{
+	(void)state;
+	return mkdtemp(dir) ? 0 : -1;
+}
+
+static int teardown(void **state)
+{
+	(void)state;
+	char cmd[256];
+	snprintf(cmd, sizeof cmd, "rm -rf '%s'", dir);
+	return system(cmd) == 0 ? 0 : -1;
+}
+
+static const char *tmp(const char *name)
+{
+	static char buf[4][512];
+	static int next;
+	char *out = buf[next++ % 4];
+	snprintf(out, sizeof buf[0], "%s/%s", dir, name);
+	return out;
+}
+
+/* Runs the shell command; returns the exit status (-1 if it did not exit). */
+static int run(const char *fmt, ...)
+{
+	char cmd[4096];
+	va_list ap;
+	va_start(ap, fmt);
+	vsnprintf(cmd, sizeof cmd, fmt, ap);
+	va_end(ap);
+	int st = system(cmd);
+	return WIFEXITED(st) ? WEXITSTATUS(st) : -1;
+}
+
+static int has_command(const char *name)
+{
+	char path[1024];
+	snprintf(path, sizeof path, "%s", tmp("help.txt"));
+	if (run("%s --help >%s 2>&1", test_tool_path("skintool"), path) != 0)
+		return 0;
+	size_t n;
+	char *text = test_read_file(path, &n);
+	char needle[64];
+	snprintf(needle, sizeof needle, "  %s ", name);
+	int found = text && strstr(text, needle);
+	free(text);
+	return found;
+}
+
+static long count_obj_verts(const char *path)
+{
+	FILE *f = fopen(path, "r");
+	assert_non_null(f);
+	char line[1024];
+	long n = 0;
+	while (fgets(line, sizeof line, f))
+		n += line[0] == 'v' && line[1] == ' ';
+	fclose(f);
+	return n;
+}
+
+typedef struct weights_file {
+	long verts;                 /* highest vertex + 1 */
+	int rows[MAX_V];
+	double sum[MAX_V];
+	double w[MAX_V][4];
+} weights_file;
+
+static weights_file wf, wf2;
+
+/* Parses and checks the CSV contract: header, non-negative weights, at
+ * most 4 rows per vertex, each vertex's weights summing to 1 within 1e-4,
+ * every vertex 0..verts-1 present. */
+static void check_csv(const char *path, long verts, weights_file *out)
+{
+	FILE *f = fopen(path, "r");
+	assert_non_null(f);
+	memset(out, 0, sizeof *out);
+	char line[512], bone[128];
+	assert_non_null(fgets(line, sizeof line, f));
+	assert_string_equal(line, "vertex,bone,weight\n");
+	long ln = 1;
+	while (fgets(line, sizeof line, f)) {
+		long v;
+		double w;
+		ln++;
+		if (sscanf(line, "%ld,%127[^,],%lf", &v, bone, &w) != 3)
+			fail_msg("%s:%ld: bad row '%s'", path, ln, line);
+		if (v < 0 || v >= verts || w < 0.0 || !isfinite(w))
+			fail_msg("%s:%ld: bad vertex or weight '%s'", path, ln, line);
+		if (out->rows[v] >= 4)
+			fail_msg("%s:%ld: vertex %ld has more than 4 rows", path, ln, v);
+		out->w[v][out->rows[v]++] = w;
+		out->sum[v] += w;
+		if (v + 1 > out->verts)
+			out->verts = v + 1;
+	}
+	fclose(f);
+	assert_int_equal(out->verts, verts);
+	for (long v = 0; v < verts; v++) {
+		if (out->rows[v] == 0)
+			fail_msg("%s: vertex %ld has no weights", path, v);
+		if (fabs(out->sum[v] - 1.0) > 1e-4)
+			fail_msg("%s: vertex %ld weights sum to %g", path, v, out->sum[v]);
+	}
+}
+
+static void bind_mannequin(const char *asf_rel)
+{
+	const char *asf = test_data_path(asf_rel);
+	if (!asf)
+		skip();
+	if (!has_command("mannequin")) {
+		print_message("skintool has no mannequin command yet\n");
+		skip();
+	}
+	const char *obj = tmp("body.obj"), *csv = tmp("body.csv");
+	assert_int_equal(run("%s mannequin %s -o %s >/dev/null 2>&1", test_tool_path("skintool"), asf, obj), 0);
+	long verts = count_obj_verts(obj);
+	assert_true(verts > 100);
+	assert_int_equal(run("%s bind %s %s -o %s", test_tool_path("skintool"), asf, obj, csv), 0);
+	check_csv(csv, verts, &wf);
+	print_message("%s: %ld vertices bound\n", asf_rel, verts);
+}
+
+static void test_mannequin_cmu(void **state)
+{
+	(void)state;
+	bind_mannequin("mocap/cmu/02.asf");
+}
+
+static void test_mannequin_hdm05(void **state)
+{
+	(void)state;
+	bind_mannequin("mocap/hdm05/HDM_dg.asf");
+}
+
+static void test_mannequin_endorphin(void **state)
+{
+	(void)state;
+	bind_mannequin("mocap/endorphin/skeleton.asf");
+}
+
+static int bind_makehuman(const char *extra, const char *csv, const char *report)
+{
+	return run("%s bind %s %s --group body --fit --bind-pose tests/data/makehuman_apose.amc:1 %s "
+		   "--report -o %s 2>%s", test_tool_path("skintool"), test_data_path("mocap/cmu/02.asf"),
+		   test_data_path("mesh/makehuman/base.obj"), extra, csv, report);
+}
+
+static void test_makehuman_apose(void **state)
+{
+	(void)state;
+	if (!test_data_path("mesh/makehuman/base.obj"))
+		skip();
+	const char *csv = tmp("mh.csv"), *rep = tmp("mh.txt");
+	assert_int_equal(bind_makehuman("", csv, rep), 0);
+	check_csv(csv, 13380, &wf);
+	size_t n;
+	char *text = test_read_file(rep, &n);
+	assert_non_null(text);
+	const char *want[] = { "vertices: 13380", "bind pose: tests/data/makehuman_apose.amc frame 1",
+			       "fit: scale", "weights: automatic", "fallback to nearest bone:",
+			       "largest influence count: 4", "smoothness", "bone,vertices\nroot,0\n",
+			       "lhumerus," };
+	for (size_t i = 0; i < sizeof want / sizeof want[0]; i++)
+		if (!strstr(text, want[i]))
+			fail_msg("report lacks '%s':\n%s", want[i], text);
+	const char *ms = strstr(text, "weights: automatic, ");
+	print_message("%.*s\n", (int)(strchr(ms, '\n') - ms), ms);
+	free(text);
+
+	/* --weights reads them back, validated, and writes the same weights */
+	const char *csv2 = tmp("mh2.csv");
+	char extra[600];
+	snprintf(extra, sizeof extra, "--weights %s", csv);
+	assert_int_equal(bind_makehuman(extra, csv2, rep), 0);
+	check_csv(csv2, 13380, &wf2);
+	for (long v = 0; v < 13380; v++) {
+		assert_int_equal(wf.rows[v], wf2.rows[v]);
+		for (int k = 0; k < wf.rows[v]; k++)
+			assert_true(fabs(wf.w[v][k] - wf2.w[v][k]) < 1e-6);
+	}
+}
+
+typedef struct err_case {
+	const char *args;     /* after "skintool bind" */
+	const char *csv;      /* written to bad.csv first, or NULL */
+	const char *needle;   /* in stderr */
+} err_case;
+
+static const err_case err_cases[] = {
+	{ "tests/data/tiny.asf %s/tri.obj -o %s/out.csv --weights %s/bad.csv",
+	  "vertex,bone,weight\n0,root,1\n1,elbow,1\n2,root,1\n", "bad.csv:3: unknown bone 'elbow'" },
+	{ "tests/data/tiny.asf %s/tri.obj -o %s/out.csv --weights %s/bad.csv",
+	  "vertex,bone,weight\n0,root,1\n1,root,1\n", "bad.csv: vertex 2 has no weights" },
+	{ "tests/data/tiny.asf %s/tri.obj -o %s/out.csv --weights %s/bad.csv",
+	  "vertex,bone,weight\n0,root,1\n1,root,1\n2,root,-1\n", "bad.csv:4: negative weight" },
+	{ "tests/data/tiny.asf %s/tri.obj --bind-pose tests/data/tiny.amc:9 -o %s/out.csv%s", NULL,
+	  "tests/data/tiny.amc: no frame 9" },
+	{ "tests/data/tiny.asf %s/tri.obj --group nothere -o %s/out.csv%s", NULL, "tri.obj" },
+	{ "tests/data/tiny.asf %s/tri.obj%s%s", NULL, "usage: skintool bind" },
+	{ "tests/data/tiny.asf %s/tri.obj --frobnicate -o %s/out.csv%s", NULL, "unknown option '--frobnicate'" },
+};
+
+static void test_bad_input_fails_cleanly(void **state)
+{
+	(void)state;
+	FILE *f = fopen(tmp("tri.obj"), "w");
+	assert_non_null(f);
+	fprintf(f, "g tri\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+	fclose(f);
+	for (size_t i = 0; i < sizeof err_cases / sizeof err_cases[0]; i++) {
+		const err_case *c = &err_cases[i];
+		if (c->csv) {
+			f = fopen(tmp("bad.csv"), "w");
+			assert_non_null(f);
+			fputs(c->csv, f);
+			fclose(f);
+		}
+		char args[2048];
+		snprintf(args, sizeof args, c->args, dir, dir, c->csv ? dir : "");
+		int st = run("%s bind %s >/dev/null 2>%s", test_tool_path("skintool"), args, tmp("err.txt"));
+		size_t n;
+		char *err = test_read_file(tmp("err.txt"), &n);
+		assert_non_null(err);
+		if (st != 1 || !strstr(err, c->needle))
+			fail_msg("case %zu: exit %d, stderr '%s'", i, st, err);
+		free(err);
+	}
+}
+
+/* -o - writes the CSV to stdout; the report stays on stderr. */
+static void test_stdout_and_report(void **state)
+{
+	(void)state;
+	FILE *f = fopen(tmp("tri.obj"), "w");
+	assert_non_null(f);
+	fprintf(f, "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+	fclose(f);
+	assert_int_equal(run("%s bind tests/data/tiny.asf %s --report -o - >%s 2>%s", test_tool_path("skintool"),
+			     tmp("tri.obj"), tmp("out.csv"), tmp("rep.txt")), 0);
+	check_csv(tmp("out.csv"), 3, &wf);
+	size_t n;
+	char *rep = test_read_file(tmp("rep.txt"), &n);
+	assert_non_null(rep);
+	assert_non_null(strstr(rep, "largest influence count"));
+	free(rep);
+}
+
+int main(void)
+{
+	const struct CMUnitTest tests[] = {
+		cmocka_unit_test(test_mannequin_cmu),
+		cmocka_unit_test(test_mannequin_hdm05),
+		cmocka_unit_test(test_mannequin_endorphin),
+		cmocka_unit_test(test_makehuman_apose),
+		cmocka_unit_test(test_bad_input_fails_cleanly),
+		cmocka_unit_test(test_stdout_and_report),
+	};
+	return cmocka_run_group_tests(tests, setup, teardown);
+}

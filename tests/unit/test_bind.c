@@ -1,0 +1,500 @@
+/* Automatic weights (bind.h) on hand-made geometry, the weights CSV reader,
+ * fitting, and the MakeHuman body bound in its A-pose to the CMU skeleton. */
+#include <stdarg.h>
+#include <stddef.h>
+#include <setjmp.h>
+#include <stdint.h>
+#include <cmocka.h>
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+
+#include "bind.h"
+#include "bind_fit.h"
+#include "obj.h"
+#include "skin_weights.h"
+#include "test_parse.h"
+#include "test_paths.h"
+#include "weights_csv.h"
+
+static skel s;
+static skel_pose pose;
+static bind_rig rig;
+static skin_weights sw;
+
+/* Exact box and ramp sizes: R = 0.2 L, h = 0.2 L. */
+static const bind_params sharp = {
+	.radius = 0.2f, .radius_min = 0.0f, .radius_max = 1.0f, .radius_cap = 1.0f, .blend = 0.2f,
+};
+
+static int add_bone(const char *name, int parent, vec3 head, vec3 tip)
+{
+	int b = s.count++;
+	memset(&s.bone[b], 0, sizeof s.bone[b]);
+	snprintf(s.bone[b].name, sizeof s.bone[b].name, "%s", name);
+	s.bone[b].parent = parent;
+	s.bone[b].length = vec3_length(vec3_sub(tip, head));
+	pose.head[b] = head;
+	pose.tip[b] = tip;
+	return b;
+}
+
+static void start_skel(void)
+{
+	memset(&s, 0, sizeof s);
+	memset(&pose, 0, sizeof pose);
+	add_bone("root", -1, vec3_make(0, 0, 0), vec3_make(0, 0, 0));
+}
+
+/* root -> a (0,0,0)-(0,10,0) -> b (0,10,0)-(0,20,0): collinear, L = 10. */
+static void two_bones(void)
+{
+	start_skel();
+	add_bone("a", 0, vec3_make(0, 0, 0), vec3_make(0, 10, 0));
+	add_bone("b", 1, vec3_make(0, 10, 0), vec3_make(0, 20, 0));
+	bind_prepare(&rig, &s, &pose, &sharp);
+}
+
+static void bind_points(const vec3 *p, int n, bind_info *info)
+{
+	skp_error err;
+	assert_int_equal(bind_weights(&rig, p, n, &sw, info, &err), SKP_OK);
+	assert_int_equal(sw.vert_count, n);
+}
+
+static void test_segments_and_ramps(void **state)
+{
+	(void)state;
+	two_bones();
+	assert_int_equal(rig.boxed, 2);
+	assert_float_equal(rig.size, 20.0f, 1e-6f);
+	assert_float_equal(rig.seg[1].radius, 2.0f, 1e-6f);
+	assert_float_equal(rig.seg[1].half, 2.0f, 1e-6f);
+	/* a's head meets nobody (the root has no box), b's tip is a free end */
+	assert_int_equal(rig.seg[1].ramp_head, 0);
+	assert_int_equal(rig.seg[1].ramp_tip, 1);
+	assert_int_equal(rig.seg[2].ramp_head, 1);
+	assert_int_equal(rig.seg[2].ramp_tip, 0);
+	assert_float_equal(rig.seg[0].length, 0.0f, 0.0f);
+}
+
+static void test_mid_bone_gets_one(void **state)
+{
+	(void)state;
+	two_bones();
+	vec3 p[2] = { vec3_make(0, 5, 0), vec3_make(1.5f, 15, -1) };
+	bind_info info;
+	bind_points(p, 2, &info);
+	assert_int_equal(sw.count[0], 1);
+	assert_int_equal(sw.bone[0][0], 1);
+	assert_float_equal(sw.weight[0][0], 1.0f, 1e-6f);
+	assert_int_equal(sw.count[1], 1);
+	assert_int_equal(sw.bone[1][0], 2);
+	assert_float_equal(sw.weight[1][0], 1.0f, 1e-6f);
+	assert_int_equal(info.fallback, 0);
+}
+
+static void test_joint_is_half_half(void **state)
+{
+	(void)state;
+	two_bones();
+	vec3 p[2] = { vec3_make(0, 10, 0), vec3_make(1, 10, 1) };
+	bind_points(p, 2, NULL);
+	for (int v = 0; v < 2; v++) {
+		assert_int_equal(sw.count[v], 2);
+		assert_float_equal(skin_weights_of(&sw, v, 1), 0.5f, 1e-6f);
+		assert_float_equal(skin_weights_of(&sw, v, 2), 0.5f, 1e-6f);
+	}
+}
+
+/* Past the joint by x (0 < x < h): a = 0.5 - x / 2h, b = 0.5 + x / 2h. */
+static void test_ramp_past_joint_is_linear(void **state)
+{
+	(void)state;
+	two_bones();
+	const float x[2] = { 0.5f, 1.5f };
+	vec3 p[2] = { vec3_make(0.3f, 10 + x[0], 0), vec3_make(0, 10 + x[1], -0.7f) };
+	bind_points(p, 2, NULL);
+	for (int v = 0; v < 2; v++) {
+		float wa = 0.5f - x[v] / (2 * 2.0f), wb = 0.5f + x[v] / (2 * 2.0f);
+		assert_float_equal(bind_segment_weight(&rig.seg[1], p[v], NULL), wa, 1e-6f);
+		assert_float_equal(bind_segment_weight(&rig.seg[2], p[v], NULL), wb, 1e-6f);
+		assert_float_equal(skin_weights_of(&sw, v, 1), wa, 1e-6f);
+		assert_float_equal(skin_weights_of(&sw, v, 2), wb, 1e-6f);
+		assert_int_equal(skin_weights_dominant(&sw, v), 2);
+	}
+	/* at h past the joint the parent's share is gone */
+	vec3 far = vec3_make(0, 12.5f, 0);
+	assert_float_equal(bind_segment_weight(&rig.seg[1], far, NULL), 0.0f, 0.0f);
+}
+
+static void test_outside_every_box_goes_to_nearest(void **state)
+{
+	(void)state;
+	two_bones();
+	int inside;
+	vec3 p[3] = { vec3_make(5, 3, 0), vec3_make(0, 30, 0), vec3_make(-4, 11, 0) };
+	assert_float_equal(bind_segment_weight(&rig.seg[1], p[0], &inside), 0.0f, 0.0f);
+	assert_int_equal(inside, 0);
+	bind_info info;
+	bind_points(p, 3, &info);
+	assert_int_equal(info.fallback, 3);
+	const int want[3] = { 1, 2, 2 };
+	for (int v = 0; v < 3; v++) {
+		assert_int_equal(sw.count[v], 1);
+		assert_int_equal(sw.bone[v][0], want[v]);
+		assert_float_equal(sw.weight[v][0], 1.0f, 0.0f);
+	}
+}
+
+/* Six bones fan out of one joint, with a zero-length bone in one chain:
+ * every vertex has at most 4 weights, none negative, summing to 1. */
+static void test_invariants_on_a_fan(void **state)
+{
+	(void)state;
+	start_skel();
+	int hub = add_bone("spine", 0, vec3_make(0, 0, 0), vec3_make(0, 4, 0));
+	int dum = add_bone("dum", hub, vec3_make(0, 4, 0), vec3_make(0, 4, 0));
+	for (int k = 0; k < 6; k++) {
+		float a = (float)k * 1.0471976f;
+		char name[8];
+		snprintf(name, sizeof name, "arm%d", k);
+		add_bone(name, k == 0 ? dum : hub, vec3_make(0, 4, 0),
+			 vec3_make(3 * cosf(a), 4 + 0.5f * (float)k, 3 * sinf(a)));
+	}
+	bind_prepare(&rig, &s, &pose, NULL);
+	assert_float_equal(rig.seg[dum].length, 0.0f, 0.0f);
+	assert_int_equal(rig.seg[hub + 2].ramp_head, 1);   /* through the zero-length bone */
+	assert_int_equal(rig.seg[hub].ramp_tip, 1);
+
+	static vec3 p[4000];
+	srand(7);
+	for (int v = 0; v < 4000; v++)
+		p[v] = vec3_make(8.0f * rand() / RAND_MAX - 4, 10.0f * rand() / RAND_MAX - 2,
+				 8.0f * rand() / RAND_MAX - 4);
+	p[0] = vec3_make(0, 4, 0);
+	bind_info info;
+	bind_points(p, 4000, &info);
+	assert_int_equal(sw.count[0], SKP_MAX_INFLUENCES);
+	assert_int_equal(info.max_influences, SKP_MAX_INFLUENCES);
+	for (int v = 0; v < 4000; v++) {
+		double sum = 0;
+		assert_true(sw.count[v] >= 1 && sw.count[v] <= SKP_MAX_INFLUENCES);
+		for (int k = 0; k < sw.count[v]; k++) {
+			assert_true(sw.weight[v][k] >= 0.0f);
+			assert_true(sw.bone[v][k] != 0 && sw.bone[v][k] != dum);
+			if (k > 0)
+				assert_true(sw.weight[v][k] <= sw.weight[v][k - 1]);
+			sum += sw.weight[v][k];
+		}
+		assert_true(fabs(sum - 1.0) <= 1e-6);
+	}
+}
+
+static void test_all_zero_length_goes_to_root(void **state)
+{
+	(void)state;
+	start_skel();
+	add_bone("z", 0, vec3_make(0, 0, 0), vec3_make(0, 0, 0));
+	bind_prepare(&rig, &s, &pose, NULL);
+	vec3 p[1] = { vec3_make(1, 2, 3) };
+	bind_points(p, 1, NULL);
+	assert_int_equal(sw.count[0], 1);
+	assert_int_equal(sw.bone[0][0], 0);
+	assert_float_equal(sw.weight[0][0], 1.0f, 0.0f);
+}
+
+static void test_bad_positions_rejected(void **state)
+{
+	(void)state;
+	two_bones();
+	skp_error err;
+	vec3 p[2] = { vec3_make(0, 1, 0), vec3_make(NAN, 0, 0) };
+	assert_int_equal(bind_weights(&rig, p, 2, &sw, NULL, &err), SKP_ERR_RANGE);
+	assert_non_null(strstr(err.msg, "vertex 1"));
+	assert_int_equal(bind_weights(&rig, p, SKP_MAX_VERTS + 1, &sw, NULL, &err), SKP_ERR_LIMIT);
+}
+
+static void test_fit_scales_and_centres(void **state)
+{
+	(void)state;
+	two_bones();
+	/* a "body" 4 units tall, its pelvis slice centred at (10, -3), hands
+	 * reaching forward at the same height */
+	static vec3 p[6];
+	p[0] = vec3_make(10, 1, -3);
+	p[1] = vec3_make(10, 5, -3);
+	p[2] = vec3_make(9.8f, 1.1f, -4);
+	p[3] = vec3_make(10.2f, 1.1f, -2);
+	p[4] = vec3_make(30, 1.05f, 9);
+	p[5] = vec3_make(-10, 1.05f, 9);
+	bind_fit_result r;
+	skp_error err;
+	assert_int_equal(bind_fit(p, 6, &s, &pose, &r, &err), SKP_OK);
+	assert_float_equal(r.scale, 5.0f, 1e-5f);
+	assert_float_equal(r.skel_height, 20.0f, 1e-5f);
+	assert_float_equal(p[0].y, 0.0f, 1e-4f);
+	assert_float_equal(p[1].y, 20.0f, 1e-4f);
+	/* the root (0,0,0) is at the bottom: the torso there is p0, p2, p3 */
+	assert_float_equal(p[0].x, 0.0f, 1e-4f);
+	assert_float_equal(p[0].z, 0.0f, 1e-4f);
+	vec3 flat[2] = { vec3_make(0, 1, 0), vec3_make(1, 1, 0) };
+	assert_int_equal(bind_fit(flat, 2, &s, &pose, &r, &err), SKP_ERR_RANGE);
+}
+
+/* ---- weights CSV ---- */
+
+static const char *csv_asf =
+	":root\n order TX TY TZ RX RY RZ\n:bonedata\n"
+	" begin\n name a\n direction 0 1 0\n length 1\n axis 0 0 0 XYZ\n dof rx\n end\n"
+	" begin\n name b\n direction 0 1 0\n length 1\n axis 0 0 0 XYZ\n dof rx\n end\n"
+	" begin\n name c\n direction 1 0 0\n length 1\n axis 0 0 0 XYZ\n end\n"
+	" begin\n name d\n direction -1 0 0\n length 1\n axis 0 0 0 XYZ\n end\n"
+	":hierarchy\n begin\n root a\n a b c d\n end\n";
+
+static skp_status read_csv(const char *text, int verts, skp_error *err)
+{
+	static text_lines tl;
+	skp_mem_source src;
+	skp_error e;
+	assert_int_equal(test_parse_asf(csv_asf, strlen(csv_asf), &s, &e), SKP_OK);
+	text_lines_init(&tl, skp_mem_reader(&src, text, strlen(text)));
+	return weights_csv_read(&tl, &s, verts, &sw, err);
+}
+
+static void test_csv_good(void **state)
+{
+	(void)state;
+	skp_error err;
+	const char *text = "vertex,bone,weight\r\n"
+			   "# a comment\r\n"
+			   "0,a,0.25\r\n1,root,1\r\n0,b,7.5e-1\r\n\r\n"
+			   "2, c , 0.3\r\n2,d,0.2\r\n2,a,0.2\r\n2,b,0.3004\r\n";
+	assert_int_equal(read_csv(text, 3, &err), SKP_OK);
+	assert_int_equal(sw.vert_count, 3);
+	assert_int_equal(sw.count[0], 2);
+	assert_float_equal(skin_weights_of(&sw, 0, skel_find(&s, "b")), 0.75f, 1e-7f);
+	assert_int_equal(sw.bone[1][0], 0);
+	assert_int_equal(sw.count[2], 4);
+	double sum = 0;
+	for (int k = 0; k < 4; k++)
+		sum += sw.weight[2][k];
+	assert_true(fabs(sum - 1.0) < 1e-6);   /* re-normalised from 1.0004 */
+	assert_float_equal(skin_weights_of(&sw, 2, skel_find(&s, "d")), 0.2f / 1.0004f, 1e-6f);
+}
+
+typedef struct csv_case {
+	const char *text;
+	int verts;
+	skp_status code;
+	long line;
+	const char *needle;
+} csv_case;
+
+static const csv_case csv_cases[] = {
+	{ "vertex,bone,weight\n0,a,1\n1,elbow,1\n", 2, SKP_ERR_SYNTAX, 3, "unknown bone 'elbow'" },
+	{ "vertex,bone,weight\n0,a,1\n1,a,0.5x\n", 2, SKP_ERR_SYNTAX, 3, "bad weight '0.5x'" },
+	{ "vertex,bone,weight\n0,a,nan\n", 1, SKP_ERR_SYNTAX, 2, "bad weight" },
+	{ "vertex,bone,weight\n0,a,inf\n", 1, SKP_ERR_SYNTAX, 2, "bad weight" },
+	{ "vertex,bone,weight\nx,a,1\n", 1, SKP_ERR_SYNTAX, 2, "bad vertex index 'x'" },
+	{ "vertex,bone,weight\n0,a,1\n\n2,a,1\n", 2, SKP_ERR_RANGE, 4, "vertex 2 out of range" },
+	{ "vertex,bone,weight\n-1,a,1\n", 2, SKP_ERR_RANGE, 2, "vertex -1 out of range" },
+	{ "vertex,bone,weight\n0,a,0.2\n0,b,0.2\n0,c,0.2\n0,d,0.2\n0,root,0.2\n", 1, SKP_ERR_LIMIT, 6,
+	  "more than 4 rows" },
+	{ "vertex,bone,weight\n0,a,1.5\n0,b,-0.5\n", 1, SKP_ERR_RANGE, 3, "negative weight -0.5" },
+	{ "vertex,bone,weight\n0,a,0.5\n0,a,0.5\n", 1, SKP_ERR_SYNTAX, 3, "bone 'a' twice" },
+	{ "vertex,bone,weight\n0,a\n", 1, SKP_ERR_SYNTAX, 2, "found 2 field(s)" },
+	{ "vertex,bone,weight\n0,a,1\n2,a,1\n", 3, SKP_ERR_RANGE, 0, "vertex 1 has no weights" },
+	{ "vertex,bone,weight\n0,a,0.5\n0,b,0.49\n", 1, SKP_ERR_RANGE, 0, "vertex 0: weights sum to 0.99" },
+	{ "vertex,bone,weight\n0,a,0\n", 1, SKP_ERR_RANGE, 0, "weights sum to 0" },
+	{ "v,b,w\n0,a,1\n", 1, SKP_ERR_SYNTAX, 1, "header" },
+	{ "", 1, SKP_ERR_SYNTAX, 0, "empty file" },
+};
+
+static void test_csv_errors(void **state)
+{
+	(void)state;
+	for (size_t i = 0; i < sizeof csv_cases / sizeof csv_cases[0]; i++) {
+		const csv_case *c = &csv_cases[i];
+		skp_error err;
+		memset(&err, 0, sizeof err);
+		skp_status rc = read_csv(c->text, c->verts, &err);
+		if (rc != c->code || err.line != c->line || !strstr(err.msg, c->needle))
+			fail_msg("case %zu: status %d line %ld '%s'", i, rc, err.line, err.msg);
+	}
+}
+
+/* ---- the MakeHuman body on the CMU skeleton ---- */
+
+static mesh body;
+static obj_work work;
+
+static int load_makehuman(void)
+{
+	const char *asf = test_data_path("mocap/cmu/02.asf");
+	const char *obj = test_data_path("mesh/makehuman/base.obj");
+	if (!asf || !obj)
+		return 0;
+	skp_error err;
+	assert_int_equal(test_parse_asf_file(asf, &s, &err), SKP_OK);
+
+	/* bind pose: the first frame of tests/data/makehuman_apose.amc */
+	size_t n;
+	char *amc = test_read_file("tests/data/makehuman_apose.amc", &n);
+	assert_non_null(amc);
+	static amc_frame first;
+	static text_lines tl;
+	static amc_stream as;
+	skp_mem_source src;
+	text_lines_init(&tl, skp_mem_reader(&src, amc, n));
+	amc_open(&as, &s, &tl);
+	assert_int_equal(amc_next(&as, &first, &err), 1);
+	free(amc);
+	fk_pose(&s, first.value, &pose);
+
+	char *text = test_read_file(obj, &n);
+	assert_non_null(text);
+	obj_options opt = { .group = "body" };
+	text_lines_init(&tl, skp_mem_reader(&src, text, n));
+	assert_int_equal(obj_parse(&body, &work, &tl, &opt, &err), SKP_OK);
+	free(text);
+	assert_int_equal(body.vert_count, 13380);
+	assert_int_equal(bind_fit(body.pos, body.vert_count, &s, &pose, NULL, &err), SKP_OK);
+	return 1;
+}
+
+static int in_group(int bone, const char *const *names)
+{
+	for (; *names; names++)
+		if (strcmp(s.bone[bone].name, *names) == 0)
+			return 1;
+	return 0;
+}
+
+/* Share of the vertices selected by pick whose largest weight is on one of
+ * the named bones. */
+static double dominated(int (*pick)(vec3 p, void *ctx), void *ctx, const char *const *names,
+			int *count)
+{
+	int n = 0, hit = 0;
+	for (int v = 0; v < body.vert_count; v++) {
+		if (!pick(body.pos[v], ctx))
+			continue;
+		n++;
+		hit += in_group(skin_weights_dominant(&sw, v), names);
+	}
+	*count = n;
+	return n ? (double)hit / n : 0.0;
+}
+
+typedef struct band {
+	float lo, hi;           /* fitted Y */
+	float x_min, x_max;     /* |x| */
+} band;
+
+static int pick_band(vec3 p, void *ctx)
+{
+	const band *b = ctx;
+	return p.y >= b->lo && p.y <= b->hi && fabsf(p.x) >= b->x_min && fabsf(p.x) <= b->x_max;
+}
+
+static void test_makehuman_apose_regions(void **state)
+{
+	(void)state;
+	if (!load_makehuman())
+		skip();
+	bind_info info;
+	bind_prepare(&rig, &s, &pose, NULL);
+	bind_points(body.pos, body.vert_count, &info);
+
+	float lo, h = bind_fit_skel_height(&s, &pose, &lo);
+	float x_max = 0;
+	for (int v = 0; v < body.vert_count; v++)
+		x_max = fmaxf(x_max, fabsf(body.pos[v].x));
+	/* hands: the most lateral points of the arms (the A-pose hangs the
+	 * hands lowest and furthest out) */
+	static const char *const hand[] = { "lwrist", "lhand", "lfingers", "lthumb",
+					    "rwrist", "rhand", "rfingers", "rthumb", NULL };
+	static const char *const leg[] = { "lfemur", "ltibia", "rfemur", "rtibia", NULL };
+	static const char *const head[] = { "head", "upperneck", "lowerneck", NULL };
+	static const char *const arm[] = { "lhumerus", "lradius", "rhumerus", "rradius", NULL };
+	band hands = { lo, lo + h, 0.88f * x_max, x_max };
+	band legs = { lo + 0.08f * h, lo + 0.42f * h, 0.0f, x_max };
+	band heads = { lo + 0.88f * h, lo + h, 0.0f, x_max };
+	band arms = { lo + 0.68f * h, lo + 0.78f * h, 0.45f * x_max, 0.7f * x_max };
+	int n;
+	double share = dominated(pick_band, &hands, hand, &n);
+	print_message("hands: %d vertices, %.1f%% on wrist/hand/fingers/thumb\n", n, 100 * share);
+	assert_true(n > 200 && share > 0.95);
+	share = dominated(pick_band, &legs, leg, &n);
+	print_message("legs: %d vertices, %.1f%% on femur/tibia\n", n, 100 * share);
+	assert_true(n > 500 && share > 0.95);
+	share = dominated(pick_band, &heads, head, &n);
+	print_message("head: %d vertices, %.1f%% on head/neck\n", n, 100 * share);
+	assert_true(n > 500 && share > 0.99);
+	share = dominated(pick_band, &arms, arm, &n);
+	print_message("upper arms: %d vertices, %.1f%% on humerus/radius\n", n, 100 * share);
+	assert_true(n > 50 && share > 0.9);
+
+	static skin_weights_stats st;
+	skin_weights_stats_compute(&sw, s.count, (const uint32_t (*)[3])body.tri, body.tri_count, &st);
+	print_message("fallback %d, smoothness %.4f over %ld edges\n", info.fallback,
+		      st.edge_diff_mean, st.edge_count);
+	assert_true(st.edge_diff_mean < 0.1);
+	assert_int_equal(st.bone_verts[0], 0);
+}
+
+static double now_s(void)
+{
+	struct timespec ts;
+	clock_gettime(CLOCK_MONOTONIC, &ts);
+	return ts.tv_sec + ts.tv_nsec * 1e-9;
+}
+
+/* 20000 vertices (the body plus jittered copies) on 31 bones. */
+static void test_bind_speed(void **state)
+{
+	(void)state;
+	if (!load_makehuman())
+		skip();
+	static vec3 p[20000];
+	srand(3);
+	for (int v = 0; v < 20000; v++) {
+		vec3 q = body.pos[v % body.vert_count];
+		p[v] = v < body.vert_count ? q
+			: vec3_add(q, vec3_make(0.3f * rand() / RAND_MAX, 0.3f * rand() / RAND_MAX,
+						0.3f * rand() / RAND_MAX));
+	}
+	double best = 1e9;
+	for (int rep = 0; rep < 5; rep++) {
+		double t0 = now_s();
+		bind_prepare(&rig, &s, &pose, NULL);
+		bind_points(p, 20000, NULL);
+		best = fmin(best, now_s() - t0);
+	}
+	print_message("bind: 20000 vertices x %d bones in %.2f ms (best of 5)\n", s.count, best * 1e3);
+	assert_true(best < 0.25);
+}
+
+int main(void)
+{
+	const struct CMUnitTest tests[] = {
+		cmocka_unit_test(test_segments_and_ramps),
+		cmocka_unit_test(test_mid_bone_gets_one),
+		cmocka_unit_test(test_joint_is_half_half),
+		cmocka_unit_test(test_ramp_past_joint_is_linear),
+		cmocka_unit_test(test_outside_every_box_goes_to_nearest),
+		cmocka_unit_test(test_invariants_on_a_fan),
+		cmocka_unit_test(test_all_zero_length_goes_to_root),
+		cmocka_unit_test(test_bad_positions_rejected),
+		cmocka_unit_test(test_fit_scales_and_centres),
+		cmocka_unit_test(test_csv_good),
+		cmocka_unit_test(test_csv_errors),
+		cmocka_unit_test(test_makehuman_apose_regions),
+		cmocka_unit_test(test_bind_speed),
+	};
+	return cmocka_run_group_tests(tests, NULL, NULL);
+}
