@@ -43,6 +43,7 @@ TESTLIB_SRC := $(wildcard tests/support/*.c)
 CORE_OBJ    := $(CORE_SRC:%.c=$(OUT)/%.o)
 # The fixed-point skinning path: proven free of floating point by `make test`.
 FIXED_SRC   := app/fixed.c app/skin_fixed.c
+FIXED_OBJ   := $(OUT)/app/fixed.o $(OUT)/app/skin_fixed.o $(OUT)/app/skin_fixed_avx2.o
 PLAT_OBJ    := $(PLAT_SRC:%.c=$(OUT)/%.o)
 TOOL_OBJ    := $(TOOL_SRC:%.c=$(OUT)/%.o)
 PLAY_OBJ    := $(PLAY_SRC:%.c=$(OUT)/%.o)
@@ -85,7 +86,7 @@ $(OUT)/app/%.o: app/%.c
 	@mkdir -p $(@D)
 	$(CC) $(CPPFLAGS) $(CFLAGS_APP) -c $< -o $@
 
-$(OUT)/app/skin_avx2.o: CFLAGS_APP += $(SIMD_FLAGS)
+$(OUT)/app/skin_avx2.o $(OUT)/app/skin_fixed_avx2.o: CFLAGS_APP += $(SIMD_FLAGS)
 
 # Front ends see the platform headers and POSIX.
 $(FRONT_SRC:%.c=$(OUT)/%.o): $(OUT)/app/%.o: app/%.c
@@ -146,6 +147,7 @@ deps:
 check-core: $(CORE_OBJ)
 	@sh tests/check_core_symbols.sh $(CORE_OBJ)
 	@for f in $(FIXED_SRC); do sh tests/check_fixed_integer.sh $(CC) -Iapp -Iboard/$(BOARD) $$f || exit 1; done
+	@sh tests/check_simd_integer.sh $(FIXED_OBJ)
 
 test: deps
 	@$(MAKE) --no-print-directory all $(UNIT_BIN) check-core

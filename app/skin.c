@@ -20,12 +20,16 @@ int skin_algo_parse(const char *name)
 #ifdef SKP_SIMD_AVX2
 void skin_lbs_avx2(const skin_soa *in, const skin_bones *b, int first, int end, const skin_out *out);
 void skin_dqbs_avx2(const skin_soa *in, const skin_bones *b, int first, int end, const skin_out *out);
+void skin_dqbs_fixed_avx2(const skin_soa *in, const skin_bones *b, int first, int end,
+			  const skin_out *out);
 #define LBS skin_lbs_avx2
 #define DQBS skin_dqbs_avx2
+#define DQBS_FIXED skin_dqbs_fixed_avx2
 #define SIMD_NAME "avx2+fma"
 #else
 #define LBS skin_lbs_scalar
 #define DQBS skin_dqbs_scalar
+#define DQBS_FIXED skin_dqbs_fixed
 #define SIMD_NAME "scalar"
 #endif
 
@@ -43,7 +47,7 @@ void skin_run(skin_algo algo, const skin_soa *in, const skin_bones *b, int first
 	switch (algo) {
 	case SKIN_LBS: LBS(in, b, first, end, out); break;
 	case SKIN_DQBS: DQBS(in, b, first, end, out); break;
-	case SKIN_DQBS_FIXED: skin_dqbs_fixed(in, b, first, end, out); break;
+	case SKIN_DQBS_FIXED: DQBS_FIXED(in, b, first, end, out); break;
 	case SKIN_ALGO_COUNT: break;
 	}
 }

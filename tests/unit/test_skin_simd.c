@@ -1,0 +1,138 @@
+/* The SIMD kernels reproduce the portable ones: same vertices, same
+ * results to float rounding (float kernels) or a few LSB (fixed point), on
+ * mesh sizes that are not a multiple of the lane count and on slices. */
+#include <stdarg.h>
+#include <stddef.h>
+#include <setjmp.h>
+#include <stdint.h>
+#include <cmocka.h>
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "fixed_convert.h"
+#include "skin.h"
+
+#define N 1003
+
+static mesh m;
+static skin_weights w;
+static skin_soa soa;
+static skin_bones bones;
+static float pos_a[3 * N], nrm_a[3 * N], pos_b[3 * N], nrm_b[3 * N];
+static int32_t fpos_a[3 * N], fnrm_a[3 * N], fpos_b[3 * N], fnrm_b[3 * N];
+
+static float frand(float lo, float hi)
+{
+	return lo + (hi - lo) * (float)rand() / (float)RAND_MAX;
+}
+
+static quat qrand(void)
+{
+	return quat_normalize((quat){ frand(-1, 1), frand(-1, 1), frand(-1, 1), frand(-1, 1) });
+}
+
+static void setup_scene(void)
+{
+	static skel s;
+	static skel_pose bind, pose;
+	static char block[1 << 20] __attribute__((aligned(SKIN_ALIGN)));
+	srand(7);
+	s.count = 20;
+	for (int b = 0; b < s.count; b++) {
+		bind.rot[b] = qrand();
+		pose.rot[b] = qrand();
+		bind.head[b] = vec3_make(frand(-20, 20), frand(-20, 20), frand(-20, 20));
+		pose.head[b] = vec3_make(frand(-20, 20), frand(-20, 20), frand(-20, 20));
+	}
+	m.vert_count = N;
+	w.vert_count = N;
+	for (int v = 0; v < N; v++) {
+		m.pos[v] = vec3_make(frand(-30, 30), frand(-30, 30), frand(-30, 30));
+		m.normal[v] = vec3_normalize(vec3_make(frand(-1, 1), frand(-1, 1), frand(-1, 1) + 2));
+		int n = v % 7 == 0 ? 0 : 1 + rand() % SKP_MAX_INFLUENCES; /* some with none */
+		float sum = 0;
+		for (int k = 0; k < n; k++) {
+			w.bone[v][k] = (uint16_t)(rand() % s.count);
+			sum += w.weight[v][k] = frand(0.05f, 1);
+		}
+		for (int k = 0; k < n; k++)
+			w.weight[v][k] /= sum;
+		w.count[v] = (uint8_t)n;
+	}
+	assert_true(skin_soa_bytes(N) <= sizeof block);
+	skin_soa_attach(&soa, block, N);
+	skp_error err;
+	assert_int_equal(skin_soa_load(&soa, &m, &w, s.count, &err), SKP_OK);
+	skin_bones_compute(&bones, &s, &bind, &pose);
+}
+
+static double max_diff(const float *a, const float *b, int n)
+{
+	double d = 0;
+	for (int i = 0; i < n; i++)
+		d = fmax(d, fabs((double)a[i] - b[i]));
+	return d;
+}
+
+static long max_diff_fixed(const int32_t *a, const int32_t *b, int n)
+{
+	long d = 0;
+	for (int i = 0; i < n; i++) {
+		long e = labs((long)a[i] - b[i]);
+		d = e > d ? e : d;
+	}
+	return d;
+}
+
+/* skin_run in three slices (as worker threads split it) */
+static void run_sliced(skin_algo a, const skin_out *out)
+{
+	skin_run(a, &soa, &bones, 0, 512, out);
+	skin_run(a, &soa, &bones, 512, 480, out);
+	skin_run(a, &soa, &bones, 992, N - 992, out);
+}
+
+static void test_float_kernels_match_scalar(void **state)
+{
+	(void)state;
+	setup_scene();
+	skin_out a = { pos_a, nrm_a, NULL, NULL }, b = { pos_b, nrm_b, NULL, NULL };
+	skin_lbs_scalar(&soa, &bones, 0, N, &a);
+	memset(pos_b, 0, sizeof pos_b);
+	run_sliced(SKIN_LBS, &b);
+	double dp = max_diff(pos_a, pos_b, 3 * N), dn = max_diff(nrm_a, nrm_b, 3 * N);
+	print_message("%s LBS vs scalar: positions %.3g, normals %.3g\n", skin_simd_name(), dp, dn);
+	assert_true(dp < 1e-4 && dn < 1e-5);
+	skin_dqbs_scalar(&soa, &bones, 0, N, &a);
+	memset(pos_b, 0, sizeof pos_b);
+	run_sliced(SKIN_DQBS, &b);
+	dp = max_diff(pos_a, pos_b, 3 * N);
+	dn = max_diff(nrm_a, nrm_b, 3 * N);
+	print_message("%s DQBS vs scalar: positions %.3g, normals %.3g\n", skin_simd_name(), dp, dn);
+	assert_true(dp < 1e-4 && dn < 1e-5);
+}
+
+static void test_fixed_kernel_matches_scalar(void **state)
+{
+	(void)state;
+	setup_scene();
+	skin_out a = { NULL, NULL, fpos_a, fnrm_a }, b = { NULL, NULL, fpos_b, fnrm_b };
+	skin_dqbs_fixed(&soa, &bones, 0, N, &a);
+	memset(fpos_b, 0, sizeof fpos_b);
+	run_sliced(SKIN_DQBS_FIXED, &b);
+	long dp = max_diff_fixed(fpos_a, fpos_b, 3 * N), dn = max_diff_fixed(fnrm_a, fnrm_b, 3 * N);
+	print_message("%s fixed DQBS vs scalar fixed: positions %ld LSB, normals %ld LSB (Q16)\n",
+		      skin_simd_name(), dp, dn);
+	assert_true(dp <= 8 && dn <= 2);
+}
+
+int main(void)
+{
+	const struct CMUnitTest tests[] = {
+		cmocka_unit_test(test_float_kernels_match_scalar),
+		cmocka_unit_test(test_fixed_kernel_matches_scalar),
+	};
+	return cmocka_run_group_tests_name("skin_simd", tests, NULL, NULL);
+}
