@@ -42,9 +42,8 @@ static vec3 corner_pos(const grid *g, int x, int y, int z)
 			 g->origin.z + g->cell * (float)z);
 }
 
-static float range_gap(float v, float a, float b, float r)
+static float range_gap(float v, float lo, float hi)
 {
-	float lo = fminf(a, b) - r, hi = fmaxf(a, b) + r;
 	return v < lo ? lo - v : v > hi ? v - hi : 0.0f;
 }
 
@@ -57,9 +56,9 @@ static int near_row(grid *g, float y, float z, float reach)
 	int n = 0;
 	for (int i = 0; i < b->count; i++) {
 		const manq_part *q = &b->part[i];
-		float r = fmaxf(q->ra, q->rb);
-		float gy = range_gap(y, q->a.y, q->b.y, r), gz = range_gap(z, q->a.z, q->b.z, r);
-		if (gy * gy + gz * gz < reach * reach)
+		float gy = range_gap(y, q->box_lo.y, q->box_hi.y);
+		float gz = range_gap(z, q->box_lo.z, q->box_hi.z);
+		if (sqrtf(gy * gy + gz * gz) - q->r_max < reach)
 			g->w->near[n++] = (uint16_t)i;
 	}
 	return n;

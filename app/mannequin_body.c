@@ -272,8 +272,11 @@ skp_status manq_body_from_skel(const skel *s, const skel_pose *rest, manq_body *
 			return skp_fail(err, SKP_ERR_RANGE, 0, "bone '%s' has no finite rest position",
 					s->bone[b].name);
 	find_extent(&c);
-	if (!(c.H > 0.0f) || !isfinite(c.H))
+	if (!(c.H > 0.0f))
 		return skp_fail(err, SKP_ERR_RANGE, 0, "the skeleton has no extent in its rest pose");
+	/* squared distances must not overflow a float */
+	if (!(c.H < 1e15f))
+		return skp_fail(err, SKP_ERR_RANGE, 0, "the skeleton is %g units tall: too large", (double)c.H);
 	find_reach(&c);
 	find_spine(&c);
 	find_limbs(&c);

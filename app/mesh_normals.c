@@ -1,5 +1,16 @@
 #include "mesh_normals.h"
 
+#include <math.h>
+
+vec3 mesh_unit(vec3 n)
+{
+	float big = fmaxf(fabsf(n.x), fmaxf(fabsf(n.y), fabsf(n.z)));
+	if (!(big > 0.0f) || !isfinite(big))
+		return vec3_make(0.0f, 0.0f, 0.0f);
+	/* divided, not multiplied by 1/big: that could overflow */
+	return vec3_normalize(vec3_make(n.x / big, n.y / big, n.z / big));
+}
+
 void mesh_compute_normals(mesh *m)
 {
 	for (int v = 0; v < m->vert_count; v++)
@@ -13,7 +24,7 @@ void mesh_compute_normals(mesh *m)
 			m->normal[i[j]] = vec3_add(m->normal[i[j]], n);
 	}
 	for (int v = 0; v < m->vert_count; v++) {
-		vec3 n = vec3_normalize(m->normal[v]);
-		m->normal[v] = vec3_dot(n, n) > 0.0f ? n : vec3_make(0.0f, 1.0f, 0.0f);
+		vec3 n = mesh_unit(m->normal[v]);
+		m->normal[v] = vec3_dot(n, n) > 0.5f ? n : vec3_make(0.0f, 1.0f, 0.0f);
 	}
 }

@@ -91,9 +91,11 @@ static skp_status normal_line(obj_state *st, char **t, int n)
 		return skp_fail(st->err, SKP_ERR_LIMIT, st->line,
 				"more than %d normals in the file (OBJ_MAX_FILE_NORMALS = 2 * SKP_MAX_VERTS)",
 				OBJ_MAX_FILE_NORMALS);
-	skp_status rc = parse_coords(st, t, n, 3, 3, &w->vn[w->file_normals]);
+	/* unit on the way in: the sums over a vertex's corners cannot overflow */
+	vec3 vn;
+	skp_status rc = parse_coords(st, t, n, 3, 3, &vn);
 	if (!rc)
-		w->file_normals++;
+		w->vn[w->file_normals++] = mesh_unit(vn);
 	return rc;
 }
 
@@ -296,6 +298,11 @@ static void renumber(obj_state *st)
 			m->tri[t][j] = (uint32_t)w->kept[m->tri[t][j]];
 }
 
+static int unit(vec3 n)
+{
+	return vec3_dot(n, n) > 0.5f;
+}
+
 /* The file's normals where every kept corner had one; a vertex whose
  * normals cancel out (or that no face uses) takes the computed one. */
 static void set_normals(obj_state *st)
@@ -304,16 +311,16 @@ static void set_normals(obj_state *st)
 	mesh *m = st->m;
 	int from_file = w->normals_from_file, gap = !from_file;
 	for (int k = 0; from_file && k < m->vert_count; k++) {
-		m->normal[k] = vec3_normalize(w->nsum[w->source[k]]);
-		if (vec3_dot(m->normal[k], m->normal[k]) == 0.0f)
+		m->normal[k] = mesh_unit(w->nsum[w->source[k]]);
+		if (!unit(m->normal[k]))
 			gap = 1;
 	}
 	if (!gap)
 		return;
 	mesh_compute_normals(m);
 	for (int k = 0; from_file && k < m->vert_count; k++) {
-		vec3 n = vec3_normalize(w->nsum[w->source[k]]);
-		if (vec3_dot(n, n) > 0.0f)
+		vec3 n = mesh_unit(w->nsum[w->source[k]]);
+		if (unit(n))
 			m->normal[k] = n;
 	}
 }

@@ -145,6 +145,22 @@ static void test_area_weighted_normals(void **state)
 }
 
 /* Some corners without vn: the file's normals are not used at all. */
+/* Tiny faces still get unit normals; a face of no area gives +Y. */
+static void test_normals_degenerate(void **state)
+{
+	(void)state;
+	assert_int_equal(parse("v 0 0 0\nv 1e-20 0 0\nv 0 1e-20 0\nv 5 5 5\nv 5 5 5\nv 5 5 5\n"
+			       "f 1 2 3\nf 4 5 6\n"), SKP_OK);
+	assert_vec(m.normal[0], 0, 0, 1);
+	assert_vec(m.normal[4], 0, 1, 0);
+	/* huge file normals are fine; opposite ones cancel: computed there */
+	assert_int_equal(parse("v 0 0 0\nv 1 0 0\nv 0 1 0\nv -1 0 0\nvn 3e38 0 0\nvn -3e38 0 0\n"
+			       "f 1//1 2//1 3//1\nf 1//2 3//2 4//2\n"), SKP_OK);
+	assert_vec(m.normal[1], 1, 0, 0);
+	assert_vec(m.normal[3], -1, 0, 0);
+	assert_vec(m.normal[0], 0, 0, 1);
+}
+
 static void test_partial_normals_computed(void **state)
 {
 	(void)state;
@@ -367,6 +383,7 @@ int main(void)
 		cmocka_unit_test(test_negative_indices),
 		cmocka_unit_test(test_area_weighted_normals),
 		cmocka_unit_test(test_partial_normals_computed),
+		cmocka_unit_test(test_normals_degenerate),
 		cmocka_unit_test(test_crlf),
 		cmocka_unit_test(test_group_filter),
 		cmocka_unit_test(test_unused_vertices_kept),
