@@ -6,6 +6,7 @@
  * ratios: range over vertices of the distance to the nearest posed bone
  * over the same distance as bound (skin_metrics.h). The scene (skin_scene.h)
  * prints one row per algorithm, frame 0. */
+#include <math.h>
 #include <stdio.h>
 #include <string.h>
 
@@ -56,9 +57,12 @@ static int parse_algos(metrics_args *a, const char *list)
 		if ((end = strchr(name, ',')))
 			*end++ = '\0';
 		int k = skin_algo_parse(name);
-		if (k < 0 || a->algo_count == SKIN_ALGO_COUNT) {
-			fprintf(stderr, "skintool metrics: --algo: '%s' is not lbs, dqbs or dqbs-fixed%s\n",
-				name, k < 0 ? "" : " (too many)");
+		if (k < 0) {
+			fprintf(stderr, "skintool metrics: --algo: '%s' is not lbs, dqbs or dqbs-fixed\n", name);
+			return -1;
+		}
+		if (a->algo_count == SKIN_ALGO_COUNT) {
+			fprintf(stderr, "skintool metrics: --algo: at most %d algorithms\n", SKIN_ALGO_COUNT);
 			return -1;
 		}
 		a->algo[a->algo_count++] = (skin_algo)k;
@@ -86,7 +90,7 @@ static int parse_scene(metrics_args *a, const char *name)
 
 static int parse_angle(metrics_args *a, const char *text)
 {
-	if (tok_parse_double(text, &a->angle_deg) != 0) {
+	if (tok_parse_double(text, &a->angle_deg) != 0 || !isfinite(a->angle_deg)) {
 		fprintf(stderr, "skintool metrics: --angle expects a number of degrees, got '%s'\n", text);
 		return -1;
 	}
