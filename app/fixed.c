@@ -87,21 +87,18 @@ uint32_t fx_isqrt64(uint64_t x)
 	return (uint32_t)isqrt_rem(x, &rem);
 }
 
-/* 2^31 / sqrt(X) at the middle of 16 equal steps of X in [1, 4): a start
- * within 5% for Newton's iteration. */
-static const uint32_t rsqrt_seed[16] = {
-	2053387115, 1897199172, 1771968208, 1668656406, 1581535151, 1506774204, 1441702596, 1384393311, 1333416450, 1287685637, 1246358707, 1208771378, 1174391680, 1142787899, 1113605518, 1086550331
-};
-
-/* One Newton step for y = 1/sqrt(X), Y = y 2^31, X = xq / 2^30:
- * y' = y (3 - X y^2) / 2. Every product stays below 2^64 (see below). */
-static uint64_t rsqrt_step(uint64_t xq, uint64_t y)
+uint64_t fx_rsqrt_step(uint64_t xq, uint64_t y)
 {
-	uint64_t y2 = (y * y + (1u << 30)) >> 31;                 /* Q31, <= 2^31 */
-	uint64_t xy2 = (xq * y2 + (1u << 29)) >> 30;              /* Q31; xq < 2^32: < 2^63 */
-	uint64_t three = (uint64_t)3 << 31;
-	uint64_t f = three > xy2 ? three - xy2 : 0;               /* < 2^33 */
-	return (y * f + ((uint64_t)1 << 31)) >> 32;               /* y <= 2^31: < 2^64 */
+	uint64_t y2 = (y * y + (1u << 30)) >> 31;          /* Q31, < 2^32 */
+	uint64_t half_xy2 = (xq * y2 + (1u << 30)) >> 31;  /* X y^2 / 2 in Q31, < 2^32 */
+	uint64_t three_halves = (uint64_t)3 << 30;         /* 1.5 in Q31 */
+	uint64_t f = three_halves > half_xy2 ? three_halves - half_xy2 : 0;
+	return (y * f + (1u << 30)) >> 31;                 /* y, f < 2^32 */
+}
+
+uint64_t fx_rsqrt_seed(uint64_t xq)
+{
+	return FX_RSQRT_SEED_A - ((FX_RSQRT_SEED_B * xq + (1u << 29)) >> 30);
 }
 
 uint32_t fx_rsqrt_q60(uint64_t x, int *shift)
@@ -113,13 +110,12 @@ uint32_t fx_rsqrt_q60(uint64_t x, int *shift)
 	int e = (__builtin_clzll(x) - 2) / 2;
 	x <<= 2 * e;
 	uint64_t xq = (x + (1u << 29)) >> 30;
-	uint64_t y = rsqrt_seed[((x >> 56) - 16) / 3];
-	/* relative error 5%, then 4e-3, 2e-5 and 1e-9 after three steps */
-	for (int i = 0; i < 3; i++)
-		y = rsqrt_step(xq, y);
+	uint64_t y = fx_rsqrt_seed(xq);
+	for (int i = 0; i < FX_RSQRT_STEPS; i++)
+		y = fx_rsqrt_step(xq, y);
 	/* 1/sqrt(x / 2^60) before scaling is 2^e / sqrt(X) = y / 2^(31 - e) */
 	*shift = 31 - e;
-	return (uint32_t)y;
+	return y > INT32_MAX ? INT32_MAX : (uint32_t)y;
 }
 
 fx_dq fx_dq_from_quat_trans(fx_quat q, fx_vec3 t)

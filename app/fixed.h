@@ -106,13 +106,24 @@ fx_vec3 fx_quat_rotate(fx_quat q, fx_vec3 v);
 
 /* floor(sqrt(x)), exact for every uint64. Shift-and-subtract, no multiply. */
 uint32_t fx_isqrt64(uint64_t x);
-/* 1 / sqrt(x / 2^60) as m / 2^*shift, m in [2^30, 2^31], for 0 < x < 2^62
+/* 1 / sqrt(x / 2^60) as m / 2^*shift, m in [2^30, 2^31), for 0 < x < 2^62
  * (the squared norm of a Q30 quaternion shorter than 2). A mantissa and a
  * shift rather than a Q30 value so that scaling any int32 by it is one
  * 32x32 -> 64 multiply that cannot overflow, even for norms far below 1.
- * Relative error below 2^-30. Returns 0 (and *shift = 0) for x = 0 or
- * x >= 2^62. */
+ * Relative error below 2^-29. Returns 0 (and *shift = 0) for x = 0 or
+ * x >= 2^62.
+ *
+ * Method (shared with the SIMD kernels, which must match bit for bit): x is
+ * scaled by 4^e into [2^60, 2^62), X = x / 2^60 in [1, 4) is rounded to Q30
+ * (xq), the seed is the minimax line 1.06 - 0.149 X (within 9%), then
+ * FX_RSQRT_STEPS Newton steps y' = y (1.5 - X y^2 / 2) in Q31, all products
+ * of two values below 2^32. */
+#define FX_RSQRT_SEED_A 2276332667ull  /* 1.06 in Q31 */
+#define FX_RSQRT_SEED_B 319975064ull   /* 0.149 in Q31 */
+#define FX_RSQRT_STEPS 4
 uint32_t fx_rsqrt_q60(uint64_t x, int *shift);
+uint64_t fx_rsqrt_seed(uint64_t xq);
+uint64_t fx_rsqrt_step(uint64_t xq, uint64_t y);
 
 /* Rotate by the unit Q30 quaternion q, then translate by t (fx_pos).
  * |t| < 32768 units so that the dual part fits. */

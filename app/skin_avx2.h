@@ -5,7 +5,10 @@
 #define SKIN_AVX2_H
 
 #include <immintrin.h>
+#include <stdint.h>
 #include <string.h>
+
+#include "board_limits.h"
 
 /* Rows r[j] = 8 values of vertex j become r[c] = value c of the 8 vertices. */
 static inline void skin_transpose8(__m256 r[8])
@@ -30,6 +33,30 @@ static inline void skin_transpose8(__m256 r[8])
 	r[5] = _mm256_permute2f128_ps(s1, s5, 0x31);
 	r[6] = _mm256_permute2f128_ps(s2, s6, 0x31);
 	r[7] = _mm256_permute2f128_ps(s3, s7, 0x31);
+}
+
+/* Four consecutive 32-bit values at row[j] (vertex j) to four registers of
+ * 8 lanes: two rows per 256-bit register, then a 4x4 transpose per half. */
+static inline void skin_transpose8x4(const float *const row[8], __m256 out[4])
+{
+	__m256 a[4];
+	for (int j = 0; j < 4; j++)
+		a[j] = _mm256_insertf128_ps(_mm256_castps128_ps256(_mm_loadu_ps(row[j])),
+					    _mm_loadu_ps(row[j + 4]), 1);
+	__m256 t0 = _mm256_unpacklo_ps(a[0], a[1]), t1 = _mm256_unpackhi_ps(a[0], a[1]);
+	__m256 t2 = _mm256_unpacklo_ps(a[2], a[3]), t3 = _mm256_unpackhi_ps(a[2], a[3]);
+	out[0] = _mm256_shuffle_ps(t0, t2, _MM_SHUFFLE(1, 0, 1, 0));
+	out[1] = _mm256_shuffle_ps(t0, t2, _MM_SHUFFLE(3, 2, 3, 2));
+	out[2] = _mm256_shuffle_ps(t1, t3, _MM_SHUFFLE(1, 0, 1, 0));
+	out[3] = _mm256_shuffle_ps(t1, t3, _MM_SHUFFLE(3, 2, 3, 2));
+}
+
+/* Index of (pivot bone, bone) in the flip tables, for 8 lanes. */
+static inline __m256i skin_flip_index(const uint16_t *pivot, const uint16_t *bone, int v)
+{
+	__m256i p = _mm256_cvtepu16_epi32(_mm_load_si128((const __m128i *)(pivot + v)));
+	__m256i k = _mm256_cvtepu16_epi32(_mm_load_si128((const __m128i *)(bone + v)));
+	return _mm256_add_epi32(_mm256_mullo_epi32(p, _mm256_set1_epi32(SKP_MAX_BONES + 1)), k);
 }
 
 /* 8 xyz triples from three lane registers to 24 interleaved values at dst

@@ -28,6 +28,23 @@ static void set_bone(skin_bones *out, int b, quat q, vec3 t)
 	flatten(out, b);
 }
 
+/* Only the bones in use (and the identity slot) get entries. */
+static void compute_flips(skin_bones *out)
+{
+	int slots[SKP_MAX_BONES + 1], n = 0;
+	for (int i = 0; i < out->count; i++)
+		slots[n++] = i;
+	slots[n++] = SKIN_IDENTITY_BONE;
+	for (int a = 0; a < n; a++) {
+		int p = slots[a];
+		for (int c = 0; c < n; c++) {
+			int k = slots[c];
+			out->flip_f[p][k] = quat_dot(out->dq[k].real, out->dq[p].real) < 0.0f ? 0x80000000u : 0;
+			out->flip_x[p][k] = fx_quat_dot(out->fdq[k].real, out->fdq[p].real) < 0 ? -1 : 0;
+		}
+	}
+}
+
 void skin_bones_compute(skin_bones *out, const skel *s, const skel_pose *bind,
 			const skel_pose *pose)
 {
@@ -38,4 +55,5 @@ void skin_bones_compute(skin_bones *out, const skel *s, const skel_pose *bind,
 		set_bone(out, b, q, t);
 	}
 	set_bone(out, SKIN_IDENTITY_BONE, quat_identity(), vec3_make(0, 0, 0));
+	compute_flips(out);
 }

@@ -18,9 +18,11 @@ typedef struct ivec {
 	__m256i x, y, z;
 } ivec;
 
+/* Odd lanes moved to the even positions vpmuldq reads: a shuffle, so it
+ * runs on the shuffle port while the multiplies and shifts use the others. */
 static inline __m256i odd_lanes(__m256i a)
 {
-	return _mm256_srli_epi64(a, 32);
+	return _mm256_shuffle_epi32(a, _MM_SHUFFLE(3, 3, 1, 1));
 }
 
 static inline wide wmul(__m256i a, __m256i b)
@@ -41,26 +43,16 @@ static inline wide wsub(wide a, wide b)
 	return r;
 }
 
-/* Round and shift right by s, back to 8 int32 lanes. A logical shift gives
- * the same low 32 bits as an arithmetic one, and results fit in 32 bits. */
+/* Round and shift right by s (<= 32), back to 8 int32 lanes: the even
+ * products shift down to the low halves, the odd ones up to the high
+ * halves. A logical shift keeps the same 32 bits as an arithmetic one, and
+ * results fit in 32 bits. */
 static inline __m256i narrow(wide w, int s)
 {
 	__m256i rnd = _mm256_set1_epi64x((long long)1 << (s - 1));
-	__m128i cnt = _mm_cvtsi32_si128(s);
-	__m256i e = _mm256_srl_epi64(_mm256_add_epi64(w.e, rnd), cnt);
-	__m256i o = _mm256_slli_epi64(_mm256_srl_epi64(_mm256_add_epi64(w.o, rnd), cnt), 32);
+	__m256i e = _mm256_srl_epi64(_mm256_add_epi64(w.e, rnd), _mm_cvtsi32_si128(s));
+	__m256i o = _mm256_sll_epi64(_mm256_add_epi64(w.o, rnd), _mm_cvtsi32_si128(32 - s));
 	return _mm256_blend_epi32(e, o, 0xAA);
-}
-
-/* The 8-int32 fx_dq of each of 8 vertices' bones, transposed to lanes. */
-static void load_dq(const skin_bones *b, const uint16_t *bone, int v, __m256i d[8])
-{
-	__m256 r[8];
-	for (int j = 0; j < 8; j++)
-		r[j] = _mm256_loadu_ps((const float *)&b->fdq[bone[v + j]]);
-	skin_transpose8(r);
-	for (int c = 0; c < 8; c++)
-		d[c] = _mm256_castps_si256(r[c]);
 }
 
 static __m256i load_weights(const fx_w15 *w, int v)
@@ -68,58 +60,102 @@ static __m256i load_weights(const fx_w15 *w, int v)
 	return _mm256_cvtepu16_epi32(_mm_load_si128((const __m128i *)(w + v)));
 }
 
-/* Lanes whose 64-bit dot product is negative, as a 32-bit lane mask. */
-static __m256i negative_mask(wide dot)
+/* Weights with the sign fix (looked up per bone pair, see skin_bones). */
+static inline __attribute__((always_inline)) void signed_weights(const skin_soa *in,
+								   const skin_bones *b, int v,
+								   __m256i w[SKP_MAX_INFLUENCES])
 {
-	__m256i zero = _mm256_setzero_si256();
-	__m256i e = _mm256_cmpgt_epi64(zero, dot.e), o = _mm256_cmpgt_epi64(zero, dot.o);
-	return _mm256_blend_epi32(e, o, 0xAA);
+	const int *flip = &b->flip_x[0][0];
+	w[0] = load_weights(in->fweight[0], v);
+	for (int k = 1; k < SKP_MAX_INFLUENCES; k++) {
+		__m256i neg = _mm256_i32gather_epi32(flip, skin_flip_index(in->bone[0], in->bone[k], v), 4);
+		w[k] = _mm256_sub_epi32(_mm256_xor_si256(load_weights(in->fweight[k], v), neg), neg);
+	}
 }
 
-/* Weighted sum (Q45 real, Q31+ dual in 64 bits) with the sign fix against
- * influence 0, rounded back to Q30 / fx_pos. */
-static void blend(const skin_soa *in, const skin_bones *b, int v, __m256i out[8])
+/* One half (real: 0, dual: 4) of the weighted sum, in 64 bits, rounded
+ * back to Q30 / fx_pos: a half at a time keeps the accumulators in
+ * registers. */
+static inline __attribute__((always_inline)) void blend_half(const skin_soa *in, const skin_bones *b,
+							       int v, const __m256i w[SKP_MAX_INFLUENCES],
+							       int half, __m256i out[4])
 {
-	__m256i pivot[8], d[8];
-	wide acc[8];
-	load_dq(b, in->bone[0], v, pivot);
-	__m256i w0 = load_weights(in->fweight[0], v);
-	for (int c = 0; c < 8; c++)
-		acc[c] = wmul(w0, pivot[c]);
-	for (int k = 1; k < SKP_MAX_INFLUENCES; k++) {
-		load_dq(b, in->bone[k], v, d);
-		wide dot = wadd(wadd(wmul(d[0], pivot[0]), wmul(d[1], pivot[1])),
-				wadd(wmul(d[2], pivot[2]), wmul(d[3], pivot[3])));
-		__m256i neg = negative_mask(dot);
-		__m256i w = _mm256_sub_epi32(_mm256_xor_si256(load_weights(in->fweight[k], v), neg), neg);
-		for (int c = 0; c < 8; c++)
-			acc[c] = wadd(acc[c], wmul(w, d[c]));
+	wide acc[4];
+	for (int k = 0; k < SKP_MAX_INFLUENCES; k++) {
+		const float *row[8];
+		__m256 d[4];
+		for (int j = 0; j < 8; j++)
+			row[j] = (const float *)&b->fdq[in->bone[k][v + j]] + half;
+		skin_transpose8x4(row, d);
+		for (int c = 0; c < 4; c++) {
+			wide p = wmul(w[k], _mm256_castps_si256(d[c]));
+			acc[c] = k ? wadd(acc[c], p) : p;
+		}
 	}
-	for (int c = 0; c < 8; c++)
+	for (int c = 0; c < 4; c++)
 		out[c] = narrow(acc[c], 15);
 }
 
-/* 1/|real| per lane through the scalar Newton iteration (a few per block:
- * AVX2 has no 64-bit leading-zero count), as multiplier and shift. */
+static inline __attribute__((always_inline)) void blend(const skin_soa *in, const skin_bones *b, int v,
+							  __m256i out[8])
+{
+	__m256i w[SKP_MAX_INFLUENCES];
+	signed_weights(in, b, v, w);
+	blend_half(in, b, v, w, 0, out);
+	blend_half(in, b, v, w, 4, out + 4);
+}
+
+static inline __m256i epi64(long long v)
+{
+	return _mm256_set1_epi64x(v);
+}
+
+/* (a * b + 2^(s-1)) >> s on 4 unsigned 64-bit lanes holding 32-bit values */
+static inline __m256i mul_round(__m256i a, __m256i b, int s)
+{
+	return _mm256_srl_epi64(_mm256_add_epi64(_mm256_mul_epu32(a, b), epi64(1ll << (s - 1))),
+				_mm_cvtsi32_si128(s));
+}
+
+/* fx_rsqrt_q60 on 4 lanes, step for step the same integers, for squared
+ * norms in [2^56, 2^62) (every blend with the sign fix: its real part is at
+ * least the pivot's weight, 1/4, long). Lanes outside are flagged in *bad. */
+static void rsqrt4(__m256i x, __m256i *m, __m256i *shift, __m256i *bad)
+{
+	__m256i lt60 = _mm256_cmpgt_epi64(epi64(1ll << 60), x);
+	__m256i lt58 = _mm256_cmpgt_epi64(epi64(1ll << 58), x);
+	*bad = _mm256_or_si256(_mm256_cmpgt_epi64(epi64(1ll << 56), x),
+			       _mm256_cmpgt_epi64(x, epi64((1ll << 62) - 1)));
+	__m256i e = _mm256_sub_epi64(_mm256_setzero_si256(), _mm256_add_epi64(lt60, lt58));
+	x = _mm256_sllv_epi64(x, _mm256_add_epi64(e, e));
+	__m256i xq = _mm256_srli_epi64(_mm256_add_epi64(x, epi64(1ll << 29)), 30);
+	__m256i y = _mm256_sub_epi64(epi64((long long)FX_RSQRT_SEED_A),
+				     mul_round(epi64((long long)FX_RSQRT_SEED_B), xq, 30));
+	const __m256i three_halves = epi64(3ll << 30);
+	for (int i = 0; i < FX_RSQRT_STEPS; i++) {
+		__m256i y2 = mul_round(y, y, 31);
+		__m256i h = mul_round(xq, y2, 31);
+		__m256i f = _mm256_andnot_si256(_mm256_cmpgt_epi64(h, three_halves),
+						_mm256_sub_epi64(three_halves, h));
+		y = mul_round(y, f, 31);
+	}
+	__m256i big = _mm256_cmpgt_epi64(y, epi64(INT32_MAX));
+	*m = _mm256_blendv_epi8(y, epi64(INT32_MAX), big);
+	*shift = _mm256_sub_epi64(epi64(31), e);
+}
+
+/* 1/|real| per lane as multiplier and shift; 1 when a lane is outside what
+ * rsqrt4 handles (the caller then runs the scalar kernel on the block). */
 static int reciprocal_norms(const __m256i d[8], __m256i *m, __m256i *shift)
 {
 	wide n2 = wadd(wadd(wmul(d[0], d[0]), wmul(d[1], d[1])),
 		       wadd(wmul(d[2], d[2]), wmul(d[3], d[3])));
-	uint64_t e[4], o[4];
-	int32_t mm[8], ss[8], degenerate = 0;
-	_mm256_storeu_si256((__m256i *)e, n2.e);
-	_mm256_storeu_si256((__m256i *)o, n2.o);
-	for (int i = 0; i < 8; i++) {
-		uint64_t x = i & 1 ? o[i / 2] : e[i / 2];
-		uint32_t r = fx_rsqrt_q60(x, &ss[i]);
-		degenerate |= r == 0;
-		mm[i] = r > INT32_MAX ? INT32_MAX : (int32_t)r;
-		if (r == 0)
-			ss[i] = 1;
-	}
-	*m = _mm256_loadu_si256((const __m256i *)mm);
-	*shift = _mm256_loadu_si256((const __m256i *)ss);
-	return degenerate;
+	__m256i me, se, be, mo, so, bo;
+	rsqrt4(n2.e, &me, &se, &be);
+	rsqrt4(n2.o, &mo, &so, &bo);
+	*m = _mm256_blend_epi32(me, _mm256_slli_epi64(mo, 32), 0xAA);
+	*shift = _mm256_blend_epi32(se, _mm256_slli_epi64(so, 32), 0xAA);
+	return !_mm256_testz_si256(_mm256_or_si256(be, bo), _mm256_or_si256(be, bo));
 }
 
 /* v * m >> shift per lane, rounded */
@@ -192,8 +228,8 @@ void skin_dqbs_fixed_avx2(const skin_soa *in, const skin_bones *b, int first, in
 		__m256i d[8], m, shift;
 		blend(in, b, v, d);
 		if (reciprocal_norms(d, &m, &shift)) {
-			/* a blend that cancelled out: let the scalar kernel apply
-			 * its identity fallback to this block */
+			/* a norm outside the vector path's range (a blend
+			 * that nearly cancelled): the scalar kernel handles it */
 			skin_dqbs_fixed(in, b, v, v + SKIN_LANES < end ? v + SKIN_LANES : end, out);
 			continue;
 		}
