@@ -109,7 +109,7 @@ uint32_t fx_rsqrt_q60(uint64_t x, int *shift)
 	/* Scale by 4^e into [2^60, 2^62): X = x / 2^60 in [1, 4). */
 	int e = (__builtin_clzll(x) - 2) / 2;
 	x <<= 2 * e;
-	uint64_t xq = (x + (1u << 29)) >> 30;
+	uint64_t xq = x >> 30; /* floor: below 2^32, as the SIMD multiplies need */
 	uint64_t y = fx_rsqrt_seed(xq);
 	for (int i = 0; i < FX_RSQRT_STEPS; i++)
 		y = fx_rsqrt_step(xq, y);

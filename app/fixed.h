@@ -114,7 +114,7 @@ uint32_t fx_isqrt64(uint64_t x);
  * x >= 2^62.
  *
  * Method (shared with the SIMD kernels, which must match bit for bit): x is
- * scaled by 4^e into [2^60, 2^62), X = x / 2^60 in [1, 4) is rounded to Q30
+ * scaled by 4^e into [2^60, 2^62), X = x / 2^60 in [1, 4) is cut to Q30
  * (xq), the seed is the minimax line 1.06 - 0.149 X (within 9%), then
  * FX_RSQRT_STEPS Newton steps y' = y (1.5 - X y^2 / 2) in Q31, all products
  * of two values below 2^32. */

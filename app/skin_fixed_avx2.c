@@ -128,7 +128,7 @@ static void rsqrt4(__m256i x, __m256i *m, __m256i *shift, __m256i *bad)
 			       _mm256_cmpgt_epi64(x, epi64((1ll << 62) - 1)));
 	__m256i e = _mm256_sub_epi64(_mm256_setzero_si256(), _mm256_add_epi64(lt60, lt58));
 	x = _mm256_sllv_epi64(x, _mm256_add_epi64(e, e));
-	__m256i xq = _mm256_srli_epi64(_mm256_add_epi64(x, epi64(1ll << 29)), 30);
+	__m256i xq = _mm256_srli_epi64(x, 30); /* floor, < 2^32 */
 	__m256i y = _mm256_sub_epi64(epi64((long long)FX_RSQRT_SEED_A),
 				     mul_round(epi64((long long)FX_RSQRT_SEED_B), xq, 30));
 	const __m256i three_halves = epi64(3ll << 30);

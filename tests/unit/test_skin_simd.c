@@ -128,11 +128,33 @@ static void test_fixed_kernel_matches_scalar(void **state)
 	assert_true(dp <= 8 && dn <= 2);
 }
 
+/* A blend whose squared norm lies just below 1.0 (2^60 in Q60): scaled by
+ * 4 it rounds up to 2^62, which once pushed X to 2^32 and broke the SIMD
+ * rsqrt. Every vertex here has a single influence on bone 0. */
+static void test_fixed_norm_just_below_one(void **state)
+{
+	(void)state;
+	setup_scene();
+	for (int v = 0; v < soa.padded; v++)
+		for (int k = 0; k < SKP_MAX_INFLUENCES; k++) {
+			soa.bone[k][v] = k ? SKIN_IDENTITY_BONE : 0;
+			soa.fweight[k][v] = k ? 0 : FX_W15_ONE;
+		}
+	fx_dq d = { { (1 << 30) - 1, 46340, 0, 0 }, { 0, 3 << 16, -(5 << 16), 1 << 16 } };
+	bones.fdq[0] = d;
+	skin_out a = { NULL, NULL, fpos_a, fnrm_a }, b = { NULL, NULL, fpos_b, fnrm_b };
+	skin_dqbs_fixed(&soa, &bones, 0, N, &a);
+	run_sliced(SKIN_DQBS_FIXED, &b);
+	assert_int_equal(max_diff_fixed(fpos_a, fpos_b, 3 * N), 0);
+	assert_int_equal(max_diff_fixed(fnrm_a, fnrm_b, 3 * N), 0);
+}
+
 int main(void)
 {
 	const struct CMUnitTest tests[] = {
 		cmocka_unit_test(test_float_kernels_match_scalar),
 		cmocka_unit_test(test_fixed_kernel_matches_scalar),
+		cmocka_unit_test(test_fixed_norm_just_below_one),
 	};
 	return cmocka_run_group_tests_name("skin_simd", tests, NULL, NULL);
 }
