@@ -22,12 +22,17 @@ ifeq ($(SIMD),avx2)
 endif
 
 WARN     := -Wall -Wextra -Werror -Wshadow -Wstrict-prototypes -Wvla
+# Display backends and PNG files in platform/. No GL library is linked (see
+# app/gl_api.h): EGL hands out the entry points and OSMesa is dlopen()ed.
+DISPLAY_PC     := egl gbm libdrm x11 libpng
+DISPLAY_CFLAGS := $(shell pkg-config --cflags $(DISPLAY_PC) 2>/dev/null)
+DISPLAY_LIBS   := $(shell pkg-config --libs $(DISPLAY_PC) 2>/dev/null) -ldl
 CPPFLAGS := -Iapp -Iboard/$(BOARD) $(SIMD_DEFS) -MMD -MP
 CFLAGS_APP  := -std=c11 $(WARN) $(BOARD_CFLAGS) $(SAN_FLAGS) $(EXTRA_CFLAGS)
 # Platform code talks to Linux and POSIX APIs, so it may use GNU extensions.
-CFLAGS_PLAT := -std=gnu11 $(WARN) $(BOARD_CFLAGS) $(SAN_FLAGS) $(EXTRA_CFLAGS)
+CFLAGS_PLAT := -std=gnu11 $(WARN) $(BOARD_CFLAGS) $(SAN_FLAGS) $(DISPLAY_CFLAGS) $(EXTRA_CFLAGS)
 LDFLAGS  := $(SAN_FLAGS) $(EXTRA_LDFLAGS)
-LDLIBS   := -lm -pthread
+LDLIBS   := -lm -pthread $(DISPLAY_LIBS)
 
 # app/: the front ends (skintool*, skinplay*, and cli_* shared by both) may
 # use stdio and platform/; the portable core may not.
@@ -153,8 +158,18 @@ test: deps
 	@$(MAKE) --no-print-directory all $(UNIT_BIN) check-core
 	@sh tests/run_tests.sh $(OUT) $(UNIT_BIN)
 
+# On a console or desktop: the demo on the display. Without one: headless,
+# compare view, a few frames and a contact sheet in out/.
 run: deps all
-	$(SKINPLAY) --asf $(DEMO_ASF) --amc $(DEMO_AMC) --realtime
+	@plat=$$($(SKINPLAY) --print-platform); \
+	if [ "$$plat" = surfaceless ]; then \
+	  rm -rf out && mkdir -p out && \
+	  $(SKINPLAY) --asf $(DEMO_ASF) --amc $(DEMO_AMC) --platform surfaceless --algo compare \
+	    --size 1280x720 --out out --every 80 --sheet out/contact_sheet.png && \
+	  echo "run: no display here, rendered headless: out/frame_*.png and out/contact_sheet.png"; \
+	else \
+	  $(SKINPLAY) --asf $(DEMO_ASF) --amc $(DEMO_AMC) --platform $$plat --algo compare; \
+	fi
 
 size: $(SKINPLAY)
 	@size $(SKINPLAY) | awk 'NR==2 { printf "skinplay (%s): code %d bytes (text), static RAM %d bytes (.data %d + .bss %d)\n", "$(BOARD)", $$1, $$2+$$3, $$2, $$3 }'

@@ -9,12 +9,12 @@ void camera_init(follow_camera *c, float skel_height, float floor_y, float azimu
 	c->floor_y = floor_y;
 	c->azimuth = azimuth;
 	c->target = vec3_make(0, floor_y + 0.5f * c->height, 0);
+
 }
 
-void camera_follow(follow_camera *c, vec3 root, float dt)
+void camera_follow(follow_camera *c, vec3 center, float dt)
 {
-	/* only the ground position is followed: bobbing and jumps stay visible */
-	vec3 want = vec3_make(root.x, c->floor_y + 0.5f * c->height, root.z);
+	vec3 want = center;
 	if (!c->started) {
 		c->target = want;
 		c->started = 1;

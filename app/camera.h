@@ -8,15 +8,16 @@
 typedef struct follow_camera {
 	vec3 target;       /* smoothed point the camera looks at */
 	int started;
-	float height;      /* skeleton height: sets distance and framing */
+	float height;      /* the body's largest extent: sets distance and framing */
 	float floor_y;     /* the ground under the body */
 	float azimuth;     /* radians around Y, 0 = in front (+Z) */
 } follow_camera;
 
 void camera_init(follow_camera *c, float skel_height, float floor_y, float azimuth);
 
-/* Moves the target towards root over dt seconds (time constant 0.6 s). */
-void camera_follow(follow_camera *c, vec3 root, float dt);
+/* Moves the target towards center (the middle of the posed skeleton) over
+ * dt seconds, time constant 0.6 s: smooth, yet a jump stays in frame. */
+void camera_follow(follow_camera *c, vec3 center, float dt);
 
 /* View-projection for a viewport of the given aspect ratio. */
 mat4 camera_matrix(const follow_camera *c, float aspect);

@@ -7,6 +7,7 @@
 #include "cli_mesh_io.h"
 #include "cli_weights.h"
 #include "clock.h"
+#include "mannequin.h"
 #include "text_tokens.h"
 
 void bind_args_init(bind_args *a)
@@ -76,7 +77,6 @@ int bind_args_parse(bind_args *a, int argc, char **argv, int *i)
 /* Poses body->skel in the requested frame, or the rest pose. */
 static int load_pose(const bind_args *a, bound_body *body)
 {
-	static tool_motion m;
 	static amc_frame f;
 
 	body->pose_frame = -1;
@@ -84,30 +84,8 @@ static int load_pose(const bind_args *a, bound_body *body)
 		fk_pose(&body->skel, NULL, &body->pose);
 		return 0;
 	}
-	if (tool_motion_open(&m, a->pose_path, &body->skel) < 0)
+	if (tool_read_frame(a->pose_path, &body->skel, a->pose_frame, &f) < 0)
 		return -1;
-	int r, found = 0;
-	long first = -1, last = -1;
-	while ((r = tool_motion_next(&m, &f)) > 0) {
-		if (first < 0)
-			first = f.number;
-		last = f.number;
-		if (a->pose_frame < 0 || f.number == a->pose_frame) {
-			found = 1;
-			break;
-		}
-	}
-	tool_motion_close(&m);
-	if (r < 0)
-		return -1;
-	if (!found) {
-		if (first < 0)
-			fprintf(stderr, "%s: no frames\n", a->pose_path);
-		else
-			fprintf(stderr, "%s: no frame %ld (the file has frames %ld..%ld)\n",
-				a->pose_path, a->pose_frame, first, last);
-		return -1;
-	}
 	fk_pose(&body->skel, f.value, &body->pose);
 	body->pose_frame = f.number;
 	return 0;
@@ -141,12 +119,31 @@ static int auto_weights(const char *obj, bound_body *body)
 	return 0;
 }
 
+/* No mesh given: the generated body around the rest pose, which is then
+ * also the bind pose. */
+static int generate_body(const bind_args *a, const char *asf, bound_body *body)
+{
+	static manq_work work;
+	skp_error err;
+	if (a->pose_path || a->fit || a->group || a->weights_path) {
+		fprintf(stderr, "%s: --bind-pose, --fit, --group and --weights need a mesh\n", asf);
+		return -1;
+	}
+	if (manq_build(&body->skel, 0, &work, &body->mesh, &err) != SKP_OK) {
+		fprintf(stderr, "%s: generated body: %s\n", asf, err.msg);
+		return -1;
+	}
+	return 0;
+}
+
 int bind_args_load(const bind_args *a, const char *asf, const char *obj, bound_body *body)
 {
 	body->fitted = 0;
 	body->automatic = 0;
 	if (tool_load_skel(asf, &body->skel) < 0 || load_pose(a, body) < 0)
 		return -1;
+	if (!obj)
+		return generate_body(a, asf, body) < 0 ? -1 : auto_weights(asf, body);
 	if (!tool_load_obj(obj, a->group, &body->mesh))
 		return -1;
 	if (body->mesh.vert_count == 0) {

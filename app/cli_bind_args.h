@@ -48,6 +48,7 @@ typedef struct bound_body {
 
 /* Loads skeleton asf, mesh obj (group), the bind pose, fits the mesh when
  * asked, then computes the weights (default bind_params) or reads them.
+ * obj NULL: the generated body (skintool mannequin) in the rest pose.
  * Returns 0, or -1 after reporting the error on stderr. */
 int bind_args_load(const bind_args *a, const char *asf, const char *obj, bound_body *body);
 

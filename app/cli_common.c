@@ -77,3 +77,36 @@ int tool_parse_long(const char *opt, const char *text, long *out)
 	}
 	return 0;
 }
+
+static void no_frame(const char *path, long number, long first, long last)
+{
+	if (first < 0)
+		fprintf(stderr, "%s: no frames\n", path);
+	else
+		fprintf(stderr, "%s: no frame %ld (the file has frames %ld..%ld)\n", path, number,
+			first, last);
+}
+
+int tool_read_frame(const char *path, const skel *s, long number, amc_frame *f)
+{
+	static tool_motion m;
+	if (tool_motion_open(&m, path, s) < 0)
+		return -1;
+	int r;
+	long first = -1, last = -1;
+	while ((r = tool_motion_next(&m, f)) > 0) {
+		if (first < 0)
+			first = f->number;
+		last = f->number;
+		if (number < 0 || f->number == number)
+			break;
+	}
+	tool_motion_close(&m);
+	if (r < 0)
+		return -1;
+	if (r == 0) {
+		no_frame(path, number, first, last);
+		return -1;
+	}
+	return 0;
+}

@@ -28,6 +28,11 @@ int tool_motion_open(tool_motion *m, const char *path, const skel *s);
 int tool_motion_next(tool_motion *m, amc_frame *f);
 void tool_motion_close(tool_motion *m);
 
+/* Reads frame number (as written in the file; < 0: the first frame) of the
+ * AMC at path into f. Returns 0, or -1 after reporting the error (naming
+ * the frames the file has when number is not one of them). */
+int tool_read_frame(const char *path, const skel *s, long number, amc_frame *f);
+
 /* Parses a whole decimal integer argument; -1 (reported) when it is not. */
 int tool_parse_long(const char *opt, const char *text, long *out);
 

@@ -33,9 +33,5 @@ void tool_skin_pose(tool_skin *t, const skel_pose *pose);
  * into pos and into nrm. */
 void tool_skin_run(tool_skin *t, skin_algo algo, float *pos, float *nrm);
 
-/* Reads frame number (as written in the file) of the AMC at path into f.
- * Returns 0, or -1 after reporting the error (naming the frames the file
- * has when number is not one of them). */
-int tool_read_frame(const char *path, const skel *s, long number, amc_frame *f);
 
 #endif

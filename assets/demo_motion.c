@@ -60,7 +60,7 @@ static void walk(pose *p, double t, double w)
 
 static void bend(pose *p, double s)
 {
-	p->root[1] -= 6.5 * s;
+	p->root[1] -= 10.0 * s;
 	p->lowerback[0] += 25 * s;
 	p->head[0] -= 15 * s;
 	for (int i = 0; i < 2; i++) {

@@ -1,0 +1,87 @@
+/* The renderer: a lit body (skinned on the CPU or in the vertex shader), a
+ * ground grid with a soft blob shadow, a camera following the root, a
+ * skeleton overlay, a weight view, a HUD, and a compare view with two
+ * algorithms side by side. OpenGL ES 2.0 through gl_api; no allocation:
+ * the renderer is one struct the caller owns (keep it static). */
+#ifndef RENDER_H
+#define RENDER_H
+
+#include "camera.h"
+#include "fk.h"
+#include "gl_api.h"
+#include "render_shaders.h"
+#include "skin.h"
+
+typedef enum render_view {
+	RENDER_VIEW_BODY,        /* the shaded body */
+	RENDER_VIEW_SKELETON,    /* body plus the skeleton drawn over it */
+	RENDER_VIEW_WEIGHTS,     /* body coloured by its bone weights */
+	RENDER_VIEW_COUNT
+} render_view;
+
+const char *render_view_name(render_view v);
+
+#define RENDER_MAX_PANELS 2
+#define RENDER_HUD_LINES 4
+#define RENDER_MAX_TEXT 512     /* glyphs drawn per frame */
+
+/* One side of the picture: which algorithm, and for CPU skinning the
+ * skinned positions and normals (xyz per vertex). */
+typedef struct render_panel {
+	skin_algo algo;
+	const float *pos, *nrm;  /* NULL: skin on the GPU from the bone uniforms */
+	const char *label;       /* drawn at the top of the panel in compare view */
+} render_panel;
+
+typedef struct render_frame {
+	const skel_pose *pose;   /* posed skeleton (overlay, camera) */
+	const skin_bones *bones; /* this frame's bone transforms (GPU skinning) */
+	render_panel panel[RENDER_MAX_PANELS];
+	int panel_count;         /* 1, or 2 for the compare view */
+	render_view view;
+	const char *hud[RENDER_HUD_LINES]; /* top-left text, NULL lines skipped */
+	float dt;                /* seconds since the previous frame (camera) */
+} render_frame;
+
+typedef struct renderer {
+	const gl_api *gl;
+	int width, height, rotation;
+	int vert_count, index_count, bone_count;
+	const skel *skel;
+	GLuint prog[6];
+	GLuint vbo_static;       /* bind pos, nrm, weight colour, bones, weights */
+	GLuint vbo_skinned[RENDER_MAX_PANELS];
+	GLuint ibo, vbo_misc, font_tex;
+	int font_w;
+	float floor_y;
+	follow_camera cam;
+	mat4 screen;             /* rotation for screens mounted sideways */
+	float misc[6 * 1024];    /* grid, shadow and overlay vertices */
+	float text[RENDER_MAX_TEXT * 6 * 5];
+	float bone_uniforms[RENDER_BONE_VEC4S * 4];
+} renderer;
+
+/* Uploads the bound body: bind-pose vertices and influences from soa,
+ * triangles (vertex indices must fit 16 bits: GLES 2.0), and builds the
+ * shaders. floor_y is the ground height (the lowest point of the body in
+ * its first frame). */
+skp_status render_init(renderer *r, const gl_api *gl, int width, int height, int rotation,
+		       const skel *s, const skin_soa *soa, const uint32_t (*tri)[3], int tri_count,
+		       float floor_y, skp_error *err);
+
+/* 1 when the skeleton's bone uniforms for algo fit GLES 2.0's guaranteed
+ * vertex uniforms, so GPU skinning can be used. */
+int render_gpu_fits(const renderer *r, skin_algo algo);
+
+/* Sends the CPU-skinned vertices of every panel to the GPU (apart from
+ * render_draw so the two can be timed separately). */
+void render_upload(renderer *r, const render_frame *f);
+
+void render_draw(renderer *r, const render_frame *f);
+
+/* Reads the frame back as RGBA8, bottom row first (glReadPixels order). */
+void render_read_rgba(const renderer *r, uint8_t *rgba);
+
+void render_shutdown(renderer *r);
+
+#endif

@@ -1,0 +1,321 @@
+/* One frame: for each panel the grid and shadow, the body, the skeleton
+ * overlay and the label; then the HUD over the whole screen. */
+#include <math.h>
+#include <string.h>
+
+#include "render_font.h"
+#include "render_internal.h"
+
+static const float skin_rgb[3] = { 0.86f, 0.67f, 0.56f };
+
+void render_logical_size(const renderer *r, int *w, int *h)
+{
+	int sideways = r->rotation & 1;
+	*w = sideways ? r->height : r->width;
+	*h = sideways ? r->width : r->height;
+}
+
+/* Logical rectangle to the physical viewport, following mat4_rotate_z90. */
+void render_set_viewport(const renderer *r, render_rect a)
+{
+	int lw, lh;
+	render_logical_size(r, &lw, &lh);
+	switch (r->rotation) {
+	case 1: r->gl->Viewport(lh - a.y - a.h, a.x, a.h, a.w); break;
+	case 2: r->gl->Viewport(lw - a.x - a.w, lh - a.y - a.h, a.w, a.h); break;
+	case 3: r->gl->Viewport(a.y, lw - a.x - a.w, a.h, a.w); break;
+	default: r->gl->Viewport(a.x, a.y, a.w, a.h); break;
+	}
+}
+
+static void stream(renderer *r, const float *data, int floats)
+{
+	const gl_api *gl = r->gl;
+	gl->BindBuffer(GL_ARRAY_BUFFER, r->vbo_misc);
+	gl->BufferData(GL_ARRAY_BUFFER, (GLsizeiptr)floats * 4, data, GL_STREAM_DRAW);
+}
+
+static void use_flat(renderer *r, const mat4 *vp, const float rgba[4], float point)
+{
+	const gl_api *gl = r->gl;
+	gl->UseProgram(r->prog[SHADER_FLAT]);
+	gl->UniformMatrix4fv(render_loc[SHADER_FLAT][U_MVP], 1, GL_FALSE, vp->m);
+	gl->Uniform4fv(render_loc[SHADER_FLAT][U_COLOR], 1, rgba);
+	gl->Uniform1f(render_loc[SHADER_FLAT][U_POINT], point);
+}
+
+static void attrib(const gl_api *gl, GLuint slot, int size, int stride, size_t offset)
+{
+	gl->EnableVertexAttribArray(slot);
+	gl->VertexAttribPointer(slot, size, GL_FLOAT, GL_FALSE, stride, (const void *)offset);
+}
+
+static void disable_attribs(const gl_api *gl)
+{
+	for (GLuint a = 0; a <= ATTR_UV; a++)
+		gl->DisableVertexAttribArray(a);
+}
+
+/* A floor under the grid makes the blob shadow readable. */
+static void draw_floor(renderer *r, const mat4 *vp, float cx, float cz, float e, float y)
+{
+	const gl_api *gl = r->gl;
+	float q[18] = { cx - e, y, cz - e,  cx - e, y, cz + e,  cx + e, y, cz + e,
+			cx - e, y, cz - e,  cx + e, y, cz + e,  cx + e, y, cz - e };
+	static const float floor_rgba[4] = { 0.27f, 0.29f, 0.33f, 1.0f };
+	use_flat(r, vp, floor_rgba, 1.0f);
+	stream(r, q, 18);
+	attrib(gl, ATTR_POS, 3, 12, 0);
+	gl->DrawArrays(GL_TRIANGLES, 0, 6);
+	disable_attribs(gl);
+}
+
+void render_grid_and_shadow(renderer *r, const mat4 *vp, vec3 root)
+{
+	const gl_api *gl = r->gl;
+	float step = r->cam.height * 0.25f, y = r->floor_y;
+	float cx = floorf(r->cam.target.x / step) * step, cz = floorf(r->cam.target.z / step) * step;
+	const int half = 16;
+	int n = 0;
+	draw_floor(r, vp, cx, cz, (float)half * step, y - 0.001f * r->cam.height);
+	for (int i = -half; i <= half; i++) {
+		float o = (float)i * step, e = (float)half * step;
+		float l[12] = { cx + o, y, cz - e, cx + o, y, cz + e, cx - e, y, cz + o, cx + e, y, cz + o };
+		memcpy(r->misc + n, l, sizeof l);
+		n += 12;
+	}
+	static const float grid_rgba[4] = { 0.40f, 0.43f, 0.49f, 1.0f };
+	use_flat(r, vp, grid_rgba, 1.0f);
+	stream(r, r->misc, n);
+	attrib(gl, ATTR_POS, 3, 12, 0);
+	gl->DrawArrays(GL_LINES, 0, n / 3);
+	disable_attribs(gl);
+
+	/* the blob: a quad on the floor under the root, alpha from the centre */
+	float s = r->cam.height * 0.32f, h = y + 0.002f * r->cam.height;
+	float q[30] = { /* counter-clockwise seen from above */
+		root.x - s, h, root.z - s, -1, -1,  root.x - s, h, root.z + s, -1, 1,
+		root.x + s, h, root.z + s, 1, 1,    root.x - s, h, root.z - s, -1, -1,
+		root.x + s, h, root.z + s, 1, 1,    root.x + s, h, root.z - s, 1, -1,
+	};
+	gl->UseProgram(r->prog[SHADER_SHADOW]);
+	gl->UniformMatrix4fv(render_loc[SHADER_SHADOW][U_MVP], 1, GL_FALSE, vp->m);
+	gl->Uniform1f(render_loc[SHADER_SHADOW][U_STRENGTH], 0.55f);
+	gl->Enable(GL_BLEND);
+	gl->BlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+	gl->DepthMask(GL_FALSE);
+	stream(r, q, 30);
+	attrib(gl, ATTR_POS, 3, 20, 0);
+	attrib(gl, ATTR_UV, 2, 20, 12);
+	gl->DrawArrays(GL_TRIANGLES, 0, 6);
+	disable_attribs(gl);
+	gl->DepthMask(GL_TRUE);
+	gl->Disable(GL_BLEND);
+}
+
+void render_skeleton(renderer *r, const mat4 *vp, const skel_pose *pose)
+{
+	const gl_api *gl = r->gl;
+	int n = 0;
+	for (int b = 1; b < r->bone_count && n + 6 <= (int)(sizeof r->misc / 4); b++) {
+		vec3 a = pose->head[b], t = pose->tip[b];
+		float l[6] = { a.x, a.y, a.z, t.x, t.y, t.z };
+		memcpy(r->misc + n, l, sizeof l);
+		n += 6;
+	}
+	static const float bone_rgba[4] = { 1.0f, 0.85f, 0.1f, 1.0f };
+	gl->Disable(GL_DEPTH_TEST);
+	use_flat(r, vp, bone_rgba, 5.0f);
+	stream(r, r->misc, n);
+	attrib(gl, ATTR_POS, 3, 12, 0);
+	gl->LineWidth(2.0f);
+	gl->DrawArrays(GL_LINES, 0, n / 3);
+	gl->DrawArrays(GL_POINTS, 0, n / 3);
+	gl->LineWidth(1.0f);
+	disable_attribs(gl);
+	gl->Enable(GL_DEPTH_TEST);
+}
+
+/* Bone uniforms in the layout the skinning shaders read. */
+static int bone_uniforms(renderer *r, const skin_bones *b, int as_dq)
+{
+	float *u = r->bone_uniforms;
+	for (int i = 0; i < r->bone_count; i++) {
+		if (as_dq) {
+			const float *q = b->dq8[i]; /* (w x y z) pairs to (x y z w) */
+			float v[8] = { q[1], q[2], q[3], q[0], q[5], q[6], q[7], q[4] };
+			memcpy(u + 8 * i, v, sizeof v);
+		} else {
+			memcpy(u + 12 * i, b->lbs12[i], 12 * sizeof(float));
+		}
+	}
+	return r->bone_count * (as_dq ? 2 : 3);
+}
+
+static void body_program(renderer *r, shader_kind k, const mat4 *vp, int weights_view)
+{
+	const gl_api *gl = r->gl;
+	vec3 key = vec3_normalize(vec3_make(0.45f, 0.8f, 0.55f));
+	vec3 fill = vec3_normalize(vec3_make(-0.7f, 0.25f, 0.2f));
+	gl->UseProgram(r->prog[k]);
+	gl->UniformMatrix4fv(render_loc[k][U_MVP], 1, GL_FALSE, vp->m);
+	gl->Uniform3f(render_loc[k][U_KEY], key.x, key.y, key.z);
+	gl->Uniform3f(render_loc[k][U_FILL], fill.x, fill.y, fill.z);
+	gl->Uniform3fv(render_loc[k][U_SKIN], 1, skin_rgb);
+	gl->Uniform1f(render_loc[k][U_USE_COL], weights_view ? 1.0f : 0.0f);
+}
+
+void render_body(renderer *r, const mat4 *vp, const render_frame *f, int panel)
+{
+	const gl_api *gl = r->gl;
+	const render_panel *p = &f->panel[panel];
+	int weights_view = f->view == RENDER_VIEW_WEIGHTS;
+	if (p->pos) {
+		body_program(r, SHADER_BODY_CPU, vp, weights_view);
+		gl->BindBuffer(GL_ARRAY_BUFFER, r->vbo_skinned[panel]);
+		attrib(gl, ATTR_POS, 3, 12, 0);
+		attrib(gl, ATTR_NRM, 3, 12, (size_t)r->vert_count * 12);
+	} else {
+		int as_dq = p->algo != SKIN_LBS;
+		shader_kind k = as_dq ? SHADER_BODY_DQBS : SHADER_BODY_LBS;
+		body_program(r, k, vp, weights_view);
+		gl->Uniform4fv(render_loc[k][U_BONE], bone_uniforms(r, f->bones, as_dq), r->bone_uniforms);
+		gl->BindBuffer(GL_ARRAY_BUFFER, r->vbo_static);
+		attrib(gl, ATTR_POS, 3, STATIC_STRIDE, 0);
+		attrib(gl, ATTR_NRM, 3, STATIC_STRIDE, 12);
+		attrib(gl, ATTR_BONES, 4, STATIC_STRIDE, 36);
+		attrib(gl, ATTR_WEIGHTS, 4, STATIC_STRIDE, 52);
+	}
+	gl->BindBuffer(GL_ARRAY_BUFFER, r->vbo_static);
+	attrib(gl, ATTR_COL, 3, STATIC_STRIDE, 24);
+	gl->BindBuffer(GL_ELEMENT_ARRAY_BUFFER, r->ibo);
+	gl->DrawElements(GL_TRIANGLES, r->index_count, GL_UNSIGNED_SHORT, 0);
+	disable_attribs(gl);
+}
+
+void render_upload(renderer *r, const render_frame *f)
+{
+	const gl_api *gl = r->gl;
+	GLsizeiptr bytes = (GLsizeiptr)r->vert_count * 12;
+	for (int i = 0; i < f->panel_count && i < RENDER_MAX_PANELS; i++) {
+		if (!f->panel[i].pos)
+			continue;
+		gl->BindBuffer(GL_ARRAY_BUFFER, r->vbo_skinned[i]);
+		gl->BufferSubData(GL_ARRAY_BUFFER, 0, bytes, f->panel[i].pos);
+		gl->BufferSubData(GL_ARRAY_BUFFER, bytes, bytes, f->panel[i].nrm);
+	}
+}
+
+int render_text(renderer *r, render_rect area, int x, int y, int scale, const char *s,
+		const float rgba[4])
+{
+	const gl_api *gl = r->gl;
+	int n = 0, pen = x;
+	float top = (float)(area.h - y), du = 1.0f / (float)r->font_w, dv = 1.0f / 16.0f;
+	for (; *s && n < RENDER_MAX_TEXT; s++, pen += (FONT_GLYPH_W + 1) * scale) {
+		int g = font_glyph_index(*s);
+		if (g < 0)
+			continue;
+		float x0 = (float)(pen - scale), x1 = x0 + (float)(FONT_CELL_W * scale);
+		float y1 = top + (float)scale, y0 = y1 - (float)(FONT_CELL_H * scale);
+		float u0 = (float)(g * FONT_CELL_W) * du, u1 = u0 + FONT_CELL_W * du;
+		float v0 = 0.0f, v1 = FONT_CELL_H * dv;
+		float q[30] = { x0, y0, 0, u0, v1,  x1, y0, 0, u1, v1,  x1, y1, 0, u1, v0,
+				x0, y0, 0, u0, v1,  x1, y1, 0, u1, v0,  x0, y1, 0, u0, v0 };
+		memcpy(r->text + 30 * n++, q, sizeof q);
+	}
+	if (n == 0)
+		return pen - x;
+	mat4 ortho = mat4_ortho(0, (float)area.w, 0, (float)area.h, -1, 1);
+	mat4 m = mat4_mul(&r->screen, &ortho);
+	gl->UseProgram(r->prog[SHADER_TEXT]);
+	gl->UniformMatrix4fv(render_loc[SHADER_TEXT][U_MVP], 1, GL_FALSE, m.m);
+	gl->Uniform4fv(render_loc[SHADER_TEXT][U_COLOR], 1, rgba);
+	gl->Uniform1i(render_loc[SHADER_TEXT][U_FONT], 0);
+	gl->ActiveTexture(GL_TEXTURE0);
+	gl->BindTexture(GL_TEXTURE_2D, r->font_tex);
+	gl->Enable(GL_BLEND);
+	gl->BlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+	gl->Disable(GL_DEPTH_TEST);
+	stream(r, r->text, 30 * n);
+	attrib(gl, ATTR_POS, 3, 20, 0);
+	attrib(gl, ATTR_UV, 2, 20, 12);
+	gl->DrawArrays(GL_TRIANGLES, 0, 6 * n);
+	disable_attribs(gl);
+	gl->Enable(GL_DEPTH_TEST);
+	gl->Disable(GL_BLEND);
+	return pen - x;
+}
+
+static int text_scale(int logical_h)
+{
+	int s = logical_h / 240;
+	return s < 1 ? 1 : s;
+}
+
+static void draw_panel(renderer *r, const render_frame *f, int i, render_rect area)
+{
+	render_set_viewport(r, area);
+	mat4 cam = camera_matrix(&r->cam, (float)area.w / (float)area.h);
+	mat4 vp = mat4_mul(&r->screen, &cam);
+	render_grid_and_shadow(r, &vp, f->pose->tip[0]);
+	render_body(r, &vp, f, i);
+	if (f->view == RENDER_VIEW_SKELETON)
+		render_skeleton(r, &vp, f->pose);
+	if (f->panel_count > 1 && f->panel[i].label) {
+		static const float label_rgba[4] = { 1, 1, 1, 1 };
+		int s = text_scale(area.h) + 1;
+		int w = (int)strlen(f->panel[i].label) * (FONT_GLYPH_W + 1) * s;
+		render_text(r, area, (area.w - w) / 2, area.h - (FONT_CELL_H + 4) * s, s,
+			    f->panel[i].label, label_rgba);
+	}
+}
+
+static vec3 skeleton_center(const renderer *r, const skel_pose *pose)
+{
+	vec3 lo = pose->tip[0], hi = lo;
+	for (int b = 1; b < r->bone_count; b++) {
+		vec3 t = pose->tip[b];
+		lo = vec3_make(fminf(lo.x, t.x), fminf(lo.y, t.y), fminf(lo.z, t.z));
+		hi = vec3_make(fmaxf(hi.x, t.x), fmaxf(hi.y, t.y), fmaxf(hi.z, t.z));
+	}
+	return vec3_scale(vec3_add(lo, hi), 0.5f);
+}
+
+void render_draw(renderer *r, const render_frame *f)
+{
+	const gl_api *gl = r->gl;
+	int lw, lh;
+	render_logical_size(r, &lw, &lh);
+	camera_follow(&r->cam, skeleton_center(r, f->pose), f->dt);
+	gl->Enable(GL_DEPTH_TEST);
+	gl->Enable(GL_CULL_FACE);
+	gl->CullFace(GL_BACK);
+	gl->Viewport(0, 0, r->width, r->height);
+	gl->ClearColor(0.13f, 0.15f, 0.19f, 1.0f);
+	gl->Clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+	int n = f->panel_count < 1 ? 1 : f->panel_count;
+	for (int i = 0; i < n; i++) {
+		render_rect area = { i * lw / n, 0, (i + 1) * lw / n - i * lw / n, lh };
+		draw_panel(r, f, i, area);
+	}
+	render_rect full = { 0, 0, lw, lh };
+	render_set_viewport(r, full);
+	if (n > 1) {
+		/* a divider between the halves */
+		static const float line_rgba[4] = { 0.8f, 0.8f, 0.8f, 1.0f };
+		mat4 px = mat4_ortho(0, (float)lw, 0, (float)lh, -1, 1);
+		mat4 m = mat4_mul(&r->screen, &px);
+		float l[6] = { (float)lw / 2, 0, 0, (float)lw / 2, (float)lh, 0 };
+		use_flat(r, &m, line_rgba, 1.0f);
+		stream(r, l, 6);
+		attrib(gl, ATTR_POS, 3, 12, 0);
+		gl->DrawArrays(GL_LINES, 0, 2);
+		disable_attribs(gl);
+	}
+	static const float hud_rgba[4] = { 0.95f, 0.95f, 0.85f, 1.0f };
+	int s = text_scale(lh);
+	for (int i = 0; i < RENDER_HUD_LINES; i++)
+		if (f->hud[i])
+			render_text(r, full, 4 * s, (4 + i * (FONT_CELL_H + 2)) * s, s, f->hud[i], hud_rgba);
+}

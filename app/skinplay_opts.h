@@ -1,0 +1,35 @@
+/* skinplay's command line. */
+#ifndef SKINPLAY_OPTS_H
+#define SKINPLAY_OPTS_H
+
+#include "cli_bind_args.h"
+#include "render.h"
+
+typedef enum play_algo { PLAY_LBS, PLAY_DQBS, PLAY_DQBS_FIXED, PLAY_COMPARE } play_algo;
+
+typedef struct play_opts {
+	const char *asf, *amc, *mesh, *image;
+	bind_args bind;
+	play_algo algo;
+	int gpu;                 /* --skin gpu */
+	const char *platform;    /* NULL or "auto" */
+	const char *device;
+	int rotation;
+	int width, height;
+	long frames;             /* -1: the clip once headless, forever on a display */
+	long start;              /* first frame number to show, -1: the clip's first */
+	const char *out_dir;
+	const char *sheet_path;  /* --sheet: contact sheet of the frames written */
+	int print_platform;      /* --print-platform: say what auto picks, exit */
+	long every;
+	render_view view;
+	int hud_fps;             /* 0: leave the measured fps out (reproducible images) */
+	double fps;              /* the clip's capture rate */
+} play_opts;
+
+/* Returns 0, 1 after printing help, or -1 after reporting an error. */
+int play_parse(play_opts *o, int argc, char **argv);
+
+const char *play_algo_name(play_algo a);
+
+#endif
