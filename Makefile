@@ -64,7 +64,7 @@ SKINPLAY := $(OUT)/skinplay
 # host program so that it can be tuned as code.
 HOSTCC   ?= cc
 DEMO_ASF := assets/demo.asf
-DEMO_AMC := $(BUILD)/assets/demo.amc
+DEMO_AMC := $(OUT)/assets/demo.amc
 
 CMOCKA_CFLAGS = $(shell pkg-config --cflags cmocka 2>/dev/null)
 CMOCKA_LIBS   = $(shell pkg-config --libs cmocka 2>/dev/null || echo -lcmocka)
@@ -72,10 +72,10 @@ CMOCKA_LIBS   = $(shell pkg-config --libs cmocka 2>/dev/null || echo -lcmocka)
 .PHONY: all deps test run size install clean help check-core
 all: $(SKINTOOL) $(SKINPLAY) $(DEMO_AMC)
 
-$(BUILD)/assets/demo_motion: assets/demo_motion.c
+$(OUT)/assets/demo_motion: assets/demo_motion.c
 	@mkdir -p $(@D)
 	$(HOSTCC) -std=c11 -D_DEFAULT_SOURCE $(WARN) -O2 $< -o $@ -lm
-$(DEMO_AMC): $(BUILD)/assets/demo_motion
+$(DEMO_AMC): $(OUT)/assets/demo_motion
 	$< > $@.tmp && mv $@.tmp $@
 
 # Objects depend on the flags they were built with, so switching SIMD or

@@ -292,8 +292,12 @@ void render_draw(renderer *r, const render_frame *f)
 	gl->Enable(GL_CULL_FACE);
 	gl->CullFace(GL_BACK);
 	gl->Viewport(0, 0, r->width, r->height);
+	gl->ColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
 	gl->ClearColor(0.13f, 0.15f, 0.19f, 1.0f);
 	gl->Clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+	/* keep the cleared, opaque alpha: blended shadow and text must not
+	 * make screenshots see-through */
+	gl->ColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_FALSE);
 	int n = f->panel_count < 1 ? 1 : f->panel_count;
 	for (int i = 0; i < n; i++) {
 		render_rect area = { i * lw / n, 0, (i + 1) * lw / n - i * lw / n, lh };
