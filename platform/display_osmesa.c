@@ -11,6 +11,7 @@
 #include <stdint.h>
 #include <string.h>
 
+#include "board_limits.h"
 #include "display_common.h"
 
 /* From <GL/osmesa.h> and <GL/gl.h>, which cannot share a file with the
@@ -28,11 +29,13 @@
 #define GL_RENDERER_                 0x1F01
 
 /* Largest framebuffer: the colour buffer is static (no malloc), and pages
- * never drawn to are never touched, so only the used size costs RAM. */
-#ifndef DISPLAY_OSMESA_MAX_W
+ * never drawn to are never touched, so only the used size costs RAM. A
+ * board may set SKP_DISPLAY_MAX_W/H in board_limits.h. */
+#ifdef SKP_DISPLAY_MAX_W
+#define DISPLAY_OSMESA_MAX_W SKP_DISPLAY_MAX_W
+#define DISPLAY_OSMESA_MAX_H SKP_DISPLAY_MAX_H
+#else
 #define DISPLAY_OSMESA_MAX_W 3840
-#endif
-#ifndef DISPLAY_OSMESA_MAX_H
 #define DISPLAY_OSMESA_MAX_H 2160
 #endif
 

@@ -4,6 +4,8 @@
 out=$1; shift
 export SKP_BUILD="$out"
 export SKP_SHARED="${SKP_SHARED:-../shared}"
+# Mesa's OSMesa keeps its framebuffer for ever: suppress that leak only
+export LSAN_OPTIONS="suppressions=$(pwd)/tests/lsan.supp${LSAN_OPTIONS:+:$LSAN_OPTIONS}"
 [ -d "$SKP_SHARED/data" ] || echo "note: $SKP_SHARED/data not found: tests that need the shared data report themselves skipped"
 run=0; passed=0; failed=0; skipped=0; failed_progs=""
 log=$(mktemp); trap 'rm -f "$log"' EXIT

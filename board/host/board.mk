@@ -6,5 +6,5 @@ BOARD_CFLAGS  := -O2 -g
 SIMD          ?= avx2
 # Debian packages `make deps` installs and the pkg-config modules that prove them.
 DEB_PKGS      := pkg-config libcmocka-dev libegl-dev libgles-dev libosmesa6-dev \
-                 libgbm-dev libdrm-dev libgpiod-dev libpng-dev libx11-dev
+                 libgbm-dev libdrm-dev libgpiod-dev libpng-dev libx11-dev xvfb
 PC_MODULES    := cmocka egl glesv2 osmesa gbm libdrm libgpiod libpng x11

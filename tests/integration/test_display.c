@@ -3,15 +3,12 @@
  * round-trip them through a PNG. surfaceless and osmesa must work on any
  * machine with Mesa (llvmpipe); x11 runs under Xvfb when it is installed;
  * kms can only be checked to fail cleanly without a DRM device. */
-#define _GNU_SOURCE /* dl_iterate_phdr */
 #include <stdarg.h>
 #include <stddef.h>
 #include <setjmp.h>
 #include <stdint.h>
 #include <cmocka.h>
 
-#include <dlfcn.h>
-#include <link.h>
 #include <poll.h>
 #include <signal.h>
 #include <stdio.h>
@@ -29,34 +26,12 @@
 #define H 48
 
 #if defined(__SANITIZE_ADDRESS__)
-/* Leaks inside Mesa, not ours, that LeakSanitizer would report:
- * - libOSMesa never frees the framebuffer OSMesaMakeCurrent makes (it has
- *   no call to do so): tests/lsan.supp names it, when run from the tree.
- * - Mesa's DRI driver keeps caches in globals; eglTerminate dlclose()s it,
- *   and LeakSanitizer then reports them from an unknown module, which no
- *   suppression can name. keep_dri_drivers_loaded() holds a reference so
- *   the globals stay reachable. */
+/* libOSMesa never frees the framebuffer OSMesaMakeCurrent makes (it has no
+ * call to do so): tests/lsan.supp names it, when run from the tree. */
 const char *__lsan_default_options(void);
 const char *__lsan_default_options(void)
 {
 	return access("tests/lsan.supp", R_OK) == 0 ? "suppressions=tests/lsan.supp" : "";
-}
-
-static int hold_dri(struct dl_phdr_info *info, size_t size, void *data)
-{
-	(void)size, (void)data;
-	if (strstr(info->dlpi_name, "/dri/") && strstr(info->dlpi_name, "_dri.so"))
-		dlopen(info->dlpi_name, RTLD_NOW | RTLD_NOLOAD);
-	return 0;
-}
-
-static void keep_dri_drivers_loaded(void)
-{
-	dl_iterate_phdr(hold_dri, NULL);
-}
-#else
-static void keep_dri_drivers_loaded(void)
-{
 }
 #endif
 
@@ -193,7 +168,6 @@ static void exercise(const display_backend *b, const char *device, int must_star
 		print_message("%s: cannot start: %s\n", b->name, err.msg);
 		skip();
 	}
-	keep_dri_drivers_loaded();
 	print_message("%s: GL_RENDERER %s\n", b->name, info.gl_renderer);
 	assert_int_equal(info.width, W);
 	assert_int_equal(info.height, H);

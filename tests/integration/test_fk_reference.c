@@ -14,6 +14,7 @@
 #include <string.h>
 #include <strings.h>
 
+#include "test_clips.h"
 #include "test_paths.h"
 
 #define RMAX 160
@@ -235,23 +236,6 @@ static double skeleton_height(const rskel *s)
 	return hi - lo;
 }
 
-typedef struct {
-	const char *asf, *amc;
-	long frames;
-} clip;
-
-static const clip clips[] = {
-	{ "mocap/cmu/02.asf", "mocap/cmu/02_01.amc", 343 },
-	{ "mocap/cmu/07.asf", "mocap/cmu/07_05.amc", 517 },
-	{ "mocap/cmu/09.asf", "mocap/cmu/09_06.amc", 141 },
-	{ "mocap/cmu/131.asf", "mocap/cmu/131_04.amc", 1086 },
-	{ "mocap/cmu/135.asf", "mocap/cmu/135_06.amc", 3261 },
-	{ "mocap/cmu/lambada.asf", "mocap/cmu/lambada.amc", 2180 },
-	{ "mocap/cmu/kick.asf", "mocap/cmu/kick.amc", 801 },
-	{ "mocap/cmu/backflip.asf", "mocap/cmu/backflip.amc", 247 },
-	{ "mocap/hdm05/HDM_dg.asf", "mocap/hdm05/HDM_dg_06-03_03_120.amc", 202 },
-	{ "mocap/endorphin/skeleton.asf", "mocap/endorphin/walking.amc", 1741 },
-};
 
 typedef struct {
 	double pos_err, rot_err, height;
@@ -259,7 +243,7 @@ typedef struct {
 } result;
 
 /* Reads the reference frames from the AMC in lockstep with skintool's CSV. */
-static void compare_clip(const clip *c, result *res)
+static void compare_clip(const test_clip *c, result *res)
 {
 	static rskel s;
 	static double v[RMAX][7];
@@ -343,12 +327,12 @@ static void test_all_clips_match_reference(void **state)
 	(void)state;
 	if (!test_data_path("mocap"))
 		skip();
-	for (size_t i = 0; i < sizeof clips / sizeof clips[0]; i++) {
+	for (size_t i = 0; i < (size_t)test_clip_count; i++) {
 		result r = { 0, 0, 0, 0, 0 };
-		compare_clip(&clips[i], &r);
+		compare_clip(&test_clips[i], &r);
 		print_message("%-45s %5ld frames, height %7.3f, max position error %.3g (%.2g of height), max rotation error %.3g\n",
-			      clips[i].amc, r.frames, r.height, r.pos_err, r.pos_err / r.height, r.rot_err);
-		assert_int_equal(r.frames, clips[i].frames);
+			      test_clips[i].amc, r.frames, r.height, r.pos_err, r.pos_err / r.height, r.rot_err);
+		assert_int_equal(r.frames, test_clips[i].frames);
 		assert_true(r.pos_err <= 1e-4 * r.height);
 		assert_true(r.rot_err <= 1e-4);
 	}

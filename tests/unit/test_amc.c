@@ -12,6 +12,7 @@
 #include <string.h>
 
 #include "test_parse.h"
+#include "test_clips.h"
 #include "test_paths.h"
 
 static skel s;
@@ -119,23 +120,6 @@ static void test_broken_inputs(void **state)
 	}
 }
 
-typedef struct clip {
-	const char *asf, *amc;
-	long frames;
-} clip;
-
-static const clip clips[] = {
-	{ "mocap/cmu/02.asf", "mocap/cmu/02_01.amc", 343 },
-	{ "mocap/cmu/07.asf", "mocap/cmu/07_05.amc", 517 },
-	{ "mocap/cmu/09.asf", "mocap/cmu/09_06.amc", 141 },
-	{ "mocap/cmu/131.asf", "mocap/cmu/131_04.amc", 1086 },
-	{ "mocap/cmu/135.asf", "mocap/cmu/135_06.amc", 3261 },
-	{ "mocap/cmu/lambada.asf", "mocap/cmu/lambada.amc", 2180 },
-	{ "mocap/cmu/kick.asf", "mocap/cmu/kick.amc", 801 },
-	{ "mocap/cmu/backflip.asf", "mocap/cmu/backflip.amc", 247 },
-	{ "mocap/hdm05/HDM_dg.asf", "mocap/hdm05/HDM_dg_06-03_03_120.amc", 202 },
-	{ "mocap/endorphin/skeleton.asf", "mocap/endorphin/walking.amc", 1741 },
-};
 
 typedef struct extremes {
 	long frames, last;
@@ -162,20 +146,20 @@ static void test_real_clips(void **state)
 	(void)state;
 	if (!test_data_path("mocap"))
 		skip();
-	for (size_t i = 0; i < sizeof clips / sizeof clips[0]; i++) {
+	for (size_t i = 0; i < (size_t)test_clip_count; i++) {
 		skp_error err;
-		assert_int_equal(test_parse_asf_file(test_data_path(clips[i].asf), &s, &err), SKP_OK);
+		assert_int_equal(test_parse_asf_file(test_data_path(test_clips[i].asf), &s, &err), SKP_OK);
 		size_t n;
-		char *data = test_read_file(test_data_path(clips[i].amc), &n);
+		char *data = test_read_file(test_data_path(test_clips[i].amc), &n);
 		assert_non_null(data);
 		extremes e = { 0, 0, 1, 0 };
 		long r = test_stream_amc(data, n, &s, &err, track, &e);
 		if (r < 0)
-			fail_msg("%s:%ld: %s", clips[i].amc, err.line, err.msg);
-		assert_int_equal(r, clips[i].frames);
+			fail_msg("%s:%ld: %s", test_clips[i].amc, err.line, err.msg);
+		assert_int_equal(r, test_clips[i].frames);
 		assert_true(e.consecutive);
-		assert_int_equal(e.last, clips[i].frames);
-		print_message("%-40s %5ld frames, largest angle %.0f deg\n", clips[i].amc, r, e.max_abs_deg);
+		assert_int_equal(e.last, test_clips[i].frames);
+		print_message("%-40s %5ld frames, largest angle %.0f deg\n", test_clips[i].amc, r, e.max_abs_deg);
 		/* every prefix of the first 40 KiB: a frame stream or a clean error */
 		for (size_t cut = 0; cut < n && cut < 40000; cut += 997) {
 			long rr = test_stream_amc(data, cut, &s, &err, NULL, NULL);

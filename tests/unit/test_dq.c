@@ -13,34 +13,19 @@
 #include "dq.h"
 #include "quat.h"
 #include "rigid.h"
+#include "test_rng.h"
 #include "vec3.h"
 
 #define N_RANDOM 2000
 #define PI 3.14159265358979323846
 
-static uint32_t rng_state;
-
 static int rng_reset(void **state)
 {
 	(void)state;
-	rng_state = 0x6b43a9b5u;
+	test_rng_seed(0x6b43a9b5u);
 	return 0;
 }
 
-static uint32_t rng_u32(void)
-{
-	uint32_t x = rng_state;
-
-	x ^= x << 13;
-	x ^= x >> 17;
-	x ^= x << 5;
-	return rng_state = x;
-}
-
-static double rng_range(double lo, double hi)
-{
-	return lo + (hi - lo) * (rng_u32() / 4294967296.0);
-}
 
 /* ---- double references ---------------------------------------------------- */
 
@@ -122,7 +107,7 @@ static drigid ref_dlb(const dq *bones, const uint16_t *idx, const double *w, int
 static vec3 rand_axis(void)
 {
 	for (;;) {
-		double x = rng_range(-1, 1), y = rng_range(-1, 1), z = rng_range(-1, 1);
+		double x = test_rng_range(-1, 1), y = test_rng_range(-1, 1), z = test_rng_range(-1, 1);
 		double n = sqrt(x * x + y * y + z * z);
 		if (n > 0.1 && n <= 1.0)
 			return vec3_make((float)(x / n), (float)(y / n), (float)(z / n));
@@ -131,14 +116,14 @@ static vec3 rand_axis(void)
 
 static vec3 rand_vec(double r)
 {
-	return vec3_make((float)rng_range(-r, r), (float)rng_range(-r, r), (float)rng_range(-r, r));
+	return vec3_make((float)test_rng_range(-r, r), (float)test_rng_range(-r, r), (float)test_rng_range(-r, r));
 }
 
 /* A random bone: float dq plus the exact double transform it stands for. */
 static dq rand_bone(drigid *ref, double tmax)
 {
 	vec3 k = rand_axis(), t = rand_vec(tmax);
-	float ang = (float)rng_range(-2 * PI, 2 * PI);
+	float ang = (float)test_rng_range(-2 * PI, 2 * PI);
 
 	rodrigues(dv_f(k), ang, ref->r);
 	ref->t = dv_f(t);
@@ -229,7 +214,7 @@ static void test_dq_normalize(void **state)
 	for (int i = 0; i < N_RANDOM; i++) {
 		drigid ref;
 		dq d = rand_bone(&ref, 100);
-		float s = (float)rng_range(0.2, 5.0), drift = (float)rng_range(-3, 3);
+		float s = (float)test_rng_range(0.2, 5.0), drift = (float)test_rng_range(-3, 3);
 		dq bad = d;
 		/* scale both parts and push dual along real: both unit
 		 * constraints broken, the transform unchanged in spirit */
@@ -364,8 +349,8 @@ static void test_blend_same_axis(void **state)
 
 	for (int i = 0; i < N_RANDOM; i++) {
 		vec3 k = rand_axis();
-		double a1 = rng_range(-PI, PI), delta = rng_range(-PI / 3, PI / 3);
-		float w1 = (float)rng_range(0, 1), w[2] = { w1, 1.0f - w1 };
+		double a1 = test_rng_range(-PI, PI), delta = test_rng_range(-PI / 3, PI / 3);
+		float w1 = (float)test_rng_range(0, 1), w[2] = { w1, 1.0f - w1 };
 		dq bones[2] = { dq_from_quat_trans(quat_from_axis_angle(k, (float)a1), vec3_make(0, 0, 0)),
 				dq_from_quat_trans(quat_from_axis_angle(k, (float)(a1 + delta)), vec3_make(0, 0, 0)) };
 		uint16_t idx[2] = { 0, 1 };
@@ -399,13 +384,13 @@ static void test_blend_random_unit(void **state)
 		dq bones[6];
 		for (int j = 0; j < 6; j++)
 			bones[j] = rand_bone(&refs[j], 100);
-		int n = 1 + (int)(rng_u32() % 4);
+		int n = 1 + (int)(test_rng_u32() % 4);
 		uint16_t idx[4];
 		float w[4];
 		double dw[4], sum = 0;
 		for (int j = 0; j < n; j++) {
 			idx[j] = (uint16_t)((i + j) % 6);
-			dw[j] = rng_range(0.05, 1);
+			dw[j] = test_rng_range(0.05, 1);
 			sum += dw[j];
 		}
 		for (int j = 0; j < n; j++) {

@@ -15,6 +15,7 @@
 
 #include "dq.h"
 #include "fixed.h"
+#include "test_rng.h"
 #include "fixed_convert.h"
 
 #define N_RANDOM 5000
@@ -22,31 +23,13 @@
 #define Q30 1073741824.0
 #define POS ((double)FX_POS_ONE)
 
-static uint32_t rng_state;
-
 static int rng_reset(void **state)
 {
 	(void)state;
-	rng_state = 0x1d872b41u;
+	test_rng_seed(0x1d872b41u);
 	return 0;
 }
 
-static uint32_t rng_u32(void)
-{
-	uint32_t x = rng_state;
-
-	x ^= x << 13;
-	x ^= x >> 17;
-	x ^= x << 5;
-	return rng_state = x;
-}
-
-static uint64_t rng_u64(void) { return (uint64_t)rng_u32() << 32 | rng_u32(); }
-
-static double rng_range(double lo, double hi)
-{
-	return lo + (hi - lo) * (rng_u32() / 4294967296.0);
-}
 
 /* ---- double references ---------------------------------------------------- */
 
@@ -125,7 +108,7 @@ static dxf dlb_ref(const dquat *real, const dquat *dual, const double *w, int n,
 static dquat rand_unit(void)
 {
 	for (;;) {
-		dquat q = { { rng_range(-1, 1), rng_range(-1, 1), rng_range(-1, 1), rng_range(-1, 1) } };
+		dquat q = { { test_rng_range(-1, 1), test_rng_range(-1, 1), test_rng_range(-1, 1), test_rng_range(-1, 1) } };
 		double n = dquat_norm(q);
 		if (n > 0.1 && n <= 1.0) {
 			for (int k = 0; k < 4; k++)
@@ -143,8 +126,8 @@ static fx_quat fx_unit(dquat q)
 
 static fx_vec3 rand_pos(double r)
 {
-	fx_vec3 v = { to_raw(rng_range(-r, r), POS), to_raw(rng_range(-r, r), POS),
-		      to_raw(rng_range(-r, r), POS) };
+	fx_vec3 v = { to_raw(test_rng_range(-r, r), POS), to_raw(test_rng_range(-r, r), POS),
+		      to_raw(test_rng_range(-r, r), POS) };
 	return v;
 }
 
@@ -159,11 +142,11 @@ static fx_vec3 rand_normal(void)
 /* Random 1..4 weights summing to exactly 32768. */
 static int rand_weights(fx_w15 *w)
 {
-	int n = 1 + (int)(rng_u32() % 4);
+	int n = 1 + (int)(test_rng_u32() % 4);
 	float f[4];
 
 	for (int i = 0; i < n; i++)
-		f[i] = (float)rng_range(0.01, 1);
+		f[i] = (float)test_rng_range(0.01, 1);
 	assert_int_equal(fx_weights_from_float(f, w, n), SKP_OK);
 	return n;
 }
@@ -191,7 +174,7 @@ static void test_mul_q30(void **state)
 	(void)state;
 	for (int i = 0; i < 20 * N_RANDOM; i++) {
 		/* a in [-1, 1], b anything: the result must be a * b rounded */
-		int32_t a = to_raw(rng_range(-1, 1), Q30), b = (int32_t)rng_u32();
+		int32_t a = to_raw(test_rng_range(-1, 1), Q30), b = (int32_t)test_rng_u32();
 		double want = q30d(a) * b;
 		track(E_MUL, fx_mul_q30(a, b), want, 0.5 + 1e-6, "fx_mul_q30 (LSB of b's format)");
 	}
@@ -212,8 +195,8 @@ static void test_quat_mul(void **state)
 		for (int k = 0; k < 4; k++)
 			track(E_QMUL, got.c[k], want.c[k], 1e-9, "fx_quat_mul");
 		/* unit times a Q16.16 quaternion: result in Q16.16 */
-		fx_quat d = { to_raw(rng_range(-500, 500), POS), to_raw(rng_range(-500, 500), POS),
-			      to_raw(rng_range(-500, 500), POS), to_raw(rng_range(-500, 500), POS) };
+		fx_quat d = { to_raw(test_rng_range(-500, 500), POS), to_raw(test_rng_range(-500, 500), POS),
+			      to_raw(test_rng_range(-500, 500), POS), to_raw(test_rng_range(-500, 500), POS) };
 		dquat wd = dquat_mul(dquat_q30(a), dquat_pos(d)), gd = dquat_pos(fx_quat_mul(a, d));
 		for (int k = 0; k < 4; k++)
 			track(E_QMUL, gd.c[k] * 1e-6, wd.c[k] * 1e-6, 1e-9, "fx_quat_mul mixed (scaled)");
@@ -260,7 +243,7 @@ static void test_rotate_extremes(void **state)
 	(void)state;
 	for (int i = 0; i < N_RANDOM; i++) {
 		fx_quat q = fx_unit(rand_unit());
-		fx_vec3 v = { (int32_t)rng_u32(), (int32_t)rng_u32(), (int32_t)rng_u32() };
+		fx_vec3 v = { (int32_t)test_rng_u32(), (int32_t)test_rng_u32(), (int32_t)test_rng_u32() };
 		if (i % 7 == 0)
 			v.x = v.y = v.z = (i & 8) ? INT32_MAX : INT32_MIN;
 		double m[3][3], dv[3] = { v.x, v.y, v.z }, want[3];
@@ -275,7 +258,7 @@ static void test_rotate_extremes(void **state)
 				fail_msg("extreme rotate: got %d want %.1f", got[k], w);
 		}
 		/* unit real, arbitrary dual: translation sums cannot overflow */
-		fx_dq d = { q, { (int32_t)rng_u32(), (int32_t)rng_u32(), (int32_t)rng_u32(), (int32_t)rng_u32() } };
+		fx_dq d = { q, { (int32_t)test_rng_u32(), (int32_t)test_rng_u32(), (int32_t)test_rng_u32(), (int32_t)test_rng_u32() } };
 		(void)fx_dq_translation(&d);
 		(void)fx_quat_mul(q, d.dual);
 	}
@@ -288,7 +271,7 @@ static void test_isqrt_rsqrt(void **state)
 				  (uint64_t)UINT32_MAX * UINT32_MAX - 1, UINT64_MAX, UINT64_MAX - 1,
 				  (uint64_t)1 << 62, ((uint64_t)1 << 62) - 1 };
 	for (size_t i = 0; i < sizeof edge / sizeof edge[0] + 20 * N_RANDOM; i++) {
-		uint64_t x = i < sizeof edge / sizeof edge[0] ? edge[i] : rng_u64() >> (rng_u32() % 64);
+		uint64_t x = i < sizeof edge / sizeof edge[0] ? edge[i] : test_rng_u64() >> (test_rng_u32() % 64);
 		unsigned __int128 s = fx_isqrt64(x);
 		if (!(s * s <= x && (s + 1) * (s + 1) > x))
 			fail_msg("isqrt(%llu) = %llu", (unsigned long long)x, (unsigned long long)s);
@@ -296,7 +279,7 @@ static void test_isqrt_rsqrt(void **state)
 	double worst = 0;
 	for (int i = 0; i < 20 * N_RANDOM; i++) {
 		/* squared norms from 2^-30 up to just below 4 (Q60) */
-		uint64_t x = (rng_u64() >> 2) >> (rng_u32() % 61);
+		uint64_t x = (test_rng_u64() >> 2) >> (test_rng_u32() % 61);
 		if (x == 0)
 			continue;
 		int shift;
@@ -480,8 +463,8 @@ static void test_end_to_end_from_float(void **state)
 			for (int j = 0; j < 8; j++) {
 				dquat q = rand_unit();
 				quat fq = { (float)q.c[0], (float)q.c[1], (float)q.c[2], (float)q.c[3] };
-				vec3 t = vec3_make((float)rng_range(-1000, 1000), (float)rng_range(-1000, 1000),
-						   (float)rng_range(-1000, 1000));
+				vec3 t = vec3_make((float)test_rng_range(-1000, 1000), (float)test_rng_range(-1000, 1000),
+						   (float)test_rng_range(-1000, 1000));
 				fb[j] = dq_from_quat_trans(quat_normalize(fq), t);
 				bones[j] = fx_dq_from_dq(&fb[j]);
 			}
@@ -501,8 +484,8 @@ static void test_end_to_end_from_float(void **state)
 		fx_quat pivot = fx_dq_blend_pivot(bones, idx, w, n);
 		fx_dq b = fx_dq_blend_normalized(bones, idx, w, n, pivot);
 		dxf ref = dlb_ref(real, dual, dw, n, dquat_q30(pivot));
-		vec3 fp = vec3_make((float)rng_range(-1000, 1000), (float)rng_range(-1000, 1000),
-				    (float)rng_range(-1000, 1000));
+		vec3 fp = vec3_make((float)test_rng_range(-1000, 1000), (float)test_rng_range(-1000, 1000),
+				    (float)test_rng_range(-1000, 1000));
 		vec3 got = fx_vec3_to_vec3(fx_dq_transform_point(&b, fx_vec3_from_vec3(fp)));
 		double dp[3] = { fp.x, fp.y, fp.z }, want[3];
 		dmat_apply(ref.r, dp, want);
@@ -535,9 +518,9 @@ static void test_convert(void **state)
 	assert_int_equal(fx_w15_from_float(2.0f), 32768);
 	assert_int_equal(fx_w15_from_float(-1.0f), 0);
 	for (int i = 0; i < N_RANDOM; i++) {
-		float f = (float)rng_range(-1000, 1000);
+		float f = (float)test_rng_range(-1000, 1000);
 		assert_true(fabs(fx_pos_to_double(fx_pos_from_float(f)) - f) <= 0.5 / POS);
-		float u = (float)rng_range(-1, 1);
+		float u = (float)test_rng_range(-1, 1);
 		assert_true(fabs(fx_q30_to_double(fx_q30_from_float(u)) - u) <= 0.5 / Q30);
 		/* from 2^-7 up a float's ulp is a multiple of 2^-30: exact */
 		if (fabsf(u) >= 1.0f / 128)
@@ -565,12 +548,12 @@ static void test_weights(void **state)
 	assert_int_equal(fx_weights_from_float(neg, out, 2), SKP_ERR_RANGE);
 
 	for (int i = 0; i < N_RANDOM; i++) {
-		int n = 1 + (int)(rng_u32() % 8);
+		int n = 1 + (int)(test_rng_u32() % 8);
 		float w[8];
 		double s = 0;
 		for (int j = 0; j < n; j++) {
 			/* include tiny and zero weights */
-			w[j] = (rng_u32() % 5 == 0) ? 0.0f : (float)pow(10, rng_range(-6, 0));
+			w[j] = (test_rng_u32() % 5 == 0) ? 0.0f : (float)pow(10, test_rng_range(-6, 0));
 			s += w[j];
 		}
 		if (s == 0)

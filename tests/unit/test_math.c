@@ -13,6 +13,7 @@
 
 #include "quat.h"
 #include "rigid.h"
+#include "test_rng.h"
 #include "vec3.h"
 
 #define N_RANDOM 2000
@@ -20,29 +21,13 @@
 
 /* ---- PRNG ---------------------------------------------------------------- */
 
-static uint32_t rng_state;
-
 static int rng_reset(void **state)
 {
 	(void)state;
-	rng_state = 0x2545f491u;
+	test_rng_seed(0x2545f491u);
 	return 0;
 }
 
-static uint32_t rng_u32(void)
-{
-	uint32_t x = rng_state;
-
-	x ^= x << 13;
-	x ^= x >> 17;
-	x ^= x << 5;
-	return rng_state = x;
-}
-
-static double rng_range(double lo, double hi)
-{
-	return lo + (hi - lo) * (rng_u32() / 4294967296.0);
-}
 
 /* ---- double references ---------------------------------------------------- */
 
@@ -103,7 +88,7 @@ static void dmat_mul(const double a[3][3], const double b[3][3], double r[3][3])
 static vec3 rand_axis(void)
 {
 	for (;;) {
-		double x = rng_range(-1, 1), y = rng_range(-1, 1), z = rng_range(-1, 1);
+		double x = test_rng_range(-1, 1), y = test_rng_range(-1, 1), z = test_rng_range(-1, 1);
 		double n = sqrt(x * x + y * y + z * z);
 		if (n > 0.1 && n <= 1.0)
 			return vec3_make((float)(x / n), (float)(y / n), (float)(z / n));
@@ -112,7 +97,7 @@ static vec3 rand_axis(void)
 
 static vec3 rand_vec(double r)
 {
-	return vec3_make((float)rng_range(-r, r), (float)rng_range(-r, r), (float)rng_range(-r, r));
+	return vec3_make((float)test_rng_range(-r, r), (float)test_rng_range(-r, r), (float)test_rng_range(-r, r));
 }
 
 /* Reference matrix for a float axis that is unit only to float precision. */
@@ -169,7 +154,7 @@ static void test_vec3_ops(void **state)
 	/* |components| <= 100: products up to 3e4, float ulp there ~2e-3 */
 	for (int i = 0; i < N_RANDOM; i++) {
 		vec3 a = rand_vec(100), b = rand_vec(100);
-		float s = (float)rng_range(-10, 10);
+		float s = (float)test_rng_range(-10, 10);
 		dvec da = dv_f(a), db = dv_f(b);
 
 		vec_close(vec3_add(a, b), dv(da.x + db.x, da.y + db.y, da.z + db.z), 2e-5, 0, "add");
@@ -195,10 +180,10 @@ static void test_quat_mul(void **state)
 	(void)state;
 	/* components in [-1, 1]: sums of 4 products, tolerance 8 ulps of 1 */
 	for (int i = 0; i < N_RANDOM; i++) {
-		quat a = { (float)rng_range(-1, 1), (float)rng_range(-1, 1),
-			   (float)rng_range(-1, 1), (float)rng_range(-1, 1) };
-		quat b = { (float)rng_range(-1, 1), (float)rng_range(-1, 1),
-			   (float)rng_range(-1, 1), (float)rng_range(-1, 1) };
+		quat a = { (float)test_rng_range(-1, 1), (float)test_rng_range(-1, 1),
+			   (float)test_rng_range(-1, 1), (float)test_rng_range(-1, 1) };
+		quat b = { (float)test_rng_range(-1, 1), (float)test_rng_range(-1, 1),
+			   (float)test_rng_range(-1, 1), (float)test_rng_range(-1, 1) };
 		quat_close(quat_mul(a, b), dq_ref_mul(dquat_f(a), dquat_f(b)), 1e-6, 1, "quat_mul");
 		quat c = quat_conj(a);
 		assert_true(c.w == a.w && c.x == -a.x && c.y == -a.y && c.z == -a.z);
@@ -222,7 +207,7 @@ static void test_quat_rotate_and_matrix(void **state)
 	 * within 1e-5 */
 	for (int i = 0; i < N_RANDOM; i++) {
 		vec3 k = rand_axis();
-		float ang = (float)rng_range(-4 * PI, 4 * PI);
+		float ang = (float)test_rng_range(-4 * PI, 4 * PI);
 		double m[3][3];
 		float fm[3][3];
 		vec3 v = rand_vec(10);
@@ -251,7 +236,7 @@ static void test_quat_composition(void **state)
 	(void)state;
 	for (int i = 0; i < N_RANDOM; i++) {
 		vec3 k = rand_axis();
-		float a = (float)rng_range(-PI, PI), b = (float)rng_range(-PI, PI);
+		float a = (float)test_rng_range(-PI, PI), b = (float)test_rng_range(-PI, PI);
 		/* half angles add: q(a) q(b) = q(a + b) exactly, sign included */
 		quat ab = quat_mul(quat_from_axis_angle(k, a), quat_from_axis_angle(k, b));
 		double h = 0.5 * ((double)a + (double)b);
@@ -295,7 +280,7 @@ static void test_quat_from_mat3(void **state)
 	 * method divides by at least ~1, so the quaternion stays within 1e-6
 	 * even at 180 degrees, where the trace branch would lose it. */
 	for (int i = 0; i < N_RANDOM; i++)
-		check_from_mat3(rand_axis(), rng_range(-PI, PI), 1e-6);
+		check_from_mat3(rand_axis(), test_rng_range(-PI, PI), 1e-6);
 	const double near[] = { 0.0, 1e-7, 1e-5, 1e-3, 1e-2 };
 	for (int i = 0; i < 500; i++) {
 		vec3 k = rand_axis();
@@ -320,7 +305,7 @@ typedef struct drigid { double r[3][3]; dvec t; } drigid;
 static rigid rand_rigid(drigid *ref, double tmax)
 {
 	vec3 k = rand_axis(), t = rand_vec(tmax);
-	float ang = (float)rng_range(-PI, PI);
+	float ang = (float)test_rng_range(-PI, PI);
 
 	rodrigues_f(k, ang, ref->r);
 	ref->t = dv_f(t);

@@ -1,0 +1,14 @@
+/* Every motion clip in ../shared/data/mocap with its skeleton and frame
+ * count (SOURCES.md), for the tests that sweep all of them. */
+#ifndef TEST_CLIPS_H
+#define TEST_CLIPS_H
+
+typedef struct test_clip {
+	const char *asf, *amc;   /* relative to the shared data directory */
+	long frames;
+} test_clip;
+
+extern const test_clip test_clips[];
+extern const int test_clip_count;
+
+#endif
