@@ -138,6 +138,7 @@ deps:
 	if [ -z "$$missing" ]; then \
 	  for m in $(PC_MODULES); do pkg-config --exists $$m || missing="$$missing $$m"; done; \
 	fi; \
+	for t in $(DEB_TOOLS); do command -v $$t >/dev/null 2>&1 || missing="$$missing $$t"; done; \
 	if [ -n "$$missing" ]; then \
 	  echo "deps: missing:$$missing"; \
 	  if [ "$$(id -u)" = 0 ] && command -v apt-get >/dev/null 2>&1; then \

@@ -8,3 +8,5 @@ SIMD          ?= avx2
 DEB_PKGS      := pkg-config libcmocka-dev libegl-dev libgles-dev libosmesa6-dev \
                  libgbm-dev libdrm-dev libgpiod-dev libpng-dev libx11-dev xvfb
 PC_MODULES    := cmocka egl glesv2 osmesa gbm libdrm libgpiod libpng x11
+# programs the tests use (Xvfb: the X11 display test)
+DEB_TOOLS     := Xvfb
