@@ -6,6 +6,12 @@ DESTDIR  ?=
 
 include board/$(BOARD)/board.mk
 
+# Microcontroller boards (cortex-m4, cortex-m0) build the portable core and
+# a semihosted test instead of the Linux programs: tests/embedded/mcu.mk.
+ifeq ($(BOARD_KIND),mcu)
+include tests/embedded/mcu.mk
+else
+
 ifeq ($(SANITIZE),1)
   SAN_FLAGS := -fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=undefined
   OUT       := $(BUILD)/san
@@ -21,12 +27,14 @@ ifeq ($(SIMD),avx2)
   SIMD_FLAGS := -mavx2 -mfma
 endif
 
+# pkg-config for the board's architecture (board.mk may set a cross one).
+PKG_CONFIG ?= pkg-config
 WARN     := -Wall -Wextra -Werror -Wshadow -Wstrict-prototypes -Wvla
 # Display backends and PNG files in platform/. No GL library is linked (see
 # app/gl_api.h): EGL hands out the entry points and OSMesa is dlopen()ed.
-DISPLAY_PC     := egl gbm libdrm x11 libpng
-DISPLAY_CFLAGS := $(shell pkg-config --cflags $(DISPLAY_PC) 2>/dev/null)
-DISPLAY_LIBS   := $(shell pkg-config --libs $(DISPLAY_PC) 2>/dev/null) -ldl
+DISPLAY_PC     := egl gbm libdrm x11 libpng libgpiod
+DISPLAY_CFLAGS := $(shell $(PKG_CONFIG) --cflags $(DISPLAY_PC) 2>/dev/null)
+DISPLAY_LIBS   := $(shell $(PKG_CONFIG) --libs $(DISPLAY_PC) 2>/dev/null) -ldl
 CPPFLAGS := -Iapp -Iboard/$(BOARD) $(SIMD_DEFS) -MMD -MP
 CFLAGS_APP  := -std=c11 $(WARN) $(BOARD_CFLAGS) $(SAN_FLAGS) $(EXTRA_CFLAGS)
 # Platform code talks to Linux and POSIX APIs, so it may use GNU extensions.
@@ -66,8 +74,8 @@ HOSTCC   ?= cc
 DEMO_ASF := assets/demo.asf
 DEMO_AMC := $(OUT)/assets/demo.amc
 
-CMOCKA_CFLAGS = $(shell pkg-config --cflags cmocka 2>/dev/null)
-CMOCKA_LIBS   = $(shell pkg-config --libs cmocka 2>/dev/null || echo -lcmocka)
+CMOCKA_CFLAGS = $(shell $(PKG_CONFIG) --cflags cmocka 2>/dev/null)
+CMOCKA_LIBS   = $(shell $(PKG_CONFIG) --libs cmocka 2>/dev/null || echo -lcmocka)
 
 .PHONY: all deps test run size install clean help check-core
 all: $(SKINTOOL) $(SKINPLAY) $(DEMO_AMC)
@@ -136,13 +144,13 @@ deps:
 	@missing=""; \
 	command -v pkg-config >/dev/null 2>&1 || missing="pkg-config"; \
 	if [ -z "$$missing" ]; then \
-	  for m in $(PC_MODULES); do pkg-config --exists $$m || missing="$$missing $$m"; done; \
+	  for m in $(PC_MODULES); do $(PKG_CONFIG) --exists $$m || missing="$$missing $$m"; done; \
 	fi; \
 	for t in $(DEB_TOOLS); do command -v $$t >/dev/null 2>&1 || missing="$$missing $$t"; done; \
 	if [ -n "$$missing" ]; then \
 	  echo "deps: missing:$$missing"; \
 	  if [ "$$(id -u)" = 0 ] && command -v apt-get >/dev/null 2>&1; then \
-	    apt-get update -qq && DEBIAN_FRONTEND=noninteractive apt-get install -y -qq $(DEB_PKGS) >/dev/null || exit 1; \
+	    $(DEPS_PREPARE) apt-get update -qq && DEBIAN_FRONTEND=noninteractive apt-get install -y -qq $(DEB_PKGS) >/dev/null || exit 1; \
 	    echo "deps: installed $(DEB_PKGS)"; \
 	  else \
 	    echo "deps: run as root:  apt-get install -y $(DEB_PKGS)"; exit 1; \
@@ -157,7 +165,7 @@ check-core: $(CORE_OBJ)
 
 test: deps
 	@$(MAKE) --no-print-directory all $(UNIT_BIN) check-core
-	@sh tests/run_tests.sh $(OUT) $(UNIT_BIN)
+	@$(TEST_WRAP) sh tests/run_tests.sh $(OUT) $(UNIT_BIN)
 
 # On a console or desktop: the demo on the display. Without one: headless,
 # compare view, a few frames and a contact sheet in out/.
@@ -178,6 +186,15 @@ size: $(SKINPLAY)
 install: all
 	install -d $(DESTDIR)$(PREFIX)/bin
 	install -m 755 $(SKINTOOL) $(SKINPLAY) $(DESTDIR)$(PREFIX)/bin/
+	install -d $(DESTDIR)$(PREFIX)/share/skinplay/board/$(BOARD)
+	install -m 644 $(wildcard board/$(BOARD)/*.ini board/$(BOARD)/*.md) $(DESTDIR)$(PREFIX)/share/skinplay/board/$(BOARD)/
+	@# the kiosk: unit, udev rule, and the board config unless one is already there
+	if [ -f board/$(BOARD)/skinplay.service ]; then \
+	  install -d $(DESTDIR)/etc/systemd/system $(DESTDIR)/etc/udev/rules.d $(DESTDIR)/etc/skinplay && \
+	  sed 's|@PREFIX@|$(PREFIX)|g' board/$(BOARD)/skinplay.service > $(DESTDIR)/etc/systemd/system/skinplay.service && \
+	  install -m 644 board/$(BOARD)/99-skinplay-gpio.rules $(DESTDIR)/etc/udev/rules.d/ && \
+	  { [ -e $(DESTDIR)/etc/skinplay/board.ini ] || install -m 644 board/$(BOARD)/board.ini $(DESTDIR)/etc/skinplay/; }; \
+	fi
 
 clean:
 	rm -rf $(BUILD)
@@ -190,4 +207,9 @@ help:
 	@echo "make deps               check (and as root install) the Debian packages"
 	@echo "make install PREFIX=/usr/local DESTDIR="
 
+# fuzz, fuzz-smoke, lint, soak
+include tests/hardening.mk
+
 -include $(CORE_OBJ:.o=.d) $(PLAT_OBJ:.o=.d) $(FRONT_SRC:%.c=$(OUT)/%.d) $(TESTLIB_OBJ:.o=.d) $(UNIT_BIN:$(OUT)/tests/%=$(OUT)/tests/obj/%.d)
+
+endif # BOARD_KIND != mcu

@@ -6,12 +6,15 @@
 #include <stdio.h>
 #include <string.h>
 #include <sys/stat.h>
+#include <unistd.h>
 
 #include "cli_common.h"
+#include "cli_show.h"
 #include "cli_skin.h"
 #include "clock.h"
 #include "display.h"
 #include "png_writer.h"
+#include "skinplay_kiosk.h"
 #include "skinplay_opts.h"
 #include "skinplay_sheet.h"
 
@@ -20,6 +23,7 @@ typedef struct player {
 	bound_body body;
 	tool_skin skin;
 	tool_motion motion;
+	show_source show;  /* --image: frames from a packed image instead */
 	amc_frame frame;
 	renderer r;
 	gl_api gl;
@@ -35,6 +39,8 @@ typedef struct player {
 	uint8_t rgba[3840 * 2160 * 4]; /* one frame read back for --out */
 	char clip[64];
 	sheet contact;
+	kiosk kiosk;       /* --board, --input, signals, systemd */
+	int reload;        /* SIGHUP: start over (main re-executes) */
 } player;
 
 typedef struct timing {
@@ -102,6 +108,8 @@ static int open_display(player *p)
 
 static int open_motion(player *p)
 {
+	if (p->o.image_count)
+		return 0; /* floor_height() opened the clip and read ahead its first frame */
 	if (tool_motion_open(&p->motion, p->o.amc, &p->body.skel) < 0)
 		return -1;
 	if (p->o.start < 0)
@@ -121,7 +129,11 @@ static int open_motion(player *p)
 static float floor_height(player *p)
 {
 	amc_frame *f = &p->frame;
-	if (tool_read_frame(p->o.amc, &p->body.skel, p->o.start, f) < 0)
+	if (p->o.image_count) {
+		if (show_select_clip(&p->show, p->o.clip, p->o.start) < 0 || show_next_frame(&p->show, f) <= 0)
+			return NAN;
+		p->pending = 1;
+	} else if (tool_read_frame(p->o.amc, &p->body.skel, p->o.start, f) < 0)
 		return NAN;
 	tool_skin_frame(&p->skin, f->value);
 	tool_skin_run(&p->skin, SKIN_DQBS, p->pos[0], p->nrm[0]);
@@ -133,10 +145,11 @@ static float floor_height(player *p)
 
 static int setup(player *p)
 {
-	if (bind_args_load(&p->o.bind, p->o.asf, p->o.mesh, &p->body) < 0)
+	if (p->o.image_count ? show_open(&p->show, p->o.image, p->o.image_count, &p->body) < 0
+			     : bind_args_load(&p->o.bind, p->o.asf, p->o.mesh, &p->body) < 0)
 		return -1;
 	if (tool_skin_init(&p->skin, &p->body.skel, &p->body.pose, &p->body.mesh, &p->body.weights,
-			   p->o.mesh ? p->o.mesh : "generated body") < 0)
+			   p->o.image_count ? show_path(&p->show) : p->o.mesh ? p->o.mesh : "generated body") < 0)
 		return -1;
 	float floor_y = floor_height(p);
 	if (isnan(floor_y) || open_display(p) < 0)
@@ -150,7 +163,7 @@ static int setup(player *p)
 	}
 	choose_paths(p);
 	sheet_init(&p->contact, p->info.width, p->info.height);
-	snprintf(p->clip, sizeof p->clip, "%s", basename_of(p->o.amc));
+	snprintf(p->clip, sizeof p->clip, "%s", p->o.image_count ? p->show.player.c.name : basename_of(p->o.amc));
 	char *dot = strrchr(p->clip, '.');
 	if (dot)
 		*dot = '\0';
@@ -230,9 +243,13 @@ static int next_frame(player *p)
 		p->pending = 0;
 		return 1;
 	}
-	int r = tool_motion_next(&p->motion, &p->frame);
+	int r = p->o.image_count ? show_next_frame(&p->show, &p->frame) : tool_motion_next(&p->motion, &p->frame);
 	if (r != 0 || p->headless || p->o.frames >= 0)
 		return r;
+	if (p->o.image_count) {
+		show_rewind(&p->show);
+		return show_next_frame(&p->show, &p->frame);
+	}
 	tool_motion_close(&p->motion);
 	if (tool_motion_open(&p->motion, p->o.amc, &p->body.skel) < 0)
 		return -1;
@@ -262,6 +279,36 @@ static int draw_one(player *p, timing *t, double fps, render_frame *f)
 	return 0;
 }
 
+/* PLAY long, NEXT: back to the first frame of the clip (or of clip i). */
+static int restart_clip(player *p, int clip)
+{
+	p->pending = 0;
+	if (p->o.image_count) {
+		if (clip < 0) {
+			show_rewind(&p->show);
+			return 0;
+		}
+		snprintf(p->clip, sizeof p->clip, "%s", show_clip(&p->show, clip)->name);
+		return show_select_clip(&p->show, p->clip, -1);
+	}
+	tool_motion_close(&p->motion);
+	return tool_motion_open(&p->motion, p->o.amc, &p->body.skel);
+}
+
+/* The buttons' state machine (skinplay_kiosk.h) drives what is shown. */
+static int apply_input(player *p, render_frame *f, unsigned act)
+{
+	const player_state *s = &p->kiosk.ps;
+	p->o.algo = (play_algo)s->algo;
+	p->o.view = f->view = (render_view)s->view;
+	p->o.gpu = s->gpu;
+	if (act & (KIOSK_ALGO | KIOSK_GPU))
+		choose_paths(p);
+	if (act & (KIOSK_RESTART | KIOSK_CLIP))
+		return restart_clip(p, act & KIOSK_CLIP ? s->clip : -1);
+	return 0;
+}
+
 static int play(player *p)
 {
 	timing t = { 0, 0, 0, 0, 0, clock_now_ns() };
@@ -274,8 +321,17 @@ static int play(player *p)
 	long shown = 0;
 	int quit = 0, r = 1;
 	while (!quit && (p->o.frames < 0 || shown < p->o.frames)) {
+		unsigned act = kiosk_frame(&p->kiosk, shown);
+		if (act & (KIOSK_QUIT | KIOSK_RELOAD)) {
+			p->reload = !(act & KIOSK_QUIT);
+			break;
+		}
+		if (act && apply_input(p, &f, act) < 0)
+			return -1;
 		uint64_t t0 = clock_now_ns();
-		r = next_frame(p);
+		/* paused: the same frame again (the first one is always read) */
+		if (p->kiosk.ps.playing || shown == 0 || (act & (KIOSK_RESTART | KIOSK_CLIP)))
+			r = next_frame(p);
 		if (r <= 0)
 			break;
 		t.decode += clock_now_ns() - t0;
@@ -299,7 +355,7 @@ static int play(player *p)
 	double n = total.frames ? (double)total.frames : 1.0;
 	double secs = (double)(clock_now_ns() - total.since) * 1e-9;
 	fprintf(stderr, "played %ld frames of %s in %.2f s: %.1f fps; per frame decode %.2f ms, skin %.2f ms, "
-		"upload %.2f ms, draw %.2f ms (%s, %dx%d, %s skinning)\n", shown, p->o.amc, secs, shown / secs,
+		"upload %.2f ms, draw %.2f ms (%s, %dx%d, %s skinning)\n", shown, p->o.amc ? p->o.amc : p->clip, secs, shown / secs,
 		total.decode * 1e-6 / n, total.skin * 1e-6 / n, total.upload * 1e-6 / n, total.draw * 1e-6 / n,
 		p->disp->name, p->info.width, p->info.height, p->gpu[0] ? "GPU" : "CPU");
 	if (p->o.sheet_path && sheet_write(&p->contact, p->o.sheet_path) < 0)
@@ -317,11 +373,25 @@ int main(int argc, char **argv)
 		puts(display_auto()->name);
 		return 0;
 	}
-	rc = setup(&p) == 0 && play(&p) == 0 ? 0 : 1;
+	if (kiosk_setup(&p.kiosk, &p.o, argc, argv) < 0)
+		return 1;
+	rc = setup(&p) == 0 &&
+	     kiosk_start(&p.kiosk, &p.o, p.headless, p.o.image_count ? show_clip_count(&p.show) : 1) == 0 &&
+	     play(&p) == 0 ? 0 : 1;
+	kiosk_shutdown(&p.kiosk);
 	tool_motion_close(&p.motion);
+	show_close(&p.show);
+	if (p.o.report_memory)
+		show_report_memory();
 	if (p.disp) {
 		render_shutdown(&p.r);
 		p.disp->shutdown();
+	}
+	if (p.reload && rc == 0) {
+		/* a new show: start over as a fresh process (same pid for systemd) */
+		execv("/proc/self/exe", argv);
+		fprintf(stderr, "skinplay: re-executing for SIGHUP: %s\n", strerror(errno));
+		return 1;
 	}
 	return rc;
 }

@@ -7,12 +7,13 @@
 #include "cli_common.h"
 
 static const char usage_text[] =
-	"usage: skinplay [--image show.skn | --asf A.asf --amc M.amc [--mesh M.obj]\n"
+	"usage: skinplay [--image show.skn [--image slot2.skn] [--clip NAME] | --asf A.asf --amc M.amc [--mesh M.obj]\n"
 	"                [--group G] [--fit] [--bind-pose P.amc[:F]] [--weights W.csv]]\n"
 	"                [--algo lbs|dqbs|dqbs-fixed|compare] [--skin cpu|gpu]\n"
 	"                [--platform auto|surfaceless|osmesa|kms|x11] [--device DEV] [--rotation 0|90|180|270]\n"
 	"                [--size WxH] [--frames N] [--start FRAME] [--out DIR [--every K] [--sheet F.png]]\n"
-	"                [--view body|skeleton|weights] [--fps F] [--hud-fps on|off]\n"
+	"                [--view body|skeleton|weights] [--fps F] [--hud-fps on|off] [--report-memory]\n"
+	"                [--board board/NAME/board.ini] [--input gpio|keyboard|script:FILE|none]\n"
 	"Without --mesh the generated body is used. Headless, the clip plays once;\n"
 	"on a display it loops until closed.\n";
 
@@ -58,7 +59,13 @@ static int value_opt(play_opts *o, const char *a, const char *v)
 	if (!strcmp(a, "--asf")) o->asf = v;
 	else if (!strcmp(a, "--amc")) o->amc = v;
 	else if (!strcmp(a, "--mesh")) o->mesh = v;
-	else if (!strcmp(a, "--image")) o->image = v;
+	else if (!strcmp(a, "--image")) {
+		if (o->image_count >= 4)
+			return fprintf(stderr, "skinplay: at most 4 --image slots\n"), -1;
+		o->image[o->image_count++] = v;
+	} else if (!strcmp(a, "--clip")) o->clip = v;
+	else if (!strcmp(a, "--input")) o->input = v;
+	else if (!strcmp(a, "--board")) o->board = v;
 	else if (!strcmp(a, "--platform")) o->platform = v;
 	else if (!strcmp(a, "--device")) o->device = v;
 	else if (!strcmp(a, "--out")) o->out_dir = v;
@@ -103,6 +110,10 @@ int play_parse(play_opts *o, int argc, char **argv)
 			o->print_platform = 1;
 			return 0;
 		}
+		if (!strcmp(argv[i], "--report-memory")) {
+			o->report_memory = 1;
+			continue;
+		}
 		int r = bind_args_parse(&o->bind, argc, argv, &i);
 		if (r < 0)
 			return -1;
@@ -120,11 +131,14 @@ int play_parse(play_opts *o, int argc, char **argv)
 		fprintf(stderr, "skinplay: --sheet collects the frames --out writes: give --out too\n");
 		return -1;
 	}
-	if (o->image) {
-		fprintf(stderr, "skinplay: --image needs the flash-image reader, which this build does not have yet\n");
+	if (o->image_count && (o->asf || o->amc || o->mesh || o->bind.group || o->bind.fit || o->bind.pose_path ||
+			       o->bind.weights_path)) {
+		fprintf(stderr, "skinplay: --image carries the skeleton, the bound body and the clips: "
+			"give it without --asf, --amc, --mesh and the bind options\n");
 		return -1;
 	}
-	if (!o->asf || !o->amc) {
+	/* with --board the show may come from its [storage] slots (skinplay_kiosk.c) */
+	if (!o->image_count && !o->board && (!o->asf || !o->amc)) {
 		fprintf(stderr, "skinplay: give --asf and --amc\n%s", usage_text);
 		return -1;
 	}

@@ -8,7 +8,13 @@
 typedef enum play_algo { PLAY_LBS, PLAY_DQBS, PLAY_DQBS_FIXED, PLAY_COMPARE } play_algo;
 
 typedef struct play_opts {
-	const char *asf, *amc, *mesh, *image;
+	const char *asf, *amc, *mesh;
+	const char *image[4];    /* --image slots (repeatable): the newest valid plays */
+	int image_count;
+	const char *clip;        /* --clip NAME of an image (default its first) */
+	int report_memory;       /* --report-memory: VmHWM/VmRSS at the end */
+	const char *input;       /* --input gpio|keyboard|script:FILE|none (skinplay_kiosk.h) */
+	const char *board;       /* --board board/NAME/board.ini */
 	bind_args bind;
 	play_algo algo;
 	int gpu;                 /* --skin gpu */

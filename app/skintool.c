@@ -16,7 +16,11 @@ static const command commands[] = {
 	{ "bind", cmd_bind, "bind SKELETON.asf MESH.obj [--group G] [--fit] [--bind-pose P.amc[:F]] [--weights IN.csv] [--report] -o W.csv    skin weights as CSV (report on stderr)" },
 	{ "mannequin", cmd_mannequin, "mannequin SKELETON.asf -o BODY.obj [--detail N]    closed body mesh around the rest pose" },
 	{ "skin", cmd_skin, "skin SKELETON.asf MOTION.amc MESH.obj --frame N --algo lbs|dqbs|dqbs-fixed [--group G] [--fit] [--bind-pose P.amc[:F]] [--weights IN.csv] -o OUT.obj    the mesh deformed for frame N" },
+	{ "pack", cmd_pack, "pack SKELETON.asf MOTION.amc [MOTION2.amc ...] [--mesh MESH.obj [bind options]] [--fps F] [--sequence N] [--block-size B] -o show.skn    flash image for skinplay --image" },
+	{ "info", cmd_info, "info show.skn    header, sections and clips of an image; checks every block (exit 2 when damaged)" },
+	{ "bench-image", cmd_bench_image, "bench-image show.skn [--amc M.amc]    time to the first frame, bytes per frame" },
 	{ "metrics", cmd_metrics, "metrics SKELETON.asf MOTION.amc MESH.obj [bind options] [--algo LIST] | metrics --scene twist|bend --angle DEG [--algo LIST]    volume and radius ratios per frame as CSV" },
+	{ "compare", cmd_compare, "compare SKELETON.asf MOTION.amc [--mesh MESH.obj [bind options]] -o DIR [--renders N]    LBS vs DQBS report: index.html, metrics.csv, charts, renders of the worst frames" },
 };
 
 static void usage(FILE *to)

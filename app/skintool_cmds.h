@@ -8,5 +8,9 @@ int cmd_bind(int argc, char **argv);
 int cmd_mannequin(int argc, char **argv);
 int cmd_skin(int argc, char **argv);
 int cmd_metrics(int argc, char **argv);
+int cmd_compare(int argc, char **argv);
+int cmd_pack(int argc, char **argv);
+int cmd_info(int argc, char **argv);
+int cmd_bench_image(int argc, char **argv);
 
 #endif

@@ -13,6 +13,7 @@
 #include "clock.h"
 #include "cli_bind_args.h"
 #include "cli_common.h"
+#include "cli_measure.h"
 #include "cli_skin.h"
 #include "skin_metrics.h"
 #include "skin_scene.h"
@@ -33,15 +34,11 @@ typedef struct metrics_args {
 	skin_algo algo[SKIN_ALGO_COUNT];
 } metrics_args;
 
-/* The bound mesh's rest state and the per-frame scratch. */
+/* The bound body and the per-frame scratch. */
 typedef struct metrics_run {
 	tool_skin sk;
-	const mesh *mesh;
-	double rest_volume;
-	float min_rest;                   /* rest distances at or below are skipped */
-	float rest_dist[SKP_MAX_VERTS];
+	tool_measure meas;
 	float pos[3 * SKP_MAX_VERTS], nrm[3 * SKP_MAX_VERTS];
-	skin_segments seg;
 } metrics_run;
 
 static int parse_algos(metrics_args *a, const char *list)
@@ -156,36 +153,12 @@ static int parse_args(metrics_args *a, int argc, char **argv)
 	return check_args(a);
 }
 
-/* Rest volume and distances of the mesh as bound (in the bind pose). */
-static void measure_rest(metrics_run *r)
-{
-	const mesh *m = r->mesh;
-	vec3 lo = m->pos[0], hi = m->pos[0];
-	for (int v = 0; v < m->vert_count; v++) {
-		vec3 p = m->pos[v];
-		r->pos[3 * v] = p.x; r->pos[3 * v + 1] = p.y; r->pos[3 * v + 2] = p.z;
-		lo = vec3_make(p.x < lo.x ? p.x : lo.x, p.y < lo.y ? p.y : lo.y, p.z < lo.z ? p.z : lo.z);
-		hi = vec3_make(p.x > hi.x ? p.x : hi.x, p.y > hi.y ? p.y : hi.y, p.z > hi.z ? p.z : hi.z);
-	}
-	vec3 ext = vec3_sub(hi, lo);
-	float size = ext.x > ext.y ? ext.x : ext.y;
-	r->min_rest = 1e-4f * (size > ext.z ? size : ext.z);
-	r->rest_volume = skin_mesh_volume(r->pos, (const uint32_t (*)[3])m->tri, m->tri_count);
-	skin_segments_from_pose(&r->seg, r->sk.bind, r->sk.skel->count);
-	skin_metrics_distances(&r->seg, r->pos, m->vert_count, r->rest_dist);
-}
-
 static int start(metrics_run *r, const skel *s, const skel_pose *bind, const mesh *m,
 		 const skin_weights *w, const char *what)
 {
-	if (tool_skin_init(&r->sk, s, bind, m, w, what) < 0)
+	if (tool_skin_init(&r->sk, s, bind, m, w, what) < 0 ||
+	    tool_measure_init(&r->meas, m, bind, s->count, what) < 0)
 		return -1;
-	r->mesh = m;
-	measure_rest(r);
-	if (r->rest_volume == 0.0) {
-		fprintf(stderr, "%s: the mesh encloses no volume\n", what);
-		return -1;
-	}
 	printf("frame,algo,volume_ratio,min_radius_ratio,max_radius_ratio\n");
 	return 0;
 }
@@ -193,15 +166,12 @@ static int start(metrics_run *r, const skel *s, const skel_pose *bind, const mes
 /* One row per algorithm for the pose r->sk holds. */
 static void measure_pose(metrics_run *r, const metrics_args *a, long frame)
 {
-	const mesh *m = r->mesh;
-	skin_segments_from_pose(&r->seg, &r->sk.pose, r->sk.skel->count);
+	tool_measure_pose(&r->meas, &r->sk.pose);
 	for (int k = 0; k < a->algo_count; k++) {
 		tool_skin_run(&r->sk, a->algo[k], r->pos, r->nrm);
-		double vol = skin_mesh_volume(r->pos, (const uint32_t (*)[3])m->tri, m->tri_count);
-		skin_radius rad = skin_radius_ratio(&r->seg, r->pos, r->rest_dist, m->vert_count,
-						    r->min_rest);
+		tool_measure_row row = tool_measure_skinned(&r->meas, r->pos, NULL);
 		printf("%ld,%s,%.6f,%.6f,%.6f\n", frame, skin_algo_name(a->algo[k]),
-		       vol / r->rest_volume, (double)rad.min, (double)rad.max);
+		       row.volume_ratio, (double)row.radius.min, (double)row.radius.max);
 	}
 }
 

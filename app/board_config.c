@@ -1,0 +1,257 @@
+#include "board_config.h"
+
+#include <string.h>
+
+#include "ini.h"
+#include "text_tokens.h"
+
+typedef enum { SEC_NONE, SEC_DISPLAY, SEC_INPUT, SEC_BUTTON, SEC_STORAGE, SEC_LIMITS } section_kind;
+
+/* Per-button timing given in the file; -1 inherits [input]'s. */
+typedef struct pending {
+	long debounce[PLAYER_BTN_COUNT], long_press[PLAYER_BTN_COUNT];
+	long debounce_all, long_all;
+} pending;
+
+void board_config_defaults(board_config *c)
+{
+	memset(c, 0, sizeof *c);
+	c->rotation = -1;
+	for (int i = 0; i < PLAYER_BTN_COUNT; i++) {
+		c->button[i].active_low = 1;
+		c->button[i].bias = BOARD_BIAS_PULL_UP;
+		c->button[i].deb.debounce_ms = BOARD_DEBOUNCE_MS;
+		c->button[i].deb.long_press_ms = BOARD_LONG_PRESS_MS;
+	}
+}
+
+static skp_status bad(skp_error *err, const ini_entry *e, const char *expected)
+{
+	return skp_fail(err, SKP_ERR_SYNTAX, e->line, "key '%s' in [%s]: expected %s, found '%s'", e->key,
+			e->section, expected, e->value);
+}
+
+static skp_status copy_str(char *dst, size_t cap, const ini_entry *e, skp_error *err)
+{
+	size_t n = strlen(e->value);
+	if (n >= cap)
+		return skp_fail(err, SKP_ERR_LIMIT, e->line, "key '%s' in [%s]: value longer than %d characters",
+				e->key, e->section, (int)cap - 1);
+	memcpy(dst, e->value, n + 1);
+	return SKP_OK;
+}
+
+static skp_status get_long(const ini_entry *e, long lo, long hi, long *out, const char *expected,
+			   skp_error *err)
+{
+	if (tok_parse_long(e->value, out) != 0 || *out < lo || *out > hi)
+		return bad(err, e, expected);
+	return SKP_OK;
+}
+
+static int pick(const char *v, const char *const *names, int n)
+{
+	for (int i = 0; i < n; i++)
+		if (tok_ieq(v, names[i]))
+			return i;
+	return -1;
+}
+
+static skp_status parse_size(board_config *c, const ini_entry *e, skp_error *err)
+{
+	char buf[32];
+	long w, h;
+	const char *x = strchr(e->value, 'x');
+	size_t n = x ? (size_t)(x - e->value) : 0;
+	if (!x || n == 0 || n >= sizeof buf)
+		return bad(err, e, "WxH");
+	memcpy(buf, e->value, n);
+	buf[n] = '\0';
+	if (tok_parse_long(buf, &w) != 0 || tok_parse_long(x + 1, &h) != 0 || w < 16 || h < 16 || w > 3840 ||
+	    h > 2160)
+		return bad(err, e, "WxH between 16x16 and 3840x2160");
+	c->width = (int)w;
+	c->height = (int)h;
+	return SKP_OK;
+}
+
+static skp_status display_key(board_config *c, const ini_entry *e, skp_error *err)
+{
+	static const char *const plats[] = { "auto", "surfaceless", "osmesa", "kms", "x11" };
+	long v;
+	if (tok_ieq(e->key, "platform")) {
+		if (pick(e->value, plats, 5) < 0)
+			return bad(err, e, "auto, surfaceless, osmesa, kms or x11");
+		return copy_str(c->platform, sizeof c->platform, e, err);
+	}
+	if (tok_ieq(e->key, "device"))
+		return copy_str(c->device, sizeof c->device, e, err);
+	if (tok_ieq(e->key, "size"))
+		return parse_size(c, e, err);
+	if (tok_ieq(e->key, "rotation")) {
+		if (get_long(e, 0, 270, &v, "0, 90, 180 or 270", err) != SKP_OK)
+			return err->code;
+		if (v % 90)
+			return bad(err, e, "0, 90, 180 or 270");
+		c->rotation = (int)v;
+		return SKP_OK;
+	}
+	return skp_fail(err, SKP_ERR_SYNTAX, e->line, "unknown key '%s' in [display] (platform, device, rotation, size)",
+			e->key);
+}
+
+static skp_status timing_key(const ini_entry *e, long *debounce, long *long_press, skp_error *err)
+{
+	if (tok_ieq(e->key, "debounce_ms"))
+		return get_long(e, 0, 1000, debounce, "a debounce time of 0..1000 ms", err);
+	return get_long(e, 0, 60000, long_press, "a long-press time of 0..60000 ms (0: off)", err);
+}
+
+static int is_timing(const char *key)
+{
+	return tok_ieq(key, "debounce_ms") || tok_ieq(key, "long_press_ms");
+}
+
+static skp_status input_key(board_config *c, pending *p, const ini_entry *e, skp_error *err)
+{
+	if (tok_ieq(e->key, "backend")) {
+		if (strcmp(e->value, "gpio") && strcmp(e->value, "keyboard") && strcmp(e->value, "none") &&
+		    strncmp(e->value, "script:", 7))
+			return bad(err, e, "gpio, keyboard, none or script:FILE");
+		return copy_str(c->input, sizeof c->input, e, err);
+	}
+	if (tok_ieq(e->key, "chip"))
+		return copy_str(c->chip, sizeof c->chip, e, err);
+	if (is_timing(e->key))
+		return timing_key(e, &p->debounce_all, &p->long_all, err);
+	return skp_fail(err, SKP_ERR_SYNTAX, e->line,
+			"unknown key '%s' in [input] (backend, chip, debounce_ms, long_press_ms)", e->key);
+}
+
+static skp_status button_key(board_config *c, pending *p, int b, const ini_entry *e, skp_error *err)
+{
+	static const char *const levels[] = { "high", "low" };
+	static const char *const biases[] = { "as-is", "disable", "pull-up", "pull-down" };
+	board_button *btn = &c->button[b];
+	long v;
+	int k;
+	if (tok_ieq(e->key, "line")) {
+		if (get_long(e, 0, 1023, &v, "a line offset 0..1023 (BCM GPIO number on a Pi)", err) != SKP_OK)
+			return err->code;
+		btn->line = (unsigned int)v;
+		btn->present = 1;   /* a button exists once it has a line */
+		return SKP_OK;
+	}
+	if (tok_ieq(e->key, "active")) {
+		if ((k = pick(e->value, levels, 2)) < 0)
+			return bad(err, e, "high or low");
+		btn->active_low = k;
+		return SKP_OK;
+	}
+	if (tok_ieq(e->key, "bias")) {
+		if ((k = pick(e->value, biases, 4)) < 0)
+			return bad(err, e, "as-is, disable, pull-up or pull-down");
+		btn->bias = k;
+		return SKP_OK;
+	}
+	if (is_timing(e->key))
+		return timing_key(e, &p->debounce[b], &p->long_press[b], err);
+	return skp_fail(err, SKP_ERR_SYNTAX, e->line,
+			"unknown key '%s' in [%s] (line, active, bias, debounce_ms, long_press_ms)", e->key,
+			e->section);
+}
+
+static skp_status storage_key(board_config *c, const ini_entry *e, skp_error *err)
+{
+	if (!tok_ieq(e->key, "slot"))
+		return skp_fail(err, SKP_ERR_SYNTAX, e->line, "unknown key '%s' in [storage] (slot)", e->key);
+	if (c->slot_count >= SKP_MAX_SLOTS)
+		return skp_fail(err, SKP_ERR_LIMIT, e->line, "key 'slot' in [storage]: more than %d slots (SKP_MAX_SLOTS)",
+				SKP_MAX_SLOTS);
+	return copy_str(c->slot[c->slot_count++], SKP_MAX_PATH, e, err);
+}
+
+static skp_status limits_key(board_config *c, const ini_entry *e, skp_error *err)
+{
+	long v;
+	if (tok_ieq(e->key, "max_fps")) {
+		if (get_long(e, 0, 1000, &v, "a frame rate of 0..1000 (0: no cap)", err) != SKP_OK)
+			return err->code;
+		c->max_fps = (int)v;
+		return SKP_OK;
+	}
+	return skp_fail(err, SKP_ERR_SYNTAX, e->line, "unknown key '%s' in [limits] (max_fps)", e->key);
+}
+
+/* "button.algo" -> PLAYER_BTN_ALGO; -1 when not a button section. */
+static int button_section(const char *s)
+{
+	if (strncmp(s, "button.", 7) && strncmp(s, "Button.", 7))
+		return -1;
+	return player_button_find(s + 7);
+}
+
+static skp_status section_of(const ini_entry *e, section_kind *k, int *b, skp_error *err)
+{
+	static const char *const names[] = { "", "display", "input", "button", "storage", "limits" };
+	*b = button_section(e->section);
+	if (*b >= 0) {
+		*k = SEC_BUTTON;
+		return SKP_OK;
+	}
+	for (int i = 1; i < 6; i++)
+		if (i != SEC_BUTTON && tok_ieq(e->section, names[i])) {
+			*k = (section_kind)i;
+			return SKP_OK;
+		}
+	if (!*e->section)
+		return skp_fail(err, SKP_ERR_SYNTAX, e->line, "key '%s' before any [section]", e->key);
+	return skp_fail(err, SKP_ERR_SYNTAX, e->line,
+			"key '%s' in unknown section [%s] (display, input, button.algo|play|next|view, storage, limits)",
+			e->key, e->section);
+}
+
+static void resolve(board_config *c, const pending *p)
+{
+	for (int i = 0; i < PLAYER_BTN_COUNT; i++) {
+		long d = p->debounce[i] >= 0 ? p->debounce[i] : p->debounce_all;
+		long l = p->long_press[i] >= 0 ? p->long_press[i] : p->long_all;
+		if (d >= 0)
+			c->button[i].deb.debounce_ms = (uint32_t)d;
+		if (l >= 0)
+			c->button[i].deb.long_press_ms = (uint32_t)l;
+	}
+}
+
+skp_status board_config_read(board_config *c, skp_reader rd, skp_error *err)
+{
+	static ini_reader ini; /* 5 KiB of line buffers: not on a small stack */
+	pending p;
+	ini_entry e;
+	int rc;
+	board_config_defaults(c);
+	p.debounce_all = p.long_all = -1;
+	for (int i = 0; i < PLAYER_BTN_COUNT; i++)
+		p.debounce[i] = p.long_press[i] = -1;
+	ini_init(&ini, rd);
+	while ((rc = ini_next(&ini, &e, err)) > 0) {
+		section_kind k = SEC_NONE;
+		int b;
+		skp_status st = section_of(&e, &k, &b, err);
+		if (st == SKP_OK) {
+			switch (k) {
+			case SEC_DISPLAY: st = display_key(c, &e, err); break;
+			case SEC_INPUT: st = input_key(c, &p, &e, err); break;
+			case SEC_BUTTON: st = button_key(c, &p, b, &e, err); break;
+			case SEC_STORAGE: st = storage_key(c, &e, err); break;
+			default: st = limits_key(c, &e, err); break;
+			}
+		}
+		if (st != SKP_OK)
+			return st;
+	}
+	if (rc < 0)
+		return (skp_status)-rc;
+	resolve(c, &p);
+	return SKP_OK;
+}

@@ -1,0 +1,68 @@
+/* A board's runtime configuration (board/NAME/board.ini): display, buttons,
+ * storage slots and limits. Compile-time limits stay in board_limits.h;
+ * this is what an installer may change on the device without a rebuild.
+ *
+ *   [display]  platform = kms   device = /dev/dri/card1   rotation = 0   size = 1920x1080
+ *   [input]    backend = gpio   chip = gpiochip0   debounce_ms = 30   long_press_ms = 800
+ *   [button.algo]  line = 17   active = low   bias = pull-up   (debounce_ms, long_press_ms)
+ *   [storage]  slot = PATH   (one line per image slot)
+ *   [limits]   max_fps = 60   (frame-rate cap on a display; the watchdog
+ *              period is the unit's WatchdogSec)
+ *
+ * Unknown sections and keys are errors naming the line and the key. */
+#ifndef BOARD_CONFIG_H
+#define BOARD_CONFIG_H
+
+#include <stdint.h>
+
+#include "board_limits.h"
+#include "debounce.h"
+#include "player.h"
+#include "skp_error.h"
+#include "skp_reader.h"
+
+#ifndef SKP_MAX_PATH
+#define SKP_MAX_PATH 256     /* device and file paths in a board config */
+#endif
+#ifndef SKP_MAX_SLOTS
+#define SKP_MAX_SLOTS 2      /* image slots (A/B update) */
+#endif
+
+typedef enum board_bias {
+	BOARD_BIAS_AS_IS,        /* leave the line's bias as firmware set it */
+	BOARD_BIAS_DISABLE,
+	BOARD_BIAS_PULL_UP,
+	BOARD_BIAS_PULL_DOWN
+} board_bias;
+
+typedef struct board_button {
+	int present;             /* its [button.NAME] section gives a line */
+	unsigned int line;       /* line offset on the chip (BCM GPIO on a Pi) */
+	int active_low;          /* pressed = low (a button to ground) */
+	int bias;                /* board_bias */
+	debounce_config deb;
+} board_button;
+
+typedef struct board_config {
+	char platform[16];       /* "" = auto */
+	char device[SKP_MAX_PATH];
+	int rotation;            /* -1: not given */
+	int width, height;       /* 0: not given */
+	char input[SKP_MAX_PATH]; /* gpio | keyboard | none | script:FILE; "" = none */
+	char chip[SKP_MAX_PATH]; /* gpiochip name, path, label or number */
+	board_button button[PLAYER_BTN_COUNT];
+	char slot[SKP_MAX_SLOTS][SKP_MAX_PATH];
+	int slot_count;
+	int max_fps;             /* 0: no cap beyond the display's */
+} board_config;
+
+#define BOARD_DEBOUNCE_MS 30
+#define BOARD_LONG_PRESS_MS 800
+
+void board_config_defaults(board_config *c);
+
+/* Parses a board.ini. On error err->line is the line and err->msg names
+ * the key (or section) and what was expected. */
+skp_status board_config_read(board_config *c, skp_reader rd, skp_error *err);
+
+#endif

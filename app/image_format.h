@@ -1,0 +1,214 @@
+/* The skinplay flash image (.skn), format version 1: a skeleton, a bound
+ * body and motion clips packed once by `skintool pack` and played from
+ * CRC-checked fixed-size blocks with fixed memory (app/image_read.h,
+ * app/image_play.h).
+ *
+ * All integers are little-endian; floats are IEEE-754 binary32 stored as
+ * their little-endian bit pattern; a "str" is a u8 length then that many
+ * bytes (no NUL, length < SKP_MAX_NAME).
+ *
+ * BLOCKS. The image is block_count blocks of block_size B bytes (default
+ * 4096; 512..SKP_IMAGE_BLOCK_SIZE, a multiple of 16). Every block is
+ *
+ *     offset  size  field
+ *     0       4     tag: image tag = (u32)sequence ^ (u32)(sequence >> 32),
+ *                   so a block left over from another image is refused even
+ *                   though its own CRC is good (an update stopped halfway)
+ *     4       4     block index: the block's own position
+ *     8       1     kind: 1 header, 2 skeleton, 3 bind, 4 clip directory,
+ *                   5 clip quantisation, 6 clip frames
+ *     9       1     0
+ *     10      2     item: the clip's index for kinds 5 and 6, else 0
+ *     12      B-16  payload; bytes not used are 0
+ *     B-4     4     CRC-32 (app/crc32.h) of bytes 0..B-5
+ *
+ * Sections of kind 2..5 are byte streams cut into (B-16)-byte payloads over
+ * consecutive blocks. Layout, in block order:
+ *
+ *     block 0          header
+ *     skeleton         kind 2
+ *     bind             kind 3
+ *     per clip         kind 5 (its quantisation), then kind 6 (its frames)
+ *     directory        kind 4
+ *
+ * pack writes block 0 last (and to a temporary file renamed into place), so
+ * a write cut short leaves no valid header and the slot is refused.
+ *
+ * HEADER (payload of block 0, 104 bytes):
+ *
+ *     0    8   magic "SKPIMAGE"
+ *     8    2   format version (1)
+ *     10   2   header size (104)
+ *     12   4   block size B
+ *     16   4   block count
+ *     20   8   sequence (pack --sequence, default the unix time): of two
+ *              valid slots the larger sequence plays
+ *     28   4   bones the image needs          (board limit SKP_MAX_BONES)
+ *     32   4   dofs per frame                 (SKP_MAX_DOF)
+ *     36   4   mesh vertices                  (SKP_MAX_VERTS)
+ *     40   4   mesh triangles                 (SKP_MAX_TRIS)
+ *     44   4   influences per vertex (4)      (SKP_MAX_INFLUENCES)
+ *     48   4   clips                          (SKP_IMAGE_MAX_CLIPS)
+ *     52   48  sections: skeleton, bind, directory, clips (every kind 5
+ *              and 6 block), each u32 first block, u32 block count,
+ *              u32 bytes (0 for clips: not a byte stream)
+ *     100  4   header CRC: CRC-32 of header bytes 0..99
+ *
+ * SKELETON (kind 2): everything app/skel.h's skel holds, so that it is
+ * rebuilt exactly (no ASF parsing on the device):
+ *
+ *     str name, str version, f32 length_scale, f32 mass_scale,
+ *     u8 angle_in_degrees, f32 root_position[3], u16 bone count,
+ *     u16 dof count, u8 eval_order[count], then per bone (0 = root):
+ *     str name, i32 id, i16 parent (-1 root), f32 direction[3], f32 length,
+ *     f32 axis_angle[3], u8 axis_order[3], u8 channel_count,
+ *     u8 channel[channel_count] (skel_channel), u8 has_limits,
+ *     f32 limit[channel_count][2], u16 dof_offset, f32 axis_rot[4] (w x y z)
+ *
+ * BIND (kind 3): the body as bound (after --fit), and its bind pose:
+ *
+ *     u32 vertices V, u32 triangles T, u8 bind pose (0 the ASF rest pose,
+ *     1 a frame), i32 its frame number, f32 values[dof count] (only when 1;
+ *     as amc_frame.value), f32 position[V][3], f32 normal[V][3],
+ *     u32 triangle[T][3], then per vertex u8 influence count (1..4),
+ *     u16 bone[4], u16 weight[4]: weight / 65535, the used ones summing to
+ *     exactly 65535 (largest remainder), so |error| <= 1/65535 per weight
+ *
+ * CLIP QUANTISATION (kind 5, item = clip): per dof f32 min, f32 step.
+ * A frame value is min + q * step for a u16 q; pack rounds to the nearest q,
+ * so |decoded - AMC value| <= step / 2 (+ float rounding of the decoded
+ * value), step = (max - min) / 65535 over the clip (0 for a constant dof).
+ *
+ * CLIP FRAMES (kind 6, item = clip): whole frames per block, never split:
+ * frames_per_block = floor((B - 16) / (2 * dofs)); frame i is in block
+ * frames_first + i / frames_per_block at payload offset
+ * (i % frames_per_block) * 2 * dofs, its u16 q values in dof order. A bad
+ * block loses only the frames inside it (32 frames of a CMU clip at 4 KiB:
+ * 0.27 s at 120 Hz).
+ *
+ * DIRECTORY (kind 4): u16 clip count, then per clip
+ *
+ *     str name (the AMC file name without extension), f32 fps,
+ *     u32 frame count, i32 first frame number (frames are numbered
+ *     consecutively from it), u16 dofs, u16 frames_per_block,
+ *     u32 quant first block, u32 quant block count,
+ *     u32 frames first block, u32 frame block count,
+ *     f32 worst-case rotation error (radians), f32 worst-case translation
+ *     error (ASF length units): the largest step / 2 of each kind of dof
+ *
+ * Compatibility: a reader refuses any other magic or version, a header
+ * size or CRC that does not match, and limits beyond its board's. */
+#ifndef IMAGE_FORMAT_H
+#define IMAGE_FORMAT_H
+
+#include <stdint.h>
+
+#include "board_limits.h"
+
+/* Boards that do not set the image limits get the host's. */
+#ifndef SKP_IMAGE_BLOCK_SIZE
+#define SKP_IMAGE_BLOCK_SIZE  4096
+#endif
+#ifndef SKP_IMAGE_RING_BLOCKS
+#define SKP_IMAGE_RING_BLOCKS    4
+#endif
+#ifndef SKP_IMAGE_MAX_CLIPS
+#define SKP_IMAGE_MAX_CLIPS     64
+#endif
+
+#define SKP_IMAGE_MAGIC        "SKPIMAGE"
+#define SKP_IMAGE_VERSION      1
+#define SKP_IMAGE_HEADER_SIZE  104
+#define SKP_IMAGE_BLOCK_HDR    12    /* tag, index, kind, 0, item */
+#define SKP_IMAGE_BLOCK_CRC    4
+#define SKP_IMAGE_BLOCK_EXTRA  (SKP_IMAGE_BLOCK_HDR + SKP_IMAGE_BLOCK_CRC)
+#define SKP_IMAGE_MIN_BLOCK    512
+#define SKP_IMAGE_DEFAULT_BLOCK 4096
+#define SKP_IMAGE_QMAX         65535u
+
+enum skp_image_kind {
+	SKP_KIND_HEADER = 1,
+	SKP_KIND_SKELETON,
+	SKP_KIND_BIND,
+	SKP_KIND_DIRECTORY,
+	SKP_KIND_QUANT,
+	SKP_KIND_FRAMES
+};
+
+enum skp_image_section_id {
+	SKP_SEC_SKELETON,
+	SKP_SEC_BIND,
+	SKP_SEC_DIRECTORY,
+	SKP_SEC_CLIPS,
+	SKP_SEC_COUNT
+};
+
+typedef struct skp_image_section {
+	uint32_t first, count, bytes;
+} skp_image_section;
+
+typedef struct skp_image_header {
+	uint16_t version;
+	uint16_t header_size;
+	uint32_t block_size, block_count;
+	uint64_t sequence;
+	uint32_t bones, dofs, verts, tris, influences, clips;
+	skp_image_section sec[SKP_SEC_COUNT];
+	uint32_t crc;
+} skp_image_header;
+
+typedef struct skp_image_clip {
+	char name[SKP_MAX_NAME];
+	float fps;
+	uint32_t frame_count;
+	int32_t first_number;
+	uint16_t dofs, frames_per_block;
+	uint32_t quant_first, quant_blocks;
+	uint32_t frames_first, frame_blocks;
+	float max_rot_err, max_trans_err;
+} skp_image_clip;
+
+static inline uint32_t skp_image_tag(uint64_t sequence)
+{
+	return (uint32_t)sequence ^ (uint32_t)(sequence >> 32);
+}
+
+/* Little-endian fields, whatever the CPU. */
+static inline void le_put16(uint8_t *p, uint16_t v)
+{
+	p[0] = (uint8_t)v;
+	p[1] = (uint8_t)(v >> 8);
+}
+
+static inline void le_put32(uint8_t *p, uint32_t v)
+{
+	le_put16(p, (uint16_t)v);
+	le_put16(p + 2, (uint16_t)(v >> 16));
+}
+
+static inline void le_put64(uint8_t *p, uint64_t v)
+{
+	le_put32(p, (uint32_t)v);
+	le_put32(p + 4, (uint32_t)(v >> 32));
+}
+
+static inline uint16_t le_get16(const uint8_t *p)
+{
+	return (uint16_t)(p[0] | (p[1] << 8));
+}
+
+static inline uint32_t le_get32(const uint8_t *p)
+{
+	return (uint32_t)le_get16(p) | ((uint32_t)le_get16(p + 2) << 16);
+}
+
+static inline uint64_t le_get64(const uint8_t *p)
+{
+	return (uint64_t)le_get32(p) | ((uint64_t)le_get32(p + 4) << 32);
+}
+
+/* Encodes / decodes the 104-byte header (the CRC field included as is). */
+void skp_image_header_put(uint8_t *p, const skp_image_header *h);
+void skp_image_header_get(const uint8_t *p, skp_image_header *h);
+
+#endif

@@ -1,0 +1,82 @@
+#include "image_play.h"
+
+#include <string.h>
+
+static void ring_clear(skp_player *p)
+{
+	for (int i = 0; i < SKP_IMAGE_RING_BLOCKS; i++)
+		p->slot[i].block = UINT32_MAX;
+}
+
+skp_status skp_player_open(skp_player *p, skp_image *im, int clip, skp_error *err)
+{
+	skp_error_clear(err);
+	if (clip < 0 || clip >= im->clip_count)
+		return skp_fail(err, SKP_ERR_RANGE, 0, "clip %d: the image has %d", clip, im->clip_count);
+	p->im = im;
+	p->clip = clip;
+	p->c = im->clip[clip];
+	p->reads = 0;
+	skp_status rc = skp_image_load_quant(im, clip, p->qmin, p->qstep, err);
+	skp_player_seek(p, 0);
+	return rc;
+}
+
+void skp_player_seek(skp_player *p, uint32_t index)
+{
+	p->next = index;
+	p->fetch = index / p->c.frames_per_block;
+	ring_clear(p);
+}
+
+/* Reads frame block b (clip-relative) into its ring slot. */
+static skp_player_slot *load(skp_player *p, uint32_t b)
+{
+	skp_player_slot *s = &p->slot[b % SKP_IMAGE_RING_BLOCKS];
+	if (s->block == b)
+		return s;
+	s->block = b;
+	s->state = (uint8_t)skp_image_read_block(p->im, p->c.frames_first + b, SKP_KIND_FRAMES,
+						 (unsigned)p->clip, p->ring[b % SKP_IMAGE_RING_BLOCKS]);
+	p->reads++;
+	return s;
+}
+
+/* Keeps the ring full ahead of the head, one block per frame at most, so a
+ * slow medium costs a little every frame rather than a stall per block. */
+static void prefetch(skp_player *p, uint32_t head)
+{
+	if (p->fetch <= head)
+		p->fetch = head + 1;
+	if (p->fetch < p->c.frame_blocks && p->fetch < head + SKP_IMAGE_RING_BLOCKS)
+		load(p, p->fetch++);
+}
+
+static void decode(const skp_player *p, const uint8_t *block, uint32_t index, amc_frame *f)
+{
+	uint32_t at = SKP_IMAGE_BLOCK_HDR + (index % p->c.frames_per_block) * 2u * p->c.dofs;
+	const uint8_t *q = block + at;
+	for (int i = 0; i < p->c.dofs; i++)
+		f->value[i] = (float)((double)p->qmin[i] + (double)le_get16(q + 2 * i) * (double)p->qstep[i]);
+	f->number = (long)p->c.first_number + (long)index;
+	f->line = 0;
+}
+
+int skp_player_next(skp_player *p, amc_frame *f, skp_error *err)
+{
+	if (p->next >= p->c.frame_count)
+		return 0;
+	uint32_t index = p->next++, b = index / p->c.frames_per_block;
+	skp_player_slot *s = load(p, b);
+	int state = s->state;
+	if (state == SKP_BLOCK_OK)
+		decode(p, p->ring[b % SKP_IMAGE_RING_BLOCKS], index, f);
+	prefetch(p, b);
+	if (state == SKP_BLOCK_OK)
+		return 1;
+	skp_fail(err, state == SKP_BLOCK_IO ? SKP_ERR_IO : SKP_ERR_CORRUPT, 0, "%s",
+		 skp_block_state_name((skp_block_state)state));
+	if (err)
+		err->block = (long)(p->c.frames_first + b);
+	return SKP_PLAYER_LOST;
+}

@@ -1,0 +1,49 @@
+/* Plays one clip of a flash image frame by frame from a fixed ring of
+ * SKP_IMAGE_RING_BLOCKS blocks prefetched ahead of the play head: memory
+ * does not depend on the clip's length. Frames are decoded straight from
+ * the ring into an amc_frame, so the pipeline after it is the one that
+ * plays AMC text.
+ *
+ * A frame in a block that fails its check (CRC, I/O error, short read, a
+ * block of another image) is not decoded: skp_player_next returns
+ * SKP_PLAYER_LOST with the block in err, and the caller keeps showing its
+ * last good frame; playback goes on at the next good block. */
+#ifndef IMAGE_PLAY_H
+#define IMAGE_PLAY_H
+
+#include "amc.h"
+#include "image_read.h"
+
+#define SKP_PLAYER_LOST 2
+
+typedef struct skp_player_slot {
+	uint32_t block;          /* frame block (0-based within the clip), UINT32_MAX empty */
+	uint8_t state;           /* skp_block_state */
+} skp_player_slot;
+
+typedef struct skp_player {
+	skp_image *im;
+	int clip;
+	skp_image_clip c;
+	uint32_t next;           /* index of the next frame */
+	uint32_t fetch;          /* next frame block to prefetch */
+	float qmin[SKP_MAX_DOF], qstep[SKP_MAX_DOF];
+	skp_player_slot slot[SKP_IMAGE_RING_BLOCKS];
+	uint8_t ring[SKP_IMAGE_RING_BLOCKS][SKP_IMAGE_BLOCK_SIZE];
+	unsigned long reads;     /* blocks read, for the figures */
+} skp_player;
+
+/* Opens clip (an index into im->clip) at its first frame; loads its
+ * quantisation (a bad block there is an error: the clip cannot play). */
+skp_status skp_player_open(skp_player *p, skp_image *im, int clip, skp_error *err);
+
+/* Moves the play head to frame index (0 = the clip's first frame). */
+void skp_player_seek(skp_player *p, uint32_t index);
+
+/* Returns 1 with the next frame in *f (number = first number + index,
+ * values in the clip's dof order), 0 after the last frame, or
+ * SKP_PLAYER_LOST when the frame's block is bad: *f is untouched,
+ * err->block is the image block and err->msg why; the head still advances. */
+int skp_player_next(skp_player *p, amc_frame *f, skp_error *err);
+
+#endif

@@ -1,0 +1,76 @@
+/* Reads a flash image (app/image_format.h) from a skp_blockdev with fixed
+ * memory: the header and the clip directory at open, then the skeleton and
+ * the bound body into the caller's structs. Every block read is checked
+ * (CRC, tag, index, kind); errors name the block. Playback of the clips is
+ * app/image_play.h. */
+#ifndef IMAGE_READ_H
+#define IMAGE_READ_H
+
+#include "blockdev.h"
+#include "image_format.h"
+#include "mesh.h"
+#include "skel.h"
+#include "skin_weights.h"
+#include "skp_error.h"
+
+/* Why a block is not usable. */
+typedef enum skp_block_state {
+	SKP_BLOCK_OK = 0,
+	SKP_BLOCK_IO,        /* the storage reported an error */
+	SKP_BLOCK_SHORT,     /* fewer bytes than a block (truncated storage) */
+	SKP_BLOCK_CRC,       /* CRC mismatch */
+	SKP_BLOCK_FOREIGN,   /* good CRC, but from another image (tag) */
+	SKP_BLOCK_MISPLACED  /* good CRC, but its index or kind is not this one's */
+} skp_block_state;
+
+/* "CRC mismatch", "I/O error", ... */
+const char *skp_block_state_name(skp_block_state st);
+
+/* Whether a raw block's CRC-32 matches (no other check). */
+int skp_block_crc_ok(const uint8_t *block, uint32_t block_size);
+
+/* The block size in the header of a raw first block, or 0 when it does not
+ * look like an image (wrong magic, or a size out of range). Front ends use
+ * it to open storage with the image's own block size. */
+uint32_t skp_image_block_size_hint(const uint8_t *block0, uint32_t n);
+
+typedef struct skp_image {
+	const skp_blockdev *dev;
+	skp_image_header hdr;
+	uint32_t tag;
+	int clip_count;
+	skp_image_clip clip[SKP_IMAGE_MAX_CLIPS];
+	/* section stream state, over buf */
+	uint32_t s_block, s_end, s_pos, s_left;
+	uint8_t s_kind;
+	uint16_t s_item;
+	uint8_t buf[SKP_IMAGE_BLOCK_SIZE];
+} skp_image;
+
+/* Reads and checks block 0 (magic, version, header CRC, board limits, that
+ * the storage holds every block) and the clip directory. A bad image gives
+ * SKP_ERR_CORRUPT (or SKP_ERR_LIMIT, SKP_ERR_IO) naming the block and what
+ * was expected. dev must stay valid while im is used. */
+skp_status skp_image_open(skp_image *im, const skp_blockdev *dev, skp_error *err);
+
+/* Reads block into buf and checks it: its CRC, the image's tag, its index,
+ * and when kind > 0 its kind and item. */
+skp_block_state skp_image_read_block(skp_image *im, uint32_t block, int kind, unsigned item,
+				     uint8_t *buf);
+
+/* The skeleton, exactly as packed. */
+skp_status skp_image_load_skel(skp_image *im, skel *s, skp_error *err);
+
+/* The bound mesh (normals included), its weights, and the bind pose as one
+ * frame of values (bind_values[SKP_MAX_DOF]; *bind_number -1 and all zero
+ * for the ASF rest pose). s is the image's skeleton. */
+skp_status skp_image_load_bind(skp_image *im, const skel *s, mesh *m, skin_weights *w,
+			       float *bind_values, long *bind_number, skp_error *err);
+
+/* The clip's per-dof quantisation (qmin, qstep: clip->dofs floats each). */
+skp_status skp_image_load_quant(skp_image *im, int clip, float *qmin, float *qstep, skp_error *err);
+
+/* Index of the clip with that name, or -1. */
+int skp_image_find_clip(const skp_image *im, const char *name);
+
+#endif

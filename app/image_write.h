@@ -1,0 +1,69 @@
+/* Writes a flash image (app/image_format.h) block by block through a
+ * skp_blockdev's write callback, with fixed memory: clips are streamed
+ * twice by the caller, first into an skp_clip_range (the per-dof range the
+ * quantisation needs), then frame by frame into the image. Block 0 (the
+ * header) is written last. */
+#ifndef IMAGE_WRITE_H
+#define IMAGE_WRITE_H
+
+#include "amc.h"
+#include "blockdev.h"
+#include "fk.h"
+#include "image_format.h"
+#include "mesh.h"
+#include "skin_weights.h"
+
+/* Pass 1 over a clip: frame count, numbering, per-dof min and max. */
+typedef struct skp_clip_range {
+	int dofs;
+	long frames;
+	long first_number, last_number;
+	float min[SKP_MAX_DOF], max[SKP_MAX_DOF];
+} skp_clip_range;
+
+void skp_clip_range_init(skp_clip_range *r, const skel *s);
+/* Fails on a frame number that does not follow the previous one, or a
+ * value that is not finite (err names the frame's line). */
+skp_status skp_clip_range_add(skp_clip_range *r, const amc_frame *f, skp_error *err);
+
+typedef struct skp_image_writer {
+	skp_blockdev *dev;
+	const skel *s;
+	uint32_t bs, payload;     /* block size, payload bytes per block */
+	uint32_t tag;
+	uint32_t next_block;      /* next block to write */
+	skp_image_header hdr;
+	/* the section being written */
+	uint8_t kind;
+	uint16_t item;
+	uint32_t sec_first, sec_bytes, fill;
+	/* the clip being written */
+	skp_image_clip *clip;
+	uint32_t frames_left;
+	long next_number;
+	float qmin[SKP_MAX_DOF], qstep[SKP_MAX_DOF];
+	int clip_count;
+	skp_image_clip dir[SKP_IMAGE_MAX_CLIPS];
+	uint8_t block[SKP_IMAGE_BLOCK_SIZE];
+} skp_image_writer;
+
+/* Starts an image on dev (dev->block_size is the image's block size) and
+ * writes the skeleton section. */
+skp_status skp_image_write_begin(skp_image_writer *w, skp_blockdev *dev, uint64_t sequence,
+				 const skel *s, skp_error *err);
+
+/* The bound body: mesh, weights, and the bind pose (bind_values: one frame
+ * as amc_frame.value numbered bind_number, or NULL for the rest pose). */
+skp_status skp_image_write_bind(skp_image_writer *w, const mesh *m, const skin_weights *wt,
+				const float *bind_values, long bind_number, skp_error *err);
+
+/* Starts a clip of range->frames frames (range from pass 1), then takes its
+ * frames in order; the clip ends after the last one. */
+skp_status skp_image_clip_begin(skp_image_writer *w, const char *name, float fps,
+				const skp_clip_range *range, skp_error *err);
+skp_status skp_image_clip_frame(skp_image_writer *w, const amc_frame *f, skp_error *err);
+
+/* Writes the directory, then the header. */
+skp_status skp_image_write_end(skp_image_writer *w, skp_error *err);
+
+#endif

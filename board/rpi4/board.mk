@@ -1,0 +1,36 @@
+# board/rpi4: Raspberry Pi 4 kiosk (Cortex-A72, aarch64, Debian 12 arm64 or
+# Raspberry Pi OS bookworm; KMS on vc4/v3d, buttons on the GPIO header).
+# Cross build from x86-64: `make BOARD=rpi4` (CROSS_COMPILE= builds natively
+# on the Pi). Runtime settings are in board.ini, wiring in README.md.
+BOARD_DESC    := Raspberry Pi 4 (aarch64) kiosk
+CROSS_COMPILE ?= aarch64-linux-gnu-
+CC            := $(CROSS_COMPILE)gcc
+AR            := $(CROSS_COMPILE)ar
+NM            := $(CROSS_COMPILE)nm
+SIZE          := $(CROSS_COMPILE)size
+BOARD_CFLAGS  := -O2 -g -mcpu=cortex-a72
+# No AVX2 on ARM: the portable kernels (NEON is left to the compiler).
+SIMD          := scalar
+DEB_PKGS      := pkg-config libcmocka-dev libegl-dev libgles-dev libosmesa6-dev \
+                 libgbm-dev libdrm-dev libgpiod-dev libpng-dev libx11-dev
+PC_MODULES    := cmocka egl glesv2 osmesa gbm libdrm libgpiod libpng x11
+
+# Cross build from another architecture (Debian 12 x86-64): the compiler,
+# the arm64 multiarch -dev packages (dpkg --add-architecture arm64), a
+# pkg-config that looks only at them, and qemu-user to run the tests
+# (`make BOARD=rpi4 test`, through tests/cross_run.sh: the rendering tests
+# are skipped there, see that script for why).
+ifneq ($(CROSS_COMPILE),)
+ifneq ($(shell uname -m),aarch64)
+CROSS_LIBS    := libcmocka-dev libegl-dev libgles-dev libosmesa6-dev libgbm-dev libdrm-dev \
+                 libgpiod-dev libpng-dev libx11-dev
+DEB_PKGS      := pkg-config gcc-aarch64-linux-gnu qemu-user-static binfmt-support \
+                 $(addsuffix :arm64,$(CROSS_LIBS))
+DEB_TOOLS     := $(CC) qemu-aarch64-static
+DEPS_PREPARE  := dpkg --add-architecture arm64 &&
+PKG_CONFIG    := PKG_CONFIG_LIBDIR=/usr/lib/aarch64-linux-gnu/pkgconfig:/usr/share/pkgconfig pkg-config
+export QEMU_LD_PREFIX := /usr/aarch64-linux-gnu
+RPI4_QEMU_SKIP := test_render test_display test_kiosk test_image_cli
+TEST_WRAP     := sh tests/cross_run.sh aarch64 "$(RPI4_QEMU_SKIP)" --
+endif
+endif

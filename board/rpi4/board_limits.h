@@ -1,0 +1,29 @@
+/* Compile-time limits of the Raspberry Pi 4 kiosk: the host's, which the Pi's
+ * 1-8 GiB hold easily, plus the kiosk's config limits. */
+#ifndef BOARD_LIMITS_H
+#define BOARD_LIMITS_H
+
+#define SKP_MAX_BONES      128  /* bones including the root */
+#define SKP_MAX_NAME        48  /* bone / skeleton name, with NUL */
+#define SKP_MAX_LINE      1024  /* longest text line of ASF/AMC/OBJ/INI, bytes */
+#define SKP_MAX_TOKENS      32  /* tokens on one line */
+#define SKP_READ_CHUNK    4096  /* bytes a text reader pulls per callback */
+
+#define SKP_MAX_VERTS    65536  /* mesh vertices (GLES 2.0: 16-bit indices) */
+#define SKP_MAX_TRIS    131072  /* mesh triangles after triangulation */
+#define SKP_MAX_INFLUENCES   4  /* bones per vertex */
+
+/* Each bone has at most 7 dof (rx ry rz tx ty tz l); the root has 6. */
+#define SKP_MAX_DOF (7 * SKP_MAX_BONES)
+
+/* Packed flash images (app/image_format.h): see board/host/board_limits.h.
+ * SD cards read 4 KiB pages well. */
+#define SKP_IMAGE_BLOCK_SIZE  4096
+#define SKP_IMAGE_RING_BLOCKS    4
+#define SKP_IMAGE_MAX_CLIPS     64
+
+/* board.ini (app/board_config.h): path length and A/B image slots. */
+#define SKP_MAX_PATH  256
+#define SKP_MAX_SLOTS   2
+
+#endif

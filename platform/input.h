@@ -1,0 +1,75 @@
+/* Button input backends, kmscube style: one struct of function pointers per
+ * backend, static state, one active at a time. Every backend delivers
+ * debounced player_events (press, release, long press) with timestamps in
+ * the caller's millisecond clock; the main loop polls the backend's fds
+ * together with its own and calls read() once per frame (read never
+ * blocks, so calling it without poll() is fine too).
+ *
+ *   gpio          libgpiod 1.6 both-edge line events, debounced per button
+ *   keyboard      keys 1-4 and the arrows on the controlling terminal
+ *   script:FILE   lines "TIME_MS BUTTON press|release" (tests, demos)
+ *   none          no input */
+#ifndef INPUT_H
+#define INPUT_H
+
+#include <poll.h>
+#include <stdint.h>
+
+#include "board_config.h"
+#include "player.h"
+#include "skp_error.h"
+
+#define INPUT_MAX_FDS PLAYER_BTN_COUNT
+#define INPUT_MAX_EVENTS 32   /* a good size for read()'s event array */
+
+typedef struct input_backend {
+	const char *name;
+	/* cfg: the board's buttons and chip; arg: the script file (else NULL);
+	 * now_ms: the current time of the clock read() will be given. On
+	 * failure nothing is left open. */
+	int (*init)(const board_config *cfg, const char *arg, uint64_t now_ms, skp_error *err);
+	/* The fds to poll for POLLIN (at most INPUT_MAX_FDS); returns the count. */
+	int (*fds)(struct pollfd *pfd, int max);
+	/* Reads what is pending and fires timers due at now_ms. Returns the
+	 * number of events written to ev (at most max; the rest waits for the
+	 * next call), or -1 with err filled. */
+	int (*read)(uint64_t now_ms, player_event *ev, int max, skp_error *err);
+	/* Releases the lines, restores the terminal. */
+	void (*shutdown)(void);
+} input_backend;
+
+extern const input_backend input_gpio;
+extern const input_backend input_keyboard;
+extern const input_backend input_script;
+extern const input_backend input_none;
+
+/* "gpio", "keyboard", "none" or "script:FILE" (then *arg = FILE); NULL
+ * when unknown. */
+const input_backend *input_find(const char *spec, const char **arg);
+
+/* For backends: appends the events of DEBOUNCE_* bits (in their order)
+ * to ev; returns how many (at most 3). */
+int input_emit(unsigned bits, int button, uint64_t t_ms, player_event *ev);
+
+/* The seam between the gpio backend and libgpiod's chip and line handling,
+ * so that tests can hand it pipes instead of line event fds. Events are
+ * always decoded by libgpiod's gpiod_line_event_read_fd(). */
+typedef struct input_gpio_ops {
+	void *(*open_chip)(const char *chip);          /* NULL with errno */
+	/* Requests both-edge events with GPIOD_LINE_REQUEST_FLAG_* flags. */
+	void *(*request)(void *chip, unsigned int offset, int flags, const char *consumer);
+	int (*event_fd)(void *line);
+	int (*get_value)(void *line);                  /* active level: 1 pressed, -1 error */
+	void (*release)(void *line);
+	void (*close_chip)(void *chip);
+} input_gpio_ops;
+
+extern const input_gpio_ops input_gpio_libgpiod;
+
+/* NULL restores libgpiod. */
+void input_gpio_set_ops(const input_gpio_ops *ops);
+
+/* The GPIOD_LINE_REQUEST_FLAG_* flags for a button (active level, bias). */
+int input_gpio_flags(const board_button *b);
+
+#endif

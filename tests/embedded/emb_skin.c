@@ -1,0 +1,293 @@
+/* The embedded skinning test: the same source runs on a Cortex-M (under
+ * qemu-system-arm, output through semihosting) and on the host, and the
+ * two must print the same fixed-kernel checksum.
+ *
+ * 1. Bit-exact part (every build): the fixed-point DQBS kernel
+ *    (skin_dqbs_fixed, integer only) skins the body for every frame from
+ *    tables made on the host (emb_tables.h: Q15.16 positions, Q2.30
+ *    normals, Q1.15 weights, per-frame bone dual quaternions). The vertex
+ *    data is read in place from flash, 64 vertices at a time, and the
+ *    Q16.16 outputs go into an FNV-1a hash (each int32 as 4 little-endian
+ *    bytes). Integer arithmetic is the same on every target, so this
+ *    checksum must match bit for bit.
+ * 2. Target pipeline (EMB_FULL builds, i.e. boards with the float core):
+ *    parse the embedded ASF and AMC text, pose with FK, bind the body with
+ *    app/bind.c, convert to fixed point and skin, all on the target. FK
+ *    uses sinf/cosf, whose last bit differs between libms (glibc on the
+ *    host, newlib on the board), so this part is compared against the host
+ *    tables and the differences are printed, not required to be zero.
+ *
+ * No malloc, no stdio: output through emb_puts (emb_port.h). */
+#include <stdint.h>
+#include <string.h>
+
+#include "emb_port.h"
+#include "emb_tables.h"
+#include "skin.h"
+
+#ifdef EMB_FULL
+#include "skp_format.h"
+#include "amc.h"
+#include "asf.h"
+#include "bind.h"
+#include "fk.h"
+#include "skp_reader.h"
+#include "text_lines.h"
+#endif
+
+_Static_assert(EMB_BONES <= SKP_MAX_BONES, "the embedded skeleton exceeds the board's SKP_MAX_BONES");
+
+#define CHUNK 64 /* vertices skinned per call: a multiple of SKIN_LANES */
+
+typedef struct fnv {
+	uint32_t h;
+} fnv;
+
+static void fnv_i32(fnv *f, int32_t v)
+{
+	uint32_t u = (uint32_t)v;
+	for (int i = 0; i < 4; i++) {
+		f->h ^= (u >> (8 * i)) & 0xffu;
+		f->h *= 16777619u;
+	}
+}
+
+static void hex32(char *out, uint32_t v)
+{
+	static const char digits[] = "0123456789abcdef";
+	out[0] = '0';
+	out[1] = 'x';
+	for (int i = 0; i < 8; i++)
+		out[2 + i] = digits[(v >> (28 - 4 * i)) & 0xfu];
+	out[10] = 0;
+}
+
+static void say(const char *s)
+{
+	emb_puts(s);
+	emb_puts("\n");
+}
+
+static skin_bones bones;
+static int32_t out_pos[3 * CHUNK], out_nrm[3 * CHUNK];
+
+/* Skins vertices [0, in->count) into the hash in chunks of CHUNK. */
+static void skin_hash(const skin_soa *in, fnv *f)
+{
+	skin_out o = { NULL, NULL, out_pos, out_nrm };
+	for (int first = 0; first < in->count; first += CHUNK) {
+		int n = in->count - first < CHUNK ? in->count - first : CHUNK;
+		skin_soa view = *in;
+		view.count = n;
+		view.fpx = in->fpx + first; view.fpy = in->fpy + first; view.fpz = in->fpz + first;
+		view.fnx = in->fnx + first; view.fny = in->fny + first; view.fnz = in->fnz + first;
+		for (int k = 0; k < SKP_MAX_INFLUENCES; k++) {
+			view.bone[k] = in->bone[k] + first;
+			view.fweight[k] = in->fweight[k] + first;
+		}
+		skin_dqbs_fixed(&view, &bones, 0, n, &o);
+		for (int i = 0; i < 3 * n; i++)
+			fnv_i32(f, out_pos[i]);
+		for (int i = 0; i < 3 * n; i++)
+			fnv_i32(f, out_nrm[i]);
+	}
+}
+
+static void load_frame_table(int frame)
+{
+	bones.count = EMB_BONES;
+	for (int b = 0; b <= EMB_BONES; b++) {
+		const int32_t *v = emb_fdq[frame][b];
+		fx_dq d = { { v[0], v[1], v[2], v[3] }, { v[4], v[5], v[6], v[7] } };
+		bones.fdq[b == EMB_BONES ? SKIN_IDENTITY_BONE : b] = d;
+	}
+}
+
+/* The kernel only reads through these pointers (skin_soa has no const
+ * variant), so the tables stay in flash. */
+static void table_soa(skin_soa *s)
+{
+	memset(s, 0, sizeof *s);
+	s->count = EMB_VERTS;
+	s->padded = EMB_PADDED;
+	s->fpx = (int32_t *)emb_fpx; s->fpy = (int32_t *)emb_fpy; s->fpz = (int32_t *)emb_fpz;
+	s->fnx = (int32_t *)emb_fnx; s->fny = (int32_t *)emb_fny; s->fnz = (int32_t *)emb_fnz;
+	const uint16_t *bone[4] = { emb_bone0, emb_bone1, emb_bone2, emb_bone3 };
+	const uint16_t *fw[4] = { emb_fw0, emb_fw1, emb_fw2, emb_fw3 };
+	_Static_assert(SKP_MAX_INFLUENCES == 4, "emb_gen writes 4 influences");
+	for (int k = 0; k < SKP_MAX_INFLUENCES; k++) {
+		s->bone[k] = (uint16_t *)bone[k];
+		s->fweight[k] = (uint16_t *)fw[k];
+	}
+}
+
+static uint32_t fixed_checksum(void)
+{
+	skin_soa s;
+	fnv f = { 2166136261u };
+	table_soa(&s);
+	for (int fr = 0; fr < EMB_FRAMES; fr++) {
+		load_frame_table(fr);
+		skin_hash(&s, &f);
+	}
+	return f.h;
+}
+
+#ifdef EMB_FULL
+static skel sk;
+static text_lines tl;
+static amc_stream as;
+static amc_frame frame;
+static skel_pose bind_pose, pose;
+static vec3 body_pos[EMB_VERTS];
+static mesh body;
+static bind_rig rig;
+static skin_weights weights;
+static skin_soa soa;
+static _Alignas(SKIN_ALIGN) unsigned char soa_mem[(6 + 3 + 3 + SKP_MAX_INFLUENCES) * 4 * EMB_PADDED +
+						  2 * SKP_MAX_INFLUENCES * 2 * EMB_PADDED + 64 * SKIN_ALIGN];
+
+typedef struct diff {
+	long count; /* values that differ from the host's */
+	long max;   /* largest difference, in LSB */
+} diff;
+
+static void diff_add(diff *d, int32_t got, int32_t want)
+{
+	long e = (long)got - (long)want;
+	if (e < 0)
+		e = -e;
+	if (e) {
+		d->count++;
+		if (e > d->max)
+			d->max = e;
+	}
+}
+
+static float from_bits(uint32_t u)
+{
+	float x;
+	memcpy(&x, &u, sizeof x);
+	return x;
+}
+
+static int fail(const char *what, const skp_error *err)
+{
+	char line[300];
+	skp_format(line, sizeof line, "emb: %s: line %ld: %s", what, err->line, err->msg);
+	say(line);
+	return 1;
+}
+
+/* Parse, FK, bind and convert on the target; diffs against the tables. */
+static int bind_on_target(diff *soa_diff, skp_error *err)
+{
+	skp_mem_source src;
+	text_lines_init(&tl, skp_mem_reader(&src, emb_asf, sizeof emb_asf - 1));
+	if (asf_parse(&sk, &tl, err) != SKP_OK)
+		return fail("ASF", err);
+	fk_pose(&sk, NULL, &bind_pose);
+	body.vert_count = EMB_VERTS;
+	for (int v = 0; v < EMB_VERTS; v++) {
+		body_pos[v] = vec3_make(from_bits(emb_pos_bits[3 * v]), from_bits(emb_pos_bits[3 * v + 1]),
+					from_bits(emb_pos_bits[3 * v + 2]));
+		body.pos[v] = body_pos[v];
+		body.normal[v] = vec3_make(from_bits(emb_nrm_bits[3 * v]), from_bits(emb_nrm_bits[3 * v + 1]),
+					   from_bits(emb_nrm_bits[3 * v + 2]));
+	}
+	bind_prepare(&rig, &sk, &bind_pose, NULL);
+	if (bind_weights(&rig, body_pos, EMB_VERTS, &weights, NULL, err) != SKP_OK)
+		return fail("bind", err);
+	skin_soa_attach(&soa, soa_mem, EMB_VERTS);
+	if (skin_soa_load(&soa, &body, &weights, sk.count, err) != SKP_OK)
+		return fail("skin_soa_load", err);
+	skin_soa t;
+	table_soa(&t);
+	for (int v = 0; v < EMB_PADDED; v++) {
+		diff_add(soa_diff, soa.fpx[v], t.fpx[v]); diff_add(soa_diff, soa.fpy[v], t.fpy[v]);
+		diff_add(soa_diff, soa.fpz[v], t.fpz[v]); diff_add(soa_diff, soa.fnx[v], t.fnx[v]);
+		diff_add(soa_diff, soa.fny[v], t.fny[v]); diff_add(soa_diff, soa.fnz[v], t.fnz[v]);
+		for (int k = 0; k < SKP_MAX_INFLUENCES; k++) {
+			diff_add(soa_diff, soa.bone[k][v], t.bone[k][v]);
+			diff_add(soa_diff, soa.fweight[k][v], t.fweight[k][v]);
+		}
+	}
+	return 0;
+}
+
+static int pipeline_on_target(uint32_t *sum)
+{
+	skp_error err;
+	skp_mem_source src;
+	diff soa_diff = { 0, 0 }, dq_diff = { 0, 0 };
+	fnv f = { 2166136261u };
+	int frames = 0, r;
+	char line[200], hex[11];
+
+	if (bind_on_target(&soa_diff, &err))
+		return 1;
+	text_lines_init(&tl, skp_mem_reader(&src, emb_amc, sizeof emb_amc - 1));
+	amc_open(&as, &sk, &tl);
+	while ((r = amc_next(&as, &frame, &err)) == 1 && frames < EMB_FRAMES) {
+		fk_pose(&sk, frame.value, &pose);
+		skin_bones_compute(&bones, &sk, &bind_pose, &pose);
+		for (int b = 0; b <= EMB_BONES; b++) {
+			const fx_dq *d = &bones.fdq[b == EMB_BONES ? SKIN_IDENTITY_BONE : b];
+			const int32_t got[8] = { d->real.w, d->real.x, d->real.y, d->real.z,
+						 d->dual.w, d->dual.x, d->dual.y, d->dual.z };
+			for (int i = 0; i < 8; i++)
+				diff_add(&dq_diff, got[i], emb_fdq[frames][b][i]);
+		}
+		skin_hash(&soa, &f);
+		frames++;
+	}
+	if (r < 0)
+		return fail("AMC", &err);
+	*sum = f.h;
+	hex32(hex, f.h);
+	skp_format(line, sizeof line, "emb: target pipeline: %d frames, checksum %s", frames, hex);
+	say(line);
+	skp_format(line, sizeof line,
+		   "emb: target vs host tables: soa %ld values differ (max %ld LSB), bone dq %ld differ (max %ld LSB)",
+		   soa_diff.count, soa_diff.max, dq_diff.count, dq_diff.max);
+	say(line);
+	return frames == EMB_FRAMES ? 0 : 1;
+}
+#endif
+
+/* Decimal without a formatter: the fixed-only builds (Cortex-M0) link no
+ * floating point at all, and skp_format carries %g. */
+static void put_int(long v)
+{
+	char buf[24], *p = buf + sizeof buf;
+	unsigned long u = v < 0 ? 0ul - (unsigned long)v : (unsigned long)v;
+	*--p = 0;
+	do
+		*--p = (char)('0' + u % 10);
+	while (u /= 10);
+	if (v < 0)
+		*--p = '-';
+	emb_puts(p);
+}
+
+int emb_main(void)
+{
+	char hex[11];
+	emb_puts("emb: ");
+	put_int(EMB_VERTS);
+	emb_puts(" vertices, ");
+	put_int(EMB_BONES);
+	emb_puts(" bones, ");
+	put_int(EMB_FRAMES);
+	say(" frames, skinning dqbs-fixed (scalar)");
+	hex32(hex, fixed_checksum());
+	emb_puts("emb: fixed-kernel checksum ");
+	say(hex);
+#ifdef EMB_FULL
+	uint32_t sum;
+	if (pipeline_on_target(&sum))
+		return 1;
+#endif
+	say("emb: done");
+	return 0;
+}

@@ -1,0 +1,140 @@
+# Rules for microcontroller boards (board.mk sets BOARD_KIND := mcu): the
+# Makefile includes this file instead of its Linux rules. Builds
+#   $(OUT)/libskp.a       the portable core for the board (all of app/ but
+#                         the front ends, the GL renderer and the x86 kernels)
+#   $(OUT)/emb_skin.elf   tests/embedded/emb_skin.c for the board (semihosted)
+#   $(OUT)/host/emb_skin  the same test built for the host: the reference
+# `make BOARD=... test` runs both and fails unless the fixed-kernel checksums
+# are equal. The test's data is made on the host by tests/embedded/emb_gen.c
+# (see there for why the tables are in fixed point).
+HOSTCC   ?= cc
+WARN     := -Wall -Wextra -Werror -Wshadow -Wstrict-prototypes -Wvla
+OUT      := $(BUILD)
+
+CLI_SRC   := $(wildcard app/cli_*.c)
+FRONT_SRC := $(wildcard app/skintool*.c app/skinplay*.c) $(CLI_SRC)
+# The renderer needs GLES2 headers and a display; the AVX2 kernels are x86.
+MCU_SKIP  := $(wildcard app/render*.c app/gl_api.c app/*_avx2.c)
+CORE_SRC  := $(filter-out $(FRONT_SRC) $(MCU_SKIP),$(wildcard app/*.c))
+
+CPPFLAGS    := -Iapp -Iboard/$(BOARD) -MMD -MP
+CFLAGS_APP  := -std=c11 $(WARN) $(BOARD_CFLAGS) $(EXTRA_CFLAGS)
+HOST_CFLAGS := -std=c11 $(WARN) -O2 -g $(EXTRA_CFLAGS)
+EMB_DEFS    := $(if $(filter 1,$(MCU_FULL)),-DEMB_FULL)
+EMB_INC     := -Itests/embedded -I$(OUT)/emb
+
+CORE_OBJ      := $(CORE_SRC:%.c=$(OUT)/%.o)
+HOST_CORE_OBJ := $(CORE_SRC:%.c=$(OUT)/host/%.o)
+CORE_LIB      := $(OUT)/libskp.a
+HOST_CORE_LIB := $(OUT)/host/libskp.a
+EMB_TABLES    := $(OUT)/emb/emb_tables.h
+EMB_ELF       := $(OUT)/emb_skin.elf
+EMB_HOST      := $(OUT)/host/emb_skin
+EMB_GEN       := $(OUT)/host/emb_gen
+DEMO_AMC      := $(OUT)/assets/demo.amc
+
+.PHONY: all deps test size clean help
+all: $(CORE_LIB) $(EMB_ELF) $(EMB_HOST)
+
+# Objects depend on the flags they were built with.
+FLAGS_STAMP := $(OUT)/flags.stamp
+FLAGS_NOW   := $(CC) $(CPPFLAGS) $(CFLAGS_APP) $(HOSTCC) $(HOST_CFLAGS) $(EMB_DEFS) $(EMB_FRAMES) $(EMB_STRIDE)
+ifneq ($(strip $(shell cat $(FLAGS_STAMP) 2>/dev/null)),$(strip $(FLAGS_NOW)))
+  $(shell mkdir -p $(OUT) && echo '$(FLAGS_NOW)' > $(FLAGS_STAMP))
+endif
+
+$(OUT)/app/%.o: app/%.c $(FLAGS_STAMP)
+	@mkdir -p $(@D)
+	$(CC) $(CPPFLAGS) $(CFLAGS_APP) -c $< -o $@
+$(OUT)/host/app/%.o: app/%.c $(FLAGS_STAMP)
+	@mkdir -p $(@D)
+	$(HOSTCC) $(CPPFLAGS) $(HOST_CFLAGS) -c $< -o $@
+
+$(CORE_LIB): $(CORE_OBJ)
+	rm -f $@ && $(AR) rcs $@ $^
+$(HOST_CORE_LIB): $(HOST_CORE_OBJ)
+	rm -f $@ && ar rcs $@ $^
+
+# The test's data, made on the host with the board's limits.
+$(OUT)/assets/demo_motion: assets/demo_motion.c
+	@mkdir -p $(@D)
+	$(HOSTCC) -std=c11 -D_DEFAULT_SOURCE $(WARN) -O2 $< -o $@ -lm
+$(DEMO_AMC): $(OUT)/assets/demo_motion
+	$< > $@.tmp && mv $@.tmp $@
+$(EMB_GEN): tests/embedded/emb_gen.c $(HOST_CORE_LIB)
+	$(HOSTCC) $(CPPFLAGS) $(HOST_CFLAGS) $< $(HOST_CORE_LIB) -lm -o $@
+$(EMB_TABLES): $(EMB_GEN) assets/demo.asf $(DEMO_AMC) $(FLAGS_STAMP)
+	@mkdir -p $(@D)
+	$(EMB_GEN) assets/demo.asf $(DEMO_AMC) $(EMB_FRAMES) $(EMB_STRIDE) $@
+
+$(OUT)/emb/%.o: tests/embedded/%.c $(EMB_TABLES) $(FLAGS_STAMP)
+	@mkdir -p $(@D)
+	$(CC) $(CPPFLAGS) $(EMB_INC) $(EMB_DEFS) $(CFLAGS_APP) -c $< -o $@
+$(OUT)/host/emb/%.o: tests/embedded/%.c $(EMB_TABLES) $(FLAGS_STAMP)
+	@mkdir -p $(@D)
+	$(HOSTCC) $(CPPFLAGS) $(EMB_INC) $(EMB_DEFS) $(HOST_CFLAGS) -c $< -o $@
+
+# No crt0, no syscalls: newlib's libc and libm only resolve what the core
+# names (memcpy, strcmp, sinf...). Anything that would need malloc or a
+# system call fails to link; the nm check below makes it explicit.
+$(EMB_ELF): $(OUT)/emb/emb_skin.o $(OUT)/emb/emb_cortex_m.o $(CORE_LIB) tests/embedded/mps2.ld
+	$(CC) $(MCU_CPU) -nostartfiles -T tests/embedded/mps2.ld -Wl,--gc-sections \
+	  -Wl,-Map=$(OUT)/emb_skin.map -o $@ $(filter %.o %.a,$^) -lm -lc -lgcc
+	@if $(NM) $@ | grep -qwE '_?(malloc|calloc|realloc|free|_sbrk|_write|printf)'; then \
+	  echo "$@: links an allocator or stdio:"; $(NM) $@ | grep -wE '_?(malloc|calloc|realloc|free|_sbrk|_write|printf)'; \
+	  rm -f $@; exit 1; fi
+ifneq ($(MCU_FULL),1)
+	@if $(NM) $@ | grep -qE '__aeabi_[fd]|__(add|sub|mul|div)[sd]f3'; then \
+	  echo "$@: the fixed-point build links floating-point helpers:"; $(NM) $@ | grep -E '__aeabi_[fd]|__(add|sub|mul|div)[sd]f3'; \
+	  rm -f $@; exit 1; fi
+endif
+$(EMB_HOST): $(OUT)/host/emb/emb_skin.o $(OUT)/host/emb/emb_host.o $(HOST_CORE_LIB)
+	$(HOSTCC) -o $@ $^ -lm
+
+QEMU_RUN := timeout 300 $(QEMU_SYSTEM) -M $(QEMU_MACHINE) -nographic -semihosting -monitor none -serial null -kernel
+
+test: deps all
+	@echo "== host reference: $(EMB_HOST)"; \
+	$(EMB_HOST) > $(OUT)/emb_host.log 2>&1; hrc=$$?; cat $(OUT)/emb_host.log; \
+	echo "== $(QEMU_SYSTEM) -M $(QEMU_MACHINE): $(EMB_ELF)"; \
+	$(QEMU_RUN) $(EMB_ELF) > $(OUT)/emb_target.log 2>&1; trc=$$?; cat $(OUT)/emb_target.log; \
+	h=$$(sed -n 's/^emb: fixed-kernel checksum //p' $(OUT)/emb_host.log); \
+	t=$$(sed -n 's/^emb: fixed-kernel checksum //p' $(OUT)/emb_target.log); \
+	fail=0; \
+	if [ $$hrc -ne 0 ] || [ $$trc -ne 0 ]; then echo "emb: host exit $$hrc, target exit $$trc"; fail=1; fi; \
+	if [ -z "$$h" ] || [ "$$h" != "$$t" ]; then echo "emb: FAILED: $(BOARD) fixed-kernel checksum '$$t' != host '$$h'"; fail=1; \
+	else echo "emb: $(BOARD) fixed-kernel checksum $$t equals the host's"; fi; \
+	if [ $$fail = 0 ]; then echo "emb: 1 passed, 0 failed"; else echo "emb: 0 passed, 1 failed"; exit 1; fi
+
+# Flash = code + constants + the .data image; RAM = .data + .bss + stack.
+size: $(EMB_ELF) $(CORE_LIB)
+	@$(SIZE) -A $(EMB_ELF) | awk '{ s[$$1] = $$2 } END { printf "emb_skin.elf ($(BOARD)): flash %d bytes (code+constants %d, .data image %d), RAM %d bytes (.data %d + .bss %d + stack %d)\n", s[".text"] + s[".ARM.exidx"] + s[".data"], s[".text"] + s[".ARM.exidx"], s[".data"], s[".data"] + s[".bss"] + s[".stack"], s[".data"], s[".bss"], s[".stack"] }'
+	@$(SIZE) -t $(CORE_LIB) | awk 'END { printf "libskp.a ($(BOARD), whole portable core): code %d bytes, .data %d, .bss %d\n", $$1, $$2, $$3 }'
+	@cat $(CORE_OBJ:.o=.su) $(OUT)/emb/*.su 2>/dev/null | sort -t'	' -k2 -n -r | head -3 | \
+	  awk -F'\t' '{ printf "  stack frame %s bytes: %s\n", $$2, $$1 }'
+
+# Check the tools; as root install what is missing.
+deps:
+	@missing=""; \
+	for c in $(MCU_NEED_CMDS); do command -v $$c >/dev/null 2>&1 || missing="$$missing $$c"; done; \
+	for f in $(MCU_NEED_FILES); do [ -e $$f ] || missing="$$missing $$f"; done; \
+	if [ -n "$$missing" ]; then \
+	  echo "deps: missing:$$missing"; \
+	  if [ "$$(id -u)" = 0 ] && command -v apt-get >/dev/null 2>&1; then \
+	    apt-get update -qq && DEBIAN_FRONTEND=noninteractive apt-get install -y -qq $(DEB_PKGS) >/dev/null || exit 1; \
+	    echo "deps: installed $(DEB_PKGS)"; \
+	  else \
+	    echo "deps: run as root:  apt-get install -y $(DEB_PKGS)"; exit 1; \
+	  fi; \
+	fi
+
+clean:
+	rm -rf $(BUILD)
+
+help:
+	@echo "make BOARD=$(BOARD)        build $(CORE_LIB), $(EMB_ELF) and the host reference"
+	@echo "make BOARD=$(BOARD) test   run the skinning test under $(QEMU_SYSTEM) -M $(QEMU_MACHINE) and compare checksums"
+	@echo "make BOARD=$(BOARD) size   flash and RAM use"
+	@echo "make BOARD=$(BOARD) deps   check (and as root install) $(DEB_PKGS)"
+
+-include $(CORE_OBJ:.o=.d) $(HOST_CORE_OBJ:.o=.d) $(wildcard $(OUT)/emb/*.d $(OUT)/host/emb/*.d)

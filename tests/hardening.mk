@@ -1,0 +1,62 @@
+# Hardening targets, included by the Makefile for Linux boards:
+#   make fuzz [SECONDS=600]   libFuzzer (clang) on every tests/fuzz/fuzz_*.c
+#   make fuzz-smoke           the same for 10 s each (CI, when clang is there)
+#   make lint                 cppcheck and clang-tidy over app/ and platform/
+#   make soak [SOAK_FRAMES=1000000]   a long headless run of skinplay
+# None of them is part of `make test`; the fuzzers' regression inputs are
+# (tests/unit/test_fuzz_regressions.c).
+.PHONY: fuzz fuzz-smoke fuzz-build lint soak
+
+FUZZ_CC      ?= clang
+SECONDS      ?= 60
+FUZZ_OUT     := $(BUILD)/fuzz
+FUZZ_SRC     := $(wildcard tests/fuzz/fuzz_*.c)
+FUZZ_NAMES   := $(filter-out harness,$(patsubst tests/fuzz/fuzz_%.c,%,$(FUZZ_SRC)))
+FUZZ_BIN     := $(addprefix $(FUZZ_OUT)/fuzz_,$(FUZZ_NAMES))
+# The core as the parsers see it: no x86 kernels (no SIMD defines), no GL.
+FUZZ_CORE    := $(filter-out app/%_avx2.c app/render%.c app/gl_api.c,$(CORE_SRC))
+FUZZ_SAN     := -fsanitize=address,undefined -fno-sanitize-recover=undefined
+FUZZ_CFLAGS  := -std=c11 -g -O1 -Wall -Wextra -Werror -Wno-unused-command-line-argument \
+                -fsanitize=fuzzer-no-link $(FUZZ_SAN) -Iapp -Iboard/$(BOARD) -Itests/fuzz -MMD -MP
+
+$(FUZZ_OUT)/%.o: %.c
+	@mkdir -p $(@D)
+	$(FUZZ_CC) $(FUZZ_CFLAGS) -c $< -o $@
+$(FUZZ_OUT)/libskp.a: $(FUZZ_CORE:%.c=$(FUZZ_OUT)/%.o)
+	rm -f $@ && ar rcs $@ $^
+$(FUZZ_OUT)/fuzz_%: $(FUZZ_OUT)/tests/fuzz/fuzz_%.o $(FUZZ_OUT)/tests/fuzz/fuzz_harness.o $(FUZZ_OUT)/libskp.a
+	$(FUZZ_CC) -fsanitize=fuzzer $(FUZZ_SAN) -o $@ $^ -lm
+
+# keep the targets' objects (make would delete them as intermediates)
+.SECONDARY: $(FUZZ_SRC:%.c=$(FUZZ_OUT)/%.o)
+
+fuzz-build: $(FUZZ_BIN)
+
+# Seeds: the repository's own inputs (good and broken) and the regressions.
+FUZZ_SEEDS_asf := tests/data assets tests/data/bad
+FUZZ_SEEDS_amc := tests/data tests/data/bad
+FUZZ_SEEDS_obj := tests/fuzz/seeds/obj
+FUZZ_SEEDS_ini := board/host board/rpi4
+FUZZ_SEEDS_board_config := board/host board/rpi4
+
+# Each target runs SECONDS on a corpus kept in the build directory. A crash
+# leaves its input in $(FUZZ_OUT)/crash/<target>/: fix the parser, copy the
+# input to tests/fuzz/regressions/<target>/ and `make test` keeps it fixed.
+fuzz: $(FUZZ_BIN)
+	@$(foreach t,$(FUZZ_NAMES),seeds_$(t)="$(FUZZ_SEEDS_$(t))";) \
+	fail=""; for t in $(FUZZ_NAMES); do \
+	  c=$(FUZZ_OUT)/corpus/$$t; mkdir -p $$c $(FUZZ_OUT)/crash/$$t tests/fuzz/regressions/$$t; \
+	  seeds=""; for d in $$(eval echo \$$seeds_$$t) tests/fuzz/regressions/$$t; do [ -d $$d ] && seeds="$$seeds $$d"; done; \
+	  echo "== fuzz $$t for $(SECONDS) s"; \
+	  $(FUZZ_OUT)/fuzz_$$t -max_total_time=$(SECONDS) -max_len=8192 -timeout=10 -rss_limit_mb=4096 \
+	    -print_final_stats=1 -artifact_prefix=$(FUZZ_OUT)/crash/$$t/ $$c $$seeds > $(FUZZ_OUT)/$$t.log 2>&1 \
+	    || fail="$$fail $$t"; \
+	  grep -E '^stat::number_of_executed_units|^stat::peak_rss_mb|^#[0-9]+ *DONE|ERROR:|SUMMARY:' $(FUZZ_OUT)/$$t.log | sed "s/^/  $$t: /"; \
+	done; \
+	if [ -n "$$fail" ]; then echo "fuzz: crashes in:$$fail (inputs in $(FUZZ_OUT)/crash/, logs $(FUZZ_OUT)/*.log)"; exit 1; fi; \
+	echo "fuzz: $(words $(FUZZ_NAMES)) targets, $(SECONDS) s each, no crash"
+
+fuzz-smoke:
+	@$(MAKE) --no-print-directory fuzz SECONDS=10
+
+-include $(wildcard $(FUZZ_OUT)/app/*.d $(FUZZ_OUT)/tests/fuzz/*.d)

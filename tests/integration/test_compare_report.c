@@ -1,0 +1,449 @@
+/* `skintool compare` through the real command line, on CMU clips with the
+ * generated body:
+ *   - metrics.csv's first five columns are exactly what `skintool metrics`
+ *     prints for the same inputs (the body written by `skintool mannequin`);
+ *     the region columns lie within the global range;
+ *   - LBS's worst frame loses more volume than DQBS's, and the page's
+ *     verdicts (DQBS within 1% on every frame; LBS loses more) say what
+ *     metrics.csv shows;
+ *   - the synthetic scenes in the page match `skintool metrics --scene`
+ *     and the analytic |cos(a/2)|;
+ *   - the renders are real pictures whose LBS and DQBS halves differ;
+ *   - the page renders in headless Chromium (skipped without it).
+ * make test runs three short clips; SKP_COMPARE_ALL=1 runs every clip in
+ * mocap/cmu. */
+#include <stdarg.h>
+#include <stddef.h>
+#include <setjmp.h>
+#include <stdint.h>
+#include <cmocka.h>
+
+#include <dirent.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/wait.h>
+#include <time.h>
+#include <unistd.h>
+
+#include "png_writer.h"
+#include "test_paths.h"
+
+#define METRICS_HEADER "frame,algo,volume_ratio,min_radius_ratio,max_radius_ratio"
+#define REGION_HEADER ",elbows_min,elbows_max,knees_min,knees_max,shoulders_min,shoulders_max," \
+	"hips_min,hips_max,wrists_min,wrists_max"
+
+static char workdir[] = "/tmp/skp_compare_XXXXXX";
+static char last_report[1024];   /* a report directory for the picture tests */
+
+static double now_s(void)
+{
+	struct timespec t;
+	clock_gettime(CLOCK_MONOTONIC, &t);
+	return (double)t.tv_sec + (double)t.tv_nsec * 1e-9;
+}
+
+/* Runs cmd (stdout to out when not NULL); returns the exit status. */
+static int sh(const char *cmd, const char *out)
+{
+	char full[8192];
+	snprintf(full, sizeof full, "%s >%s 2>%s/stderr.txt", cmd, out ? out : "/dev/null", workdir);
+	int st = system(full);
+	assert_true(WIFEXITED(st));
+	return WEXITSTATUS(st);
+}
+
+static char *slurp(const char *path)
+{
+	char *text = test_read_file(path, NULL);
+	if (!text)
+		fail_msg("cannot read %s", path);
+	return text;
+}
+
+/* Cuts each line after its fifth field. */
+static void first_five_columns(char *text)
+{
+	char *w = text;
+	for (char *r = text; *r;) {
+		int commas = 0;
+		while (*r && *r != '\n') {
+			if (*r == ',' && ++commas == 5) {
+				while (*r && *r != '\n')
+					r++;
+				break;
+			}
+			*w++ = *r++;
+		}
+		if (*r == '\n')
+			*w++ = *r++;
+	}
+	*w = '\0';
+}
+
+typedef struct clip_stats {
+	long rows;
+	double vol_min[3], vol_max[3];
+} clip_stats;
+
+static int algo_index(const char *name)
+{
+	return !strcmp(name, "lbs") ? 0 : !strcmp(name, "dqbs") ? 1 : !strcmp(name, "dqbs-fixed") ? 2 : -1;
+}
+
+/* Parses metrics.csv (header checked), checks each region's range lies in
+ * the global one, and collects the volume extremes per algorithm. */
+static void parse_report_csv(char *text, clip_stats *s)
+{
+	char *save, *line = strtok_r(text, "\n", &save);
+	assert_non_null(line);
+	assert_string_equal(line, METRICS_HEADER REGION_HEADER);
+	for (int a = 0; a < 3; a++)
+		s->vol_min[a] = INFINITY, s->vol_max[a] = -INFINITY;
+	s->rows = 0;
+	while ((line = strtok_r(NULL, "\n", &save))) {
+		char algo[16];
+		long frame;
+		double vol, rmin, rmax;
+		int used;
+		if (sscanf(line, "%ld,%15[^,],%lf,%lf,%lf%n", &frame, algo, &vol, &rmin, &rmax, &used) != 5)
+			fail_msg("bad row '%s'", line);
+		int a = algo_index(algo);
+		assert_true(a >= 0);
+		s->vol_min[a] = fmin(s->vol_min[a], vol);
+		s->vol_max[a] = fmax(s->vol_max[a], vol);
+		const char *p = line + used;
+		for (int k = 0; k < 10; k++) {
+			assert_true(*p == ',');
+			p++;
+			if (*p == ',' || *p == '\0')
+				continue; /* a region the skeleton lacks */
+			char *end;
+			double v = strtod(p, &end);
+			assert_true(end != p);
+			if (v < rmin - 1e-6 || v > rmax + 1e-6)
+				fail_msg("region value %f outside %f..%f in '%s'", v, rmin, rmax, line);
+			p = end;
+		}
+		assert_true(*p == '\0');
+		s->rows++;
+	}
+}
+
+/* The text of the element with this id, tags included, up to its end. */
+static const char *element(const char *html, const char *id)
+{
+	char key[128];
+	snprintf(key, sizeof key, "id=\"%s\"", id);
+	const char *p = strstr(html, key);
+	if (!p)
+		fail_msg("the page has no element %s", id);
+	return p;
+}
+
+static void check_verdicts(const char *html, const clip_stats *s, const char *clip)
+{
+	double dev = fmax(fabs(1 - s->vol_min[1]), fabs(s->vol_max[1] - 1));
+	double loss_l = fmax(0, 1 - s->vol_min[0]), loss_d = fmax(0, 1 - s->vol_min[1]);
+	int within = dev <= 0.01, loses_more = loss_l > loss_d;
+	const char *v = element(html, "verdict-dqbs-volume");
+	const char *b = strstr(v, "<b>");
+	assert_non_null(b);
+	if (strncmp(b + 3, within ? "yes<" : "no<", within ? 4 : 3) != 0)
+		fail_msg("%s: DQBS deviation %.4f%%: the page's verdict disagrees", clip, 100 * dev);
+	v = element(html, "verdict-lbs-loss");
+	b = strstr(v, "<b>");
+	assert_non_null(b);
+	assert_true(strncmp(b + 3, loses_more ? "yes<" : "no<", loses_more ? 4 : 3) == 0);
+	/* the paper's claim: LBS's worst frame loses more than DQBS's */
+	if (!loses_more)
+		fail_msg("%s: LBS loses %.3f%%, DQBS %.3f%%", clip, 100 * loss_l, 100 * loss_d);
+	print_message("%-10s DQBS volume %.4f..%.4f (within 1%%: %s), LBS %.4f..%.4f: LBS loses %.2f%%, DQBS %.2f%%\n",
+		      clip, s->vol_min[1], s->vol_max[1], within ? "yes" : "NO", s->vol_min[0], s->vol_max[0],
+		      100 * loss_l, 100 * loss_d);
+}
+
+/* One clip: compare, then metrics on the same body, then the checks. */
+static void check_clip(const char *asf, const char *amc, const char *clip)
+{
+	char dir[1024], body[1024], cmd[4096], path[1200], metrics[1024];
+	snprintf(dir, sizeof dir, "%s/%s", workdir, clip);
+	snprintf(body, sizeof body, "%s/%s.obj", workdir, clip);
+	snprintf(metrics, sizeof metrics, "%s/%s_metrics.csv", workdir, clip);
+	double t0 = now_s();
+	snprintf(cmd, sizeof cmd, "%s compare %s %s -o %s", test_tool_path("skintool"), asf, amc, dir);
+	assert_int_equal(sh(cmd, NULL), 0);
+	double t1 = now_s();
+	snprintf(cmd, sizeof cmd, "%s mannequin %s -o %s", test_tool_path("skintool"), asf, body);
+	assert_int_equal(sh(cmd, NULL), 0);
+	snprintf(cmd, sizeof cmd, "%s metrics %s %s %s", test_tool_path("skintool"), asf, amc, body);
+	assert_int_equal(sh(cmd, metrics), 0);
+	double t2 = now_s();
+
+	snprintf(path, sizeof path, "%s/metrics.csv", dir);
+	char *csv = slurp(path), *ref = slurp(metrics);
+	char *five = slurp(path);
+	first_five_columns(five);
+	if (strcmp(five, ref) != 0)
+		fail_msg("%s: metrics.csv's first columns differ from skintool metrics", clip);
+	free(five);
+	free(ref);
+	clip_stats s;
+	parse_report_csv(csv, &s);
+	free(csv);
+	assert_true(s.rows > 0 && s.rows % 3 == 0);
+
+	snprintf(path, sizeof path, "%s/index.html", dir);
+	char *html = slurp(path);
+	check_verdicts(html, &s, clip);
+	free(html);
+	print_message("%-10s %ld frames: compare %.2f s, metrics %.2f s\n", clip, s.rows / 3, t1 - t0, t2 - t1);
+	snprintf(last_report, sizeof last_report, "%s", dir);
+}
+
+static void test_short_clips(void **state)
+{
+	(void)state;
+	static const char *const clips[][2] = { { "09", "09_06" }, { "02", "02_01" }, { "backflip", "backflip" } };
+	if (!test_data_path("mocap/cmu/09.asf"))
+		skip();
+	for (size_t i = 0; i < sizeof clips / sizeof clips[0]; i++) {
+		char rel[256], asf[1024], amc[1024];
+		snprintf(rel, sizeof rel, "mocap/cmu/%s.asf", clips[i][0]);
+		snprintf(asf, sizeof asf, "%s", test_data_path(rel));
+		snprintf(rel, sizeof rel, "mocap/cmu/%s.amc", clips[i][1]);
+		snprintf(amc, sizeof amc, "%s", test_data_path(rel));
+		check_clip(asf, amc, clips[i][1]);
+	}
+}
+
+/* SKP_COMPARE_ALL=1: every AMC in mocap/cmu with its skeleton (NN.asf for
+ * NN_MM.amc, else the same name). */
+static void test_every_clip(void **state)
+{
+	(void)state;
+	const char *root = test_data_path("mocap/cmu");
+	if (!root || !getenv("SKP_COMPARE_ALL"))
+		skip();
+	char dir_path[1024];
+	snprintf(dir_path, sizeof dir_path, "%s", root);
+	DIR *d = opendir(dir_path);
+	assert_non_null(d);
+	struct dirent *e;
+	int clips = 0;
+	while ((e = readdir(d))) {
+		size_t n = strlen(e->d_name);
+		if (n < 5 || strcmp(e->d_name + n - 4, ".amc") != 0)
+			continue;
+		char name[256], asf[1300], amc[1300];
+		snprintf(name, sizeof name, "%.*s", (int)(n - 4), e->d_name);
+		snprintf(amc, sizeof amc, "%s/%s", dir_path, e->d_name);
+		char *us = strchr(name, '_');
+		snprintf(asf, sizeof asf, "%s/%.*s.asf", dir_path, us ? (int)(us - name) : (int)strlen(name), name);
+		check_clip(asf, amc, name);
+		clips++;
+	}
+	closedir(d);
+	assert_true(clips > 0);
+}
+
+/* The page's twist and bend tables against skintool metrics --scene. */
+static void test_scene_tables(void **state)
+{
+	(void)state;
+	if (!last_report[0])
+		skip();
+	char path[1200], cmd[2048], out[1200];
+	snprintf(path, sizeof path, "%s/index.html", last_report);
+	char *html = slurp(path);
+	static const char *const kinds[2] = { "twist", "bend" };
+	for (int k = 0; k < 2; k++)
+		for (int angle = 45; angle <= 180; angle += 45) {
+			snprintf(out, sizeof out, "%s/scene.csv", workdir);
+			snprintf(cmd, sizeof cmd, "%s metrics --scene %s --angle %d", test_tool_path("skintool"),
+				 kinds[k], angle);
+			assert_int_equal(sh(cmd, out), 0);
+			char *csv = slurp(out);
+			double vol[3], rmin[3], rmax[3];
+			char *line = strchr(csv, '\n');
+			for (int a = 0; a < 3; a++) {
+				long frame;
+				char algo[16];
+				assert_int_equal(sscanf(line + 1, "%ld,%15[^,],%lf,%lf,%lf", &frame, algo, &vol[a],
+							&rmin[a], &rmax[a]), 5);
+				line = strchr(line + 1, '\n');
+			}
+			free(csv);
+			char row[512];
+			if (k == 0)
+				snprintf(row, sizeof row, "<tr><td>%d&deg;</td><td>%.6f</td><td>%.6f</td><td>1</td><td>%.6f</td>"
+					 "<td>%.6f</td><td>%.6f</td><td>%.6f</td><td>%.6f</td></tr>", angle,
+					 fabs(cos(angle * M_PI / 360)), rmin[0], rmin[1], rmin[2], vol[0], vol[1], vol[2]);
+			else
+				snprintf(row, sizeof row, "<tr><td>%d&deg;</td><td>%.6f</td><td>%.6f</td><td>%.6f</td><td>%.6f</td>"
+					 "<td>%.6f</td><td>%.6f</td><td>%.6f</td><td>%.6f</td></tr>", angle, rmin[0],
+					 rmin[1], rmin[2], rmax[0], rmax[1], vol[0], vol[1], vol[2]);
+			if (!strstr(html, row))
+				fail_msg("the page lacks the %s %d row %s", kinds[k], angle, row);
+			if (k == 0) {
+				assert_true(fabs(rmin[0] - fabs(cos(angle * M_PI / 360))) < 1e-3);
+				assert_true(fabs(rmin[1] - 1) < 1e-3);
+			}
+		}
+	free(html);
+}
+
+static uint8_t img[2000 * 1400 * 4];
+
+static double luminance_stddev(const uint8_t *px, int w, int x0, int x1, int y0, int y1)
+{
+	double sum = 0, sum2 = 0, n = 0;
+	for (int y = y0; y < y1; y++)
+		for (int x = x0; x < x1; x++) {
+			const uint8_t *p = px + 4 * ((size_t)y * (size_t)w + (size_t)x);
+			double l = 0.299 * p[0] + 0.587 * p[1] + 0.114 * p[2];
+			sum += l, sum2 += l * l, n++;
+		}
+	return sqrt(fmax(0, sum2 / n - (sum / n) * (sum / n)));
+}
+
+/* The worst frame's renders: real pictures, the halves equal where the
+ * body is not (same camera, same floor) and different on the body. */
+static void test_renders(void **state)
+{
+	(void)state;
+	if (!last_report[0])
+		skip();
+	static const char *const names[2] = { "worst_1.png", "worst_1_closeup.png" };
+	for (int i = 0; i < 2; i++) {
+		char path[1200];
+		skp_error err;
+		int w, h;
+		snprintf(path, sizeof path, "%s/%s", last_report, names[i]);
+		if (png_read_rgba(path, img, sizeof img, &w, &h, &err) != 0)
+			fail_msg("%s: %s", path, err.msg);
+		int hw = w / 2;
+		double sd = luminance_stddev(img, w, 0, w, 0, h);
+		/* between the HUD and the panel labels */
+		long differ = 0, total = 0;
+		for (int y = h / 8; y < h * 7 / 8; y++)
+			for (int x = 0; x < hw - 1; x++) {
+				const uint8_t *l = img + 4 * ((size_t)y * (size_t)w + (size_t)x);
+				const uint8_t *r = l + 4 * (size_t)hw;
+				int d = abs(l[0] - r[0]) + abs(l[1] - r[1]) + abs(l[2] - r[2]);
+				differ += d > 30;
+				total++;
+			}
+		print_message("%s: %dx%d, luminance stddev %.1f, %ld of %ld pixels differ between the halves\n",
+			      names[i], w, h, sd, differ, total);
+		assert_true(sd > 10.0);
+		assert_true(differ > 100);           /* the skinning differs */
+		assert_true(differ < total / 3);     /* but it is the same pose and camera */
+	}
+}
+
+/* Headless Chromium's screenshot of the page: a real, mostly light page
+ * with text, tables and pictures in it. */
+static void test_page_in_chromium(void **state)
+{
+	(void)state;
+	if (access("/usr/bin/chromium", X_OK) != 0 || !last_report[0])
+		skip();
+	char cmd[4096], shot[1200], profile[1200], url[1200];
+	snprintf(shot, sizeof shot, "%s/screenshot.png", workdir);
+	snprintf(profile, sizeof profile, "%s/chromium-profile", workdir);
+	if (last_report[0] == '/')
+		snprintf(url, sizeof url, "file://%s/index.html", last_report);
+	else
+		snprintf(url, sizeof url, "file://%s/%s/index.html", getcwd(cmd, sizeof cmd), last_report);
+	snprintf(cmd, sizeof cmd, "timeout 120 /usr/bin/chromium --headless --no-sandbox --disable-gpu "
+		 "--disable-background-networking --disable-component-update --disable-sync --no-first-run "
+		 "--hide-scrollbars --user-data-dir=%s --screenshot=%s --window-size=1200,2000 %s",
+		 profile, shot, url);
+	double t0 = now_s();
+	assert_int_equal(sh(cmd, NULL), 0);
+	skp_error err;
+	int w, h;
+	if (png_read_rgba(shot, img, sizeof img, &w, &h, &err) != 0)
+		fail_msg("%s: %s", shot, err.msg);
+	assert_int_equal(w, 1200);
+	assert_int_equal(h, 2000);
+	long dark = 0, light = 0, colour = 0;
+	for (long i = 0; i < (long)w * h; i++) {
+		const uint8_t *p = img + 4 * i;
+		int mx = p[0] > p[1] ? (p[0] > p[2] ? p[0] : p[2]) : (p[1] > p[2] ? p[1] : p[2]);
+		int mn = p[0] < p[1] ? (p[0] < p[2] ? p[0] : p[2]) : (p[1] < p[2] ? p[1] : p[2]);
+		dark += mx < 90;
+		light += mn > 220;
+		colour += mx - mn > 60;
+	}
+	double sd = luminance_stddev(img, w, 0, w, 0, h);
+	print_message("chromium screenshot %dx%d in %.1f s: stddev %.1f, %ld dark, %ld light, %ld coloured pixels\n",
+		      w, h, now_s() - t0, sd, dark, light, colour);
+	assert_true(sd > 20.0);
+	assert_true(light > (long)w * h / 4);  /* the page, not a blank or error screen */
+	assert_true(dark > 2000);              /* text and the renders' backgrounds */
+	assert_true(colour > 2000);            /* the skin and the chart lines */
+}
+
+static void expect_fail(const char *args, const char *message)
+{
+	char cmd[2048], err[1200];
+	snprintf(cmd, sizeof cmd, "%s %s", test_tool_path("skintool"), args);
+	assert_int_equal(sh(cmd, NULL), 1);
+	snprintf(err, sizeof err, "%s/stderr.txt", workdir);
+	char *text = slurp(err);
+	if (!strstr(text, message))
+		fail_msg("'skintool %s' said '%s', expected '%s'", args, text, message);
+	free(text);
+}
+
+static void test_bad_arguments(void **state)
+{
+	(void)state;
+	char args[2048];
+	expect_fail("compare tests/data/tiny.asf tests/data/tiny.amc", "usage: skintool compare");
+	expect_fail("compare tests/data/tiny.asf", "usage: skintool compare");
+	snprintf(args, sizeof args, "compare tests/data/tiny.asf tests/data/tiny.amc --bogus -o %s/x", workdir);
+	expect_fail(args, "unknown option '--bogus'");
+	snprintf(args, sizeof args, "compare tests/data/tiny.asf tests/data/tiny.amc --renders 99 -o %s/x", workdir);
+	expect_fail(args, "--renders takes 0 to");
+	snprintf(args, sizeof args, "compare tests/data/missing.asf tests/data/tiny.amc -o %s/x", workdir);
+	expect_fail(args, "missing.asf");
+	snprintf(args, sizeof args, "compare tests/data/tiny.asf tests/data/tiny.amc --mesh missing.obj -o %s/x",
+		 workdir);
+	expect_fail(args, "missing.obj");
+	expect_fail("compare tests/data/tiny.asf tests/data/tiny.amc -o /proc/no/such/dir", "/proc/no/such/dir");
+}
+
+static int setup(void **state)
+{
+	(void)state;
+	return mkdtemp(workdir) ? 0 : -1;
+}
+
+static int teardown(void **state)
+{
+	(void)state;
+	char cmd[1200];
+	if (getenv("SKP_KEEP_REPORT")) {
+		fprintf(stderr, "reports kept in %s\n", workdir);
+		return 0;
+	}
+	snprintf(cmd, sizeof cmd, "rm -rf %s", workdir);
+	return system(cmd) == 0 ? 0 : -1;
+}
+
+int main(void)
+{
+	const struct CMUnitTest tests[] = {
+		cmocka_unit_test(test_short_clips),
+		cmocka_unit_test(test_every_clip),
+		cmocka_unit_test(test_scene_tables),
+		cmocka_unit_test(test_renders),
+		cmocka_unit_test(test_page_in_chromium),
+		cmocka_unit_test(test_bad_arguments),
+	};
+	return cmocka_run_group_tests_name("compare_report", tests, setup, teardown);
+}

@@ -1,0 +1,396 @@
+/* Flash images through the real tools: every clip in ../shared/data packs
+ * and decodes within the stated quantisation; skintool info names the
+ * block of any flipped byte (every block of a small image, random bytes of
+ * a big one) and exits 2; truncated and wrong-version images are refused;
+ * skinplay plays through a bad block (logging it once) and, given two
+ * slots, plays the newest valid one. */
+#include <stdarg.h>
+#include <stddef.h>
+#include <setjmp.h>
+#include <stdint.h>
+#include <cmocka.h>
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include "amc.h"
+#include "crc32.h"
+#include "file_reader.h"
+#include "image_play.h"
+#include "storage_file.h"
+#include "test_clips.h"
+#include "test_parse.h"
+#include "test_paths.h"
+
+static char dir[] = "/tmp/skp_image_XXXXXX";
+
+static int setup(void **state)
+{
+	(void)state;
+	return mkdtemp(dir) ? 0 : -1;
+}
+
+static int teardown(void **state)
+{
+	(void)state;
+	char cmd[256];
+	snprintf(cmd, sizeof cmd, "rm -rf '%s'", dir);
+	return system(cmd) == 0 ? 0 : -1;
+}
+
+static const char *tmp(const char *name)
+{
+	static char buf[64][512];
+	static int next;
+	char *out = buf[next++ % 64];
+	snprintf(out, sizeof buf[0], "%s/%s", dir, name);
+	return out;
+}
+
+static int run(const char *fmt, ...)
+{
+	char cmd[4096];
+	va_list ap;
+	va_start(ap, fmt);
+	vsnprintf(cmd, sizeof cmd, fmt, ap);
+	va_end(ap);
+	int st = system(cmd);
+	return WIFEXITED(st) ? WEXITSTATUS(st) : -1;
+}
+
+static char *slurp(const char *path)
+{
+	size_t n;
+	char *t = test_read_file(path, &n);
+	assert_non_null(t);
+	return t;
+}
+
+static void flip_byte(const char *path, long at, int bit)
+{
+	FILE *f = fopen(path, "r+b");
+	assert_non_null(f);
+	assert_int_equal(fseek(f, at, SEEK_SET), 0);
+	int c = fgetc(f);
+	assert_true(c != EOF);
+	assert_int_equal(fseek(f, at, SEEK_SET), 0);
+	fputc(c ^ (1 << bit), f);
+	fclose(f);
+}
+
+static void copy(const char *from, const char *to)
+{
+	assert_int_equal(run("cp '%s' '%s'", from, to), 0);
+}
+
+static long file_size(const char *path)
+{
+	FILE *f = fopen(path, "rb");
+	assert_non_null(f);
+	fseek(f, 0, SEEK_END);
+	long n = ftell(f);
+	fclose(f);
+	return n;
+}
+
+/* Runs skintool info; returns its status and checks that the only blocks
+ * it names bad are want (-1: none). */
+static int info_names(const char *image, long want)
+{
+	const char *out = tmp("info.txt");
+	int st = run("%s info '%s' >'%s' 2>&1", test_tool_path("skintool"), image, out);
+	char *text = slurp(out);
+	int named = 0;
+	for (char *p = text; (p = strstr(p, "block ")) != NULL; p += 6) {
+		long b;
+		char word[8];
+		if (sscanf(p + 6, "%ld %7s", &b, word) == 2 && !strcmp(word, "bad:")) {
+			if (b != want)
+				fail_msg("%s: block %ld named, expected %ld:\n%s", image, b, want, text);
+			named++;
+		}
+	}
+	if (want >= 0 && !named)
+		fail_msg("%s: block %ld not named:\n%s", image, want, text);
+	free(text);
+	return st;
+}
+
+/* Each frame of the image's clip against the AMC parsed from text: within
+ * the clip's step / 2 on every dof. */
+static void compare_clip(const char *image, const char *asf_path, const char *amc_path, long frames)
+{
+	static skel s, s2;
+	static storage_file sf;
+	static skp_image im;
+	static skp_player pl;
+	static file_reader fr;
+	static text_lines tl;
+	static amc_stream as;
+	static amc_frame want, got;
+	skp_error err;
+	assert_int_equal(test_parse_asf_file(asf_path, &s, &err), SKP_OK);
+	assert_int_equal(storage_file_open_image(&sf, image), 0);
+	assert_int_equal(skp_image_open(&im, &sf.bd, &err), SKP_OK);
+	assert_int_equal(skp_image_load_skel(&im, &s2, &err), SKP_OK);
+	assert_int_equal(s2.count, s.count);
+	assert_int_equal(s2.dof_count, s.dof_count);
+	assert_memory_equal(s2.bone, s.bone, sizeof(skel_bone) * (size_t)s.count);
+	assert_int_equal(skp_player_open(&pl, &im, 0, &err), SKP_OK);
+	assert_int_equal(im.clip[0].frame_count, frames);
+	assert_int_equal(file_reader_open(&fr, amc_path), 0);
+	text_lines_init(&tl, file_reader_as_reader(&fr));
+	amc_open(&as, &s, &tl);
+	double worst = 0, bound = 0;
+	long n = 0;
+	while (amc_next(&as, &want, &err) > 0) {
+		assert_int_equal(skp_player_next(&pl, &got, &err), 1);
+		assert_int_equal(got.number, want.number);
+		for (int d = 0; d < s.dof_count; d++) {
+			double e = fabs((double)got.value[d] - want.value[d]);
+			double tol = pl.qstep[d] * 0.5 * (1 + 1e-6) + 2e-7 * fabs(want.value[d]);
+			if (e > tol)
+				fail_msg("%s frame %ld dof %d: %.9g decoded, %.9g in the AMC (step %.3g)", amc_path,
+					 want.number, d, (double)got.value[d], (double)want.value[d], (double)pl.qstep[d]);
+			worst = fmax(worst, e);
+			bound = fmax(bound, pl.qstep[d] * 0.5);
+		}
+		n++;
+	}
+	assert_int_equal(n, frames);
+	assert_int_equal(skp_player_next(&pl, &got, &err), 0);
+	printf("%s: %ld frames, worst error %.3g (stated bound %.3g)\n", amc_path, n, worst, bound);
+	file_reader_close(&fr);
+	storage_file_close(&sf);
+}
+
+static void test_pack_decode_every_clip(void **state)
+{
+	(void)state;
+	if (!test_data_path("mocap"))
+		skip();
+	for (int i = 0; i < test_clip_count; i++) {
+		char asf[1024], amc[1024];
+		snprintf(asf, sizeof asf, "%s", test_data_path(test_clips[i].asf));
+		snprintf(amc, sizeof amc, "%s", test_data_path(test_clips[i].amc));
+		const char *image = tmp("clip.skn");
+		assert_int_equal(run("%s pack '%s' '%s' -o '%s' >/dev/null", test_tool_path("skintool"), asf, amc, image), 0);
+		assert_int_equal(info_names(image, -1), 0);
+		compare_clip(image, asf, amc, test_clips[i].frames);
+	}
+}
+
+/* A box mesh for the tiny arm: a small image in 512-byte blocks. */
+static const char *small_image(void)
+{
+	static const char box[] =
+		"v -0.1 -0.3 -0.3\nv 3.5 -0.3 -0.3\nv 3.5 0.3 -0.3\nv -0.1 0.3 -0.3\n"
+		"v -0.1 -0.3 0.3\nv 3.5 -0.3 0.3\nv 3.5 0.3 0.3\nv -0.1 0.3 0.3\n"
+		"f 1 4 3 2\nf 5 6 7 8\nf 1 2 6 5\nf 2 3 7 6\nf 3 4 8 7\nf 4 1 5 8\n";
+	static char image[512];
+	const char *obj = tmp("box.obj"), *amc = tmp("wave.amc");
+	snprintf(image, sizeof image, "%s", tmp("small.skn"));
+	FILE *f = fopen(obj, "w");
+	assert_non_null(f);
+	fputs(box, f);
+	fclose(f);
+	/* a second clip long enough for several frame blocks */
+	f = fopen(amc, "w");
+	assert_non_null(f);
+	fputs(":FULLY-SPECIFIED\n:DEGREES\n", f);
+	for (int i = 1; i <= 150; i++)
+		fprintf(f, "%d\nroot %g 0 0 0 %g 0\nupper %g 0 %g\nlower %g %g\n", i, i * 0.01, i * 0.5,
+			30 * sin(i * 0.1), 10 * cos(i * 0.07), 45 * sin(i * 0.05), -20.0 + i * 0.1);
+	fclose(f);
+	assert_int_equal(run("%s pack tests/data/tiny.asf tests/data/tiny.amc '%s' --mesh '%s' "
+			     "--block-size 512 --sequence 3 -o '%s' >/dev/null",
+			     test_tool_path("skintool"), amc, obj, image), 0);
+	return image;
+}
+
+static void test_info_names_every_block(void **state)
+{
+	(void)state;
+	const char *image = small_image();
+	char bad[512];
+	snprintf(bad, sizeof bad, "%s", tmp("small_bad.skn"));
+	long blocks = file_size(image) / 512;
+	assert_true(blocks >= 5);
+	assert_int_equal(info_names(image, -1), 0);
+	srand(7);
+	for (long b = 0; b < blocks; b++) {
+		copy(image, bad);
+		flip_byte(bad, b * 512 + rand() % 512, rand() % 8);
+		assert_int_equal(info_names(bad, b), 2);
+	}
+}
+
+static void test_info_random_bytes_of_big_image(void **state)
+{
+	(void)state;
+	if (!test_data_path("mocap"))
+		skip();
+	char asf[1024], amc[1024];
+	snprintf(asf, sizeof asf, "%s", test_data_path("mocap/cmu/02.asf"));
+	snprintf(amc, sizeof amc, "%s", test_data_path("mocap/cmu/02_01.amc"));
+	char image[512], bad[512];
+	snprintf(image, sizeof image, "%s", tmp("big.skn"));
+	snprintf(bad, sizeof bad, "%s", tmp("big_bad.skn"));
+	assert_int_equal(run("%s pack '%s' '%s' -o '%s' >/dev/null", test_tool_path("skintool"), asf, amc, image), 0);
+	long size = file_size(image);
+	srand(11);
+	for (int k = 0; k < 12; k++) {
+		long at = ((long)rand() * 65536L + rand()) % size;
+		copy(image, bad);
+		flip_byte(bad, at, rand() % 8);
+		assert_int_equal(info_names(bad, at / 4096), 2);
+	}
+}
+
+/* Rewrites header fields of an image (block size 512), then its CRCs as a
+ * careful forger would: only the version check can refuse it. */
+static void set_version(const char *path, int version)
+{
+	static uint8_t block[512];
+	FILE *f = fopen(path, "r+b");
+	assert_non_null(f);
+	assert_int_equal(fread(block, 1, 512, f), 512);
+	uint8_t *h = block + 12;
+	h[8] = (uint8_t)version;
+	uint32_t crc = crc32_compute(h, 100);
+	memcpy(h + 100, &crc, 4);   /* little-endian host */
+	crc = crc32_compute(block, 508);
+	memcpy(block + 508, &crc, 4);
+	rewind(f);
+	assert_int_equal(fwrite(block, 1, 512, f), 512);
+	fclose(f);
+}
+
+static void expect_info(const char *image, int status, const char *needle)
+{
+	const char *out = tmp("info2.txt");
+	assert_int_equal(run("%s info '%s' >'%s' 2>&1", test_tool_path("skintool"), image, out), status);
+	char *text = slurp(out);
+	if (!strstr(text, needle))
+		fail_msg("expected '%s' in:\n%s", needle, text);
+	free(text);
+}
+
+static void test_info_refuses_truncated_and_wrong_version(void **state)
+{
+	(void)state;
+	const char *image = small_image();
+	char bad[512];
+	snprintf(bad, sizeof bad, "%s", tmp("cut.skn"));
+	long size = file_size(image);
+	copy(image, bad);
+	assert_int_equal(truncate(bad, size - 1024), 0);
+	expect_info(bad, 2, "image truncated");
+	copy(image, bad);
+	assert_int_equal(truncate(bad, size - 100), 0);
+	expect_info(bad, 2, "short read");
+	copy(image, bad);
+	set_version(bad, 2);
+	expect_info(bad, 2, "image format version 2, this build reads version 1");
+	copy(image, bad);
+	set_version(bad, 1);
+	expect_info(bad, 0, "all good");
+	expect_info(tmp("missing.skn"), 1, "cannot open");
+}
+
+/* skinplay headless on the image; returns its status, log in log. */
+static int play(const char *args, const char *log)
+{
+	return run("%s %s --platform surfaceless --size 320x180 >'%s' 2>&1", test_tool_path("skinplay"), args, log);
+}
+
+static int count(const char *text, const char *needle)
+{
+	int n = 0;
+	for (const char *p = text; (p = strstr(p, needle)) != NULL; p++)
+		n++;
+	return n;
+}
+
+static void test_skinplay_holds_over_a_bad_block(void **state)
+{
+	(void)state;
+	if (!test_data_path("mocap"))
+		skip();
+	char asf[1024], amc[1024], args[2048], needle[128];
+	snprintf(asf, sizeof asf, "%s", test_data_path("mocap/cmu/09.asf"));
+	snprintf(amc, sizeof amc, "%s", test_data_path("mocap/cmu/09_06.amc"));
+	const char *image = tmp("walk.skn"), *bad = tmp("walk_bad.skn"), *log = tmp("play.log");
+	assert_int_equal(run("%s pack '%s' '%s' --sequence 10 -o '%s' >/dev/null", test_tool_path("skintool"), asf,
+			     amc, image), 0);
+	/* the image's third frame block: the clip's frames 65..96 */
+	static skp_image im;
+	static storage_file sf;
+	skp_error err;
+	assert_int_equal(storage_file_open_image(&sf, image), 0);
+	assert_int_equal(skp_image_open(&im, &sf.bd, &err), SKP_OK);
+	long block = (long)im.clip[0].frames_first + 2;
+	storage_file_close(&sf);
+	copy(image, bad);
+	flip_byte(bad, block * 4096 + 1000, 5);
+	snprintf(args, sizeof args, "--image '%s'", bad);
+	int st = play(args, log);
+	char *text = slurp(log);
+	if (st != 0)
+		fail_msg("skinplay exited %d:\n%s", st, text);
+	snprintf(needle, sizeof needle, "image: block %ld bad (CRC mismatch), holding frame 64\n", block);
+	if (count(text, needle) != 1 || count(text, "image: block ") != 1)
+		fail_msg("expected '%s' once in:\n%s", needle, text);
+	assert_non_null(strstr(text, "played 141 frames"));
+	free(text);
+
+	/* two slots: the damaged one is newer, the intact one plays */
+	const char *newer = tmp("walk_newer.skn");
+	assert_int_equal(run("%s pack '%s' '%s' --sequence 20 -o '%s' >/dev/null", test_tool_path("skintool"), asf,
+			     amc, newer), 0);
+	snprintf(args, sizeof args, "--image '%s' --image '%s' --frames 2", newer, image);
+	assert_int_equal(play(args, log), 0);
+	text = slurp(log);
+	snprintf(needle, sizeof needle, "image: playing %s (sequence 20", newer);
+	if (!strstr(text, needle))
+		fail_msg("expected '%s' in:\n%s", needle, text);
+	free(text);
+	flip_byte(newer, 100, 0); /* header: the newer slot is refused */
+	assert_int_equal(play(args, log), 0);
+	text = slurp(log);
+	snprintf(needle, sizeof needle, "image: playing %s (sequence 10", image);
+	if (!strstr(text, needle) || !strstr(text, "refused: block 0"))
+		fail_msg("expected '%s' and the refusal in:\n%s", needle, text);
+	free(text);
+	flip_byte(newer, 100, 0);
+	flip_byte(newer, block * 4096 + 7, 1); /* a frame block: intact older slot wins */
+	assert_int_equal(play(args, log), 0);
+	text = slurp(log);
+	if (!strstr(text, needle) || !strstr(text, "1 bad blocks: trying an older slot"))
+		fail_msg("expected '%s' after the damaged slot in:\n%s", needle, text);
+	free(text);
+	/* one slot, header damaged: refused with a message, nothing played */
+	flip_byte(newer, 40, 2);
+	snprintf(args, sizeof args, "--image '%s'", newer);
+	assert_int_equal(play(args, log), 1);
+	text = slurp(log);
+	if (!strstr(text, "refused: block 0") || !strstr(text, "no valid image"))
+		fail_msg("expected the refusal in:\n%s", text);
+	free(text);
+}
+
+int main(void)
+{
+	const struct CMUnitTest tests[] = {
+		cmocka_unit_test(test_pack_decode_every_clip),
+		cmocka_unit_test(test_info_names_every_block),
+		cmocka_unit_test(test_info_random_bytes_of_big_image),
+		cmocka_unit_test(test_info_refuses_truncated_and_wrong_version),
+		cmocka_unit_test(test_skinplay_holds_over_a_bad_block),
+	};
+	return cmocka_run_group_tests(tests, setup, teardown);
+}

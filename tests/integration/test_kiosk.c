@@ -1,0 +1,315 @@
+/* The kiosk through the real skinplay: scripted buttons switch the
+ * algorithm at exactly the frames the script says (log lines and images),
+ * systemd hears READY=1 and WATCHDOG=1 on a socket the test opens, SIGHUP
+ * restarts the show and SIGTERM ends it cleanly, and a bad board config
+ * names its file, line and key. */
+#include <stdarg.h>
+#include <stddef.h>
+#include <setjmp.h>
+#include <stdint.h>
+#include <cmocka.h>
+
+#include <errno.h>
+#include <poll.h>
+#include <signal.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/socket.h>
+#include <sys/un.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include "png_writer.h"
+#include "render_font.h"
+#include "test_paths.h"
+
+#define W 320
+#define H 240
+
+typedef struct image {
+	int w, h;
+	uint8_t px[W * H * 4];
+} image;
+
+static image a, b;
+static char dir[64], log_path[96], script_path[96];
+
+static int setup(void **state)
+{
+	(void)state;
+	snprintf(dir, sizeof dir, "/tmp/skp_kiosk_XXXXXX");
+	assert_non_null(mkdtemp(dir));
+	snprintf(log_path, sizeof log_path, "%s/log.txt", dir);
+	snprintf(script_path, sizeof script_path, "%s/script.txt", dir);
+	return 0;
+}
+
+static int teardown(void **state)
+{
+	(void)state;
+	char cmd[128];
+	snprintf(cmd, sizeof cmd, "rm -rf %s", dir);
+	return system(cmd) == 0 ? 0 : -1;
+}
+
+static void write_text(const char *path, const char *text)
+{
+	FILE *f = fopen(path, "w");
+	assert_non_null(f);
+	fputs(text, f);
+	fclose(f);
+}
+
+/* Runs skinplay headless on the demo into dir/out (frames 1..n). */
+static int run(const char *out, const char *extra, long frames)
+{
+	char cmd[2048], amc[512];
+	snprintf(amc, sizeof amc, "%s", test_tool_path("assets/demo.amc")); /* one static buffer */
+	snprintf(cmd, sizeof cmd,
+		 "rm -rf %s/%s && ASAN_OPTIONS=detect_leaks=0 %s --asf assets/demo.asf --amc %s "
+		 "--platform surfaceless --size %dx%d --hud-fps off --frames %ld --out %s/%s %s 2>%s",
+		 dir, out, test_tool_path("skinplay"), amc, W, H, frames, dir, out,
+		 extra, log_path);
+	int status = system(cmd);
+	return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+static void load(const char *out, int n, image *img)
+{
+	char path[160];
+	skp_error err;
+	snprintf(path, sizeof path, "%s/%s/frame_%06d.png", dir, out, n);
+	if (png_read_rgba(path, img->px, sizeof img->px, &img->w, &img->h, &err) != 0)
+		fail_msg("%s: %s", path, err.msg);
+}
+
+/* Pixels that differ in HUD line i (0: the algorithm; 1: clip and frame
+ * number), in the left half at the top (text scale 1 at this size). */
+static long hud_line_diff(const image *x, const image *y, int i)
+{
+	long n = 0;
+	int top = 4 + i * (FONT_CELL_H + 2);
+	for (int r = top - 1; r < top + FONT_CELL_H + 1; r++)
+		for (int c = 0; c < W / 2; c++)
+			n += memcmp(&x->px[(r * W + c) * 4], &y->px[(r * W + c) * 4], 3) != 0;
+	return n;
+}
+
+static long image_diff(const image *x, const image *y)
+{
+	long n = 0;
+	for (int i = 0; i < W * H; i++)
+		n += memcmp(&x->px[i * 4], &y->px[i * 4], 3) != 0;
+	return n;
+}
+
+static char *read_log(void)
+{
+	char *text = test_read_file(log_path, NULL);
+	assert_non_null(text);
+	return text;
+}
+
+static int count_lines(const char *text, const char *prefix)
+{
+	int n = 0;
+	for (const char *p = text; p && *p; p = strchr(p, '\n'), p = p ? p + 1 : NULL)
+		n += strncmp(p, prefix, strlen(prefix)) == 0;
+	return n;
+}
+
+/* At 120 fps frame n (0-based) is at n * 1000 / 120 ms: the press at
+ * 100 ms shows first in frame 12 (file 13), the one at 250 ms in frame 30
+ * (file 31). Each scripted frame must equal the frame of a run started
+ * with that algorithm, and the HUD's first line must change there. */
+static void test_script_switches_algorithm_at_its_frames(void **state)
+{
+	(void)state;
+	char extra[256];
+	write_text(script_path, "# two ALGO presses\n"
+				"100 ALGO press\n"
+				"130 ALGO release\n"
+				"250 ALGO press\n"
+				"260 ALGO release\n");
+	snprintf(extra, sizeof extra, "--algo lbs --input script:%s", script_path);
+	assert_int_equal(run("s", extra, 32), 0);
+	char *log = read_log();
+	const char *l1 = strstr(log, "input: ALGO -> dqbs\n");
+	const char *l2 = strstr(log, "input: ALGO -> dqbs-fixed\n");
+	if (!l1 || !l2 || l2 < l1 || count_lines(log, "input: ") != 3) /* "input: script ..." too */
+		fail_msg("log:\n%s", log);
+	free(log);
+	assert_int_equal(run("lbs", "--algo lbs", 13), 0);
+	assert_int_equal(run("dqbs", "--algo dqbs", 31), 0);
+	assert_int_equal(run("fixed", "--algo dqbs-fixed", 32), 0);
+	static const struct { int file; const char *ref; } want[] = {
+		{ 11, "lbs" }, { 12, "lbs" }, { 13, "dqbs" }, { 30, "dqbs" }, { 31, "fixed" }, { 32, "fixed" },
+	};
+	for (size_t i = 0; i < sizeof want / sizeof want[0]; i++) {
+		load("s", want[i].file, &a);
+		load(want[i].ref, want[i].file, &b);
+		long d = image_diff(&a, &b);
+		if (d != 0)
+			fail_msg("frame file %d: %ld pixels differ from the %s run", want[i].file, d, want[i].ref);
+	}
+	/* the HUD's first line names the algorithm: it changes at the press */
+	load("s", 12, &a);
+	load("s", 13, &b);
+	assert_true(hud_line_diff(&a, &b, 0) > 20);
+	load("s", 30, &a);
+	load("s", 31, &b);
+	assert_true(hud_line_diff(&a, &b, 0) > 20);
+	load("s", 13, &a);
+	load("s", 14, &b);
+	assert_int_equal(hud_line_diff(&a, &b, 0), 0);
+}
+
+/* PLAY pauses (the picture stops), PLAY again resumes; VIEW cycles. */
+static void test_play_pause_and_view(void **state)
+{
+	(void)state;
+	char extra[256];
+	write_text(script_path, "50 PLAY press\n60 PLAY release\n"
+				"100 PLAY press\n110 PLAY release\n"
+				"120 VIEW press\n130 VIEW release\n");
+	snprintf(extra, sizeof extra, "--input script:%s", script_path);
+	assert_int_equal(run("p", extra, 20), 0);
+	char *log = read_log();
+	if (!strstr(log, "input: PLAY -> pause\ninput: PLAY -> play\ninput: VIEW -> skeleton\n"))
+		fail_msg("log:\n%s", log);
+	free(log);
+	/* paused at the release at 60 ms (frame 8, file 9: it shows the motion
+	 * frame of file 8 again), playing at the release at 110 ms (frame 14,
+	 * file 15): the HUD's frame number stands still in between (the camera
+	 * may still settle) */
+	load("p", 7, &a);
+	load("p", 8, &b);
+	assert_true(hud_line_diff(&a, &b, 1) > 0);
+	load("p", 8, &a);
+	for (int f = 9; f <= 14; f++) {
+		load("p", f, &b);
+		if (hud_line_diff(&a, &b, 1) != 0)
+			fail_msg("file %d: the frame number moved while paused", f);
+	}
+	load("p", 15, &b);
+	assert_true(hud_line_diff(&a, &b, 1) > 0);
+}
+
+static int listen_at(const char *name)
+{
+	struct sockaddr_un sa;
+	memset(&sa, 0, sizeof sa);
+	sa.sun_family = AF_UNIX;
+	size_t n = strlen(name);
+	memcpy(sa.sun_path, name, n);
+	sa.sun_path[0] = '\0'; /* abstract, as '@' */
+	int fd = socket(AF_UNIX, SOCK_DGRAM | SOCK_CLOEXEC, 0);
+	assert_true(fd >= 0);
+	if (bind(fd, (struct sockaddr *)&sa, (socklen_t)(offsetof(struct sockaddr_un, sun_path) + n)) != 0)
+		fail_msg("bind: %s", strerror(errno));
+	return fd;
+}
+
+/* Waits up to ms for a datagram equal to want; counts the others. */
+static int wait_for(int fd, const char *want, int ms, int *watchdogs)
+{
+	char buf[128];
+	for (int waited = 0; waited < ms; waited += 50) {
+		struct pollfd p = { fd, POLLIN, 0 };
+		if (poll(&p, 1, 50) != 1)
+			continue;
+		ssize_t n = recv(fd, buf, sizeof buf - 1, 0);
+		buf[n > 0 ? n : 0] = '\0';
+		if (!strcmp(buf, "WATCHDOG=1") && watchdogs)
+			(*watchdogs)++;
+		if (!strcmp(buf, want))
+			return 1;
+	}
+	return 0;
+}
+
+/* Under "systemd": READY=1, WATCHDOG=1 every half period, SIGHUP: a fresh
+ * start (READY=1 again), SIGTERM: a clean exit with status 0. */
+static void test_notify_signals_and_watchdog(void **state)
+{
+	(void)state;
+	char name[64];
+	snprintf(name, sizeof name, "@skp_kiosk_%d", (int)getpid());
+	int srv = listen_at(name);
+	pid_t pid = fork();
+	assert_true(pid >= 0);
+	if (pid == 0) {
+		char amc[512];
+		snprintf(amc, sizeof amc, "%s", test_tool_path("assets/demo.amc"));
+		setenv("NOTIFY_SOCKET", name, 1);
+		setenv("WATCHDOG_USEC", "100000", 1);
+		setenv("ASAN_OPTIONS", "detect_leaks=0", 1);
+		if (!freopen(log_path, "w", stderr))
+			_exit(126);
+		execl(test_tool_path("skinplay"), "skinplay", "--asf", "assets/demo.asf", "--amc", amc, "--platform",
+		      "surfaceless", "--size", "64x64", "--frames", "100000000", "--input", "none", (char *)NULL);
+		_exit(127);
+	}
+	int dogs = 0;
+	assert_true(wait_for(srv, "READY=1", 20000, &dogs));
+	assert_true(wait_for(srv, "WATCHDOG=1", 5000, &dogs));
+	kill(pid, SIGHUP);
+	assert_true(wait_for(srv, "RELOADING=1", 5000, &dogs));
+	assert_true(wait_for(srv, "READY=1", 20000, &dogs));
+	assert_true(wait_for(srv, "WATCHDOG=1", 5000, &dogs));
+	kill(pid, SIGTERM);
+	assert_true(wait_for(srv, "STOPPING=1", 5000, &dogs));
+	int status;
+	assert_int_equal(waitpid(pid, &status, 0), pid);
+	close(srv);
+	char *log = read_log();
+	if (!WIFEXITED(status) || WEXITSTATUS(status) != 0 || !strstr(log, "signal: SIGHUP -> reopen the show") ||
+	    !strstr(log, "signal: quit -> clean exit") || count_lines(log, "display: surfaceless") != 2)
+		fail_msg("status %d, log:\n%s", status, log);
+	free(log);
+	assert_true(dogs >= 2);
+}
+
+static void test_bad_board_config_names_file_line_key(void **state)
+{
+	(void)state;
+	char board[128], extra[256];
+	snprintf(board, sizeof board, "%s/board.ini", dir);
+	write_text(board, "[display]\nsize = 640x480\n\n[button.play]\nline = 27\nbias = sideways\n");
+	snprintf(extra, sizeof extra, "--board %s", board);
+	assert_int_equal(run("bad", extra, 1), 1);
+	char *log = read_log(), want[256];
+	snprintf(want, sizeof want, "%s:6: key 'bias' in [button.play]: expected as-is, disable, pull-up or pull-down",
+		 board);
+	if (strncmp(log, want, strlen(want)) != 0)
+		fail_msg("log: %s\nwant: %s", log, want);
+	free(log);
+	/* a good one applies its display size unless --size says otherwise */
+	write_text(board, "[display]\nsize = 64x48\n[input]\nbackend = none\n");
+	char cmd[1024], amc[512];
+	snprintf(amc, sizeof amc, "%s", test_tool_path("assets/demo.amc"));
+	snprintf(cmd, sizeof cmd, "ASAN_OPTIONS=detect_leaks=0 %s --asf assets/demo.asf --amc %s --platform surfaceless "
+		 "--board %s --frames 1 2>%s", test_tool_path("skinplay"), amc, board,
+		 log_path);
+	assert_int_equal(system(cmd), 0);
+	log = read_log();
+	assert_non_null(strstr(log, "display: surfaceless 64x48"));
+	free(log);
+	snprintf(extra, sizeof extra, "--input script:%s/missing.txt", dir);
+	assert_int_equal(run("bad", extra, 1), 1);
+	log = read_log();
+	assert_non_null(strstr(log, "missing.txt: cannot open"));
+	free(log);
+}
+
+int main(void)
+{
+	const struct CMUnitTest tests[] = {
+		cmocka_unit_test(test_script_switches_algorithm_at_its_frames),
+		cmocka_unit_test(test_play_pause_and_view),
+		cmocka_unit_test(test_notify_signals_and_watchdog),
+		cmocka_unit_test(test_bad_board_config_names_file_line_key),
+	};
+	return cmocka_run_group_tests(tests, setup, teardown);
+}

@@ -1,0 +1,151 @@
+/* board.ini: the real board files parse, and every kind of mistake is an
+ * error naming the line and the key. */
+#include <stdarg.h>
+#include <stddef.h>
+#include <setjmp.h>
+#include <stdint.h>
+#include <cmocka.h>
+
+#include <stdlib.h>
+#include <string.h>
+
+#include "board_config.h"
+#include "test_paths.h"
+
+static board_config cfg;
+
+static skp_status parse(const char *text, skp_error *err)
+{
+	skp_mem_source src;
+	return board_config_read(&cfg, skp_mem_reader(&src, text, strlen(text)), err);
+}
+
+static void parse_file(const char *path)
+{
+	size_t n;
+	char *text = test_read_file(path, &n);
+	assert_non_null(text);
+	skp_mem_source src;
+	skp_error err;
+	skp_status st = board_config_read(&cfg, skp_mem_reader(&src, text, n), &err);
+	free(text);
+	if (st != SKP_OK)
+		fail_msg("%s:%ld: %s", path, err.line, err.msg);
+}
+
+static void test_rpi4_board(void **state)
+{
+	(void)state;
+	parse_file("board/rpi4/board.ini");
+	static const unsigned lines[PLAYER_BTN_COUNT] = { 17, 27, 22, 23 };
+	assert_string_equal(cfg.platform, "kms");
+	assert_string_equal(cfg.input, "gpio");
+	assert_string_equal(cfg.chip, "pinctrl-bcm2711");
+	assert_int_equal(cfg.width, 1920);
+	assert_int_equal(cfg.height, 1080);
+	assert_int_equal(cfg.rotation, 0);
+	for (int b = 0; b < PLAYER_BTN_COUNT; b++) {
+		assert_true(cfg.button[b].present);
+		assert_int_equal(cfg.button[b].line, lines[b]);
+		assert_true(cfg.button[b].active_low);
+		assert_int_equal(cfg.button[b].bias, BOARD_BIAS_PULL_UP);
+		assert_int_equal(cfg.button[b].deb.debounce_ms, 30);
+		assert_int_equal(cfg.button[b].deb.long_press_ms, 800);
+	}
+	assert_int_equal(cfg.slot_count, 2);
+	assert_string_equal(cfg.slot[1], "/var/lib/skinplay/show-b.skn");
+	assert_int_equal(cfg.max_fps, 60);
+}
+
+static void test_host_board(void **state)
+{
+	(void)state;
+	parse_file("board/host/board.ini");
+	assert_string_equal(cfg.input, "keyboard");
+	assert_false(cfg.button[PLAYER_BTN_ALGO].present);
+}
+
+static void test_inheritance_and_syntax(void **state)
+{
+	(void)state;
+	skp_error err;
+	const char *text = "; comment\r\n"
+			   "[input]\n"
+			   "debounce_ms = 12\n"
+			   "[button.view]   # trailing comment\n"
+			   "line=4\n"
+			   "active = HIGH\n"
+			   "bias = pull-down\n"
+			   "long_press_ms = 1500\n"
+			   "[Button.Algo]\n"
+			   "  line = 5  \n"
+			   "debounce_ms = 0\n"
+			   "[storage]\n"
+			   "slot = /data/a#1.skn\n"
+			   "[input]\n"
+			   "long_press_ms = 600\n";
+	assert_int_equal(parse(text, &err), SKP_OK);
+	board_button *v = &cfg.button[PLAYER_BTN_VIEW], *a = &cfg.button[PLAYER_BTN_ALGO];
+	assert_int_equal(v->line, 4);
+	assert_false(v->active_low);
+	assert_int_equal(v->bias, BOARD_BIAS_PULL_DOWN);
+	assert_int_equal(v->deb.debounce_ms, 12);     /* from [input] */
+	assert_int_equal(v->deb.long_press_ms, 1500); /* its own, over [input]'s later 600 */
+	assert_int_equal(a->deb.debounce_ms, 0);
+	assert_int_equal(a->deb.long_press_ms, 600);
+	assert_false(cfg.button[PLAYER_BTN_PLAY].present);
+	assert_string_equal(cfg.slot[0], "/data/a#1.skn");
+	assert_int_equal(cfg.rotation, -1);            /* not given */
+}
+
+typedef struct bad_case {
+	const char *text;
+	long line;
+	const char *needle;
+} bad_case;
+
+static void test_errors_name_line_and_key(void **state)
+{
+	(void)state;
+	static const bad_case cases[] = {
+		{ "[display]\nrotation = 45\n", 2, "key 'rotation' in [display]: expected 0, 90, 180 or 270, found '45'" },
+		{ "[display]\nsize = 1280*720\n", 2, "key 'size' in [display]: expected WxH" },
+		{ "[display]\nplatform = wayland\n", 2, "key 'platform'" },
+		{ "[display]\ncolour = red\n", 2, "unknown key 'colour' in [display]" },
+		{ "\n\n[button.play]\nline = seventeen\n", 4, "key 'line' in [button.play]: expected a line offset" },
+		{ "[button.play]\nactive = sideways\n", 2, "key 'active' in [button.play]: expected high or low" },
+		{ "[button.play]\nbias = strong\n", 2, "key 'bias'" },
+		{ "[button.menu]\nline = 3\n", 2, "unknown section [button.menu]" },
+		{ "[input]\nbackend = joystick\n", 2, "key 'backend' in [input]: expected gpio, keyboard, none or script:FILE" },
+		{ "[input]\ndebounce_ms = -5\n", 2, "key 'debounce_ms'" },
+		{ "[limits]\nmax_fps = fast\n", 2, "key 'max_fps' in [limits]" },
+		{ "[storage]\nslot = a\nslot = b\nslot = c\n", 4, "SKP_MAX_SLOTS" },
+		{ "line = 3\n", 1, "key 'line' before any [section]" },
+		{ "[display\n", 1, "expected ']'" },
+		{ "[display]\njust words\n", 2, "expected 'key = value', found 'just words'" },
+		{ "[display]\n= 3\n", 2, "missing key" },
+		{ "[display]\ndevice = a\0b\n", 2, "NUL" },
+	};
+	for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
+		skp_error err;
+		skp_mem_source src;
+		const char *t = cases[i].text;
+		size_t n = strlen(t);
+		if (strstr(cases[i].needle, "NUL"))
+			n += 1 + strlen(t + n + 1);
+		skp_status st = board_config_read(&cfg, skp_mem_reader(&src, t, n), &err);
+		if (st == SKP_OK || err.line != cases[i].line || !strstr(err.msg, cases[i].needle))
+			fail_msg("case %zu: status %d, line %ld, '%s'", i, st, err.line, err.msg);
+	}
+}
+
+int main(void)
+{
+	const struct CMUnitTest tests[] = {
+		cmocka_unit_test(test_rpi4_board),
+		cmocka_unit_test(test_host_board),
+		cmocka_unit_test(test_inheritance_and_syntax),
+		cmocka_unit_test(test_errors_name_line_and_key),
+	};
+	return cmocka_run_group_tests(tests, NULL, NULL);
+}

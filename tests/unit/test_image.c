@@ -1,0 +1,474 @@
+/* Flash image core: CRC-32, pack/read round trip in memory (skeleton and
+ * bind data exact, frames within the stated quantisation), every block's
+ * damage named, playback holding over bad blocks, and the refusals: wrong
+ * magic/version, header CRC, truncation, board limits, foreign blocks.
+ * Raw ASF/AMC streamed from block storage. */
+#include <stdarg.h>
+#include <stddef.h>
+#include <setjmp.h>
+#include <stdint.h>
+#include <cmocka.h>
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "crc32.h"
+#include "image_play.h"
+#include "image_write.h"
+#include "test_parse.h"
+#include "test_paths.h"
+
+#define BS 512
+#define CAP (1 << 20)
+
+static skel s, s2;
+static mesh m, m2;
+static skin_weights w, w2;
+static uint8_t img[CAP];
+static size_t img_size;
+static skp_image im;
+static skp_player pl;
+static skp_image_writer wr;
+static skp_clip_range range;
+static amc_frame frames[64];
+static int frame_count;
+
+static void test_crc32_vectors(void **state)
+{
+	(void)state;
+	assert_int_equal(crc32_compute("123456789", 9), 0xCBF43926u);
+	assert_int_equal(crc32_compute("", 0), 0);
+	assert_int_equal(crc32_update(crc32_update(0, "1234", 4), "56789", 5), 0xCBF43926u);
+	assert_int_equal(crc32_compute("The quick brown fox jumps over the lazy dog", 43), 0x414FA339u);
+}
+
+/* A box around the tiny arm: 8 corners, 12 triangles, weights shared
+ * between the two bones (and the root) so quantisation has work to do. */
+static void make_body(void)
+{
+	memset(&m, 0, sizeof m);
+	memset(&w, 0, sizeof w);
+	static const uint32_t tri[12][3] = {
+		{ 0, 1, 2 }, { 0, 2, 3 }, { 4, 6, 5 }, { 4, 7, 6 }, { 0, 4, 5 }, { 0, 5, 1 },
+		{ 1, 5, 6 }, { 1, 6, 2 }, { 2, 6, 7 }, { 2, 7, 3 }, { 3, 7, 4 }, { 3, 4, 0 },
+	};
+	for (int v = 0; v < 8; v++) {
+		m.pos[v] = vec3_make(v & 1 ? 3.5f : -0.1f, v & 2 ? 0.3f : -0.3f, v & 4 ? 0.3f : -0.3f);
+		m.normal[v] = vec3_normalize(m.pos[v]);
+		w.count[v] = (uint8_t)(1 + v % 3);
+		float sum = 0;
+		for (int i = 0; i < w.count[v]; i++) {
+			w.bone[v][i] = (uint16_t)((v + i) % s.count);
+			w.weight[v][i] = 1.0f / (float)(i + 1 + v % 2);
+			sum += w.weight[v][i];
+		}
+		for (int i = 0; i < w.count[v]; i++)
+			w.weight[v][i] /= sum;
+	}
+	memcpy(m.tri, tri, sizeof tri);
+	m.vert_count = w.vert_count = 8;
+	m.tri_count = 12;
+}
+
+static void keep_frame(const amc_frame *f, void *ctx)
+{
+	(void)ctx;
+	if (frame_count < 64)
+		frames[frame_count++] = *f;
+}
+
+/* Two clips: tiny.amc and a made-up longer one (40 frames of 5 dofs, in
+ * several 512-byte blocks). */
+static void load_inputs(void)
+{
+	skp_error err;
+	size_t n;
+	assert_int_equal(test_parse_asf_file("tests/data/tiny.asf", &s, &err), SKP_OK);
+	char *amc = test_read_file("tests/data/tiny.amc", &n);
+	assert_non_null(amc);
+	frame_count = 0;
+	assert_true(test_stream_amc(amc, n, &s, &err, keep_frame, NULL) > 0);
+	free(amc);
+	make_body();
+}
+
+static skp_status write_clip(const char *name, const amc_frame *f, int n, skp_error *err)
+{
+	skp_clip_range_init(&range, &s);
+	for (int i = 0; i < n; i++)
+		if (skp_clip_range_add(&range, &f[i], err) != SKP_OK)
+			return err->code;
+	skp_status rc = skp_image_clip_begin(&wr, name, 120.0f, &range, err);
+	for (int i = 0; i < n && rc == SKP_OK; i++)
+		rc = skp_image_clip_frame(&wr, &f[i], err);
+	return rc;
+}
+
+static amc_frame synth[200];
+
+static void make_synth(int n)
+{
+	for (int i = 0; i < n; i++) {
+		memset(&synth[i], 0, sizeof synth[i]);
+		synth[i].number = 10 + i;
+		for (int d = 0; d < s.dof_count; d++)
+			synth[i].value[d] = (float)(sin(0.1 * i + d) * (d < 3 ? 40.0 : 3.0));
+	}
+}
+
+static void pack(uint64_t sequence, const float *bind_values)
+{
+	static skp_mem_blockdev mb;
+	skp_error err;
+	skp_blockdev dev = skp_mem_blockdev_init(&mb, img, CAP, BS);
+	memset(img, 0, CAP);
+	assert_int_equal(skp_image_write_begin(&wr, &dev, sequence, &s, &err), SKP_OK);
+	assert_int_equal(skp_image_write_bind(&wr, &m, &w, bind_values, 7, &err), SKP_OK);
+	assert_int_equal(write_clip("tiny", frames, frame_count, &err), SKP_OK);
+	make_synth(200);
+	assert_int_equal(write_clip("synth", synth, 200, &err), SKP_OK);
+	assert_int_equal(skp_image_write_end(&wr, &err), SKP_OK);
+	img_size = mb.size;
+	assert_int_equal(img_size, (size_t)wr.hdr.block_count * BS);
+}
+
+static skp_mem_blockdev rb;
+static skp_blockdev rdev;
+
+static skp_status open_image(size_t size, skp_error *err)
+{
+	rdev = skp_mem_blockdev_ro(&rb, img, size, BS);
+	return skp_image_open(&im, &rdev, err);
+}
+
+static void assert_same_skel(const skel *a, const skel *b)
+{
+	assert_string_equal(a->name, b->name);
+	assert_string_equal(a->version, b->version);
+	assert_int_equal(a->count, b->count);
+	assert_int_equal(a->dof_count, b->dof_count);
+	assert_memory_equal(a->eval_order, b->eval_order, (size_t)a->count);
+	assert_true(a->angle_in_degrees == b->angle_in_degrees && a->length_scale == b->length_scale);
+	assert_memory_equal(&a->root_position, &b->root_position, sizeof a->root_position);
+	for (int i = 0; i < a->count; i++) {
+		const skel_bone *x = &a->bone[i], *y = &b->bone[i];
+		assert_string_equal(x->name, y->name);
+		assert_true(x->id == y->id && x->parent == y->parent && x->length == y->length);
+		assert_memory_equal(&x->direction, &y->direction, sizeof x->direction);
+		assert_memory_equal(&x->axis_angle, &y->axis_angle, sizeof x->axis_angle);
+		assert_memory_equal(&x->axis_rot, &y->axis_rot, sizeof x->axis_rot);
+		assert_memory_equal(x->axis_order, y->axis_order, 3);
+		assert_int_equal(x->channel_count, y->channel_count);
+		assert_memory_equal(x->channel, y->channel, x->channel_count);
+		assert_int_equal(x->has_limits, y->has_limits);
+		assert_memory_equal(x->limit, y->limit, sizeof(float) * 2 * x->channel_count);
+		assert_int_equal(x->dof_offset, y->dof_offset);
+	}
+}
+
+/* Every frame of the clip decodes within step/2 of what was packed. */
+static void check_clip(int clip, const amc_frame *f, int n)
+{
+	skp_error err;
+	static amc_frame got;
+	assert_int_equal(skp_player_open(&pl, &im, clip, &err), SKP_OK);
+	for (int i = 0; i < n; i++) {
+		assert_int_equal(skp_player_next(&pl, &got, &err), 1);
+		assert_int_equal(got.number, f[i].number);
+		for (int d = 0; d < s.dof_count; d++) {
+			double tol = pl.qstep[d] * 0.5 * (1 + 1e-6) + 1e-6 * fabs(f[i].value[d]);
+			assert_true(fabs((double)got.value[d] - f[i].value[d]) <= tol);
+		}
+	}
+	assert_int_equal(skp_player_next(&pl, &got, &err), 0);
+}
+
+static void test_round_trip(void **state)
+{
+	(void)state;
+	static float bind[SKP_MAX_DOF], bind2[SKP_MAX_DOF];
+	skp_error err;
+	long number;
+	load_inputs();
+	for (int d = 0; d < s.dof_count; d++)
+		bind[d] = 0.25f * (float)d;
+	pack(1234, bind);
+	assert_int_equal(open_image(img_size, &err), SKP_OK);
+	assert_int_equal(im.hdr.sequence, 1234);
+	assert_int_equal(im.clip_count, 2);
+	assert_string_equal(im.clip[0].name, "tiny");
+	assert_string_equal(im.clip[1].name, "synth");
+	assert_int_equal(im.clip[1].first_number, 10);
+	assert_int_equal(skp_image_load_skel(&im, &s2, &err), SKP_OK);
+	assert_same_skel(&s, &s2);
+	assert_int_equal(skp_image_load_bind(&im, &s2, &m2, &w2, bind2, &number, &err), SKP_OK);
+	assert_int_equal(number, 7);
+	assert_memory_equal(bind, bind2, sizeof(float) * (size_t)s.dof_count);
+	assert_int_equal(m2.vert_count, 8);
+	assert_int_equal(m2.tri_count, 12);
+	assert_memory_equal(m.pos, m2.pos, sizeof(vec3) * 8);
+	assert_memory_equal(m.normal, m2.normal, sizeof(vec3) * 8);
+	assert_memory_equal(m.tri, m2.tri, sizeof(uint32_t) * 36);
+	for (int v = 0; v < 8; v++) {
+		assert_int_equal(w.count[v], w2.count[v]);
+		for (int i = 0; i < w.count[v]; i++) {
+			assert_int_equal(w.bone[v][i], w2.bone[v][i]);
+			assert_true(fabsf(w.weight[v][i] - w2.weight[v][i]) <= 1.0f / 65535);
+		}
+	}
+	check_clip(0, frames, frame_count);
+	check_clip(1, synth, 200);
+	/* the worst-case error stated per clip is the largest step / 2 */
+	float worst = 0;
+	for (int d = 0; d < 3; d++)
+		worst = fmaxf(worst, pl.qstep[d] * 0.5f);
+	assert_true(im.clip[1].max_trans_err == worst);
+	assert_true(im.clip[1].max_rot_err > 0 && im.clip[1].max_rot_err < 1e-4f);
+}
+
+static void test_rest_pose_bind(void **state)
+{
+	(void)state;
+	static float bind2[SKP_MAX_DOF];
+	skp_error err;
+	long number;
+	load_inputs();
+	pack(1, NULL);
+	assert_int_equal(open_image(img_size, &err), SKP_OK);
+	assert_int_equal(skp_image_load_skel(&im, &s2, &err), SKP_OK);
+	assert_int_equal(skp_image_load_bind(&im, &s2, &m2, &w2, bind2, &number, &err), SKP_OK);
+	assert_int_equal(number, -1);
+	for (int d = 0; d < s.dof_count; d++)
+		assert_true(bind2[d] == 0.0f);
+}
+
+/* Loads everything and checks every block; returns the first bad block or
+ * -1 when all is well. */
+static long first_bad(void)
+{
+	static uint8_t buf[BS];
+	static float bind2[SKP_MAX_DOF];
+	skp_error err;
+	long number;
+	if (open_image(img_size, &err) != SKP_OK)
+		return err.block;
+	if (skp_image_load_skel(&im, &s2, &err) != SKP_OK ||
+	    skp_image_load_bind(&im, &s2, &m2, &w2, bind2, &number, &err) != SKP_OK)
+		return err.block;
+	for (uint32_t b = 0; b < im.hdr.block_count; b++)
+		if (skp_image_read_block(&im, b, 0, 0, buf) != SKP_BLOCK_OK)
+			return (long)b;
+	return -1;
+}
+
+static void test_any_byte_names_its_block(void **state)
+{
+	(void)state;
+	load_inputs();
+	pack(99, NULL);
+	assert_int_equal(first_bad(), -1);
+	uint32_t blocks = (uint32_t)(img_size / BS);
+	assert_true(blocks >= 6);
+	uint64_t rnd = 12345;
+	for (uint32_t b = 0; b < blocks; b++) {
+		for (int k = 0; k < 3; k++) {
+			rnd = rnd * 6364136223846793005ull + 1442695040888963407ull;
+			size_t at = (size_t)b * BS + (size_t)((rnd >> 33) % BS);
+			uint8_t bit = (uint8_t)(1u << ((rnd >> 20) % 8));
+			img[at] ^= bit;
+			long bad = first_bad();
+			img[at] ^= bit;
+			if (bad != (long)b)
+				fail_msg("byte %zu flipped: block %ld named, expected %lu", at, bad, (unsigned long)b);
+		}
+	}
+}
+
+static void test_bad_frame_block_holds(void **state)
+{
+	(void)state;
+	skp_error err;
+	static amc_frame f;
+	load_inputs();
+	pack(5, NULL);
+	uint32_t fpb = wr.dir[1].frames_per_block, bad = wr.dir[1].frames_first + 2;
+	img[(size_t)bad * BS + 40] ^= 0x10;
+	assert_int_equal(open_image(img_size, &err), SKP_OK);
+	assert_int_equal(skp_player_open(&pl, &im, 1, &err), SKP_OK);
+	int lost = 0, good = 0, r;
+	long last_good = -1;
+	for (int i = 0; (r = skp_player_next(&pl, &f, &err)) != 0; i++) {
+		int in_bad = (uint32_t)i / fpb == 2;
+		if (in_bad) {
+			assert_int_equal(r, SKP_PLAYER_LOST);
+			assert_int_equal(err.block, bad);
+			assert_string_equal(err.msg, "CRC mismatch");
+			assert_int_equal(f.number, last_good); /* untouched: the caller holds it */
+			lost++;
+		} else {
+			assert_int_equal(r, 1);
+			assert_int_equal(f.number, 10 + i);
+			last_good = f.number;
+			good++;
+		}
+	}
+	assert_int_equal(lost, (int)fpb);
+	assert_int_equal(good + lost, 200);
+	/* the ring never holds more than its blocks, and seeking restarts it */
+	skp_player_seek(&pl, 199);
+	assert_int_equal(skp_player_next(&pl, &f, &err), 1);
+	assert_int_equal(f.number, 209);
+}
+
+/* Rewrites the header through fn and fixes the CRCs as asked. */
+static void patch_header(void (*fn)(uint8_t *p), int fix_header_crc)
+{
+	uint8_t *p = img + SKP_IMAGE_BLOCK_HDR;
+	fn(p);
+	if (fix_header_crc)
+		le_put32(p + 100, crc32_compute(p, 100));
+	le_put32(img + BS - 4, crc32_compute(img, BS - 4));
+}
+
+static void set_version_2(uint8_t *p) { le_put16(p + 8, 2); }
+static void set_sequence(uint8_t *p) { le_put64(p + 20, 777); }
+static void set_many_bones(uint8_t *p) { le_put32(p + 28, SKP_MAX_BONES + 1); }
+static void set_magic(uint8_t *p) { p[0] = 'X'; }
+
+static void expect_refusal(const char *needle, skp_status code)
+{
+	skp_error err;
+	assert_int_not_equal(open_image(img_size, &err), SKP_OK);
+	assert_int_equal(err.code, code);
+	if (!strstr(err.msg, needle))
+		fail_msg("expected '%s' in '%s'", needle, err.msg);
+}
+
+static void test_refusals(void **state)
+{
+	(void)state;
+	load_inputs();
+	pack(5, NULL);
+	patch_header(set_version_2, 1);
+	expect_refusal("version 2, this build reads version 1", SKP_ERR_CORRUPT);
+	pack(5, NULL);
+	patch_header(set_sequence, 0);
+	expect_refusal("header CRC mismatch", SKP_ERR_CORRUPT);
+	pack(5, NULL);
+	patch_header(set_many_bones, 1);
+	expect_refusal("board limit SKP_MAX_BONES", SKP_ERR_LIMIT);
+	pack(5, NULL);
+	patch_header(set_magic, 1);
+	expect_refusal("not a skinplay image", SKP_ERR_CORRUPT);
+	pack(5, NULL);
+	size_t full = img_size;
+	img_size = full - 3 * BS;
+	expect_refusal("truncated", SKP_ERR_CORRUPT);
+	img_size = full - 100; /* a partial last block */
+	skp_error err;
+	assert_int_equal(open_image(img_size, &err), SKP_ERR_CORRUPT);
+	assert_int_equal(err.block, (long)(full / BS - 1));
+	assert_non_null(strstr(err.msg, "short read"));
+	img_size = 0;
+	expect_refusal("short read", SKP_ERR_CORRUPT);
+}
+
+/* A block of an older image left in place (same position, good CRC) is
+ * refused: the tag differs. */
+static void test_foreign_block(void **state)
+{
+	(void)state;
+	static uint8_t old[CAP];
+	skp_error err;
+	load_inputs();
+	pack(1, NULL);
+	memcpy(old, img, img_size);
+	pack(2, NULL);
+	uint32_t b = wr.dir[1].frames_first;
+	memcpy(img + (size_t)b * BS, old + (size_t)b * BS, BS);
+	static uint8_t buf[BS];
+	assert_int_equal(open_image(img_size, &err), SKP_OK);
+	assert_int_equal(skp_image_read_block(&im, b, SKP_KIND_FRAMES, 1, buf), SKP_BLOCK_FOREIGN);
+	assert_int_equal(skp_image_read_block(&im, b + 1, SKP_KIND_FRAMES, 1, buf), SKP_BLOCK_OK);
+	/* a good block asked for at another position */
+	assert_int_equal(skp_image_read_block(&im, b + 1, SKP_KIND_FRAMES, 0, buf), SKP_BLOCK_MISPLACED);
+}
+
+static void test_writer_errors(void **state)
+{
+	(void)state;
+	static skp_mem_blockdev mb;
+	skp_error err;
+	load_inputs();
+	skp_blockdev dev = skp_mem_blockdev_init(&mb, img, 2 * BS, BS);
+	assert_int_equal(skp_image_write_begin(&wr, &dev, 1, &s, &err), SKP_OK);
+	/* header and skeleton fill the storage: no room for the body */
+	assert_int_equal(skp_image_write_bind(&wr, &m, &w, NULL, 0, &err), SKP_ERR_IO);
+	assert_int_equal(err.block, 2);
+	dev = skp_mem_blockdev_init(&mb, img, CAP, 100);
+	assert_int_equal(skp_image_write_begin(&wr, &dev, 1, &s, &err), SKP_ERR_RANGE);
+	assert_non_null(strstr(err.msg, "block size 100"));
+	/* frames must be numbered consecutively */
+	skp_clip_range_init(&range, &s);
+	make_synth(3);
+	synth[2].number = 40;
+	synth[2].line = 17;
+	assert_int_equal(skp_clip_range_add(&range, &synth[0], &err), SKP_OK);
+	assert_int_equal(skp_clip_range_add(&range, &synth[1], &err), SKP_OK);
+	assert_int_equal(skp_clip_range_add(&range, &synth[2], &err), SKP_ERR_SYNTAX);
+	assert_int_equal(err.line, 17);
+}
+
+/* Raw ASF and AMC text kept on block storage stream through the same
+ * skp_reader interface as a file, one block at a time. */
+static void test_blockdev_reader_streams_text(void **state)
+{
+	(void)state;
+	static skp_mem_blockdev mb;
+	static skp_blockdev_stream st;
+	static uint8_t buf[BS];
+	static text_lines tl;
+	static amc_stream as;
+	static amc_frame f;
+	skp_error err;
+	size_t na, nm;
+	char *asf = test_read_file("tests/data/tiny.asf", &na);
+	char *amc = test_read_file("tests/data/tiny.amc", &nm);
+	assert_true(asf && amc && na + nm + 1000 < CAP);
+	load_inputs();
+	memset(img, 0xAA, CAP);
+	memcpy(img + 700, asf, na);               /* not block aligned */
+	memcpy(img + 700 + na + 33, amc, nm);
+	skp_blockdev dev = skp_mem_blockdev_ro(&mb, img, 700 + na + 33 + nm, BS);
+	text_lines_init(&tl, skp_blockdev_reader(&st, &dev, buf, 700, na));
+	assert_int_equal(asf_parse(&s2, &tl, &err), SKP_OK);
+	assert_same_skel(&s, &s2);
+	text_lines_init(&tl, skp_blockdev_reader(&st, &dev, buf, 700 + na + 33, nm));
+	amc_open(&as, &s2, &tl);
+	int n = 0;
+	while (amc_next(&as, &f, &err) > 0) {
+		assert_memory_equal(f.value, frames[n].value, sizeof(float) * (size_t)s.dof_count);
+		n++;
+	}
+	assert_int_equal(n, frame_count);
+	free(asf);
+	free(amc);
+}
+
+int main(void)
+{
+	const struct CMUnitTest tests[] = {
+		cmocka_unit_test(test_crc32_vectors),
+		cmocka_unit_test(test_round_trip),
+		cmocka_unit_test(test_rest_pose_bind),
+		cmocka_unit_test(test_any_byte_names_its_block),
+		cmocka_unit_test(test_bad_frame_block_holds),
+		cmocka_unit_test(test_refusals),
+		cmocka_unit_test(test_foreign_block),
+		cmocka_unit_test(test_writer_errors),
+		cmocka_unit_test(test_blockdev_reader_streams_text),
+	};
+	return cmocka_run_group_tests(tests, NULL, NULL);
+}

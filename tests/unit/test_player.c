@@ -1,0 +1,169 @@
+/* The player state machine: every button, short and long, and the log
+ * line each action produces. */
+#include <stdarg.h>
+#include <stddef.h>
+#include <setjmp.h>
+#include <stdint.h>
+#include <cmocka.h>
+
+#include <string.h>
+
+#include "player.h"
+
+static player_action ev(player_state *s, int b, int kind, char *log)
+{
+	player_event e = { (uint8_t)b, (uint8_t)kind, 0 };
+	return player_handle(s, &e, log, 96);
+}
+
+/* A short press: press then release. Returns the action of whichever did
+ * something; log gets that line. */
+static player_action tap(player_state *s, int b, char *log)
+{
+	char l1[96], l2[96];
+	player_action a = ev(s, b, PLAYER_PRESS, l1);
+	player_action r = ev(s, b, PLAYER_RELEASE, l2);
+	assert_true(a == PLAYER_ACT_NONE || r == PLAYER_ACT_NONE); /* one action per tap */
+	strcpy(log, a != PLAYER_ACT_NONE ? l1 : l2);
+	return a != PLAYER_ACT_NONE ? a : r;
+}
+
+static void test_algo_cycles_on_press(void **state)
+{
+	(void)state;
+	static const char *const want[] = { "input: ALGO -> dqbs", "input: ALGO -> dqbs-fixed",
+					    "input: ALGO -> compare", "input: ALGO -> lbs" };
+	player_state s;
+	char log[96];
+	player_init(&s, PLAYER_LBS, PLAYER_VIEW_BODY, 0, 1);
+	for (int i = 0; i < 4; i++) {
+		assert_int_equal(ev(&s, PLAYER_BTN_ALGO, PLAYER_PRESS, log), PLAYER_ACT_ALGO);
+		assert_string_equal(log, want[i]);
+		assert_int_equal(s.algo, (i + 1) % 4);
+		assert_int_equal(ev(&s, PLAYER_BTN_ALGO, PLAYER_RELEASE, log), PLAYER_ACT_NONE);
+		assert_string_equal(log, "");
+	}
+	/* a long press of ALGO does nothing more */
+	ev(&s, PLAYER_BTN_ALGO, PLAYER_PRESS, log);
+	assert_int_equal(ev(&s, PLAYER_BTN_ALGO, PLAYER_LONG, log), PLAYER_ACT_NONE);
+	assert_int_equal(s.algo, PLAYER_DQBS);
+}
+
+static void test_play_short_and_long(void **state)
+{
+	(void)state;
+	player_state s;
+	char log[96];
+	player_init(&s, PLAYER_DQBS, PLAYER_VIEW_BODY, 0, 1);
+	assert_int_equal(s.playing, 1);
+	/* nothing on press: it may become a long press */
+	assert_int_equal(ev(&s, PLAYER_BTN_PLAY, PLAYER_PRESS, log), PLAYER_ACT_NONE);
+	assert_int_equal(ev(&s, PLAYER_BTN_PLAY, PLAYER_RELEASE, log), PLAYER_ACT_PLAY);
+	assert_string_equal(log, "input: PLAY -> pause");
+	assert_int_equal(s.playing, 0);
+	assert_int_equal(tap(&s, PLAYER_BTN_PLAY, log), PLAYER_ACT_PLAY);
+	assert_string_equal(log, "input: PLAY -> play");
+	/* long: restart, and the release after it does not also toggle */
+	ev(&s, PLAYER_BTN_PLAY, PLAYER_PRESS, log);
+	assert_int_equal(ev(&s, PLAYER_BTN_PLAY, PLAYER_LONG, log), PLAYER_ACT_RESTART);
+	assert_string_equal(log, "input: PLAY long -> restart");
+	assert_int_equal(ev(&s, PLAYER_BTN_PLAY, PLAYER_LONG, log), PLAYER_ACT_NONE);
+	assert_int_equal(ev(&s, PLAYER_BTN_PLAY, PLAYER_RELEASE, log), PLAYER_ACT_NONE);
+	assert_int_equal(s.playing, 1);
+}
+
+static void test_next_wraps_over_clips(void **state)
+{
+	(void)state;
+	player_state s;
+	char log[96];
+	player_init(&s, PLAYER_DQBS, PLAYER_VIEW_BODY, 0, 3);
+	assert_int_equal(tap(&s, PLAYER_BTN_NEXT, log), PLAYER_ACT_CLIP);
+	assert_string_equal(log, "input: NEXT -> clip 2/3");
+	tap(&s, PLAYER_BTN_NEXT, log);
+	assert_int_equal(tap(&s, PLAYER_BTN_NEXT, log), PLAYER_ACT_CLIP);
+	assert_string_equal(log, "input: NEXT -> clip 1/3");
+	assert_int_equal(s.clip, 0);
+	player_init(&s, PLAYER_DQBS, PLAYER_VIEW_BODY, 0, 0); /* no clip count: one */
+	tap(&s, PLAYER_BTN_NEXT, log);
+	assert_string_equal(log, "input: NEXT -> clip 1/1");
+}
+
+static void test_view_and_gpu(void **state)
+{
+	(void)state;
+	player_state s;
+	char log[96];
+	player_init(&s, PLAYER_DQBS, PLAYER_VIEW_BODY, 0, 1);
+	assert_int_equal(tap(&s, PLAYER_BTN_VIEW, log), PLAYER_ACT_VIEW);
+	assert_string_equal(log, "input: VIEW -> skeleton");
+	tap(&s, PLAYER_BTN_VIEW, log);
+	assert_string_equal(log, "input: VIEW -> weights");
+	tap(&s, PLAYER_BTN_VIEW, log);
+	assert_string_equal(log, "input: VIEW -> body");
+	ev(&s, PLAYER_BTN_VIEW, PLAYER_PRESS, log);
+	assert_int_equal(ev(&s, PLAYER_BTN_VIEW, PLAYER_LONG, log), PLAYER_ACT_GPU);
+	assert_string_equal(log, "input: VIEW long -> gpu skinning");
+	assert_int_equal(ev(&s, PLAYER_BTN_VIEW, PLAYER_RELEASE, log), PLAYER_ACT_NONE);
+	assert_int_equal(s.view, PLAYER_VIEW_BODY);
+	ev(&s, PLAYER_BTN_VIEW, PLAYER_PRESS, log);
+	ev(&s, PLAYER_BTN_VIEW, PLAYER_LONG, log);
+	assert_string_equal(log, "input: VIEW long -> cpu skinning");
+	assert_int_equal(s.gpu, 0);
+}
+
+/* Releases or long presses without a press seen (a button held when the
+ * player started), unknown buttons and kinds: nothing happens. */
+static void test_stray_events(void **state)
+{
+	(void)state;
+	player_state s, before;
+	char log[96];
+	player_init(&s, PLAYER_COMPARE, PLAYER_VIEW_WEIGHTS, 1, 2);
+	before = s;
+	for (int b = 0; b < PLAYER_BTN_COUNT; b++) {
+		assert_int_equal(ev(&s, b, PLAYER_RELEASE, log), PLAYER_ACT_NONE);
+		assert_int_equal(ev(&s, b, PLAYER_LONG, log), PLAYER_ACT_NONE);
+	}
+	assert_int_equal(ev(&s, PLAYER_BTN_COUNT, PLAYER_PRESS, log), PLAYER_ACT_NONE);
+	assert_int_equal(ev(&s, PLAYER_BTN_ALGO, 7, log), PLAYER_ACT_NONE);
+	assert_string_equal(log, "");
+	assert_memory_equal(&s, &before, sizeof s);
+	/* two buttons held together act independently */
+	ev(&s, PLAYER_BTN_PLAY, PLAYER_PRESS, log);
+	assert_int_equal(ev(&s, PLAYER_BTN_ALGO, PLAYER_PRESS, log), PLAYER_ACT_ALGO);
+	assert_string_equal(log, "input: ALGO -> lbs");
+	assert_int_equal(ev(&s, PLAYER_BTN_PLAY, PLAYER_RELEASE, log), PLAYER_ACT_PLAY);
+	/* a small log buffer is cut, not overrun */
+	char tiny[8];
+	memset(tiny, 'x', sizeof tiny);
+	player_event e = { PLAYER_BTN_ALGO, PLAYER_PRESS, 0 };
+	player_handle(&s, &e, tiny, 6);
+	assert_string_equal(tiny, "input");
+	assert_int_equal(tiny[6], 'x');
+}
+
+static void test_names(void **state)
+{
+	(void)state;
+	assert_int_equal(player_button_find("algo"), PLAYER_BTN_ALGO);
+	assert_int_equal(player_button_find("View"), PLAYER_BTN_VIEW);
+	assert_int_equal(player_button_find("menu"), -1);
+	assert_string_equal(player_button_name(PLAYER_BTN_NEXT), "NEXT");
+	assert_string_equal(player_button_name(9), "?");
+	assert_string_equal(player_algo_name(PLAYER_DQBS_FIXED), "dqbs-fixed");
+	assert_string_equal(player_view_name(PLAYER_VIEW_SKELETON), "skeleton");
+}
+
+int main(void)
+{
+	const struct CMUnitTest tests[] = {
+		cmocka_unit_test(test_algo_cycles_on_press),
+		cmocka_unit_test(test_play_short_and_long),
+		cmocka_unit_test(test_next_wraps_over_clips),
+		cmocka_unit_test(test_view_and_gpu),
+		cmocka_unit_test(test_stray_events),
+		cmocka_unit_test(test_names),
+	};
+	return cmocka_run_group_tests(tests, NULL, NULL);
+}
