@@ -15,51 +15,16 @@
 #include <unistd.h>
 
 #include "test_paths.h"
+#include "test_run.h"
 
 #define MAX_V 65536
 
-static char dir[] = "/tmp/skp_bind_XXXXXX";
-
-static int setup(void **state)
-{
-	(void)state;
-	return mkdtemp(dir) ? 0 : -1;
-}
-
-static int teardown(void **state)
-{
-	(void)state;
-	char cmd[256];
-	snprintf(cmd, sizeof cmd, "rm -rf '%s'", dir);
-	return system(cmd) == 0 ? 0 : -1;
-}
-
-static const char *tmp(const char *name)
-{
-	static char buf[4][512];
-	static int next;
-	char *out = buf[next++ % 4];
-	snprintf(out, sizeof buf[0], "%s/%s", dir, name);
-	return out;
-}
-
-/* Runs the shell command; returns the exit status (-1 if it did not exit). */
-static int run(const char *fmt, ...)
-{
-	char cmd[4096];
-	va_list ap;
-	va_start(ap, fmt);
-	vsnprintf(cmd, sizeof cmd, fmt, ap);
-	va_end(ap);
-	int st = system(cmd);
-	return WIFEXITED(st) ? WEXITSTATUS(st) : -1;
-}
 
 static int has_command(const char *name)
 {
 	char path[1024];
-	snprintf(path, sizeof path, "%s", tmp("help.txt"));
-	if (run("%s --help >%s 2>&1", test_tool_path("skintool"), path) != 0)
+	snprintf(path, sizeof path, "%s", test_scratch("help.txt"));
+	if (test_run("%s --help >%s 2>&1", test_tool_path("skintool"), path) != 0)
 		return 0;
 	size_t n;
 	char *text = test_read_file(path, &n);
@@ -137,11 +102,11 @@ static void bind_mannequin(const char *asf_rel)
 		print_message("skintool has no mannequin command yet\n");
 		skip();
 	}
-	const char *obj = tmp("body.obj"), *csv = tmp("body.csv");
-	assert_int_equal(run("%s mannequin %s -o %s >/dev/null 2>&1", test_tool_path("skintool"), asf, obj), 0);
+	const char *obj = test_scratch("body.obj"), *csv = test_scratch("body.csv");
+	assert_int_equal(test_run("%s mannequin %s -o %s >/dev/null 2>&1", test_tool_path("skintool"), asf, obj), 0);
 	long verts = count_obj_verts(obj);
 	assert_true(verts > 100);
-	assert_int_equal(run("%s bind %s %s -o %s", test_tool_path("skintool"), asf, obj, csv), 0);
+	assert_int_equal(test_run("%s bind %s %s -o %s", test_tool_path("skintool"), asf, obj, csv), 0);
 	check_csv(csv, verts, &wf);
 	print_message("%s: %ld vertices bound\n", asf_rel, verts);
 }
@@ -166,7 +131,7 @@ static void test_mannequin_endorphin(void **state)
 
 static int bind_makehuman(const char *extra, const char *csv, const char *report)
 {
-	return run("%s bind %s %s --group body --fit --bind-pose tests/data/makehuman_apose.amc:1 %s "
+	return test_run("%s bind %s %s --group body --fit --bind-pose tests/data/makehuman_apose.amc:1 %s "
 		   "--report -o %s 2>%s", test_tool_path("skintool"), test_data_path("mocap/cmu/02.asf"),
 		   test_data_path("mesh/makehuman/base.obj"), extra, csv, report);
 }
@@ -176,7 +141,7 @@ static void test_makehuman_apose(void **state)
 	(void)state;
 	if (!test_data_path("mesh/makehuman/base.obj"))
 		skip();
-	const char *csv = tmp("mh.csv"), *rep = tmp("mh.txt");
+	const char *csv = test_scratch("mh.csv"), *rep = test_scratch("mh.txt");
 	assert_int_equal(bind_makehuman("", csv, rep), 0);
 	check_csv(csv, 13380, &wf);
 	size_t n;
@@ -194,7 +159,7 @@ static void test_makehuman_apose(void **state)
 	free(text);
 
 	/* --weights reads them back, validated, and writes the same weights */
-	const char *csv2 = tmp("mh2.csv");
+	const char *csv2 = test_scratch("mh2.csv");
 	char extra[600];
 	snprintf(extra, sizeof extra, "--weights %s", csv);
 	assert_int_equal(bind_makehuman(extra, csv2, rep), 0);
@@ -229,23 +194,24 @@ static const err_case err_cases[] = {
 static void test_bad_input_fails_cleanly(void **state)
 {
 	(void)state;
-	FILE *f = fopen(tmp("tri.obj"), "w");
+	FILE *f = fopen(test_scratch("tri.obj"), "w");
 	assert_non_null(f);
 	fprintf(f, "g tri\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
 	fclose(f);
 	for (size_t i = 0; i < sizeof err_cases / sizeof err_cases[0]; i++) {
 		const err_case *c = &err_cases[i];
 		if (c->csv) {
-			f = fopen(tmp("bad.csv"), "w");
+			f = fopen(test_scratch("bad.csv"), "w");
 			assert_non_null(f);
 			fputs(c->csv, f);
 			fclose(f);
 		}
 		char args[2048];
-		snprintf(args, sizeof args, c->args, dir, dir, c->csv ? dir : "");
-		int st = run("%s bind %s >/dev/null 2>%s", test_tool_path("skintool"), args, tmp("err.txt"));
+		const char *d = test_scratch_dir();
+		snprintf(args, sizeof args, c->args, d, d, c->csv ? d : "");
+		int st = test_run("%s bind %s >/dev/null 2>%s", test_tool_path("skintool"), args, test_scratch("err.txt"));
 		size_t n;
-		char *err = test_read_file(tmp("err.txt"), &n);
+		char *err = test_read_file(test_scratch("err.txt"), &n);
 		assert_non_null(err);
 		if (st != 1 || !strstr(err, c->needle))
 			fail_msg("case %zu: exit %d, stderr '%s'", i, st, err);
@@ -257,15 +223,15 @@ static void test_bad_input_fails_cleanly(void **state)
 static void test_stdout_and_report(void **state)
 {
 	(void)state;
-	FILE *f = fopen(tmp("tri.obj"), "w");
+	FILE *f = fopen(test_scratch("tri.obj"), "w");
 	assert_non_null(f);
 	fprintf(f, "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
 	fclose(f);
-	assert_int_equal(run("%s bind tests/data/tiny.asf %s --report -o - >%s 2>%s", test_tool_path("skintool"),
-			     tmp("tri.obj"), tmp("out.csv"), tmp("rep.txt")), 0);
-	check_csv(tmp("out.csv"), 3, &wf);
+	assert_int_equal(test_run("%s bind tests/data/tiny.asf %s --report -o - >%s 2>%s", test_tool_path("skintool"),
+			     test_scratch("tri.obj"), test_scratch("out.csv"), test_scratch("rep.txt")), 0);
+	check_csv(test_scratch("out.csv"), 3, &wf);
 	size_t n;
-	char *rep = test_read_file(tmp("rep.txt"), &n);
+	char *rep = test_read_file(test_scratch("rep.txt"), &n);
 	assert_non_null(rep);
 	assert_non_null(strstr(rep, "largest influence count"));
 	free(rep);
@@ -281,5 +247,5 @@ int main(void)
 		cmocka_unit_test(test_bad_input_fails_cleanly),
 		cmocka_unit_test(test_stdout_and_report),
 	};
-	return cmocka_run_group_tests(tests, setup, teardown);
+	return cmocka_run_group_tests(tests, test_scratch_setup, test_scratch_teardown);
 }

@@ -25,42 +25,8 @@
 #include "test_clips.h"
 #include "test_parse.h"
 #include "test_paths.h"
+#include "test_run.h"
 
-static char dir[] = "/tmp/skp_image_XXXXXX";
-
-static int setup(void **state)
-{
-	(void)state;
-	return mkdtemp(dir) ? 0 : -1;
-}
-
-static int teardown(void **state)
-{
-	(void)state;
-	char cmd[256];
-	snprintf(cmd, sizeof cmd, "rm -rf '%s'", dir);
-	return system(cmd) == 0 ? 0 : -1;
-}
-
-static const char *tmp(const char *name)
-{
-	static char buf[64][512];
-	static int next;
-	char *out = buf[next++ % 64];
-	snprintf(out, sizeof buf[0], "%s/%s", dir, name);
-	return out;
-}
-
-static int run(const char *fmt, ...)
-{
-	char cmd[4096];
-	va_list ap;
-	va_start(ap, fmt);
-	vsnprintf(cmd, sizeof cmd, fmt, ap);
-	va_end(ap);
-	int st = system(cmd);
-	return WIFEXITED(st) ? WEXITSTATUS(st) : -1;
-}
 
 static char *slurp(const char *path)
 {
@@ -84,7 +50,7 @@ static void flip_byte(const char *path, long at, int bit)
 
 static void copy(const char *from, const char *to)
 {
-	assert_int_equal(run("cp '%s' '%s'", from, to), 0);
+	assert_int_equal(test_run("cp '%s' '%s'", from, to), 0);
 }
 
 static long file_size(const char *path)
@@ -101,8 +67,8 @@ static long file_size(const char *path)
  * it names bad are want (-1: none). */
 static int info_names(const char *image, long want)
 {
-	const char *out = tmp("info.txt");
-	int st = run("%s info '%s' >'%s' 2>&1", test_tool_path("skintool"), image, out);
+	const char *out = test_scratch("info.txt");
+	int st = test_run("%s info '%s' >'%s' 2>&1", test_tool_path("skintool"), image, out);
 	char *text = slurp(out);
 	int named = 0;
 	for (char *p = text; (p = strstr(p, "block ")) != NULL; p += 6) {
@@ -177,8 +143,8 @@ static void test_pack_decode_every_clip(void **state)
 		char asf[1024], amc[1024];
 		snprintf(asf, sizeof asf, "%s", test_data_path(test_clips[i].asf));
 		snprintf(amc, sizeof amc, "%s", test_data_path(test_clips[i].amc));
-		const char *image = tmp("clip.skn");
-		assert_int_equal(run("%s pack '%s' '%s' -o '%s' >/dev/null", test_tool_path("skintool"), asf, amc, image), 0);
+		const char *image = test_scratch("clip.skn");
+		assert_int_equal(test_run("%s pack '%s' '%s' -o '%s' >/dev/null", test_tool_path("skintool"), asf, amc, image), 0);
 		assert_int_equal(info_names(image, -1), 0);
 		compare_clip(image, asf, amc, test_clips[i].frames);
 	}
@@ -192,8 +158,8 @@ static const char *small_image(void)
 		"v -0.1 -0.3 0.3\nv 3.5 -0.3 0.3\nv 3.5 0.3 0.3\nv -0.1 0.3 0.3\n"
 		"f 1 4 3 2\nf 5 6 7 8\nf 1 2 6 5\nf 2 3 7 6\nf 3 4 8 7\nf 4 1 5 8\n";
 	static char image[512];
-	const char *obj = tmp("box.obj"), *amc = tmp("wave.amc");
-	snprintf(image, sizeof image, "%s", tmp("small.skn"));
+	const char *obj = test_scratch("box.obj"), *amc = test_scratch("wave.amc");
+	snprintf(image, sizeof image, "%s", test_scratch("small.skn"));
 	FILE *f = fopen(obj, "w");
 	assert_non_null(f);
 	fputs(box, f);
@@ -206,7 +172,7 @@ static const char *small_image(void)
 		fprintf(f, "%d\nroot %g 0 0 0 %g 0\nupper %g 0 %g\nlower %g %g\n", i, i * 0.01, i * 0.5,
 			30 * sin(i * 0.1), 10 * cos(i * 0.07), 45 * sin(i * 0.05), -20.0 + i * 0.1);
 	fclose(f);
-	assert_int_equal(run("%s pack tests/data/tiny.asf tests/data/tiny.amc '%s' --mesh '%s' "
+	assert_int_equal(test_run("%s pack tests/data/tiny.asf tests/data/tiny.amc '%s' --mesh '%s' "
 			     "--block-size 512 --sequence 3 -o '%s' >/dev/null",
 			     test_tool_path("skintool"), amc, obj, image), 0);
 	return image;
@@ -217,7 +183,7 @@ static void test_info_names_every_block(void **state)
 	(void)state;
 	const char *image = small_image();
 	char bad[512];
-	snprintf(bad, sizeof bad, "%s", tmp("small_bad.skn"));
+	snprintf(bad, sizeof bad, "%s", test_scratch("small_bad.skn"));
 	long blocks = file_size(image) / 512;
 	assert_true(blocks >= 5);
 	assert_int_equal(info_names(image, -1), 0);
@@ -238,9 +204,9 @@ static void test_info_random_bytes_of_big_image(void **state)
 	snprintf(asf, sizeof asf, "%s", test_data_path("mocap/cmu/02.asf"));
 	snprintf(amc, sizeof amc, "%s", test_data_path("mocap/cmu/02_01.amc"));
 	char image[512], bad[512];
-	snprintf(image, sizeof image, "%s", tmp("big.skn"));
-	snprintf(bad, sizeof bad, "%s", tmp("big_bad.skn"));
-	assert_int_equal(run("%s pack '%s' '%s' -o '%s' >/dev/null", test_tool_path("skintool"), asf, amc, image), 0);
+	snprintf(image, sizeof image, "%s", test_scratch("big.skn"));
+	snprintf(bad, sizeof bad, "%s", test_scratch("big_bad.skn"));
+	assert_int_equal(test_run("%s pack '%s' '%s' -o '%s' >/dev/null", test_tool_path("skintool"), asf, amc, image), 0);
 	long size = file_size(image);
 	srand(11);
 	for (int k = 0; k < 12; k++) {
@@ -272,8 +238,8 @@ static void set_version(const char *path, int version)
 
 static void expect_info(const char *image, int status, const char *needle)
 {
-	const char *out = tmp("info2.txt");
-	assert_int_equal(run("%s info '%s' >'%s' 2>&1", test_tool_path("skintool"), image, out), status);
+	const char *out = test_scratch("info2.txt");
+	assert_int_equal(test_run("%s info '%s' >'%s' 2>&1", test_tool_path("skintool"), image, out), status);
 	char *text = slurp(out);
 	if (!strstr(text, needle))
 		fail_msg("expected '%s' in:\n%s", needle, text);
@@ -285,7 +251,7 @@ static void test_info_refuses_truncated_and_wrong_version(void **state)
 	(void)state;
 	const char *image = small_image();
 	char bad[512];
-	snprintf(bad, sizeof bad, "%s", tmp("cut.skn"));
+	snprintf(bad, sizeof bad, "%s", test_scratch("cut.skn"));
 	long size = file_size(image);
 	copy(image, bad);
 	assert_int_equal(truncate(bad, size - 1024), 0);
@@ -299,13 +265,13 @@ static void test_info_refuses_truncated_and_wrong_version(void **state)
 	copy(image, bad);
 	set_version(bad, 1);
 	expect_info(bad, 0, "all good");
-	expect_info(tmp("missing.skn"), 1, "cannot open");
+	expect_info(test_scratch("missing.skn"), 1, "cannot open");
 }
 
 /* skinplay headless on the image; returns its status, log in log. */
 static int play(const char *args, const char *log)
 {
-	return run("%s %s --platform surfaceless --size 320x180 >'%s' 2>&1", test_tool_path("skinplay"), args, log);
+	return test_run("%s %s --platform surfaceless --size 320x180 >'%s' 2>&1", test_tool_path("skinplay"), args, log);
 }
 
 static int count(const char *text, const char *needle)
@@ -324,8 +290,8 @@ static void test_skinplay_holds_over_a_bad_block(void **state)
 	char asf[1024], amc[1024], args[2048], needle[128];
 	snprintf(asf, sizeof asf, "%s", test_data_path("mocap/cmu/09.asf"));
 	snprintf(amc, sizeof amc, "%s", test_data_path("mocap/cmu/09_06.amc"));
-	const char *image = tmp("walk.skn"), *bad = tmp("walk_bad.skn"), *log = tmp("play.log");
-	assert_int_equal(run("%s pack '%s' '%s' --sequence 10 -o '%s' >/dev/null", test_tool_path("skintool"), asf,
+	const char *image = test_scratch("walk.skn"), *bad = test_scratch("walk_bad.skn"), *log = test_scratch("play.log");
+	assert_int_equal(test_run("%s pack '%s' '%s' --sequence 10 -o '%s' >/dev/null", test_tool_path("skintool"), asf,
 			     amc, image), 0);
 	/* the image's third frame block: the clip's frames 65..96 */
 	static skp_image im;
@@ -349,8 +315,8 @@ static void test_skinplay_holds_over_a_bad_block(void **state)
 	free(text);
 
 	/* two slots: the damaged one is newer, the intact one plays */
-	const char *newer = tmp("walk_newer.skn");
-	assert_int_equal(run("%s pack '%s' '%s' --sequence 20 -o '%s' >/dev/null", test_tool_path("skintool"), asf,
+	const char *newer = test_scratch("walk_newer.skn");
+	assert_int_equal(test_run("%s pack '%s' '%s' --sequence 20 -o '%s' >/dev/null", test_tool_path("skintool"), asf,
 			     amc, newer), 0);
 	snprintf(args, sizeof args, "--image '%s' --image '%s' --frames 2", newer, image);
 	assert_int_equal(play(args, log), 0);
@@ -392,5 +358,5 @@ int main(void)
 		cmocka_unit_test(test_info_refuses_truncated_and_wrong_version),
 		cmocka_unit_test(test_skinplay_holds_over_a_bad_block),
 	};
-	return cmocka_run_group_tests(tests, setup, teardown);
+	return cmocka_run_group_tests(tests, test_scratch_setup, test_scratch_teardown);
 }

@@ -1,0 +1,20 @@
+/* Running the built tools from integration tests, in a scratch directory
+ * that the group setup creates and the teardown removes. */
+#ifndef TEST_RUN_H
+#define TEST_RUN_H
+
+/* cmocka group setup/teardown: a fresh /tmp/skp_test_XXXXXX */
+int test_scratch_setup(void **state);
+int test_scratch_teardown(void **state);
+
+/* the scratch directory itself */
+const char *test_scratch_dir(void);
+
+/* "<scratch>/<name>" in one of 64 rotating static buffers */
+const char *test_scratch(const char *name);
+
+/* Runs a shell command built like printf; returns its exit status, or -1
+ * when it did not exit normally (a crash). */
+int test_run(const char *fmt, ...) __attribute__((format(printf, 1, 2)));
+
+#endif
