@@ -6,7 +6,7 @@ BOARD_CFLAGS  := -O2 -g
 SIMD          ?= avx2
 # Debian packages `make deps` installs and the pkg-config modules that prove them.
 DEB_PKGS      := pkg-config libcmocka-dev libegl-dev libgles-dev libosmesa6-dev \
-                 libgbm-dev libdrm-dev libgpiod-dev libpng-dev libx11-dev xvfb
+                 libgbm-dev libdrm-dev libgpiod-dev libpng-dev libx11-dev xvfb chromium
 PC_MODULES    := cmocka egl glesv2 osmesa gbm libdrm libgpiod libpng x11
-# programs the tests use (Xvfb: the X11 display test)
-DEB_TOOLS     := Xvfb
+# programs the tests use (Xvfb: the X11 display test; chromium: the report page)
+DEB_TOOLS     := Xvfb chromium
