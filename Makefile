@@ -26,6 +26,10 @@ ifeq ($(SIMD),avx2)
   SIMD_DEFS  := -DSKP_SIMD_AVX2
   SIMD_FLAGS := -mavx2 -mfma
 endif
+# NEON is part of AArch64: no flags, only the kernels (app/skin_neon.c).
+ifeq ($(SIMD),neon)
+  SIMD_DEFS  := -DSKP_SIMD_NEON
+endif
 
 # pkg-config for the board's architecture (board.mk may set a cross one).
 PKG_CONFIG ?= pkg-config

@@ -205,7 +205,7 @@ static skp_status get_u8(skp_image *im, uint8_t *v, skp_error *err)
 
 static skp_status get_u16(skp_image *im, uint16_t *v, skp_error *err)
 {
-	uint8_t b[2];
+	uint8_t b[2] = { 0, 0 }; /* decoded even when the read failed */
 	skp_status rc = sec_get(im, b, 2, err);
 	*v = le_get16(b);
 	return rc;
@@ -213,7 +213,7 @@ static skp_status get_u16(skp_image *im, uint16_t *v, skp_error *err)
 
 static skp_status get_u32(skp_image *im, uint32_t *v, skp_error *err)
 {
-	uint8_t b[4];
+	uint8_t b[4] = { 0, 0, 0, 0 }; /* decoded even when the read failed */
 	skp_status rc = sec_get(im, b, 4, err);
 	*v = le_get32(b);
 	return rc;
@@ -342,9 +342,10 @@ static skp_status check_bone(skp_image *im, const skel *s, int i, int *dof, skp_
 
 static skp_status get_bone(skp_image *im, skel_bone *b, skp_error *err)
 {
-	uint32_t id;
-	uint16_t parent;
-	float rot[4];
+	/* zeroed: the bone is filled below even when a read failed */
+	uint32_t id = 0;
+	uint16_t parent = 0;
+	float rot[4] = { 0.0f, 0.0f, 0.0f, 0.0f };
 	skp_status rc = get_str(im, b->name, err);
 	if (!rc) rc = get_u32(im, &id, err);
 	if (!rc) rc = get_u16(im, &parent, err);

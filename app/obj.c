@@ -135,7 +135,7 @@ static skp_status parse_corner(obj_state *st, char *tok, obj_corner *c)
 		*slash = '\0';
 		part[i] = slash + 1;
 	}
-	long v, vt, vn = -1;
+	long v = 0, vt = 0, vn = -1; /* set on every path: c is filled even on error */
 	skp_status rc = resolve(st, part[0], "vertex", st->w->file_verts, &v);
 	if (!rc && parts >= 2 && (parts == 2 || part[1][0] != '\0'))
 		rc = resolve(st, part[1], "texture", st->w->file_texcoords, &vt);

@@ -26,6 +26,13 @@ void skin_dqbs_fixed_avx2(const skin_soa *in, const skin_bones *b, int first, in
 #define DQBS skin_dqbs_avx2
 #define DQBS_FIXED skin_dqbs_fixed_avx2
 #define SIMD_NAME "avx2+fma"
+#elif defined(SKP_SIMD_NEON)
+void skin_lbs_neon(const skin_soa *in, const skin_bones *b, int first, int end, const skin_out *out);
+void skin_dqbs_neon(const skin_soa *in, const skin_bones *b, int first, int end, const skin_out *out);
+#define LBS skin_lbs_neon
+#define DQBS skin_dqbs_neon
+#define DQBS_FIXED skin_dqbs_fixed /* app/skin_neon.c: the fixed kernel stays scalar */
+#define SIMD_NAME "neon"
 #else
 #define LBS skin_lbs_scalar
 #define DQBS skin_dqbs_scalar

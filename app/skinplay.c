@@ -236,7 +236,8 @@ static void log_second(player *p, timing *t, uint64_t now)
 	t->since = now;
 }
 
-/* The next frame of the clip, looping on a display. 1, 0 at the end, -1. */
+/* The next frame of the clip, looping on a display and whenever --frames
+ * asks for more frames than the clip has (`make soak`). 1, 0 at the end, -1. */
 static int next_frame(player *p)
 {
 	if (p->pending) {
@@ -244,7 +245,7 @@ static int next_frame(player *p)
 		return 1;
 	}
 	int r = p->o.image_count ? show_next_frame(&p->show, &p->frame) : tool_motion_next(&p->motion, &p->frame);
-	if (r != 0 || p->headless || p->o.frames >= 0)
+	if (r != 0 || (p->headless && p->o.frames < 0))
 		return r;
 	if (p->o.image_count) {
 		show_rewind(&p->show);

@@ -38,6 +38,7 @@ FUZZ_SEEDS_amc := tests/data tests/data/bad
 FUZZ_SEEDS_obj := tests/fuzz/seeds/obj
 FUZZ_SEEDS_ini := board/host board/rpi4
 FUZZ_SEEDS_board_config := board/host board/rpi4
+FUZZ_SEEDS_image := tests/fuzz/seeds/image
 
 # Each target runs SECONDS on a corpus kept in the build directory. A crash
 # leaves its input in $(FUZZ_OUT)/crash/<target>/: fix the parser, copy the
@@ -60,3 +61,15 @@ fuzz-smoke:
 	@$(MAKE) --no-print-directory fuzz SECONDS=10
 
 -include $(wildcard $(FUZZ_OUT)/app/*.d $(FUZZ_OUT)/tests/fuzz/*.d)
+
+# Soak: tests/soak.sh on the host build (not part of `make test`: about an
+# hour for the default million frames at 160x90).
+SOAK_FRAMES ?= 1000000
+SOAK_EVERY  ?= 5
+soak: all
+	sh tests/soak.sh $(OUT) $(SOAK_FRAMES) $(SOAK_EVERY)
+
+# Static analysis (cppcheck and clang-tidy are Debian packages: cppcheck,
+# clang-tidy). Suppressions, each with its reason: tests/lint/*.supp.
+lint:
+	@sh tests/lint/lint.sh $(BOARD) "$(DISPLAY_CFLAGS)"

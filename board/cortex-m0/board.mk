@@ -22,3 +22,9 @@ EMB_STRIDE    := 140
 DEB_PKGS      := gcc-arm-none-eabi libnewlib-arm-none-eabi qemu-system-arm
 MCU_NEED_CMDS := arm-none-eabi-gcc qemu-system-arm
 MCU_NEED_FILES := /usr/lib/arm-none-eabi/include/newlib.h
+
+# Its own build directory unless BUILD= is given, so that switching between
+# boards rebuilds nothing that another board built.
+ifeq ($(origin BUILD),file)
+BUILD := build/$(BOARD)
+endif

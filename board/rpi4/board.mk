@@ -9,8 +9,8 @@ AR            := $(CROSS_COMPILE)ar
 NM            := $(CROSS_COMPILE)nm
 SIZE          := $(CROSS_COMPILE)size
 BOARD_CFLAGS  := -O2 -g -mcpu=cortex-a72
-# No AVX2 on ARM: the portable kernels (NEON is left to the compiler).
-SIMD          := scalar
+# No AVX2 on ARM: NEON float kernels (app/skin_neon.c), or SIMD=scalar.
+SIMD          ?= neon
 DEB_PKGS      := pkg-config libcmocka-dev libegl-dev libgles-dev libosmesa6-dev \
                  libgbm-dev libdrm-dev libgpiod-dev libpng-dev libx11-dev
 PC_MODULES    := cmocka egl glesv2 osmesa gbm libdrm libgpiod libpng x11
@@ -30,7 +30,13 @@ DEB_TOOLS     := $(CC) qemu-aarch64-static
 DEPS_PREPARE  := dpkg --add-architecture arm64 &&
 PKG_CONFIG    := PKG_CONFIG_LIBDIR=/usr/lib/aarch64-linux-gnu/pkgconfig:/usr/share/pkgconfig pkg-config
 export QEMU_LD_PREFIX := /usr/aarch64-linux-gnu
-RPI4_QEMU_SKIP := test_render test_display test_kiosk test_image_cli
+RPI4_QEMU_SKIP := test_render test_display test_kiosk test_image_cli test_compare_report
 TEST_WRAP     := sh tests/cross_run.sh aarch64 "$(RPI4_QEMU_SKIP)" --
 endif
+endif
+
+# Its own build directory unless BUILD= is given, so that switching between
+# boards rebuilds nothing that another board built.
+ifeq ($(origin BUILD),file)
+BUILD := build/$(BOARD)
 endif

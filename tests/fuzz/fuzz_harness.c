@@ -3,10 +3,15 @@
  * fixed line buffer and its chunk boundaries are exercised as with a file. */
 #include "fuzz_harness.h"
 
+#include <string.h>
+
 #include "amc.h"
 #include "asf.h"
 #include "board_config.h"
+#include "crc32.h"
 #include "fk.h"
+#include "image_play.h"
+#include "image_read.h"
 #include "ini.h"
 #include "obj.h"
 #include "skp_reader.h"
@@ -93,11 +98,61 @@ int fuzz_board_config(const uint8_t *data, size_t size)
 	return 0;
 }
 
+/* The image reader behind its CRCs: every block's CRC-32 and the header's
+ * are recomputed over the input first, or the fuzzer would spend its time
+ * on CRC mismatches (tests/unit/test_image.c tests those). Then what
+ * skinplay does with an image: open, skeleton, body, every clip's frames. */
+#define FUZZ_IMAGE_MAX (64 * 1024)
+
+static void image_fix_crcs(uint8_t *d, size_t size, uint32_t bs)
+{
+	if (size >= SKP_IMAGE_BLOCK_HDR + SKP_IMAGE_HEADER_SIZE) {
+		uint8_t *h = d + SKP_IMAGE_BLOCK_HDR;
+		le_put32(h + SKP_IMAGE_HEADER_SIZE - 4, crc32_compute(h, SKP_IMAGE_HEADER_SIZE - 4));
+	}
+	for (size_t at = 0; at + bs <= size; at += bs)
+		le_put32(d + at + bs - 4, crc32_compute(d + at, bs - 4));
+}
+
+int fuzz_image(const uint8_t *data, size_t size)
+{
+	static uint8_t buf[FUZZ_IMAGE_MAX];
+	static skp_image im;
+	static skp_player player;
+	static mesh m;
+	static skin_weights w;
+	static float bind_values[SKP_MAX_DOF];
+	static amc_frame frame;
+	if (size > sizeof buf)
+		size = sizeof buf;
+	memcpy(buf, data, size);
+	uint32_t bs = skp_image_block_size_hint(buf, (uint32_t)size);
+	if (bs == 0)
+		bs = SKP_IMAGE_MIN_BLOCK;
+	image_fix_crcs(buf, size, bs);
+	skp_mem_blockdev mb;
+	skp_blockdev dev = skp_mem_blockdev_ro(&mb, buf, size, bs);
+	if (skp_image_open(&im, &dev, &err) != SKP_OK || skp_image_load_skel(&im, &sk, &err) != SKP_OK)
+		return 0;
+	long bind_number;
+	skp_image_load_bind(&im, &sk, &m, &w, bind_values, &bind_number, &err);
+	for (int c = 0; c < im.clip_count; c++) {
+		if (skp_player_open(&player, &im, c, &err) != SKP_OK)
+			continue;
+		for (int i = 0; i < 4096 && skp_player_next(&player, &frame, &err) > 0; i++)
+			;
+		skp_player_seek(&player, 1);
+		skp_player_next(&player, &frame, &err);
+	}
+	return 0;
+}
+
 const fuzz_target fuzz_targets[] = {
 	{ "asf", fuzz_asf },
 	{ "amc", fuzz_amc },
 	{ "obj", fuzz_obj },
 	{ "ini", fuzz_ini },
 	{ "board_config", fuzz_board_config },
+	{ "image", fuzz_image },
 	{ NULL, NULL },
 };

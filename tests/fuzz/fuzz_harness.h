@@ -20,6 +20,7 @@ int fuzz_amc(const uint8_t *data, size_t size);
 int fuzz_obj(const uint8_t *data, size_t size);
 int fuzz_ini(const uint8_t *data, size_t size);
 int fuzz_board_config(const uint8_t *data, size_t size);
+int fuzz_image(const uint8_t *data, size_t size);
 
 /* Every harness, NULL-terminated. */
 extern const fuzz_target fuzz_targets[];

@@ -1,0 +1,61 @@
+#!/bin/sh
+# Static analysis of app/ and platform/: cppcheck, then clang-tidy (the
+# clang static analyzer and the bugprone checks that are not style).
+# Fails on any finding not listed, with its reason, in tests/lint/*.supp.
+# Usage: lint.sh BOARD "EXTRA CFLAGS (pkg-config of the display libs)"
+board=${1:-host}; extra=$2
+fail=0
+
+if command -v cppcheck >/dev/null 2>&1; then
+	out=$(cppcheck -q --enable=warning,portability,performance --std=c11 --inline-suppr \
+		--suppressions-list=tests/lint/cppcheck.supp -Iapp -Iboard/"$board" -Iplatform \
+		-DSKP_SIMD_AVX2 --error-exitcode=1 \
+		--template='{file}:{line}: {severity} [{id}] {message}' app platform 2>&1)
+	rc=$?
+	if [ $rc -ne 0 ] || [ -n "$out" ]; then
+		echo "$out"
+		echo "lint: cppcheck: findings above (fix them, or justify in tests/lint/cppcheck.supp)"
+		fail=1
+	else
+		echo "lint: cppcheck: app/ platform/: no findings ($(grep -c '^[a-zA-Z]' tests/lint/cppcheck.supp) justified suppressions)"
+	fi
+else
+	echo "lint: cppcheck not installed (apt-get install cppcheck)"; fail=1
+fi
+
+if command -v clang-tidy >/dev/null 2>&1; then
+	checks='-*,clang-analyzer-*,-clang-analyzer-security.insecureAPI.*,-clang-analyzer-security.FloatLoopCounter'
+	# bugprone, less the style-only ones: "!strcmp()" is this code's idiom,
+	# _GNU_SOURCE is how platform/ asks for Linux APIs, binary magic is
+	# copied without a NUL, and the rest are opinions about signatures.
+	checks="$checks,bugprone-*,-bugprone-easily-swappable-parameters,-bugprone-narrowing-conversions"
+	checks="$checks,-bugprone-implicit-widening-of-multiplication-result,-bugprone-reserved-identifier"
+	checks="$checks,-bugprone-suspicious-string-compare,-bugprone-not-null-terminated-result,-bugprone-branch-clone"
+	log=$(mktemp); trap 'rm -f "$log"' EXIT
+	for f in app/*.c platform/*.c; do
+		case $f in
+		app/skintool*|app/skinplay*|app/cli_*|platform/*) std=gnu11 ;;
+		*) std=c11 ;;
+		esac
+		simd=""
+		case $f in *_avx2.c) simd="-mavx2 -mfma" ;; esac
+		# shellcheck disable=SC2086
+		clang-tidy -quiet --checks="$checks" "$f" -- -std=$std -Iapp -Iboard/"$board" -Iplatform \
+			-DSKP_SIMD_AVX2 $simd $extra 2>/dev/null | grep -E '^[^ ]+:[0-9]+:[0-9]+: (warning|error):' >>"$log"
+	done
+	new=$(sort -u "$log" | while IFS= read -r line; do
+		file=$(echo "$line" | cut -d: -f1 | sed "s|^$(pwd)/||")
+		check=$(echo "$line" | sed -n 's/.*\[\([^]]*\)\]$/\1/p')
+		grep -qx "$file:$check" tests/lint/clang-tidy.supp || echo "$line"
+	done)
+	if [ -n "$new" ]; then
+		echo "$new"
+		echo "lint: clang-tidy: findings above (fix them, or justify in tests/lint/clang-tidy.supp)"
+		fail=1
+	else
+		echo "lint: clang-tidy: app/ platform/: no findings beyond $(grep -c '^[a-z]' tests/lint/clang-tidy.supp) justified in tests/lint/clang-tidy.supp"
+	fi
+else
+	echo "lint: clang-tidy not installed (apt-get install clang-tidy)"; fail=1
+fi
+exit $fail

@@ -1,0 +1,95 @@
+#!/bin/sh
+# Soak: skinplay headless for many frames on a damaged flash image with a
+# random button script; checks that it exits cleanly, that its resident
+# memory stays flat after warm-up, and that every injected fault was logged.
+# Usage: soak.sh BUILD_DIR FRAMES [SAMPLE_SECONDS]      (make soak)
+#
+# Faults: three blocks of the clip get a corrupted byte (a CRC mismatch,
+# persistent like a worn flash page). skinplay must log each of them once
+# ("image: block N bad") and hold the last good frame over it on every loop.
+# Buttons: 500 random presses of ALGO/PLAY/NEXT/VIEW (short and long) from a
+# fixed seed, spread over the expected run time, from 20 s on: the first loop
+# of the clip plays through every damaged block.
+set -u
+out=$1; frames=$2; every=${3:-5}
+tool=$out/skintool; play=$out/skinplay; amc=$out/assets/demo.amc
+dir=$out/soak
+mkdir -p "$dir" || exit 1
+for f in "$tool" "$play" "$amc"; do
+	[ -e "$f" ] || { echo "soak: $f missing (make all first)"; exit 1; }
+done
+
+"$tool" pack assets/demo.asf "$amc" -o "$dir/show.skn" >"$dir/pack.log" 2>&1 || { cat "$dir/pack.log"; exit 1; }
+bs=$("$tool" info "$dir/show.skn" | sed -n 's/^ *blocks *[0-9]* of \([0-9]*\) bytes.*/\1/p')
+range=$("$tool" info "$dir/show.skn" | sed -n 's/^ *clip 0 .* blocks \([0-9]*\)\.\.\([0-9]*\) .*/\1 \2/p')
+set -- $range
+[ -n "$bs" ] && [ $# = 2 ] || { echo "soak: cannot read the image layout"; exit 1; }
+first=$1; last=$2
+faults="$((first + 1)) $(((first + last) / 2)) $((last - 1))"
+cp "$dir/show.skn" "$dir/damaged.skn"
+for b in $faults; do
+	off=$((b * bs + 100))
+	byte=$(od -An -tu1 -j "$off" -N1 "$dir/damaged.skn" | tr -d ' ')
+	printf "$(printf '\\%03o' $((byte ^ 0x5a)))" | dd of="$dir/damaged.skn" bs=1 seek="$off" conv=notrunc status=none
+done
+
+# Headless, script time is frame time: frame n is at n * 1000 / 120 ms (the
+# demo clip's rate). Presses from 20 s (frame 2400) to the end of the run.
+span_ms=$((frames * 1000 / 120 - 20000))
+[ "$span_ms" -lt 1000 ] && span_ms=1000
+awk -v n=500 -v span="$span_ms" 'BEGIN {
+	srand(20261121); split("ALGO PLAY NEXT VIEW", name, " ");
+	print "# soak: random presses (tests/soak.sh)";
+	for (i = 0; i < n; i++) {
+		step = span / n; t = 20000 + int(step * (i + rand() * 0.3)); b = name[1 + int(rand() * 4)];
+		hold = rand() < 0.2 && step > 2000 ? 900 : int(step / 3 < 80 ? step / 3 : 80) + 1;
+		print t, b, "press"; print t + hold, b, "release";
+	}
+}' >"$dir/buttons.txt"
+
+echo "soak: $frames frames, image $dir/damaged.skn (bad blocks: $faults), buttons $dir/buttons.txt"
+start=$(date +%s)
+"$play" --image "$dir/damaged.skn" --platform surfaceless --size 160x90 --frames "$frames" \
+	--hud-fps off --input "script:$dir/buttons.txt" >"$dir/skinplay.log" 2>&1 &
+pid=$!
+: >"$dir/rss.txt"
+while kill -0 "$pid" 2>/dev/null; do
+	rss=$(sed -n 's/^VmRSS:[[:space:]]*\([0-9]*\) kB/\1/p' "/proc/$pid/status" 2>/dev/null)
+	[ -n "$rss" ] && echo "$(($(date +%s) - start)) $rss" >>"$dir/rss.txt"
+	sleep "$every"
+done
+wait "$pid"; rc=$?
+secs=$(($(date +%s) - start))
+
+fail=0
+grep '^played' "$dir/skinplay.log"
+[ "$rc" = 0 ] || { echo "soak: FAILED: skinplay exited with status $rc (log $dir/skinplay.log)"; fail=1; }
+grep -q "^played $frames frames" "$dir/skinplay.log" || { echo "soak: FAILED: did not play $frames frames"; fail=1; }
+for b in $faults; do
+	n=$(grep -c "^image: block $b bad" "$dir/skinplay.log")
+	[ "$n" -ge 1 ] || { echo "soak: FAILED: injected fault in block $b was not logged"; fail=1; }
+done
+echo "soak: injected faults in blocks $faults: $(grep -c '^image: block [0-9]* bad' "$dir/skinplay.log") logged, playback survived"
+echo "soak: input events handled: $(grep -c '^input:' "$dir/skinplay.log")"
+# Flat: views and skinning modes come and go with the buttons, so RSS moves
+# by a few MiB (llvmpipe's buffers); a leak is a level that keeps rising.
+# Compare the peak of the last quarter of the run with the peak of the
+# quarter after warm-up (the first 10%): at most 2 MiB or 2% higher.
+awk -v secs="$secs" '
+	{ t[NR] = $1; r[NR] = $2 }
+	END {
+		if (NR < 8) { print "soak: too few RSS samples (run longer)"; exit 1 }
+		w = 1; while (w < NR && t[w] < secs * 0.1) w++;
+		e = w; while (e < NR && t[e] < secs * 0.35) e++;
+		l = NR; while (l > e && t[l] > secs * 0.75) l--;
+		early = 0; for (i = w; i <= e; i++) if (r[i] > early) early = r[i];
+		late = 0; for (i = l; i <= NR; i++) if (r[i] > late) late = r[i];
+		max = 0; for (i = w; i <= NR; i++) if (r[i] > max) max = r[i];
+		printf "soak: VmRSS kB: first %d, after warm-up (%d s) %d, last %d, max %d; peak %d s-%d s %d, peak of the last quarter %d; %d samples over %d s\n",
+			r[1], t[w], r[w], r[NR], max, t[w], t[e], early, late, NR, secs;
+		lim = early / 50; if (lim < 2048) lim = 2048;
+		if (late - early > lim) { printf "soak: FAILED: resident memory rose by %d kB (limit %d)\n", late - early, lim; exit 1 }
+		printf "soak: resident memory flat after warm-up (late peak - early peak = %d kB, limit %d)\n", late - early, lim;
+	}' "$dir/rss.txt" || fail=1
+[ $fail = 0 ] && echo "soak: passed" || echo "soak: FAILED"
+exit $fail
