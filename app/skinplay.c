@@ -268,6 +268,7 @@ static int draw_one(player *p, timing *t, double fps, render_frame *f)
 	uint64_t t2 = clock_now_ns();
 	hud_text(p, f, fps, lines);
 	render_draw(&p->r, f);
+	memset(f->hud, 0, sizeof f->hud); /* the lines live on this stack frame */
 	p->gl.Finish();
 	uint64_t t3 = clock_now_ns();
 	t->skin += t1 - t0;

@@ -52,7 +52,8 @@ static int sf_write(void *ctx, uint32_t block, const void *buf)
 void storage_file_set_block_size(storage_file *sf, uint32_t block_size)
 {
 	sf->bd.block_size = block_size;
-	sf->bd.block_count = (uint32_t)((sf->size + block_size - 1) / block_size);
+	/* a zero size means "not known yet": no blocks rather than a division by zero */
+	sf->bd.block_count = block_size ? (uint32_t)((sf->size + block_size - 1) / block_size) : 0;
 }
 
 static int sf_init(storage_file *sf, int fd, uint32_t block_size, int writable)
