@@ -77,12 +77,10 @@ typedef struct skin_bones {
 	/* flat copies for SIMD gathers: 3x4 row-major, and real|dual */
 	float lbs12[SKP_MAX_BONES + 1][12];
 	float dq8[SKP_MAX_BONES + 1][8];
-	/* The DQBS sign fix depends only on the pair (pivot bone, bone): its
-	 * decision for every pair, computed once per frame with the same dot
-	 * products the scalar kernels use, so the SIMD kernels look it up
-	 * instead of recomputing it per vertex. flip_f holds the float sign
-	 * bit (0x80000000 or 0), flip_x a mask (-1 or 0) for the fixed path. */
-	uint32_t flip_f[SKP_MAX_BONES + 1][SKP_MAX_BONES + 1];
+	/* The DQBS sign fix depends only on the pair (pivot bone, bone): the
+	 * fixed-point decision for every pair, computed once per frame with the
+	 * dot product the scalar kernel uses, so the SIMD fixed kernel looks it
+	 * up instead of recomputing it per vertex: a mask, -1 (flip) or 0. */
 	int32_t flip_x[SKP_MAX_BONES + 1][SKP_MAX_BONES + 1];
 } skin_bones;
 

@@ -39,7 +39,6 @@ static void compute_flips(skin_bones *out)
 		int p = slots[a];
 		for (int c = 0; c < n; c++) {
 			int k = slots[c];
-			out->flip_f[p][k] = quat_dot(out->dq[k].real, out->dq[p].real) < 0.0f ? 0x80000000u : 0;
 			out->flip_x[p][k] = fx_quat_dot(out->fdq[k].real, out->fdq[p].real) < 0 ? -1 : 0;
 		}
 	}
