@@ -13,6 +13,7 @@
 #include "dq.h"
 #include "quat.h"
 #include "rigid.h"
+#include "test_dref.h"
 #include "test_rng.h"
 #include "vec3.h"
 
@@ -26,15 +27,7 @@ static int rng_reset(void **state)
 	return 0;
 }
 
-
 /* ---- double references ---------------------------------------------------- */
-
-typedef struct dvec { double x, y, z; } dvec;
-/* Double rigid transform p' = R p + t. */
-typedef struct drigid { double r[3][3]; dvec t; } drigid;
-
-static dvec dv(double x, double y, double z) { dvec r = { x, y, z }; return r; }
-static dvec dv_f(vec3 a) { return dv(a.x, a.y, a.z); }
 
 static void rodrigues(dvec k, double angle, double m[3][3])
 {
@@ -46,19 +39,6 @@ static void rodrigues(dvec k, double angle, double m[3][3])
 	for (int i = 0; i < 3; i++)
 		for (int j = 0; j < 3; j++)
 			m[i][j] = (i == j ? c : 0.0) + s * cross[i][j] + C * kv[i] * kv[j];
-}
-
-static dvec dmat_apply(const double m[3][3], dvec v)
-{
-	return dv(m[0][0] * v.x + m[0][1] * v.y + m[0][2] * v.z,
-		  m[1][0] * v.x + m[1][1] * v.y + m[1][2] * v.z,
-		  m[2][0] * v.x + m[2][1] * v.y + m[2][2] * v.z);
-}
-
-static dvec drigid_apply(const drigid *a, dvec p)
-{
-	dvec r = dmat_apply(a->r, p);
-	return dv(r.x + a->t.x, r.y + a->t.y, r.z + a->t.z);
 }
 
 /* Rotation matrix of any nonzero quaternion, normalised in double:
@@ -104,21 +84,6 @@ static drigid ref_dlb(const dq *bones, const uint16_t *idx, const double *w, int
 
 /* ---- random inputs and checks ----------------------------------------------- */
 
-static vec3 rand_axis(void)
-{
-	for (;;) {
-		double x = test_rng_range(-1, 1), y = test_rng_range(-1, 1), z = test_rng_range(-1, 1);
-		double n = sqrt(x * x + y * y + z * z);
-		if (n > 0.1 && n <= 1.0)
-			return vec3_make((float)(x / n), (float)(y / n), (float)(z / n));
-	}
-}
-
-static vec3 rand_vec(double r)
-{
-	return vec3_make((float)test_rng_range(-r, r), (float)test_rng_range(-r, r), (float)test_rng_range(-r, r));
-}
-
 /* A random bone: float dq plus the exact double transform it stands for. */
 static dq rand_bone(drigid *ref, double tmax)
 {
@@ -128,25 +93,6 @@ static dq rand_bone(drigid *ref, double tmax)
 	rodrigues(dv_f(k), ang, ref->r);
 	ref->t = dv_f(t);
 	return dq_from_quat_trans(quat_from_axis_angle(k, ang), t);
-}
-
-static double max_err[8];
-
-static void close_to(double got, double want, double tol, int slot, const char *what)
-{
-	double e = fabs(got - want);
-
-	if (e > max_err[slot])
-		max_err[slot] = e;
-	if (!(e <= tol))
-		fail_msg("%s: got %.9g want %.9g (error %.3g > %.3g)", what, got, want, e, tol);
-}
-
-static void vec_close(vec3 got, dvec want, double tol, int slot, const char *what)
-{
-	close_to(got.x, want.x, tol, slot, what);
-	close_to(got.y, want.y, tol, slot, what);
-	close_to(got.z, want.z, tol, slot, what);
 }
 
 static double qnorm(quat q) { return sqrt((double)quat_dot(q, q)); }
@@ -183,7 +129,7 @@ static void test_dq_rigid_round_trip(void **state)
 		close_to(s * back.real.w, d.real.w, 2e-6, 0, "dq_from_rigid real");
 		close_to(s * back.dual.x, d.dual.x, 1e-4, 0, "dq_from_rigid dual");
 	}
-	print_message("dq <-> rigid: max error %.3g (|t| <= 100)\n", max_err[0]);
+	print_message("dq <-> rigid: max error %.3g (|t| <= 100)\n", test_max_err[0]);
 }
 
 static void test_dq_mul_matches_rigid(void **state)
@@ -205,7 +151,7 @@ static void test_dq_mul_matches_rigid(void **state)
 			  3e-4, 1, "dq_mul: b first, then a");
 		close_to(qnorm(ab.real), 1.0, 1e-6, 1, "product stays unit");
 	}
-	print_message("dq_mul: max error %.3g\n", max_err[1]);
+	print_message("dq_mul: max error %.3g\n", test_max_err[1]);
 }
 
 static void test_dq_normalize(void **state)
@@ -234,7 +180,7 @@ static void test_dq_normalize(void **state)
 	dq zero = { { 0, 0, 0, 0 }, { 0, 0, 0, 0 } };
 	dq id = dq_normalize(zero);
 	assert_true(id.real.w == 1.0f && id.dual.x == 0.0f);
-	print_message("dq_normalize: max error %.3g\n", max_err[2]);
+	print_message("dq_normalize: max error %.3g\n", test_max_err[2]);
 }
 
 static void test_dq_transform(void **state)
@@ -250,7 +196,7 @@ static void test_dq_transform(void **state)
 		vec_close(dq_transform_point(&d, p), drigid_apply(&ref, dv_f(p)), 2e-3, 3, "point");
 		vec_close(dq_transform_normal(&d, n), dmat_apply(ref.r, dv_f(n)), 1e-6, 3, "normal");
 	}
-	print_message("dq_transform_point/normal: max error %.3g (|p|, |t| <= 1000)\n", max_err[3]);
+	print_message("dq_transform_point/normal: max error %.3g (|p|, |t| <= 1000)\n", test_max_err[3]);
 }
 
 static void test_blend_single(void **state)
@@ -272,7 +218,7 @@ static void test_blend_single(void **state)
 		vec_close(dq_transform_point(&bn, p), drigid_apply(&ref[idx], dv_f(p)), 2e-4, 4,
 			  "single influence");
 	}
-	print_message("single influence: max error %.3g\n", max_err[4]);
+	print_message("single influence: max error %.3g\n", test_max_err[4]);
 }
 
 static void test_blend_antipodal(void **state)
@@ -295,7 +241,7 @@ static void test_blend_antipodal(void **state)
 		vec3 p = rand_vec(100);
 		vec_close(dq_transform_point(&bn, p), drigid_apply(&ref, dv_f(p)), 2e-4, 5, "antipodal blend");
 	}
-	print_message("antipodal q / -q: max error %.3g\n", max_err[5]);
+	print_message("antipodal q / -q: max error %.3g\n", test_max_err[5]);
 }
 
 /* Angle of q about the unit axis k, in (-pi, pi]. */
@@ -339,7 +285,7 @@ static void test_blend_twist_350(void **state)
 		close_to(p.x, cos(want), 1e-4, 6, "twisted point x");
 		close_to(p.y, sin(want), 1e-4, 6, "twisted point y");
 	}
-	print_message("350-degree twist: max error %.3g rad\n", max_err[6]);
+	print_message("350-degree twist: max error %.3g rad\n", test_max_err[6]);
 }
 
 static void test_blend_same_axis(void **state)
@@ -371,7 +317,7 @@ static void test_blend_same_axis(void **state)
 			fail_msg("same axis: angle %.6f, weighted angle %.6f", got, lin);
 	}
 	print_message("same-axis blend: max error %.3g rad vs exact nlerp, %.3g rad vs weighted angle "
-		      "(tolerance 5e-3)\n", max_err[7], worst_linear);
+		      "(tolerance 5e-3)\n", test_max_err[7], worst_linear);
 }
 
 static void test_blend_random_unit(void **state)

@@ -13,6 +13,7 @@
 
 #include "quat.h"
 #include "rigid.h"
+#include "test_dref.h"
 #include "test_rng.h"
 #include "vec3.h"
 
@@ -28,14 +29,10 @@ static int rng_reset(void **state)
 	return 0;
 }
 
-
 /* ---- double references ---------------------------------------------------- */
 
-typedef struct dvec { double x, y, z; } dvec;
 typedef struct dquat { double w; dvec v; } dquat;
 
-static dvec dv(double x, double y, double z) { dvec r = { x, y, z }; return r; }
-static dvec dv_f(vec3 a) { return dv(a.x, a.y, a.z); }
 static double dv_dot(dvec a, dvec b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
 static dvec dv_cross(dvec a, dvec b)
 {
@@ -67,13 +64,6 @@ static void rodrigues(dvec k, double angle, double m[3][3])
 			m[i][j] = (i == j ? c : 0.0) + s * cross[i][j] + C * kv[i] * kv[j];
 }
 
-static dvec dmat_apply(const double m[3][3], dvec v)
-{
-	return dv(m[0][0] * v.x + m[0][1] * v.y + m[0][2] * v.z,
-		  m[1][0] * v.x + m[1][1] * v.y + m[1][2] * v.z,
-		  m[2][0] * v.x + m[2][1] * v.y + m[2][2] * v.z);
-}
-
 static void dmat_mul(const double a[3][3], const double b[3][3], double r[3][3])
 {
 	for (int i = 0; i < 3; i++)
@@ -85,20 +75,6 @@ static void dmat_mul(const double a[3][3], const double b[3][3], double r[3][3])
 
 /* Unit axis rounded to float, so the reference sees exactly what the code
  * under test sees. */
-static vec3 rand_axis(void)
-{
-	for (;;) {
-		double x = test_rng_range(-1, 1), y = test_rng_range(-1, 1), z = test_rng_range(-1, 1);
-		double n = sqrt(x * x + y * y + z * z);
-		if (n > 0.1 && n <= 1.0)
-			return vec3_make((float)(x / n), (float)(y / n), (float)(z / n));
-	}
-}
-
-static vec3 rand_vec(double r)
-{
-	return vec3_make((float)test_rng_range(-r, r), (float)test_rng_range(-r, r), (float)test_rng_range(-r, r));
-}
 
 /* Reference matrix for a float axis that is unit only to float precision. */
 static void rodrigues_f(vec3 axis, float angle, double m[3][3])
@@ -110,25 +86,6 @@ static void rodrigues_f(vec3 axis, float angle, double m[3][3])
 }
 
 /* ---- checks ----------------------------------------------------------------- */
-
-static double max_err[8];
-
-static void close_to(double got, double want, double tol, int slot, const char *what)
-{
-	double e = fabs(got - want);
-
-	if (e > max_err[slot])
-		max_err[slot] = e;
-	if (!(e <= tol))
-		fail_msg("%s: got %.9g want %.9g (error %.3g > %.3g)", what, got, want, e, tol);
-}
-
-static void vec_close(vec3 got, dvec want, double tol, int slot, const char *what)
-{
-	close_to(got.x, want.x, tol, slot, what);
-	close_to(got.y, want.y, tol, slot, what);
-	close_to(got.z, want.z, tol, slot, what);
-}
 
 static void quat_close(quat got, dquat want, double tol, int slot, const char *what)
 {
@@ -170,7 +127,7 @@ static void test_vec3_ops(void **state)
 	}
 	vec3 z = vec3_normalize(vec3_make(0, 0, 0));
 	assert_true(z.x == 0.0f && z.y == 0.0f && z.z == 0.0f);
-	print_message("vec3: max error %.3g (absolute, operands up to 100)\n", max_err[0]);
+	print_message("vec3: max error %.3g (absolute, operands up to 100)\n", test_max_err[0]);
 }
 
 /* ---- quat ------------------------------------------------------------------- */
@@ -197,7 +154,7 @@ static void test_quat_mul(void **state)
 	quat zero = { 0, 0, 0, 0 };
 	quat id = quat_normalize(zero);
 	assert_true(id.w == 1.0f && id.x == 0.0f && id.y == 0.0f && id.z == 0.0f);
-	print_message("quat_mul/dot/normalize: max error %.3g\n", max_err[1]);
+	print_message("quat_mul/dot/normalize: max error %.3g\n", test_max_err[1]);
 }
 
 static void test_quat_rotate_and_matrix(void **state)
@@ -228,7 +185,7 @@ static void test_quat_rotate_and_matrix(void **state)
 		vec_close(quat_rotate(quat_from_basis_angle(axis, 0.8f), v),
 			  dmat_apply(m, dv_f(v)), 1e-6, 2, "quat_from_basis_angle");
 	}
-	print_message("quat_rotate/quat_to_mat3: max error %.3g\n", max_err[2]);
+	print_message("quat_rotate/quat_to_mat3: max error %.3g\n", test_max_err[2]);
 }
 
 static void test_quat_composition(void **state)
@@ -254,7 +211,7 @@ static void test_quat_composition(void **state)
 		quat qab = quat_mul(quat_from_axis_angle(k, a), quat_from_axis_angle(k2, b));
 		vec_close(quat_rotate(qab, v), dmat_apply(mab, dv_f(v)), 2e-6, 3, "composition order");
 	}
-	print_message("composition: max error %.3g\n", max_err[3]);
+	print_message("composition: max error %.3g\n", test_max_err[3]);
 }
 
 static void check_from_mat3(vec3 k, double ang, double tol)
@@ -295,12 +252,10 @@ static void test_quat_from_mat3(void **state)
 		check_from_mat3(vec3_make(axis == 0, axis == 1, axis == 2), PI, 1e-6);
 	check_from_mat3(vec3_normalize(vec3_make(1, 1, 0)), PI, 1e-6);
 	check_from_mat3(vec3_normalize(vec3_make(1, -1, 1)), PI, 1e-6);
-	print_message("quat_from_mat3 (incl. near 180 deg): max error %.3g\n", max_err[4]);
+	print_message("quat_from_mat3 (incl. near 180 deg): max error %.3g\n", test_max_err[4]);
 }
 
 /* ---- rigid ------------------------------------------------------------------ */
-
-typedef struct drigid { double r[3][3]; dvec t; } drigid;
 
 static rigid rand_rigid(drigid *ref, double tmax)
 {
@@ -310,12 +265,6 @@ static rigid rand_rigid(drigid *ref, double tmax)
 	rodrigues_f(k, ang, ref->r);
 	ref->t = dv_f(t);
 	return rigid_from_quat_trans(quat_from_axis_angle(k, ang), t);
-}
-
-static dvec drigid_apply(const drigid *a, dvec p)
-{
-	dvec r = dmat_apply(a->r, p);
-	return dv(r.x + a->t.x, r.y + a->t.y, r.z + a->t.z);
 }
 
 static void test_rigid(void **state)
@@ -355,7 +304,7 @@ static void test_rigid(void **state)
 		rigid round = rigid_mul(&ia, &a);
 		vec_close(rigid_apply_point(&round, p), dv_f(p), 2e-4, 5, "inverse * a = identity");
 	}
-	print_message("rigid: max error %.3g (points up to |p| + |t| = 270)\n", max_err[5]);
+	print_message("rigid: max error %.3g (points up to |p| + |t| = 270)\n", test_max_err[5]);
 }
 
 int main(void)
