@@ -82,10 +82,23 @@ typedef struct skin_bones {
 	 * dot product the scalar kernel uses, so the SIMD fixed kernel looks it
 	 * up instead of recomputing it per vertex: a mask, -1 (flip) or 0. */
 	int32_t flip_x[SKP_MAX_BONES + 1][SKP_MAX_BONES + 1];
+#ifdef SKP_SIMD_AVX2
+	/* fdq with every component c split as c = hi * 2^16 + lo, lo and hi
+	 * signed 16-bit halves of one word: the AVX2 fixed kernel blends them
+	 * with 16-bit multiply-adds. split_ok is 0 when a component is too
+	 * close to the int32 limits for hi to fit (a translation near the
+	 * fixed-point range): the kernel then takes the scalar path. */
+	int32_t fdq_split[SKP_MAX_BONES + 1][8];
+	int split_ok;
+#endif
 } skin_bones;
 
 void skin_bones_compute(skin_bones *out, const skel *s, const skel_pose *bind,
 			const skel_pose *pose);
+
+/* Recomputes the kernels' lookup tables (flip_x, fdq_split) from fdq, for
+ * a caller that set fdq itself. */
+void skin_bones_derive(skin_bones *out);
 
 /* Where a kernel writes: float kernels xyz triples in pos/nrm, the
  * fixed-point kernel Q16.16 triples (GL_FIXED) in fpos/fnrm. */

@@ -40,6 +40,7 @@ static inline void skin_transpose8(__m256 r[8])
 static inline void skin_transpose8x4(const float *const row[8], __m256 out[4])
 {
 	__m256 a[4];
+	#pragma GCC unroll 8
 	for (int j = 0; j < 4; j++)
 		a[j] = _mm256_insertf128_ps(_mm256_castps128_ps256(_mm_loadu_ps(row[j])),
 					    _mm_loadu_ps(row[j + 4]), 1);

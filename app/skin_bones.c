@@ -44,6 +44,28 @@ static void compute_flips(skin_bones *out)
 	}
 }
 
+#ifdef SKP_SIMD_AVX2
+static void compute_split(skin_bones *out)
+{
+	out->split_ok = 1;
+	for (int b = 0; b <= SKP_MAX_BONES; b++) {
+		if (b >= out->count && b != SKIN_IDENTITY_BONE)
+			continue;
+		const fx_dq *d = &out->fdq[b];
+		const int32_t c[8] = { d->real.w, d->real.x, d->real.y, d->real.z,
+				       d->dual.w, d->dual.x, d->dual.y, d->dual.z };
+		for (int i = 0; i < 8; i++) {
+			int64_t v = c[i];
+			int64_t lo = (int16_t)(uint16_t)((uint64_t)v & 0xffff);
+			int64_t hi = (v - lo) / 65536;
+			if (hi < INT16_MIN || hi > INT16_MAX)
+				out->split_ok = 0;
+			out->fdq_split[b][i] = (int32_t)(((uint32_t)hi << 16) | (uint16_t)lo);
+		}
+	}
+}
+#endif
+
 void skin_bones_compute(skin_bones *out, const skel *s, const skel_pose *bind,
 			const skel_pose *pose)
 {
@@ -54,5 +76,13 @@ void skin_bones_compute(skin_bones *out, const skel *s, const skel_pose *bind,
 		set_bone(out, b, q, t);
 	}
 	set_bone(out, SKIN_IDENTITY_BONE, quat_identity(), vec3_make(0, 0, 0));
+	skin_bones_derive(out);
+}
+
+void skin_bones_derive(skin_bones *out)
+{
 	compute_flips(out);
+#ifdef SKP_SIMD_AVX2
+	compute_split(out);
+#endif
 }

@@ -60,49 +60,91 @@ static __m256i load_weights(const fx_w15 *w, int v)
 	return _mm256_cvtepu16_epi32(_mm_load_si128((const __m128i *)(w + v)));
 }
 
-/* Weights with the sign fix (looked up per bone pair, see skin_bones). */
-static inline __attribute__((always_inline)) void signed_weights(const skin_soa *in,
-								   const skin_bones *b, int v,
-								   __m256i w[SKP_MAX_INFLUENCES])
+/* Signed weights as 16-bit multiply-add operands: (w, 0) multiplies the
+ * low half of a split component, (0, w) the high half. Slot 0 (the pivot,
+ * never flipped) may hold 32768, which int16 cannot: it enters as w - 1 and
+ * blend_half adds its component once more. */
+typedef struct wpair {
+	__m256i lo, hi;
+} wpair;
+
+/* Weights with the sign fix (looked up per bone pair, see skin_bones).
+ * Returns nonzero when a lane breaks what the 16-bit products need and
+ * skin_soa_load guarantees (weights summing to at most 1.0, a full weight
+ * only in slot 0): the caller then takes the scalar path. */
+static inline __attribute__((always_inline)) int blend_weights(const skin_soa *in,
+								const skin_bones *b, int v,
+								wpair w[SKP_MAX_INFLUENCES])
 {
 	const int *flip = &b->flip_x[0][0];
-	w[0] = load_weights(in->fweight[0], v);
-	for (int k = 1; k < SKP_MAX_INFLUENCES; k++) {
-		__m256i neg = _mm256_i32gather_epi32(flip, skin_flip_index(in->bone[0], in->bone[k], v), 4);
-		w[k] = _mm256_sub_epi32(_mm256_xor_si256(load_weights(in->fweight[k], v), neg), neg);
+	const __m256i low16 = _mm256_set1_epi32(0xffff), full = _mm256_set1_epi32(FX_W15_ONE);
+	__m256i bad = _mm256_setzero_si256(), sum = _mm256_setzero_si256();
+#pragma GCC unroll 8
+	for (int k = 0; k < SKP_MAX_INFLUENCES; k++) {
+		__m256i x = load_weights(in->fweight[k], v);
+		sum = _mm256_add_epi32(sum, x);
+		if (k == 0) {
+			x = _mm256_sub_epi32(x, _mm256_set1_epi32(1));
+		} else {
+			__m256i neg = _mm256_i32gather_epi32(flip, skin_flip_index(in->bone[0], in->bone[k], v), 4);
+			bad = _mm256_or_si256(bad, _mm256_cmpeq_epi32(x, full));
+			x = _mm256_sub_epi32(_mm256_xor_si256(x, neg), neg);
+		}
+		w[k].lo = _mm256_and_si256(x, low16);
+		w[k].hi = _mm256_slli_epi32(x, 16);
 	}
+	bad = _mm256_or_si256(bad, _mm256_cmpgt_epi32(sum, full));
+	return !_mm256_testz_si256(bad, bad);
 }
 
-/* One half (real: 0, dual: 4) of the weighted sum, in 64 bits, rounded
- * back to Q30 / fx_pos: a half at a time keeps the accumulators in
- * registers. */
+/* One half (real: 0, dual: 4) of the weighted sum, rounded back to Q30 /
+ * fx_pos. With c = hi 2^16 + lo, sum(w c) = 2^16 sum(w hi) + sum(w lo),
+ * and both sums fit in 32 bits because sum |w| <= 2^15; so the rounded
+ * shift by 15 is 2 sum(w hi) + round(sum(w lo) / 2^15), exactly the
+ * scalar kernel's 64-bit result. */
 static inline __attribute__((always_inline)) void blend_half(const skin_soa *in, const skin_bones *b,
-							       int v, const __m256i w[SKP_MAX_INFLUENCES],
+							       int v, const wpair w[SKP_MAX_INFLUENCES],
 							       int half, __m256i out[4])
 {
-	wide acc[4];
+	__m256i lo[4], hi[4];
+#pragma GCC unroll 8
 	for (int k = 0; k < SKP_MAX_INFLUENCES; k++) {
 		const float *row[8];
 		__m256 d[4];
+#pragma GCC unroll 8
 		for (int j = 0; j < 8; j++)
-			row[j] = (const float *)&b->fdq[in->bone[k][v + j]] + half;
+			row[j] = (const float *)&b->fdq_split[in->bone[k][v + j]][half];
 		skin_transpose8x4(row, d);
+#pragma GCC unroll 8
 		for (int c = 0; c < 4; c++) {
-			wide p = wmul(w[k], _mm256_castps_si256(d[c]));
-			acc[c] = k ? wadd(acc[c], p) : p;
+			__m256i a = _mm256_castps_si256(d[c]);
+			__m256i pl = _mm256_madd_epi16(a, w[k].lo), ph = _mm256_madd_epi16(a, w[k].hi);
+			if (k == 0) {
+				/* the pivot's missing 1 * c */
+				lo[c] = _mm256_add_epi32(pl, _mm256_srai_epi32(_mm256_slli_epi32(a, 16), 16));
+				hi[c] = _mm256_add_epi32(ph, _mm256_srai_epi32(a, 16));
+			} else {
+				lo[c] = _mm256_add_epi32(lo[c], pl);
+				hi[c] = _mm256_add_epi32(hi[c], ph);
+			}
 		}
 	}
+	const __m256i rnd = _mm256_set1_epi32(1 << 14);
+#pragma GCC unroll 8
 	for (int c = 0; c < 4; c++)
-		out[c] = narrow(acc[c], 15);
+		out[c] = _mm256_add_epi32(_mm256_add_epi32(hi[c], hi[c]),
+					  _mm256_srai_epi32(_mm256_add_epi32(lo[c], rnd), 15));
 }
 
-static inline __attribute__((always_inline)) void blend(const skin_soa *in, const skin_bones *b, int v,
-							  __m256i out[8])
+/* Nonzero when the batch must take the scalar path (see blend_weights). */
+static inline __attribute__((always_inline)) int blend(const skin_soa *in, const skin_bones *b, int v,
+							 __m256i out[8])
 {
-	__m256i w[SKP_MAX_INFLUENCES];
-	signed_weights(in, b, v, w);
+	wpair w[SKP_MAX_INFLUENCES];
+	int bad = blend_weights(in, b, v, w);
 	blend_half(in, b, v, w, 0, out);
 	blend_half(in, b, v, w, 4, out + 4);
+	return bad;
 }
 
 static inline __m256i epi64(long long v)
@@ -120,7 +162,7 @@ static inline __m256i mul_round(__m256i a, __m256i b, int s)
 /* fx_rsqrt_q60 on 4 lanes, step for step the same integers, for squared
  * norms in [2^56, 2^62) (every blend with the sign fix: its real part is at
  * least the pivot's weight, 1/4, long). Lanes outside are flagged in *bad. */
-static void rsqrt4(__m256i x, __m256i *m, __m256i *shift, __m256i *bad)
+static inline __attribute__((always_inline)) void rsqrt4(__m256i x, __m256i *m, __m256i *shift, __m256i *bad)
 {
 	__m256i lt60 = _mm256_cmpgt_epi64(epi64(1ll << 60), x);
 	__m256i lt58 = _mm256_cmpgt_epi64(epi64(1ll << 58), x);
@@ -132,6 +174,7 @@ static void rsqrt4(__m256i x, __m256i *m, __m256i *shift, __m256i *bad)
 	__m256i y = _mm256_sub_epi64(epi64((long long)FX_RSQRT_SEED_A),
 				     mul_round(epi64((long long)FX_RSQRT_SEED_B), xq, 30));
 	const __m256i three_halves = epi64(3ll << 30);
+	#pragma GCC unroll 8
 	for (int i = 0; i < FX_RSQRT_STEPS; i++) {
 		__m256i y2 = mul_round(y, y, 31);
 		__m256i h = mul_round(xq, y2, 31);
@@ -144,22 +187,8 @@ static void rsqrt4(__m256i x, __m256i *m, __m256i *shift, __m256i *bad)
 	*shift = _mm256_sub_epi64(epi64(31), e);
 }
 
-/* 1/|real| per lane as multiplier and shift; 1 when a lane is outside what
- * rsqrt4 handles (the caller then runs the scalar kernel on the block). */
-static int reciprocal_norms(const __m256i d[8], __m256i *m, __m256i *shift)
-{
-	wide n2 = wadd(wadd(wmul(d[0], d[0]), wmul(d[1], d[1])),
-		       wadd(wmul(d[2], d[2]), wmul(d[3], d[3])));
-	__m256i me, se, be, mo, so, bo;
-	rsqrt4(n2.e, &me, &se, &be);
-	rsqrt4(n2.o, &mo, &so, &bo);
-	*m = _mm256_blend_epi32(me, _mm256_slli_epi64(mo, 32), 0xAA);
-	*shift = _mm256_blend_epi32(se, _mm256_slli_epi64(so, 32), 0xAA);
-	return !_mm256_testz_si256(_mm256_or_si256(be, bo), _mm256_or_si256(be, bo));
-}
-
 /* v * m >> shift per lane, rounded */
-static __m256i scale(__m256i v, __m256i m, __m256i shift)
+static inline __attribute__((always_inline)) __m256i scale(__m256i v, __m256i m, __m256i shift)
 {
 	wide p = wmul(v, m);
 	__m256i se = _mm256_and_si256(shift, _mm256_set1_epi64x(0xffffffff));
@@ -173,7 +202,7 @@ static __m256i scale(__m256i v, __m256i m, __m256i shift)
 }
 
 /* v + 2 r x (r x v + w v) with r, w in Q30: sums of products in 64 bits */
-static ivec rotate(const __m256i q[4], ivec v)
+static inline __attribute__((always_inline)) ivec rotate(const __m256i q[4], ivec v)
 {
 	__m256i w = q[0];
 	ivec r = { q[1], q[2], q[3] };
@@ -191,7 +220,7 @@ static ivec rotate(const __m256i q[4], ivec v)
 }
 
 /* 2 (w d_v - d_w r_v + r_v x d_v) */
-static ivec translation(const __m256i q[8])
+static inline __attribute__((always_inline)) ivec translation(const __m256i q[8])
 {
 	const __m256i *r = q, *d = q + 4;
 	ivec t = {
@@ -220,33 +249,88 @@ static __m256i q30_to_q16(__m256i v)
 	return _mm256_srai_epi32(_mm256_add_epi32(v, _mm256_set1_epi32(1 << 13)), 14);
 }
 
+/* The work is split in three passes over a chunk of vertices (blend,
+ * reciprocal norm, transform) because the integer rsqrt is a long chain of
+ * dependent multiplies: in one loop body it would leave the multipliers
+ * idle, in a short loop of its own the out-of-order core overlaps the
+ * chains of several batches. */
+#define CHUNK_BATCHES 8
+
+typedef struct chunk {
+	__m256i d[CHUNK_BATCHES][8];
+	__m256i n2e[CHUNK_BATCHES], n2o[CHUNK_BATCHES];
+	__m256i m[CHUNK_BATCHES], shift[CHUNK_BATCHES];
+	int bad[CHUNK_BATCHES];
+} chunk;
+
+static void chunk_blend(const skin_soa *in, const skin_bones *b, int v, int batches, chunk *c)
+{
+	for (int i = 0; i < batches; i++) {
+		__m256i *d = c->d[i];
+		c->bad[i] = blend(in, b, v + i * SKIN_LANES, d);
+		wide n2 = wadd(wadd(wmul(d[0], d[0]), wmul(d[1], d[1])),
+			       wadd(wmul(d[2], d[2]), wmul(d[3], d[3])));
+		c->n2e[i] = n2.e;
+		c->n2o[i] = n2.o;
+	}
+}
+
+static void chunk_norms(int batches, chunk *c)
+{
+	for (int i = 0; i < batches; i++) {
+		__m256i me, se, be, mo, so, bo;
+		rsqrt4(c->n2e[i], &me, &se, &be);
+		rsqrt4(c->n2o[i], &mo, &so, &bo);
+		c->m[i] = _mm256_blend_epi32(me, _mm256_slli_epi64(mo, 32), 0xAA);
+		c->shift[i] = _mm256_blend_epi32(se, _mm256_slli_epi64(so, 32), 0xAA);
+		__m256i bad = _mm256_or_si256(be, bo);
+		c->bad[i] |= !_mm256_testz_si256(bad, bad);
+	}
+}
+
+static void transform8(const skin_soa *in, __m256i d[8], __m256i m, __m256i shift, int v,
+		       int valid, const skin_out *out)
+{
+	#pragma GCC unroll 8
+	for (int c = 0; c < 8; c++)
+		d[c] = scale(d[c], m, shift);
+	ivec t = translation(d);
+	ivec p = rotate(d, load_ivec(in->fpx, in->fpy, in->fpz, v));
+	p.x = _mm256_add_epi32(p.x, t.x);
+	p.y = _mm256_add_epi32(p.y, t.y);
+	p.z = _mm256_add_epi32(p.z, t.z);
+	ivec n = rotate(d, load_ivec(in->fnx, in->fny, in->fnz, v));
+	n.x = q30_to_q16(n.x);
+	n.y = q30_to_q16(n.y);
+	n.z = q30_to_q16(n.z);
+	store_ivec(out->fpos + 3 * v, p, valid);
+	store_ivec(out->fnrm + 3 * v, n, valid);
+}
+
 void skin_dqbs_fixed_avx2(const skin_soa *in, const skin_bones *b, int first, int end,
 			  const skin_out *out)
 {
 	_Static_assert(FX_POS_FRAC == 16, "the AVX2 fixed kernel writes fx_pos as Q16.16 directly");
-	for (int v = first; v < end; v += SKIN_LANES) {
-		__m256i d[8], m, shift;
-		blend(in, b, v, d);
-		if (reciprocal_norms(d, &m, &shift)) {
-			/* a norm outside the vector path's range (a blend
-			 * that nearly cancelled): the scalar kernel handles it */
-			skin_dqbs_fixed(in, b, v, v + SKIN_LANES < end ? v + SKIN_LANES : end, out);
-			continue;
+	if (!b->split_ok) {
+		skin_dqbs_fixed(in, b, first, end, out);
+		return;
+	}
+	chunk c;
+	for (int v0 = first; v0 < end; v0 += CHUNK_BATCHES * SKIN_LANES) {
+		int left = (end - v0 + SKIN_LANES - 1) / SKIN_LANES;
+		int batches = left < CHUNK_BATCHES ? left : CHUNK_BATCHES;
+		chunk_blend(in, b, v0, batches, &c);
+		chunk_norms(batches, &c);
+		for (int i = 0; i < batches; i++) {
+			int v = v0 + i * SKIN_LANES;
+			int valid = end - v < SKIN_LANES ? end - v : SKIN_LANES;
+			if (c.bad[i])
+				/* a norm outside the vector path's range (a blend
+				 * that nearly cancelled): the scalar kernel handles it */
+				skin_dqbs_fixed(in, b, v, v + valid, out);
+			else
+				transform8(in, c.d[i], c.m[i], c.shift[i], v, valid, out);
 		}
-		for (int c = 0; c < 8; c++)
-			d[c] = scale(d[c], m, shift);
-		ivec t = translation(d);
-		ivec p = rotate(d, load_ivec(in->fpx, in->fpy, in->fpz, v));
-		p.x = _mm256_add_epi32(p.x, t.x);
-		p.y = _mm256_add_epi32(p.y, t.y);
-		p.z = _mm256_add_epi32(p.z, t.z);
-		ivec n = rotate(d, load_ivec(in->fnx, in->fny, in->fnz, v));
-		n.x = q30_to_q16(n.x);
-		n.y = q30_to_q16(n.y);
-		n.z = q30_to_q16(n.z);
-		int valid = end - v < SKIN_LANES ? end - v : SKIN_LANES;
-		store_ivec(out->fpos + 3 * v, p, valid);
-		store_ivec(out->fnrm + 3 * v, n, valid);
 	}
 }
 
