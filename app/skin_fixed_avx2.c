@@ -14,10 +14,6 @@ typedef struct wide {
 	__m256i e, o;
 } wide;
 
-typedef struct ivec {
-	__m256i x, y, z;
-} ivec;
-
 /* Odd lanes moved to the even positions vpmuldq reads: a shuffle, so it
  * runs on the shuffle port while the multiplies and shifts use the others. */
 static inline __m256i odd_lanes(__m256i a)
@@ -35,24 +31,6 @@ static inline wide wadd(wide a, wide b)
 {
 	wide r = { _mm256_add_epi64(a.e, b.e), _mm256_add_epi64(a.o, b.o) };
 	return r;
-}
-
-static inline wide wsub(wide a, wide b)
-{
-	wide r = { _mm256_sub_epi64(a.e, b.e), _mm256_sub_epi64(a.o, b.o) };
-	return r;
-}
-
-/* Round and shift right by s (<= 32), back to 8 int32 lanes: the even
- * products shift down to the low halves, the odd ones up to the high
- * halves. A logical shift keeps the same 32 bits as an arithmetic one, and
- * results fit in 32 bits. */
-static inline __m256i narrow(wide w, int s)
-{
-	__m256i rnd = _mm256_set1_epi64x((long long)1 << (s - 1));
-	__m256i e = _mm256_srl_epi64(_mm256_add_epi64(w.e, rnd), _mm_cvtsi32_si128(s));
-	__m256i o = _mm256_sll_epi64(_mm256_add_epi64(w.o, rnd), _mm_cvtsi32_si128(32 - s));
-	return _mm256_blend_epi32(e, o, 0xAA);
 }
 
 static __m256i load_weights(const fx_w15 *w, int v)
@@ -187,61 +165,88 @@ static inline __attribute__((always_inline)) void rsqrt4(__m256i x, __m256i *m, 
 	*shift = _mm256_sub_epi64(epi64(31), e);
 }
 
-/* v * m >> shift per lane, rounded */
-static inline __attribute__((always_inline)) __m256i scale(__m256i v, __m256i m, __m256i shift)
+/* The transform takes 4 vertices at a time in 64-bit lanes, each value in
+ * the low 32 bits where vpmuldq reads it: the even and the odd vertices of
+ * a batch separately, so no product needs a shuffle. After a rounding
+ * shift only the low 32 bits matter: a logical shift leaves the same low
+ * bits as an arithmetic one while the shift is at most 32. */
+static inline __m256i round_shift(__m256i x, int s)
 {
-	wide p = wmul(v, m);
-	__m256i se = _mm256_and_si256(shift, _mm256_set1_epi64x(0xffffffff));
-	__m256i so = _mm256_srli_epi64(shift, 32);
-	__m256i one = _mm256_set1_epi64x(1);
-	__m256i re = _mm256_sllv_epi64(one, _mm256_sub_epi64(se, one));
-	__m256i ro = _mm256_sllv_epi64(one, _mm256_sub_epi64(so, one));
-	__m256i e = _mm256_srlv_epi64(_mm256_add_epi64(p.e, re), se);
-	__m256i o = _mm256_slli_epi64(_mm256_srlv_epi64(_mm256_add_epi64(p.o, ro), so), 32);
-	return _mm256_blend_epi32(e, o, 0xAA);
+	return _mm256_srl_epi64(_mm256_add_epi64(x, epi64(1ll << (s - 1))), _mm_cvtsi32_si128(s));
+}
+
+static inline __m256i mul4(__m256i a, __m256i b)
+{
+	return _mm256_mul_epi32(a, b);
 }
 
 /* v + 2 r x (r x v + w v) with r, w in Q30: sums of products in 64 bits */
-static inline __attribute__((always_inline)) ivec rotate(const __m256i q[4], ivec v)
+static inline __attribute__((always_inline)) void rotate4(const __m256i q[4], const __m256i v[3],
+							    __m256i out[3])
 {
-	__m256i w = q[0];
-	ivec r = { q[1], q[2], q[3] };
-	ivec t = {
-		narrow(wadd(wsub(wmul(r.y, v.z), wmul(r.z, v.y)), wmul(w, v.x)), 30),
-		narrow(wadd(wsub(wmul(r.z, v.x), wmul(r.x, v.z)), wmul(w, v.y)), 30),
-		narrow(wadd(wsub(wmul(r.x, v.y), wmul(r.y, v.x)), wmul(w, v.z)), 30),
-	};
-	ivec o = {
-		_mm256_add_epi32(v.x, narrow(wsub(wmul(r.y, t.z), wmul(r.z, t.y)), 29)),
-		_mm256_add_epi32(v.y, narrow(wsub(wmul(r.z, t.x), wmul(r.x, t.z)), 29)),
-		_mm256_add_epi32(v.z, narrow(wsub(wmul(r.x, t.y), wmul(r.y, t.x)), 29)),
-	};
-	return o;
+	const __m256i w = q[0], *r = q + 1;
+	__m256i t[3];
+#pragma GCC unroll 3
+	for (int i = 0; i < 3; i++) {
+		int j = (i + 1) % 3, k = (i + 2) % 3;
+		t[i] = round_shift(_mm256_add_epi64(_mm256_sub_epi64(mul4(r[j], v[k]), mul4(r[k], v[j])),
+						    mul4(w, v[i])), 30);
+	}
+#pragma GCC unroll 3
+	for (int i = 0; i < 3; i++) {
+		int j = (i + 1) % 3, k = (i + 2) % 3;
+		out[i] = _mm256_add_epi64(v[i], round_shift(_mm256_sub_epi64(mul4(r[j], t[k]),
+									     mul4(r[k], t[j])), 29));
+	}
 }
 
 /* 2 (w d_v - d_w r_v + r_v x d_v) */
-static inline __attribute__((always_inline)) ivec translation(const __m256i q[8])
+static inline __attribute__((always_inline)) void translation4(const __m256i q[8], __m256i t[3])
 {
 	const __m256i *r = q, *d = q + 4;
-	ivec t = {
-		narrow(wadd(wsub(wmul(r[0], d[1]), wmul(d[0], r[1])), wsub(wmul(r[2], d[3]), wmul(r[3], d[2]))), 29),
-		narrow(wadd(wsub(wmul(r[0], d[2]), wmul(d[0], r[2])), wsub(wmul(r[3], d[1]), wmul(r[1], d[3]))), 29),
-		narrow(wadd(wsub(wmul(r[0], d[3]), wmul(d[0], r[3])), wsub(wmul(r[1], d[2]), wmul(r[2], d[1]))), 29),
-	};
-	return t;
+#pragma GCC unroll 3
+	for (int i = 1; i <= 3; i++) {
+		int j = i % 3 + 1, k = (i + 1) % 3 + 1;
+		t[i - 1] = round_shift(_mm256_add_epi64(_mm256_sub_epi64(mul4(r[0], d[i]), mul4(d[0], r[i])),
+							_mm256_sub_epi64(mul4(r[j], d[k]), mul4(r[k], d[j]))),
+				       29);
+	}
 }
 
-static ivec load_ivec(const int32_t *x, const int32_t *y, const int32_t *z, int v)
+/* Normalises the blend (times m >> shift per lane, as fx_dq_normalize) and
+ * moves the point p and the normal n with it. */
+static inline __attribute__((always_inline)) void transform4(const __m256i d[8], __m256i m,
+							       __m256i shift, const __m256i p[3],
+							       const __m256i n[3], __m256i po[3],
+							       __m256i no[3])
 {
-	ivec r = { _mm256_load_si256((const __m256i *)(x + v)), _mm256_load_si256((const __m256i *)(y + v)),
-		   _mm256_load_si256((const __m256i *)(z + v)) };
-	return r;
+	const __m256i one = epi64(1);
+	const __m256i rnd = _mm256_sllv_epi64(one, _mm256_sub_epi64(shift, one));
+	__m256i q[8], t[3];
+#pragma GCC unroll 8
+	for (int c = 0; c < 8; c++)
+		q[c] = _mm256_srlv_epi64(_mm256_add_epi64(mul4(d[c], m), rnd), shift);
+	translation4(q, t);
+	rotate4(q, p, po);
+#pragma GCC unroll 3
+	for (int i = 0; i < 3; i++)
+		po[i] = _mm256_add_epi64(po[i], t[i]);
+	rotate4(q, n, no);
 }
 
-static void store_ivec(int32_t *dst, ivec a, int valid)
+/* 8 int32 lanes to the even (low halves already) and odd vertices */
+static inline void split_lanes(const __m256i *a, __m256i *even, __m256i *odd, int count)
 {
-	skin_store_xyz8(dst, _mm256_castsi256_ps(a.x), _mm256_castsi256_ps(a.y),
-			_mm256_castsi256_ps(a.z), valid);
+#pragma GCC unroll 8
+	for (int i = 0; i < count; i++) {
+		even[i] = a[i];
+		odd[i] = _mm256_srli_epi64(a[i], 32);
+	}
+}
+
+static inline __m256i join_lanes(__m256i even, __m256i odd)
+{
+	return _mm256_blend_epi32(even, _mm256_slli_epi64(odd, 32), 0xAA);
 }
 
 static __m256i q30_to_q16(__m256i v)
@@ -259,7 +264,7 @@ static __m256i q30_to_q16(__m256i v)
 typedef struct chunk {
 	__m256i d[CHUNK_BATCHES][8];
 	__m256i n2e[CHUNK_BATCHES], n2o[CHUNK_BATCHES];
-	__m256i m[CHUNK_BATCHES], shift[CHUNK_BATCHES];
+	__m256i m[CHUNK_BATCHES][2], shift[CHUNK_BATCHES][2]; /* even, odd lanes */
 	int bad[CHUNK_BATCHES];
 } chunk;
 
@@ -278,33 +283,40 @@ static void chunk_blend(const skin_soa *in, const skin_bones *b, int v, int batc
 static void chunk_norms(int batches, chunk *c)
 {
 	for (int i = 0; i < batches; i++) {
-		__m256i me, se, be, mo, so, bo;
-		rsqrt4(c->n2e[i], &me, &se, &be);
-		rsqrt4(c->n2o[i], &mo, &so, &bo);
-		c->m[i] = _mm256_blend_epi32(me, _mm256_slli_epi64(mo, 32), 0xAA);
-		c->shift[i] = _mm256_blend_epi32(se, _mm256_slli_epi64(so, 32), 0xAA);
+		__m256i be, bo;
+		rsqrt4(c->n2e[i], &c->m[i][0], &c->shift[i][0], &be);
+		rsqrt4(c->n2o[i], &c->m[i][1], &c->shift[i][1], &bo);
 		__m256i bad = _mm256_or_si256(be, bo);
 		c->bad[i] |= !_mm256_testz_si256(bad, bad);
 	}
 }
 
-static void transform8(const skin_soa *in, __m256i d[8], __m256i m, __m256i shift, int v,
-		       int valid, const skin_out *out)
+static void transform8(const skin_soa *in, const __m256i d[8], const __m256i m[2],
+		       const __m256i shift[2], int v, int valid, const skin_out *out)
 {
-	#pragma GCC unroll 8
-	for (int c = 0; c < 8; c++)
-		d[c] = scale(d[c], m, shift);
-	ivec t = translation(d);
-	ivec p = rotate(d, load_ivec(in->fpx, in->fpy, in->fpz, v));
-	p.x = _mm256_add_epi32(p.x, t.x);
-	p.y = _mm256_add_epi32(p.y, t.y);
-	p.z = _mm256_add_epi32(p.z, t.z);
-	ivec n = rotate(d, load_ivec(in->fnx, in->fny, in->fnz, v));
-	n.x = q30_to_q16(n.x);
-	n.y = q30_to_q16(n.y);
-	n.z = q30_to_q16(n.z);
-	store_ivec(out->fpos + 3 * v, p, valid);
-	store_ivec(out->fnrm + 3 * v, n, valid);
+	__m256i dh[2][8], ph[2][3], nh[2][3], po[2][3], no[2][3];
+	const __m256i pos[3] = { _mm256_load_si256((const __m256i *)(in->fpx + v)),
+				 _mm256_load_si256((const __m256i *)(in->fpy + v)),
+				 _mm256_load_si256((const __m256i *)(in->fpz + v)) };
+	const __m256i nrm[3] = { _mm256_load_si256((const __m256i *)(in->fnx + v)),
+				 _mm256_load_si256((const __m256i *)(in->fny + v)),
+				 _mm256_load_si256((const __m256i *)(in->fnz + v)) };
+	split_lanes(d, dh[0], dh[1], 8);
+	split_lanes(pos, ph[0], ph[1], 3);
+	split_lanes(nrm, nh[0], nh[1], 3);
+#pragma GCC unroll 2
+	for (int h = 0; h < 2; h++)
+		transform4(dh[h], m[h], shift[h], ph[h], nh[h], po[h], no[h]);
+	__m256i p[3], n[3];
+#pragma GCC unroll 3
+	for (int i = 0; i < 3; i++) {
+		p[i] = join_lanes(po[0][i], po[1][i]);
+		n[i] = q30_to_q16(join_lanes(no[0][i], no[1][i]));
+	}
+	skin_store_xyz8(out->fpos + 3 * v, _mm256_castsi256_ps(p[0]), _mm256_castsi256_ps(p[1]),
+			_mm256_castsi256_ps(p[2]), valid);
+	skin_store_xyz8(out->fnrm + 3 * v, _mm256_castsi256_ps(n[0]), _mm256_castsi256_ps(n[1]),
+			_mm256_castsi256_ps(n[2]), valid);
 }
 
 void skin_dqbs_fixed_avx2(const skin_soa *in, const skin_bones *b, int first, int end,
