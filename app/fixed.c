@@ -96,9 +96,22 @@ uint64_t fx_rsqrt_step(uint64_t xq, uint64_t y)
 	return (y * f + (1u << 30)) >> 31;                 /* y, f < 2^32 */
 }
 
+/* Per segment [p, q] of X: the line through 1/sqrt at p and q, moved half
+ * way to the tangent of the same slope (equal error at the ends and in the
+ * middle). */
+const uint32_t fx_rsqrt_seed_a[FX_RSQRT_SEGMENTS] = {
+	3049607619u, 2754682106u, 2531942015u, 2355946473u,
+	2156398227u, 1947854397u, 1790353369u, 1665905727u,
+};
+const uint32_t fx_rsqrt_seed_b[FX_RSQRT_SEGMENTS] = {
+	906863524u, 669418843u, 520272022u, 419379203u,
+	320624674u, 236675302u, 183943938u, 148272939u,
+};
+
 uint64_t fx_rsqrt_seed(uint64_t xq)
 {
-	return FX_RSQRT_SEED_A - ((FX_RSQRT_SEED_B * xq + (1u << 29)) >> 30);
+	int s = fx_rsqrt_segment(xq);
+	return fx_rsqrt_seed_a[s] - (((uint64_t)fx_rsqrt_seed_b[s] * xq + (1u << 29)) >> 30);
 }
 
 uint32_t fx_rsqrt_q60(uint64_t x, int *shift)

@@ -115,13 +115,21 @@ uint32_t fx_isqrt64(uint64_t x);
  *
  * Method (shared with the SIMD kernels, which must match bit for bit): x is
  * scaled by 4^e into [2^60, 2^62), X = x / 2^60 in [1, 4) is cut to Q30
- * (xq), the seed is the minimax line 1.06 - 0.149 X (within 9%), then
- * FX_RSQRT_STEPS Newton steps y' = y (1.5 - X y^2 / 2) in Q31, all products
+ * (xq), the seed is a minimax line on one of 8 segments of [1, 4) (width
+ * 1/4 below 2, 1/2 above: within 0.25%), then FX_RSQRT_STEPS Newton steps
+ * y' = y (1.5 - X y^2 / 2) in Q31 (0.25% -> 9e-6 -> 1.1e-9), all products
  * of two values below 2^32. */
-#define FX_RSQRT_SEED_A 2276332667ull  /* 1.06 in Q31 */
-#define FX_RSQRT_SEED_B 319975064ull   /* 0.149 in Q31 */
-#define FX_RSQRT_STEPS 4
+#define FX_RSQRT_SEGMENTS 8
+#define FX_RSQRT_STEPS 2
+/* seed = a[s] - b[s] X, a and b in Q31, s = fx_rsqrt_segment(xq) */
+extern const uint32_t fx_rsqrt_seed_a[FX_RSQRT_SEGMENTS];
+extern const uint32_t fx_rsqrt_seed_b[FX_RSQRT_SEGMENTS];
 uint32_t fx_rsqrt_q60(uint64_t x, int *shift);
+/* xq = X in Q30, X in [1, 4): [1, 2) in quarters, then [2, 4) in halves */
+static inline int fx_rsqrt_segment(uint64_t xq)
+{
+	return xq >> 31 ? (int)(xq >> 29) : (int)(xq >> 28) - 4;
+}
 uint64_t fx_rsqrt_seed(uint64_t xq);
 uint64_t fx_rsqrt_step(uint64_t xq, uint64_t y);
 

@@ -36,20 +36,22 @@ static inline void skin_transpose8(__m256 r[8])
 }
 
 /* Four consecutive 32-bit values at row[j] (vertex j) to four registers of
- * 8 lanes: two rows per 256-bit register, then a 4x4 transpose per half. */
-static inline void skin_transpose8x4(const float *const row[8], __m256 out[4])
+ * 8 lanes: two rows per 256-bit register, then a 4x4 transpose per half.
+ * Integer unpacks: recent cores run them on two ports, the float shuffles
+ * on one. */
+static inline void skin_transpose8x4(const int32_t *const row[8], __m256i out[4])
 {
-	__m256 a[4];
-	#pragma GCC unroll 8
+	__m256i a[4];
+#pragma GCC unroll 8
 	for (int j = 0; j < 4; j++)
-		a[j] = _mm256_insertf128_ps(_mm256_castps128_ps256(_mm_loadu_ps(row[j])),
-					    _mm_loadu_ps(row[j + 4]), 1);
-	__m256 t0 = _mm256_unpacklo_ps(a[0], a[1]), t1 = _mm256_unpackhi_ps(a[0], a[1]);
-	__m256 t2 = _mm256_unpacklo_ps(a[2], a[3]), t3 = _mm256_unpackhi_ps(a[2], a[3]);
-	out[0] = _mm256_shuffle_ps(t0, t2, _MM_SHUFFLE(1, 0, 1, 0));
-	out[1] = _mm256_shuffle_ps(t0, t2, _MM_SHUFFLE(3, 2, 3, 2));
-	out[2] = _mm256_shuffle_ps(t1, t3, _MM_SHUFFLE(1, 0, 1, 0));
-	out[3] = _mm256_shuffle_ps(t1, t3, _MM_SHUFFLE(3, 2, 3, 2));
+		a[j] = _mm256_inserti128_si256(_mm256_castsi128_si256(_mm_loadu_si128((const __m128i *)row[j])),
+					       _mm_loadu_si128((const __m128i *)row[j + 4]), 1);
+	__m256i t0 = _mm256_unpacklo_epi32(a[0], a[1]), t1 = _mm256_unpackhi_epi32(a[0], a[1]);
+	__m256i t2 = _mm256_unpacklo_epi32(a[2], a[3]), t3 = _mm256_unpackhi_epi32(a[2], a[3]);
+	out[0] = _mm256_unpacklo_epi64(t0, t2);
+	out[1] = _mm256_unpackhi_epi64(t0, t2);
+	out[2] = _mm256_unpacklo_epi64(t1, t3);
+	out[3] = _mm256_unpackhi_epi64(t1, t3);
 }
 
 /* Index of (pivot bone, bone) in the flip tables, for 8 lanes. */

@@ -80,22 +80,22 @@ static inline __attribute__((always_inline)) int blend_weights(const skin_soa *i
  * and both sums fit in 32 bits because sum |w| <= 2^15; so the rounded
  * shift by 15 is 2 sum(w hi) + round(sum(w lo) / 2^15), exactly the
  * scalar kernel's 64-bit result. */
-static inline __attribute__((always_inline)) void blend_half(const skin_soa *in, const skin_bones *b,
-							       int v, const wpair w[SKP_MAX_INFLUENCES],
+static inline __attribute__((always_inline)) void blend_half(const int32_t *const rows[][8],
+							       const wpair w[SKP_MAX_INFLUENCES],
 							       int half, __m256i out[4])
 {
 	__m256i lo[4], hi[4];
 #pragma GCC unroll 8
 	for (int k = 0; k < SKP_MAX_INFLUENCES; k++) {
-		const float *row[8];
-		__m256 d[4];
+		const int32_t *row[8];
+		__m256i d[4];
 #pragma GCC unroll 8
 		for (int j = 0; j < 8; j++)
-			row[j] = (const float *)&b->fdq_split[in->bone[k][v + j]][half];
+			row[j] = rows[k][j] + half;
 		skin_transpose8x4(row, d);
 #pragma GCC unroll 8
 		for (int c = 0; c < 4; c++) {
-			__m256i a = _mm256_castps_si256(d[c]);
+			__m256i a = d[c];
 			__m256i pl = _mm256_madd_epi16(a, w[k].lo), ph = _mm256_madd_epi16(a, w[k].hi);
 			if (k == 0) {
 				/* the pivot's missing 1 * c */
@@ -105,6 +105,9 @@ static inline __attribute__((always_inline)) void blend_half(const skin_soa *in,
 				lo[c] = _mm256_add_epi32(lo[c], pl);
 				hi[c] = _mm256_add_epi32(hi[c], ph);
 			}
+			/* keeps the sums in influence order: reassociated, they
+			 * would hold every product live and spill */
+			__asm__("" : "+x"(lo[c]), "+x"(hi[c]));
 		}
 	}
 	const __m256i rnd = _mm256_set1_epi32(1 << 14);
@@ -119,9 +122,15 @@ static inline __attribute__((always_inline)) int blend(const skin_soa *in, const
 							 __m256i out[8])
 {
 	wpair w[SKP_MAX_INFLUENCES];
+	const int32_t *rows[SKP_MAX_INFLUENCES][8];
+#pragma GCC unroll 8
+	for (int k = 0; k < SKP_MAX_INFLUENCES; k++)
+#pragma GCC unroll 8
+		for (int j = 0; j < 8; j++)
+			rows[k][j] = b->fdq_split[in->bone[k][v + j]];
 	int bad = blend_weights(in, b, v, w);
-	blend_half(in, b, v, w, 0, out);
-	blend_half(in, b, v, w, 4, out + 4);
+	blend_half(rows, w, 0, out);
+	blend_half(rows, w, 4, out + 4);
 	return bad;
 }
 
@@ -149,8 +158,16 @@ static inline __attribute__((always_inline)) void rsqrt4(__m256i x, __m256i *m, 
 	__m256i e = _mm256_sub_epi64(_mm256_setzero_si256(), _mm256_add_epi64(lt60, lt58));
 	x = _mm256_sllv_epi64(x, _mm256_add_epi64(e, e));
 	__m256i xq = _mm256_srli_epi64(x, 30); /* floor, < 2^32 */
-	__m256i y = _mm256_sub_epi64(epi64((long long)FX_RSQRT_SEED_A),
-				     mul_round(epi64((long long)FX_RSQRT_SEED_B), xq, 30));
+	/* fx_rsqrt_segment: the index in the low half of each lane is what
+	 * vpermd reads; the high halves pick garbage, masked off for a */
+	__m256i high = _mm256_cmpgt_epi64(xq, epi64(0x7fffffff));
+	__m256i seg = _mm256_blendv_epi8(_mm256_sub_epi64(_mm256_srli_epi64(xq, 28), epi64(4)),
+					 _mm256_srli_epi64(xq, 29), high);
+	__m256i a = _mm256_and_si256(_mm256_permutevar8x32_epi32(
+					     _mm256_loadu_si256((const __m256i *)fx_rsqrt_seed_a), seg),
+				     epi64(0xffffffff));
+	__m256i bs = _mm256_permutevar8x32_epi32(_mm256_loadu_si256((const __m256i *)fx_rsqrt_seed_b), seg);
+	__m256i y = _mm256_sub_epi64(a, mul_round(bs, xq, 30));
 	const __m256i three_halves = epi64(3ll << 30);
 	#pragma GCC unroll 8
 	for (int i = 0; i < FX_RSQRT_STEPS; i++) {
