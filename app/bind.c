@@ -40,6 +40,32 @@ static int boxed_ancestor(const skel *s, const bind_rig *rig, int b)
 	return a > 0 ? a : -1;
 }
 
+static void set_near(bind_rig *rig, int a, int b)
+{
+	rig->near[a][b / 32] |= 1u << (b % 32);
+	rig->near[b][a / 32] |= 1u << (a % 32);
+}
+
+static int is_near(const bind_rig *rig, int a, int b)
+{
+	return (rig->near[a][b / 32] >> (b % 32)) & 1u;
+}
+
+/* Bones meeting at a joint: a bone and the one ending at its head, bones
+ * starting at the same joint; the root (0) meets the bones starting at the
+ * root joint. */
+static void find_neighbours(bind_rig *rig, const skel *s, const int *anc)
+{
+	for (int b = 0; b < s->count; b++)
+		set_near(rig, b, b);
+	for (int b = 1; b < s->count; b++) {
+		set_near(rig, b, anc[b] >= 0 ? anc[b] : 0);
+		for (int c = 1; c < b; c++)
+			if (anc[c] == anc[b])
+				set_near(rig, b, c);
+	}
+}
+
 /* A ramp is only needed where a neighbour takes over: count the boxed
  * bones meeting at each joint (keyed by the bone ending there, -1 for the
  * root joint). */
@@ -54,12 +80,14 @@ static void find_ramps(bind_rig *rig, const skel *s)
 		if (rig->seg[b].length > 0.0f && starting[anc[b] + 1] < 255)
 			starting[anc[b] + 1]++;
 	}
+	find_neighbours(rig, s, anc);
 	for (int b = 1; b < s->count; b++) {
 		bind_segment *g = &rig->seg[b];
 		if (g->length <= 0.0f)
 			continue;
 		int meeting = starting[anc[b] + 1] + (anc[b] >= 0);
 		g->ramp_head = meeting >= 2;
+		g->parent = (int16_t)(anc[b] >= 0 ? anc[b] : 0);
 		g->ramp_tip = starting[b + 1] >= 1;
 	}
 }
@@ -99,10 +127,12 @@ static float ramp(float x, float h)
 	return x > 0.0f ? 1.0f : (x < 0.0f ? 0.0f : 0.5f);
 }
 
-float bind_segment_weight(const bind_segment *g, vec3 p, int *inside)
+/* The box weight, and in *head_share what the head ramp leaves for the
+ * bone before the joint (1 - ramp, 0 past the ramp or outside the box). */
+static float segment_weight(const bind_segment *g, vec3 p, int *inside, float *head_share)
 {
-	if (inside)
-		*inside = 0;
+	*inside = 0;
+	*head_share = 0.0f;
 	if (g->length <= 0.0f)
 		return 0.0f;
 	vec3 q = vec3_sub(p, g->head);
@@ -112,14 +142,26 @@ float bind_segment_weight(const bind_segment *g, vec3 p, int *inside)
 	vec3 perp = vec3_madd(q, g->dir, -s);
 	if (vec3_dot(perp, perp) > g->radius * g->radius)
 		return 0.0f;
-	if (inside)
-		*inside = 1;
+	*inside = 1;
 	float w = 1.0f;
-	if (g->ramp_head)
-		w = fminf(w, ramp(s, g->half));
+	if (g->ramp_head) {
+		float r = ramp(s, g->half);
+		w = fminf(w, r);
+		*head_share = clampf(1.0f - r, 0.0f, 1.0f);
+	}
 	if (g->ramp_tip)
 		w = fminf(w, ramp(g->length - s, g->half));
 	return clampf(w, 0.0f, 1.0f);
+}
+
+float bind_segment_weight(const bind_segment *g, vec3 p, int *inside)
+{
+	int in;
+	float share;
+	float w = segment_weight(g, p, &in, &share);
+	if (inside)
+		*inside = in;
+	return w;
 }
 
 float bind_segment_distance(const bind_segment *g, vec3 p)
@@ -172,19 +214,35 @@ static int nearest_bone(const bind_rig *rig, vec3 p)
 /* Returns 1 when the vertex fell back to the nearest bone. */
 static int bind_vertex(const bind_rig *rig, vec3 p, skin_weights *out, int v)
 {
-	top_influences t = { 0 };
+	/* only bones meeting the nearest one at a joint share a vertex: across
+	 * the crotch or the armpit a box may reach a limb the vertex does not
+	 * belong to */
+	int nearest = nearest_bone(rig, p);
+	float w[SKP_MAX_BONES] = { 0.0f };
 	for (int b = 1; b < rig->bone_count; b++) {
-		float w = bind_segment_weight(&rig->seg[b], p, NULL);
-		if (w > 0.0f)
-			top_insert(&t, b, w);
+		if (!is_near(rig, nearest, b))
+			continue;
+		int in;
+		float share;
+		float wb = segment_weight(&rig->seg[b], p, &in, &share);
+		w[b] = fmaxf(w[b], wb);
+		/* across the joint the bone before it takes the rest, even where
+		 * its own box does not reach (a short bone, the root) */
+		int up = rig->seg[b].parent;
+		if (is_near(rig, nearest, up))
+			w[up] = fmaxf(w[up], share);
 	}
+	top_influences t = { 0 };
+	for (int b = 0; b < rig->bone_count; b++)
+		if (w[b] > 0.0f)
+			top_insert(&t, b, w[b]);
 	float sum = 0.0f;
 	for (int k = 0; k < t.count; k++)
 		sum += t.weight[k];
 	int fallback = !(sum > 0.0f);
 	if (fallback) {
 		t.count = 1;
-		t.bone[0] = (uint16_t)nearest_bone(rig, p);
+		t.bone[0] = (uint16_t)nearest;
 		t.weight[0] = sum = 1.0f;
 	}
 	out->count[v] = (uint8_t)t.count;

@@ -22,12 +22,20 @@
  * joint are the bone ending there (its nearest ancestor of non-zero length)
  * and every bone starting there; a chain's free ends get no ramp.
  *
+ * Where b's head ramps, the bone ending at H (its nearest non-zero ancestor,
+ * the root at the root joint) also gets 1 - g_head, or its own w if that is
+ * larger: the cross-fade reaches a short parent (the CMU hip bone) whose
+ * box misses the vertex. Only the bone whose segment H-T is nearest to the
+ * vertex and the bones meeting it at a joint count: two limbs whose boxes
+ * overlap (the thighs at the crotch, arm and chest at the armpit) do not
+ * share a vertex.
+ *
  * Then per vertex: keep the 4 largest w_b, clamp at 0, normalise to sum 1.
- * A vertex with no weight (outside every box) goes, weight 1, to the bone
- * whose segment H-T is nearest (ties: the lower bone index).
+ * A vertex with no weight (outside every box) goes, weight 1, to the
+ * nearest bone (ties: the lower bone index).
  *
  * Zero-length bones (length <= 1e-6 S), the root among them, get no box and
- * never win the nearest-bone test: a point has no direction to project on,
+ * never win the nearest-bone test (the root only takes head-ramp shares): a point has no direction to project on,
  * and the vertices around one are shared by the bones that meet there.
  * Their children's head ramps treat the nearest non-zero ancestor as the
  * parent. If every bone has zero length, every vertex goes to the root.
@@ -35,7 +43,7 @@
  * Defaults (bind_default_params), tuned on the CMU skeleton with the
  * MakeHuman body and the generated mannequins: radius = 0.35,
  * radius_min = 0.05, radius_max = 0.10, radius_cap = 1.0, blend = 0.20.
- * Cost: one box test per vertex and bone, about 4 ms for 20000 vertices
+ * Cost: one box test and one segment distance per vertex and bone, about 6 ms for 20000 vertices
  * on 31 bones on a desktop core. */
 #ifndef BIND_H
 #define BIND_H
@@ -64,6 +72,8 @@ typedef struct bind_segment {
 	float half;        /* h */
 	uint8_t ramp_head; /* another bone meets this one at H */
 	uint8_t ramp_tip;  /* ... at T */
+	int16_t parent;    /* takes what the head ramp leaves: the bone ending
+			    * at H, or the root (0) at the root joint */
 } bind_segment;
 
 typedef struct bind_rig {
@@ -71,6 +81,8 @@ typedef struct bind_rig {
 	int boxed;         /* bones with a box (non-zero length) */
 	float size;        /* S */
 	bind_segment seg[SKP_MAX_BONES];
+	/* bones sharing a joint with bone b (itself included), a bit per bone */
+	uint32_t near[SKP_MAX_BONES][(SKP_MAX_BONES + 31) / 32];
 } bind_rig;
 
 /* What binding saw, beyond the weights themselves. */

@@ -131,6 +131,63 @@ static void test_ramp_past_joint_is_linear(void **state)
 	assert_float_equal(bind_segment_weight(&rig.seg[1], far, NULL), 0.0f, 0.0f);
 }
 
+/* root -> a (0,0,0)-(0,1,0), short -> b (0,1,0)-(0,11,0): a's box
+ * (R = 0.2) misses a point beside the joint that lies in b's head ramp
+ * (R = 2, h = 2); a still takes what b's ramp leaves there. */
+static void test_head_ramp_rest_goes_to_parent(void **state)
+{
+	(void)state;
+	start_skel();
+	add_bone("a", 0, vec3_make(0, 0, 0), vec3_make(0, 1, 0));
+	add_bone("b", 1, vec3_make(0, 1, 0), vec3_make(0, 11, 0));
+	bind_prepare(&rig, &s, &pose, &sharp);
+	assert_int_equal(rig.seg[2].parent, 1);
+	const float x[2] = { -0.8f, 0.6f };  /* past the joint along b */
+	vec3 p[2] = { vec3_make(1.5f, 1 + x[0], 0), vec3_make(0, 1 + x[1], 1.2f) };
+	bind_points(p, 2, NULL);
+	for (int v = 0; v < 2; v++) {
+		assert_float_equal(bind_segment_weight(&rig.seg[1], p[v], NULL), 0.0f, 0.0f);
+		float wb = 0.5f + x[v] / (2 * 2.0f);
+		assert_int_equal(sw.count[v], 2);
+		assert_float_equal(skin_weights_of(&sw, v, 2), wb, 1e-6f);
+		assert_float_equal(skin_weights_of(&sw, v, 1), 1.0f - wb, 1e-6f);
+	}
+	/* the root takes the rest at the root joint, where a's head ramps
+	 * (c, short, only makes it a joint: its box misses q) */
+	start_skel();
+	add_bone("a", 0, vec3_make(0, 0, 0), vec3_make(0, 10, 0));
+	add_bone("c", 0, vec3_make(0, 0, 0), vec3_make(2, 0, 0));
+	bind_prepare(&rig, &s, &pose, &sharp);
+	vec3 q = vec3_make(-0.5f, 1, 0);
+	bind_points(&q, 1, NULL);
+	assert_float_equal(skin_weights_of(&sw, 0, 1), 0.75f, 1e-6f);
+	assert_float_equal(skin_weights_of(&sw, 0, 0), 0.25f, 1e-6f);
+}
+
+/* Two legs from the root joint, a hip width apart: their boxes overlap in
+ * the crotch, but a point there goes to the nearer leg (and the bones it
+ * meets at a joint), never to both legs. */
+static void test_far_bones_do_not_share(void **state)
+{
+	(void)state;
+	start_skel();
+	int lhip = add_bone("lhip", 0, vec3_make(0, 0, 0), vec3_make(1, -1, 0));
+	int lleg = add_bone("lleg", lhip, vec3_make(1, -1, 0), vec3_make(1, -11, 0));
+	int rhip = add_bone("rhip", 0, vec3_make(0, 0, 0), vec3_make(-1, -1, 0));
+	int rleg = add_bone("rleg", rhip, vec3_make(-1, -1, 0), vec3_make(-1, -11, 0));
+	bind_prepare(&rig, &s, &pose, &sharp);
+	vec3 p[2] = { vec3_make(0.2f, -5, 0), vec3_make(-0.3f, -6, 0.5f) };
+	assert_true(bind_segment_weight(&rig.seg[lleg], p[0], NULL) > 0.0f);
+	assert_true(bind_segment_weight(&rig.seg[rleg], p[0], NULL) > 0.0f);
+	bind_points(p, 2, NULL);
+	assert_float_equal(skin_weights_of(&sw, 0, lleg), 1.0f, 1e-6f);
+	assert_float_equal(skin_weights_of(&sw, 1, rleg), 1.0f, 1e-6f);
+	/* bones meeting at the root joint are neighbours: the hips share */
+	vec3 hip = vec3_make(0, -0.3f, 0);
+	bind_points(&hip, 1, NULL);
+	assert_true(skin_weights_of(&sw, 0, lhip) > 0.0f && skin_weights_of(&sw, 0, rhip) > 0.0f);
+}
+
 static void test_outside_every_box_goes_to_nearest(void **state)
 {
 	(void)state;
@@ -444,7 +501,22 @@ static void test_makehuman_apose_regions(void **state)
 	print_message("fallback %d, smoothness %.4f over %ld edges\n", info.fallback,
 		      st.edge_diff_mean, st.edge_count);
 	assert_true(st.edge_diff_mean < 0.1);
-	assert_int_equal(st.bone_verts[0], 0);
+	/* the root only takes what the bones starting at the root joint leave
+	 * across it: never a vertex of its own */
+	const int at_root[] = { skel_find(&s, "lowerback"), skel_find(&s, "lhipjoint"),
+				skel_find(&s, "rhipjoint") };
+	int root_verts = 0;
+	for (int v = 0; v < body.vert_count; v++) {
+		if (!(skin_weights_of(&sw, v, 0) > 0.0f))
+			continue;
+		root_verts++;
+		float shared = 0;
+		for (int k = 0; k < 3; k++)
+			shared += skin_weights_of(&sw, v, at_root[k]);
+		assert_true(shared > 0.0f);
+	}
+	print_message("root shares %d vertices\n", root_verts);
+	assert_int_equal(st.bone_verts[0], root_verts);
 }
 
 static double now_s(void)
@@ -486,6 +558,8 @@ int main(void)
 		cmocka_unit_test(test_mid_bone_gets_one),
 		cmocka_unit_test(test_joint_is_half_half),
 		cmocka_unit_test(test_ramp_past_joint_is_linear),
+		cmocka_unit_test(test_head_ramp_rest_goes_to_parent),
+		cmocka_unit_test(test_far_bones_do_not_share),
 		cmocka_unit_test(test_outside_every_box_goes_to_nearest),
 		cmocka_unit_test(test_invariants_on_a_fan),
 		cmocka_unit_test(test_all_zero_length_goes_to_root),
