@@ -183,10 +183,25 @@ static fx_quat quat_scale_rs(fx_quat q, uint32_t m, int shift)
 	return r;
 }
 
+/* |q|^2 in Q60, saturated: a blend whose weights sum past 1 (not what
+ * skin_soa_load writes, but a caller may) can reach |q| = 2^32, whose
+ * square does not fit; saturated, it is out of fx_rsqrt_q60's range like
+ * any other norm too long. */
+static uint64_t quat_norm2_sat(fx_quat q)
+{
+	const int32_t c[4] = { q.w, q.x, q.y, q.z };
+	uint64_t sum = 0;
+	for (int i = 0; i < 4; i++) {
+		uint64_t sq = (uint64_t)((int64_t)c[i] * c[i]);
+		sum = sum > UINT64_MAX - sq ? UINT64_MAX : sum + sq;
+	}
+	return sum;
+}
+
 fx_dq fx_dq_normalize(fx_dq d)
 {
 	int shift;
-	uint32_t m = fx_rsqrt_q60((uint64_t)fx_quat_dot(d.real, d.real), &shift);
+	uint32_t m = fx_rsqrt_q60(quat_norm2_sat(d.real), &shift);
 
 	if (m == 0) {
 		fx_dq id = { fx_quat_identity, { 0, 0, 0, 0 } };

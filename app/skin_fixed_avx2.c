@@ -1,8 +1,10 @@
 /* DQBS in fixed point with AVX2 integer instructions, eight vertices per
- * step. Same formats and rounding as skin_fixed.c; products are 32x32->64
- * (vpmuldq) on the even and odd lanes separately, sums are kept in 64 bits
- * and rounded once. No floating-point instruction: `make test` disassembles
- * this object to check (tests/check_simd_integer.sh). */
+ * step, bit for bit the results of skin_fixed.c: the blend with 16-bit
+ * multiply-adds on components split into 16-bit halves (blend_half), the
+ * normalisation and the transform with 32x32->64 products (vpmuldq) on the
+ * even and odd vertices in 64-bit lanes, sums kept in 64 bits and rounded
+ * once. No floating-point instruction: `make test` disassembles this object
+ * to check (tests/check_simd_integer.sh). */
 #include "skin.h"
 
 #ifdef SKP_SIMD_AVX2
@@ -272,10 +274,9 @@ static __m256i q30_to_q16(__m256i v)
 }
 
 /* The work is split in three passes over a chunk of vertices (blend,
- * reciprocal norm, transform) because the integer rsqrt is a long chain of
- * dependent multiplies: in one loop body it would leave the multipliers
- * idle, in a short loop of its own the out-of-order core overlaps the
- * chains of several batches. */
+ * reciprocal norm, transform): the integer rsqrt is a chain of dependent
+ * multiplies, which a short loop of its own lets the out-of-order core
+ * overlap across batches, and each pass keeps fewer values live. */
 #define CHUNK_BATCHES 8
 
 typedef struct chunk {
@@ -355,7 +356,8 @@ void skin_dqbs_fixed_avx2(const skin_soa *in, const skin_bones *b, int first, in
 			int valid = end - v < SKIN_LANES ? end - v : SKIN_LANES;
 			if (c.bad[i])
 				/* a norm outside the vector path's range (a blend
-				 * that nearly cancelled): the scalar kernel handles it */
+				 * that nearly cancelled) or weights outside
+				 * skin_soa_load's: the scalar kernel handles them */
 				skin_dqbs_fixed(in, b, v, v + valid, out);
 			else
 				transform8(in, c.d[i], c.m[i], c.shift[i], v, valid, out);

@@ -449,6 +449,14 @@ static void test_blend_special(void **state)
 	fx_dq z = fx_dq_normalize(zero);
 	assert_int_equal(z.real.w, FX_Q30_ONE);
 	assert_int_equal(z.dual.x, 0);
+	/* a real part 2^32 long (weights summing to 4): its squared norm does
+	 * not fit 64 bits, and it too gives the identity (UBSan checks that
+	 * nothing overflows on the way) */
+	fx_dq huge = { { INT32_MAX, INT32_MIN, INT32_MAX, INT32_MIN }, { 5, 5, 5, 5 } };
+	z = fx_dq_normalize(huge);
+	assert_int_equal(z.real.w, FX_Q30_ONE);
+	assert_int_equal(z.real.x, 0);
+	assert_int_equal(z.dual.y, 0);
 }
 
 static void test_end_to_end_from_float(void **state)
