@@ -38,15 +38,6 @@ static int split_pose(bind_args *a, const char *spec)
 	return tool_parse_long("--bind-pose", colon + 1, &a->pose_frame);
 }
 
-static const char *value_of(const char *opt, int argc, char **argv, int *i)
-{
-	if (*i + 1 >= argc) {
-		fprintf(stderr, "skintool: %s needs a value\n", opt);
-		return NULL;
-	}
-	return argv[++*i];
-}
-
 int bind_args_parse(bind_args *a, int argc, char **argv, int *i)
 {
 	const char *opt = argv[*i], *val;
@@ -55,19 +46,19 @@ int bind_args_parse(bind_args *a, int argc, char **argv, int *i)
 		return 1;
 	}
 	if (strcmp(opt, "--group") == 0) {
-		if (!(val = value_of(opt, argc, argv, i)))
+		if (!(val = tool_option_value("skintool", opt, argc, argv, i)))
 			return -1;
 		a->group = val;
 		return 1;
 	}
 	if (strcmp(opt, "--weights") == 0) {
-		if (!(val = value_of(opt, argc, argv, i)))
+		if (!(val = tool_option_value("skintool", opt, argc, argv, i)))
 			return -1;
 		a->weights_path = val;
 		return 1;
 	}
 	if (strcmp(opt, "--bind-pose") == 0) {
-		if (!(val = value_of(opt, argc, argv, i)))
+		if (!(val = tool_option_value("skintool", opt, argc, argv, i)))
 			return -1;
 		return split_pose(a, val) < 0 ? -1 : 1;
 	}

@@ -110,3 +110,23 @@ int tool_read_frame(const char *path, const skel *s, long number, amc_frame *f)
 	}
 	return 0;
 }
+
+const char *tool_option_value(const char *cmd, const char *opt, int argc, char **argv, int *i)
+{
+	if (*i + 1 >= argc) {
+		fprintf(stderr, "%s: %s needs a value\n", cmd, opt);
+		return NULL;
+	}
+	return argv[++*i];
+}
+
+int tool_take_positional(const char *cmd, const char **const *slots, int n, const char *arg)
+{
+	for (int k = 0; k < n; k++)
+		if (!*slots[k]) {
+			*slots[k] = arg;
+			return 0;
+		}
+	fprintf(stderr, "%s: unexpected argument '%s'\n", cmd, arg);
+	return -1;
+}

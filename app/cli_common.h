@@ -33,6 +33,14 @@ void tool_motion_close(tool_motion *m);
  * the frames the file has when number is not one of them). */
 int tool_read_frame(const char *path, const skel *s, long number, amc_frame *f);
 
+/* argv[*i + 1], advancing *i; NULL after reporting "CMD: OPT needs a
+ * value" when the command line ends there. */
+const char *tool_option_value(const char *cmd, const char *opt, int argc, char **argv, int *i);
+
+/* Puts arg into the first of the n slots still NULL; -1 after reporting
+ * "CMD: unexpected argument" when every slot is taken. */
+int tool_take_positional(const char *cmd, const char **const *slots, int n, const char *arg);
+
 /* Parses a whole decimal integer argument; -1 (reported) when it is not. */
 int tool_parse_long(const char *opt, const char *text, long *out);
 

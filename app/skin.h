@@ -77,12 +77,14 @@ typedef struct skin_bones {
 	/* flat copies for SIMD gathers: 3x4 row-major, and real|dual */
 	float lbs12[SKP_MAX_BONES + 1][12];
 	float dq8[SKP_MAX_BONES + 1][8];
+#ifdef SKP_SIMD_AVX2
 	/* The DQBS sign fix depends only on the pair (pivot bone, bone): the
 	 * fixed-point decision for every pair, computed once per frame with the
 	 * dot product the scalar kernel uses, so the SIMD fixed kernel looks it
-	 * up instead of recomputing it per vertex: a mask, -1 (flip) or 0. */
+	 * up instead of recomputing it per vertex: a mask, -1 (flip) or 0.
+	 * Only the AVX2 fixed kernel reads it (and fdq_split below), so other
+	 * boards neither store nor compute it. */
 	int32_t flip_x[SKP_MAX_BONES + 1][SKP_MAX_BONES + 1];
-#ifdef SKP_SIMD_AVX2
 	/* fdq with every component c split as c = hi * 2^16 + lo, lo and hi
 	 * signed 16-bit halves of one word: the AVX2 fixed kernel blends them
 	 * with 16-bit multiply-adds. split_ok is 0 when a component is too

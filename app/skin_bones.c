@@ -28,6 +28,7 @@ static void set_bone(skin_bones *out, int b, quat q, vec3 t)
 	flatten(out, b);
 }
 
+#ifdef SKP_SIMD_AVX2
 /* Only the bones in use (and the identity slot) get entries. */
 static void compute_flips(skin_bones *out)
 {
@@ -44,7 +45,6 @@ static void compute_flips(skin_bones *out)
 	}
 }
 
-#ifdef SKP_SIMD_AVX2
 static void compute_split(skin_bones *out)
 {
 	out->split_ok = 1;
@@ -81,8 +81,10 @@ void skin_bones_compute(skin_bones *out, const skel *s, const skel_pose *bind,
 
 void skin_bones_derive(skin_bones *out)
 {
-	compute_flips(out);
 #ifdef SKP_SIMD_AVX2
+	compute_flips(out);
 	compute_split(out);
+#else
+	(void)out;
 #endif
 }

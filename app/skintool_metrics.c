@@ -67,15 +67,6 @@ static int parse_algos(metrics_args *a, const char *list)
 	return 0;
 }
 
-static const char *value_of(const char *opt, int argc, char **argv, int *i)
-{
-	if (*i + 1 >= argc) {
-		fprintf(stderr, "skintool metrics: %s needs a value\n", opt);
-		return NULL;
-	}
-	return argv[++*i];
-}
-
 static int parse_scene(metrics_args *a, const char *name)
 {
 	if ((a->scene = skin_scene_parse(name)) < 0) {
@@ -95,17 +86,6 @@ static int parse_angle(metrics_args *a, const char *text)
 	return 0;
 }
 
-static int take_positional(metrics_args *a, const char *arg)
-{
-	const char **slot = !a->asf ? &a->asf : !a->amc ? &a->amc : !a->obj ? &a->obj : NULL;
-	if (!slot) {
-		fprintf(stderr, "skintool metrics: unexpected argument '%s'\n", arg);
-		return -1;
-	}
-	*slot = arg;
-	return 0;
-}
-
 static int parse_one(metrics_args *a, int argc, char **argv, int *i)
 {
 	const char *opt = argv[*i], *val;
@@ -113,16 +93,17 @@ static int parse_one(metrics_args *a, int argc, char **argv, int *i)
 	if (r != 0)
 		return r < 0 ? -1 : 0;
 	if (strcmp(opt, "--algo") == 0)
-		return (val = value_of(opt, argc, argv, i)) ? parse_algos(a, val) : -1;
+		return (val = tool_option_value("skintool metrics", opt, argc, argv, i)) ? parse_algos(a, val) : -1;
 	if (strcmp(opt, "--scene") == 0)
-		return (val = value_of(opt, argc, argv, i)) ? parse_scene(a, val) : -1;
+		return (val = tool_option_value("skintool metrics", opt, argc, argv, i)) ? parse_scene(a, val) : -1;
 	if (strcmp(opt, "--angle") == 0)
-		return (val = value_of(opt, argc, argv, i)) ? parse_angle(a, val) : -1;
+		return (val = tool_option_value("skintool metrics", opt, argc, argv, i)) ? parse_angle(a, val) : -1;
 	if (opt[0] == '-' && opt[1]) {
 		fprintf(stderr, "skintool metrics: unknown option '%s'\n", opt);
 		return -1;
 	}
-	return take_positional(a, opt);
+	const char **const slots[] = { &a->asf, &a->amc, &a->obj };
+	return tool_take_positional("skintool metrics", slots, 3, opt);
 }
 
 static int check_args(const metrics_args *a)

@@ -11,6 +11,7 @@
 #include "cli_skin.h"
 #include "skintool_cmds.h"
 
+#define CMD "skintool skin"
 #define SKIN_USAGE "usage: skintool skin SKELETON.asf MOTION.amc MESH.obj --frame N " \
 	"--algo lbs|dqbs|dqbs-fixed " BIND_ARGS_USAGE " -o OUT.obj\n"
 
@@ -22,16 +23,6 @@ typedef struct skin_args {
 	int algo;
 } skin_args;
 
-static int take_value(const char *opt, int argc, char **argv, int *i, const char **val)
-{
-	if (*i + 1 >= argc) {
-		fprintf(stderr, "skintool skin: %s needs a value\n", opt);
-		return -1;
-	}
-	*val = argv[++*i];
-	return 0;
-}
-
 static int parse_algo(const char *name, int *algo)
 {
 	*algo = skin_algo_parse(name);
@@ -39,17 +30,6 @@ static int parse_algo(const char *name, int *algo)
 		fprintf(stderr, "skintool skin: unknown --algo '%s' (lbs, dqbs or dqbs-fixed)\n", name);
 		return -1;
 	}
-	return 0;
-}
-
-static int take_positional(skin_args *a, const char *arg)
-{
-	const char **slot = !a->asf ? &a->asf : !a->amc ? &a->amc : !a->obj ? &a->obj : NULL;
-	if (!slot) {
-		fprintf(stderr, "skintool skin: unexpected argument '%s'\n", arg);
-		return -1;
-	}
-	*slot = arg;
 	return 0;
 }
 
@@ -61,17 +41,18 @@ static int parse_one(skin_args *a, int argc, char **argv, int *i)
 		return r < 0 ? -1 : 0;
 	if (strcmp(opt, "--frame") == 0) {
 		a->have_frame = 1;
-		return take_value(opt, argc, argv, i, &val) < 0 ? -1 : tool_parse_long(opt, val, &a->frame);
+		return (val = tool_option_value(CMD, opt, argc, argv, i)) ? tool_parse_long(opt, val, &a->frame) : -1;
 	}
 	if (strcmp(opt, "--algo") == 0)
-		return take_value(opt, argc, argv, i, &val) < 0 ? -1 : parse_algo(val, &a->algo);
+		return (val = tool_option_value(CMD, opt, argc, argv, i)) ? parse_algo(val, &a->algo) : -1;
 	if (strcmp(opt, "-o") == 0)
-		return take_value(opt, argc, argv, i, &a->out);
+		return (a->out = tool_option_value(CMD, opt, argc, argv, i)) ? 0 : -1;
 	if (opt[0] == '-' && opt[1]) {
 		fprintf(stderr, "skintool skin: unknown option '%s'\n", opt);
 		return -1;
 	}
-	return take_positional(a, opt);
+	const char **const slots[] = { &a->asf, &a->amc, &a->obj };
+	return tool_take_positional(CMD, slots, 3, opt);
 }
 
 static int parse_args(skin_args *a, int argc, char **argv)
