@@ -82,6 +82,10 @@ typedef struct report {
 	double seconds;             /* measuring the clip */
 	report_algo algo[SKIN_ALGO_COUNT];
 	report_extreme rel_min;     /* worst LBS - DQBS over the clip */
+	/* at DQBS's largest volume deviation: the volume the skin passing
+	 * through itself adds to the signed volume, over the bound volume
+	 * (skin_overlap.h); NAN when not measured */
+	double dqbs_overlap;
 	report_scene scene[2 * REPORT_ANGLES];
 	int scene_count;
 	report_still still[REPORT_MAX_STILLS];

@@ -106,9 +106,14 @@ static void verdicts(FILE *f, const report *r)
 	dq_dev_signed = fabs(1.0 - d->vol_min.value) >= fabs(d->vol_max.value - 1.0)
 				? 100.0 * (d->vol_min.value - 1.0) : 100.0 * (d->vol_max.value - 1.0);
 	fprintf(f, "<p class=\"verdict %s\" id=\"verdict-dqbs-volume\">DQBS keeps the volume within 1%% "
-		"on every frame: <b>%s</b> &mdash; its largest deviation is %+.2f%% (frame %ld%s).</p>\n",
+		"on every frame: <b>%s</b> &mdash; its largest deviation is %+.2f%% (frame %ld%s)",
 		within ? "yes" : "no", within ? "yes" : "no", dq_dev_signed, d->vol_dev_frame,
 		dq_dev_signed > 0 ? ", a gain: DQBS bulges at bends" : "");
+	if (dq_dev_signed > 0 && r->dqbs_overlap >= 0.0005)
+		fprintf(f, "; of it, <span id=\"dqbs-overlap\">%.2f%%</span> is where the skin passes "
+			"through itself, which the signed volume counts twice (the enclosed volume there is "
+			"%+.2f%%)", 100.0 * r->dqbs_overlap, dq_dev_signed - 100.0 * r->dqbs_overlap);
+	fputs(".</p>\n", f);
 	fprintf(f, "<p class=\"verdict %s\" id=\"verdict-lbs-loss\">LBS's worst frame loses more volume "
 		"than DQBS's: <b>%s</b> &mdash; LBS loses up to %.2f%% (frame %ld), DQBS at most %.2f%%",
 		loses_more ? "yes" : "no", loses_more ? "yes" : "no", loss_pct(l), l->vol_min.frame,

@@ -22,6 +22,7 @@
 #include "cli_report_chart.h"
 #include "cli_report_render.h"
 #include "cli_skin.h"
+#include "skin_overlap.h"
 #include "skintool_cmds.h"
 
 #define COMPARE_USAGE "usage: skintool compare SKELETON.asf MOTION.amc [--mesh MESH.obj " \
@@ -30,6 +31,8 @@
 #define STORE_MAX 65536         /* frames kept for the charts (longer clips: every k-th) */
 #define REPORT_RENDER_W 1200
 #define REPORT_RENDER_H 600
+#define OVERLAP_GRID 256
+#define OVERLAP_HITS (1 << 22)
 
 typedef struct compare_args {
 	bind_args bind;
@@ -592,6 +595,32 @@ static int render_stills(compare_run *c, const compare_args *a)
 	return rc;
 }
 
+/* How much of DQBS's worst volume deviation is the skin passing through
+ * itself (counted twice by the signed volume) rather than bulging. */
+static int measure_overlap(compare_run *c, const compare_args *a)
+{
+	static int ray_start[OVERLAP_GRID * OVERLAP_GRID + 1];
+	static float hit_z[OVERLAP_HITS];
+	static signed char hit_dir[OVERLAP_HITS];
+	static const skin_overlap_work work = { OVERLAP_GRID, OVERLAP_HITS, ray_start, hit_z, hit_dir };
+	static amc_frame f;
+	report *r = &c->rep;
+	r->dqbs_overlap = NAN;
+	if (r->algo[SKIN_DQBS].vol_dev_frame < 0 || !(c->meas.rest_volume > 0.0))
+		return 0;
+	if (tool_read_frame(a->amc, &c->body.skel, r->algo[SKIN_DQBS].vol_dev_frame, &f) < 0)
+		return -1;
+	tool_skin_frame(&c->sk, f.value);
+	tool_skin_run(&c->sk, SKIN_DQBS, c->pos, c->nrm);
+	const mesh *m = &c->body.mesh;
+	int ok;
+	double excess = skin_mesh_overlap(c->pos, m->vert_count, (const uint32_t (*)[3])m->tri, m->tri_count,
+					  &work, &ok);
+	if (ok)
+		r->dqbs_overlap = excess / c->meas.rest_volume;
+	return 0;
+}
+
 static int make_dir(const char *dir)
 {
 	if (mkdir(dir, 0755) != 0 && errno != EEXIST) {
@@ -621,7 +650,7 @@ int cmd_compare(int argc, char **argv)
 		return 1;
 	uint64_t t1 = clock_now_ns();
 	pick_stills(&c, (int)a.renders);
-	if (render_stills(&c, &a) < 0 || write_charts(&c, a.out) < 0 || report_write_html(&c.rep, a.out) < 0)
+	if (measure_overlap(&c, &a) < 0 || render_stills(&c, &a) < 0 || write_charts(&c, a.out) < 0 || report_write_html(&c.rep, a.out) < 0)
 		return 1;
 	uint64_t t2 = clock_now_ns();
 	fprintf(stderr, "%s: %ld frames x 3 algorithms, %d vertices: measured in %.2f s, renders, "

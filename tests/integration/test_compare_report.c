@@ -162,6 +162,15 @@ static void check_verdicts(const char *html, const clip_stats *s, const char *cl
 	print_message("%-10s DQBS volume %.4f..%.4f (within 1%%: %s), LBS %.4f..%.4f: LBS loses %.2f%%, DQBS %.2f%%\n",
 		      clip, s->vol_min[1], s->vol_max[1], within ? "yes" : "NO", s->vol_min[0], s->vol_max[0],
 		      100 * loss_l, 100 * loss_d);
+	/* the share of a DQBS gain that is skin passing through itself: a part
+	 * of the gain, so between 0 and all of it */
+	const char *o = strstr(html, "id=\"dqbs-overlap\">");
+	if (o) {
+		double pct = strtod(o + strlen("id=\"dqbs-overlap\">"), NULL), gain = 100 * (s->vol_max[1] - 1);
+		if (!(pct > 0 && pct <= gain + 0.005))
+			fail_msg("%s: overlap %.2f%% of a DQBS gain of %.2f%%", clip, pct, gain);
+		print_message("%-10s of DQBS's %.2f%% gain, %.2f%% is skin passing through itself\n", clip, gain, pct);
+	}
 }
 
 /* One clip: compare, then metrics on the same body, then the checks. */
