@@ -67,8 +67,8 @@ static void cross_triangle(const ray_grid *g, const float *a, const float *b, co
 {
 	double area = ((double)b[0] - a[0]) * ((double)c[1] - a[1]) -
 		      ((double)b[1] - a[1]) * ((double)c[0] - a[0]);
-	if (area == 0.0)
-		return;
+	if (area == 0.0 || !isfinite(area))
+		return; /* edge-on, or a vertex blown up to nan / inf */
 	int i0, i1, j0, j1;
 	ray_range(fmin(a[0], fmin(b[0], c[0])), fmax(a[0], fmax(b[0], c[0])), g->x0, g->h,
 		  RAY_OFFSET_X, g->nx, &i0, &i1);

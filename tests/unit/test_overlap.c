@@ -158,6 +158,19 @@ static void test_scratch_too_small(void **state)
 	assert_false(ok);
 }
 
+/* A vertex blown up to nan (a degenerate skinning): its triangles are left
+ * out, not spread over every ray. */
+static void test_nan_vertex_left_out(void **state)
+{
+	(void)state;
+	two_boxes();
+	xyz[3 * 9] = NAN;
+	int ok;
+	double e = skin_mesh_overlap(xyz, verts, (const uint32_t (*)[3])tri, tris, &work, &ok);
+	assert_true(ok);
+	assert_true(isfinite(e));
+}
+
 int main(void)
 {
 	const struct CMUnitTest tests[] = {
@@ -165,6 +178,7 @@ int main(void)
 		cmocka_unit_test(test_two_boxes_overlap),
 		cmocka_unit_test(test_inside_out_box_is_negative),
 		cmocka_unit_test(test_scratch_too_small),
+		cmocka_unit_test(test_nan_vertex_left_out),
 	};
 	return cmocka_run_group_tests_name("overlap", tests, NULL, NULL);
 }
