@@ -1,6 +1,8 @@
 /* AVX2+FMA kernels: eight vertices per step in structure-of-arrays form,
- * bone data fetched with gathers. Built when the board sets SIMD=avx2;
- * results match skin_scalar.c to float rounding. */
+ * bone data fetched with gathers (LBS) or 8x8 transposes (DQBS). Built
+ * when the board sets SIMD=avx2; results match skin_scalar.c to float
+ * rounding. The small fixed loops carry `#pragma GCC unroll`: left rolled,
+ * GCC keeps their vectors in stack arrays (DQBS ran 30% slower). */
 #include "skin.h"
 
 #ifdef SKP_SIMD_AVX2
@@ -34,14 +36,14 @@ static v3x8 normalize8(v3x8 a)
 static void lbs_block(const skin_soa *in, const skin_bones *b, int v, __m256 m[12])
 {
 	const float *base = &b->lbs12[0][0];
-	#pragma GCC unroll 12
+#pragma GCC unroll 12
 	for (int i = 0; i < 12; i++)
 		m[i] = _mm256_setzero_ps();
-	#pragma GCC unroll 12
+#pragma GCC unroll 12
 	for (int k = 0; k < SKP_MAX_INFLUENCES; k++) {
 		__m256 w = _mm256_load_ps(in->weight[k] + v);
 		__m256i off = bone_offsets(in->bone[k], v, 12);
-		#pragma GCC unroll 12
+#pragma GCC unroll 12
 		for (int i = 0; i < 12; i++)
 			m[i] = _mm256_fmadd_ps(w, _mm256_i32gather_ps(base + i, off, 4), m[i]);
 	}
@@ -51,7 +53,7 @@ static v3x8 apply_rows(const __m256 m[12], v3x8 p, int with_translation)
 {
 	v3x8 r;
 	__m256 *out[3] = { &r.x, &r.y, &r.z };
-	#pragma GCC unroll 12
+#pragma GCC unroll 12
 	for (int row = 0; row < 3; row++) {
 		const __m256 *q = m + 4 * row;
 		__m256 acc = with_translation ? q[3] : _mm256_setzero_ps();
@@ -83,7 +85,7 @@ typedef struct dq8 {
 static inline __attribute__((always_inline)) dq8 gather_dq(const skin_bones *b, const uint16_t *bone, int v)
 {
 	__m256 r[8];
-	#pragma GCC unroll 12
+#pragma GCC unroll 12
 	for (int j = 0; j < 8; j++)
 		r[j] = _mm256_loadu_ps(b->dq8[bone[v + j]]);
 	skin_transpose8(r);
@@ -111,7 +113,7 @@ static dq8 dq_blend8(const skin_soa *in, const skin_bones *b, int v)
 	dq8 pivot = gather_dq(b, in->bone[0], v);
 	dq8 acc = { 0 };
 	dq_accumulate(&acc, &pivot, _mm256_load_ps(in->weight[0] + v));
-	#pragma GCC unroll 12
+#pragma GCC unroll 12
 	for (int k = 1; k < SKP_MAX_INFLUENCES; k++) {
 		dq8 d = gather_dq(b, in->bone[k], v);
 		__m256 dot = _mm256_mul_ps(d.rw, pivot.rw);

@@ -35,10 +35,9 @@ static inline void skin_transpose8(__m256 r[8])
 	r[7] = _mm256_permute2f128_ps(s3, s7, 0x31);
 }
 
-/* Four consecutive 32-bit values at row[j] (vertex j) to four registers of
- * 8 lanes: two rows per 256-bit register, then a 4x4 transpose per half.
- * Integer unpacks: recent cores run them on two ports, the float shuffles
- * on one. */
+/* Four consecutive 32-bit integers at row[j] (vertex j) to four registers
+ * of 8 lanes: two rows per 256-bit register, then a 4x4 transpose per
+ * half. */
 static inline void skin_transpose8x4(const int32_t *const row[8], __m256i out[4])
 {
 	__m256i a[4];

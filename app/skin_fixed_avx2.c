@@ -171,7 +171,7 @@ static inline __attribute__((always_inline)) void rsqrt4(__m256i x, __m256i *m, 
 	__m256i bs = _mm256_permutevar8x32_epi32(_mm256_loadu_si256((const __m256i *)fx_rsqrt_seed_b), seg);
 	__m256i y = _mm256_sub_epi64(a, mul_round(bs, xq, 30));
 	const __m256i three_halves = epi64(3ll << 30);
-	#pragma GCC unroll 8
+#pragma GCC unroll 8
 	for (int i = 0; i < FX_RSQRT_STEPS; i++) {
 		__m256i y2 = mul_round(y, y, 31);
 		__m256i h = mul_round(xq, y2, 31);
