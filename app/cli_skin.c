@@ -4,10 +4,7 @@
 
 #include "cli_common.h"
 
-/* skin_soa_bytes(SKP_MAX_VERTS) and the alignment of its 24 arrays. */
-#define BLOCK_BYTES ((size_t)SKP_MAX_VERTS * (16 * 4 + 8 * 2) + 32 * SKIN_ALIGN)
-
-static _Alignas(SKIN_ALIGN) unsigned char block[BLOCK_BYTES];
+static _Alignas(SKIN_ALIGN) unsigned char block[SKIN_SOA_BYTES(SKP_MAX_VERTS)];
 /* The fixed-point kernel's output before conversion. */
 static int32_t fpos[3 * SKP_MAX_VERTS], fnrm[3 * SKP_MAX_VERTS];
 

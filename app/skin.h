@@ -55,7 +55,17 @@ typedef struct skin_soa {
 	fx_w15 *fweight[SKP_MAX_INFLUENCES];
 } skin_soa;
 
-/* Bytes of the block skin_soa_attach needs for count vertices. */
+/* Bytes of the block skin_soa_attach needs for count vertices, as a
+ * constant expression for static blocks: per padded vertex 6 float + 3
+ * fx_pos + 3 fx_q30 + 4 float weights of 4 bytes and 4 bone + 4 fx_w15 of
+ * 2 bytes, each array rounded up to SKIN_ALIGN. */
+#define SKIN_SOA_ALIGN_UP(n) (((size_t)(n) + SKIN_ALIGN - 1) / SKIN_ALIGN * SKIN_ALIGN)
+#define SKIN_SOA_PADDED(count) (((size_t)(count) + SKIN_LANES - 1) / SKIN_LANES * SKIN_LANES)
+#define SKIN_SOA_BYTES(count)                                                              \
+	((6 + 3 + 3 + SKP_MAX_INFLUENCES) * SKIN_SOA_ALIGN_UP(SKIN_SOA_PADDED(count) * 4) + \
+	 2 * SKP_MAX_INFLUENCES * SKIN_SOA_ALIGN_UP(SKIN_SOA_PADDED(count) * 2))
+
+/* SKIN_SOA_BYTES for a count known at run time. */
 size_t skin_soa_bytes(int count);
 
 /* Carves the arrays of s out of mem (SKIN_ALIGN-aligned, skin_soa_bytes

@@ -4,36 +4,22 @@
 
 #include "fixed_convert.h"
 
-static int padded_count(int count)
-{
-	return (count + SKIN_LANES - 1) / SKIN_LANES * SKIN_LANES;
-}
-
-static size_t align_up(size_t n)
-{
-	return (n + SKIN_ALIGN - 1) / SKIN_ALIGN * SKIN_ALIGN;
-}
-
-/* Arrays per vertex: 6 float + 3 fx_pos + 3 fx_q30 + 4 float weights of 4
- * bytes, and 4 bone + 4 fx_w15 of 2 bytes. */
 size_t skin_soa_bytes(int count)
 {
-	size_t n = (size_t)padded_count(count);
-	size_t four = align_up(n * 4), two = align_up(n * 2);
-	return (6 + 3 + 3 + SKP_MAX_INFLUENCES) * four + 2 * SKP_MAX_INFLUENCES * two;
+	return SKIN_SOA_BYTES(count);
 }
 
 static void *take(char **cursor, size_t bytes)
 {
 	void *p = *cursor;
-	*cursor += align_up(bytes);
+	*cursor += SKIN_SOA_ALIGN_UP(bytes);
 	return p;
 }
 
 void skin_soa_attach(skin_soa *s, void *mem, int count)
 {
 	char *c = mem;
-	size_t n = (size_t)padded_count(count);
+	size_t n = SKIN_SOA_PADDED(count);
 	s->count = count;
 	s->padded = (int)n;
 	s->px = take(&c, n * 4); s->py = take(&c, n * 4); s->pz = take(&c, n * 4);

@@ -46,8 +46,7 @@ static bind_rig rig;
 static skin_weights weights;
 static skin_bones bones;
 static skin_soa soa;
-static _Alignas(SKIN_ALIGN) unsigned char soa_mem[(6 + 3 + 3 + SKP_MAX_INFLUENCES) * 4 * SKP_MAX_VERTS +
-						  2 * SKP_MAX_INFLUENCES * 2 * SKP_MAX_VERTS + 64 * SKIN_ALIGN];
+static _Alignas(SKIN_ALIGN) unsigned char soa_mem[SKIN_SOA_BYTES(SKP_MAX_VERTS)];
 
 static void die(const char *what, const skp_error *err)
 {
@@ -172,22 +171,24 @@ static void bind_body(void)
 		die("soa", &err);
 }
 
+/* n vec3s as float bit patterns, x y z per vertex, into bits */
+static void vec3_bits(const vec3 *a, int n, uint32_t *bits)
+{
+	for (int v = 0; v < n; v++) {
+		bits[3 * v] = float_bits(a[v].x);
+		bits[3 * v + 1] = float_bits(a[v].y);
+		bits[3 * v + 2] = float_bits(a[v].z);
+	}
+}
+
 static void emit_mesh(FILE *f)
 {
 	static uint32_t bits[3 * SKP_MAX_VERTS];
 	int n = body.vert_count;
-	for (int v = 0; v < n; v++) {
-		bits[3 * v] = float_bits(body.pos[v].x);
-		bits[3 * v + 1] = float_bits(body.pos[v].y);
-		bits[3 * v + 2] = float_bits(body.pos[v].z);
-	}
+	vec3_bits(body.pos, n, bits);
 	fputs("/* the body, float bit patterns: x y z per vertex */\nstatic const uint32_t emb_pos_bits[] = {", f);
 	emit_u32(f, bits, 3 * n);
-	for (int v = 0; v < n; v++) {
-		bits[3 * v] = float_bits(body.normal[v].x);
-		bits[3 * v + 1] = float_bits(body.normal[v].y);
-		bits[3 * v + 2] = float_bits(body.normal[v].z);
-	}
+	vec3_bits(body.normal, n, bits);
 	fputs("\n};\n\nstatic const uint32_t emb_nrm_bits[] = {", f);
 	emit_u32(f, bits, 3 * n);
 	fputs("\n};\n\n", f);

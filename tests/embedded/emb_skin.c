@@ -144,8 +144,7 @@ static mesh body;
 static bind_rig rig;
 static skin_weights weights;
 static skin_soa soa;
-static _Alignas(SKIN_ALIGN) unsigned char soa_mem[(6 + 3 + 3 + SKP_MAX_INFLUENCES) * 4 * EMB_PADDED +
-						  2 * SKP_MAX_INFLUENCES * 2 * EMB_PADDED + 64 * SKIN_ALIGN];
+static _Alignas(SKIN_ALIGN) unsigned char soa_mem[SKIN_SOA_BYTES(EMB_VERTS)];
 
 typedef struct diff {
 	long count; /* values that differ from the host's */

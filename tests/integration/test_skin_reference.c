@@ -172,7 +172,7 @@ static void ref_dqbs(const rbone *bones, const skin_weights *w, int v, const dou
 
 /* ---- comparing the kernels with it ---- */
 
-static _Alignas(SKIN_ALIGN) unsigned char block[(size_t)SKP_MAX_VERTS * 80 + 32 * SKIN_ALIGN];
+static _Alignas(SKIN_ALIGN) unsigned char block[SKIN_SOA_BYTES(SKP_MAX_VERTS)];
 static skin_soa soa;
 static skin_bones bones;
 static rbone rbones[SKP_MAX_BONES];

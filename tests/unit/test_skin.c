@@ -19,7 +19,7 @@
 #define PI 3.14159265358979323846
 #define MAXV 4096
 
-static _Alignas(SKIN_ALIGN) unsigned char block[(size_t)MAXV * 80 + 32 * SKIN_ALIGN];
+static _Alignas(SKIN_ALIGN) unsigned char block[SKIN_SOA_BYTES(MAXV)];
 static skin_scene sc;            /* its 2-bone skeleton and bind pose serve every case */
 static mesh m;
 static skin_weights w;
