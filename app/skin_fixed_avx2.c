@@ -11,30 +11,6 @@
 
 #include "skin_avx2.h"
 
-/* 8 products as two vectors of 4 int64: lanes 0,2,4,6 and 1,3,5,7 */
-typedef struct wide {
-	__m256i e, o;
-} wide;
-
-/* Odd lanes moved to the even positions vpmuldq reads: a shuffle, so it
- * runs on the shuffle port while the multiplies and shifts use the others. */
-static inline __m256i odd_lanes(__m256i a)
-{
-	return _mm256_shuffle_epi32(a, _MM_SHUFFLE(3, 3, 1, 1));
-}
-
-static inline wide wmul(__m256i a, __m256i b)
-{
-	wide r = { _mm256_mul_epi32(a, b), _mm256_mul_epi32(odd_lanes(a), odd_lanes(b)) };
-	return r;
-}
-
-static inline wide wadd(wide a, wide b)
-{
-	wide r = { _mm256_add_epi64(a.e, b.e), _mm256_add_epi64(a.o, b.o) };
-	return r;
-}
-
 static __m256i load_weights(const fx_w15 *w, int v)
 {
 	return _mm256_cvtepu16_epi32(_mm_load_si128((const __m128i *)(w + v)));
@@ -291,10 +267,12 @@ static void chunk_blend(const skin_soa *in, const skin_bones *b, int v, int batc
 	for (int i = 0; i < batches; i++) {
 		__m256i *d = c->d[i];
 		c->bad[i] = blend(in, b, v + i * SKIN_LANES, d);
-		wide n2 = wadd(wadd(wmul(d[0], d[0]), wmul(d[1], d[1])),
-			       wadd(wmul(d[2], d[2]), wmul(d[3], d[3])));
-		c->n2e[i] = n2.e;
-		c->n2o[i] = n2.o;
+		__m256i even[4], odd[4];
+		split_lanes(d, even, odd, 4);
+		c->n2e[i] = _mm256_add_epi64(_mm256_add_epi64(mul4(even[0], even[0]), mul4(even[1], even[1])),
+					     _mm256_add_epi64(mul4(even[2], even[2]), mul4(even[3], even[3])));
+		c->n2o[i] = _mm256_add_epi64(_mm256_add_epi64(mul4(odd[0], odd[0]), mul4(odd[1], odd[1])),
+					     _mm256_add_epi64(mul4(odd[2], odd[2]), mul4(odd[3], odd[3])));
 	}
 }
 
