@@ -35,24 +35,6 @@ static inline void skin_transpose8(__m256 r[8])
 	r[7] = _mm256_permute2f128_ps(s3, s7, 0x31);
 }
 
-/* Four consecutive 32-bit integers at row[j] (vertex j) to four registers
- * of 8 lanes: two rows per 256-bit register, then a 4x4 transpose per
- * half. */
-static inline void skin_transpose8x4(const int32_t *const row[8], __m256i out[4])
-{
-	__m256i a[4];
-#pragma GCC unroll 8
-	for (int j = 0; j < 4; j++)
-		a[j] = _mm256_inserti128_si256(_mm256_castsi128_si256(_mm_loadu_si128((const __m128i *)row[j])),
-					       _mm_loadu_si128((const __m128i *)row[j + 4]), 1);
-	__m256i t0 = _mm256_unpacklo_epi32(a[0], a[1]), t1 = _mm256_unpackhi_epi32(a[0], a[1]);
-	__m256i t2 = _mm256_unpacklo_epi32(a[2], a[3]), t3 = _mm256_unpackhi_epi32(a[2], a[3]);
-	out[0] = _mm256_unpacklo_epi64(t0, t2);
-	out[1] = _mm256_unpackhi_epi64(t0, t2);
-	out[2] = _mm256_unpacklo_epi64(t1, t3);
-	out[3] = _mm256_unpackhi_epi64(t1, t3);
-}
-
 /* Index of (pivot bone, bone) in the flip tables, for 8 lanes. */
 static inline __m256i skin_flip_index(const uint16_t *pivot, const uint16_t *bone, int v)
 {

@@ -1,6 +1,6 @@
 /* DQBS in fixed point with AVX2 integer instructions, eight vertices per
  * step, bit for bit the results of skin_fixed.c: the blend with 16-bit
- * multiply-adds on components split into 16-bit halves (blend_half), the
+ * multiply-adds on components split into 16-bit halves (blend_vertex), the
  * normalisation and the transform with 32x32->64 products (vpmuldq) on the
  * even and odd vertices in 64-bit lanes, sums kept in 64 bits and rounded
  * once. No floating-point instruction: `make test` disassembles this object
@@ -16,21 +16,18 @@ static __m256i load_weights(const fx_w15 *w, int v)
 	return _mm256_cvtepu16_epi32(_mm_load_si128((const __m128i *)(w + v)));
 }
 
-/* Signed weights as 16-bit multiply-add operands: (w, 0) multiplies the
- * low half of a split component, (0, w) the high half. Slot 0 (the pivot,
- * never flipped) may hold 32768, which int16 cannot: it enters as w - 1 and
- * blend_half adds its component once more. */
-typedef struct wpair {
-	__m256i lo, hi;
-} wpair;
-
-/* Weights with the sign fix (looked up per bone pair, see skin_bones).
- * Returns nonzero when a lane breaks what the 16-bit products need and
- * skin_soa_load guarantees (weights summing to at most 1.0, a full weight
- * only in slot 0): the caller then takes the scalar path. */
+/* Weights with the sign fix (looked up per bone pair, see skin_bones), as
+ * 16-bit multiply-add operands: wl (w, 0) multiplies the low half of a
+ * split component, wh (0, w) the high half. Slot 0 (the pivot, never
+ * flipped) may hold 32768, which int16 cannot: it enters as w - 32768,
+ * and blend_vertex adds 32768 c / 2^15 = c after the rounding (exact: c is
+ * an integer). Returns nonzero when a lane breaks what the 16-bit products
+ * need and skin_soa_load guarantees (weights summing to at most 1.0, a
+ * full weight only in slot 0): the caller then takes the scalar path. */
 static inline __attribute__((always_inline)) int blend_weights(const skin_soa *in,
 								const skin_bones *b, int v,
-								wpair w[SKP_MAX_INFLUENCES])
+								int32_t wl[][SKIN_LANES],
+								int32_t wh[][SKIN_LANES])
 {
 	const int *flip = &b->flip_x[0][0];
 	const __m256i low16 = _mm256_set1_epi32(0xffff), full = _mm256_set1_epi32(FX_W15_ONE);
@@ -40,75 +37,71 @@ static inline __attribute__((always_inline)) int blend_weights(const skin_soa *i
 		__m256i x = load_weights(in->fweight[k], v);
 		sum = _mm256_add_epi32(sum, x);
 		if (k == 0) {
-			x = _mm256_sub_epi32(x, _mm256_set1_epi32(1));
+			x = _mm256_sub_epi32(x, full);
 		} else {
 			__m256i neg = _mm256_i32gather_epi32(flip, skin_flip_index(in->bone[0], in->bone[k], v), 4);
 			bad = _mm256_or_si256(bad, _mm256_cmpeq_epi32(x, full));
 			x = _mm256_sub_epi32(_mm256_xor_si256(x, neg), neg);
 		}
-		w[k].lo = _mm256_and_si256(x, low16);
-		w[k].hi = _mm256_slli_epi32(x, 16);
+		_mm256_store_si256((__m256i *)wl[k], _mm256_and_si256(x, low16));
+		_mm256_store_si256((__m256i *)wh[k], _mm256_slli_epi32(x, 16));
 	}
 	bad = _mm256_or_si256(bad, _mm256_cmpgt_epi32(sum, full));
 	return !_mm256_testz_si256(bad, bad);
 }
 
-/* One half (real: 0, dual: 4) of the weighted sum, rounded back to Q30 /
- * fx_pos. With c = hi 2^16 + lo, sum(w c) = 2^16 sum(w hi) + sum(w lo),
- * and both sums fit in 32 bits because sum |w| <= 2^15; so the rounded
- * shift by 15 is 2 sum(w hi) + round(sum(w lo) / 2^15), exactly the
- * scalar kernel's 64-bit result. */
-static inline __attribute__((always_inline)) void blend_half(const int32_t *const rows[][8],
-							       const wpair w[SKP_MAX_INFLUENCES],
-							       int half, __m256i out[4])
+/* One vertex's blend, all eight components at once: its four bones'
+ * split rows times its weights broadcast, so the rows need no transpose
+ * (only the eight results do, once). With c = hi 2^16 + lo, sum(w c) =
+ * 2^16 sum(w hi) + sum(w lo); with the pivot's weight entering as
+ * w0 - 2^15, sum |w| <= 2^15 - w0 + min(3 w0, 2^15 - w0) <= 1.5 2^15, so
+ * both sums and the rounding below fit in 32 bits. The rounded shift by
+ * 15 is then 2 sum(w hi) + round(sum(w lo) / 2^15) + c0, exactly the
+ * scalar kernel's 64-bit result; 2 sum(w hi) may wrap, but the total is
+ * that in-range result, and wrapping adds are exact modulo 2^32. */
+static inline __attribute__((always_inline)) __m256i blend_vertex(const int32_t *const row[SKP_MAX_INFLUENCES],
+								  const fx_dq *pivot,
+								  const int32_t wl[][SKIN_LANES],
+								  const int32_t wh[][SKIN_LANES], int j)
 {
-	__m256i lo[4], hi[4];
+	__m256i lo = _mm256_setzero_si256(), hi = _mm256_setzero_si256();
 #pragma GCC unroll 8
 	for (int k = 0; k < SKP_MAX_INFLUENCES; k++) {
-		const int32_t *row[8];
-		__m256i d[4];
-#pragma GCC unroll 8
-		for (int j = 0; j < 8; j++)
-			row[j] = rows[k][j] + half;
-		skin_transpose8x4(row, d);
-#pragma GCC unroll 8
-		for (int c = 0; c < 4; c++) {
-			__m256i a = d[c];
-			__m256i pl = _mm256_madd_epi16(a, w[k].lo), ph = _mm256_madd_epi16(a, w[k].hi);
-			if (k == 0) {
-				/* the pivot's missing 1 * c */
-				lo[c] = _mm256_add_epi32(pl, _mm256_srai_epi32(_mm256_slli_epi32(a, 16), 16));
-				hi[c] = _mm256_add_epi32(ph, _mm256_srai_epi32(a, 16));
-			} else {
-				lo[c] = _mm256_add_epi32(lo[c], pl);
-				hi[c] = _mm256_add_epi32(hi[c], ph);
-			}
-			/* keeps the sums in influence order: reassociated, they
-			 * would hold every product live and spill */
-			__asm__("" : "+x"(lo[c]), "+x"(hi[c]));
-		}
+		__m256i a = _mm256_loadu_si256((const __m256i *)row[k]);
+		__m256i pl = _mm256_madd_epi16(a, _mm256_set1_epi32(wl[k][j]));
+		__m256i ph = _mm256_madd_epi16(a, _mm256_set1_epi32(wh[k][j]));
+		lo = _mm256_add_epi32(lo, pl);
+		hi = _mm256_add_epi32(hi, ph);
 	}
-	const __m256i rnd = _mm256_set1_epi32(1 << 14);
-#pragma GCC unroll 8
-	for (int c = 0; c < 4; c++)
-		out[c] = _mm256_add_epi32(_mm256_add_epi32(hi[c], hi[c]),
-					  _mm256_srai_epi32(_mm256_add_epi32(lo[c], rnd), 15));
+	__m256i sum = _mm256_add_epi32(_mm256_add_epi32(hi, hi),
+				       _mm256_srai_epi32(_mm256_add_epi32(lo, _mm256_set1_epi32(1 << 14)), 15));
+	return _mm256_add_epi32(sum, _mm256_loadu_si256((const __m256i *)pivot));
 }
 
 /* Nonzero when the batch must take the scalar path (see blend_weights). */
 static inline __attribute__((always_inline)) int blend(const skin_soa *in, const skin_bones *b, int v,
 							 __m256i out[8])
 {
-	wpair w[SKP_MAX_INFLUENCES];
-	const int32_t *rows[SKP_MAX_INFLUENCES][8];
+	int32_t wl[SKP_MAX_INFLUENCES][SKIN_LANES] __attribute__((aligned(32)));
+	int32_t wh[SKP_MAX_INFLUENCES][SKIN_LANES] __attribute__((aligned(32)));
+	int bad = blend_weights(in, b, v, wl, wh);
+	/* read back through memory: forwarded in registers, GCC broadcasts
+	 * them with shuffles, which compete with the transpose for the
+	 * shuffle port, where a broadcast load costs only a load */
+	__asm__("" : "+m"(wl), "+m"(wh));
+	__m256 r[SKIN_LANES];
 #pragma GCC unroll 8
-	for (int k = 0; k < SKP_MAX_INFLUENCES; k++)
+	for (int j = 0; j < SKIN_LANES; j++) {
+		const int32_t *row[SKP_MAX_INFLUENCES];
 #pragma GCC unroll 8
-		for (int j = 0; j < 8; j++)
-			rows[k][j] = b->fdq_split[in->bone[k][v + j]];
-	int bad = blend_weights(in, b, v, w);
-	blend_half(rows, w, 0, out);
-	blend_half(rows, w, 4, out + 4);
+		for (int k = 0; k < SKP_MAX_INFLUENCES; k++)
+			row[k] = b->fdq_split[in->bone[k][v + j]];
+		r[j] = _mm256_castsi256_ps(blend_vertex(row, &b->fdq[in->bone[0][v + j]], wl, wh, j));
+	}
+	skin_transpose8(r);
+#pragma GCC unroll 8
+	for (int c = 0; c < 8; c++)
+		out[c] = _mm256_castps_si256(r[c]);
 	return bad;
 }
 
