@@ -119,16 +119,21 @@ static inline __m256i mul_round(__m256i a, __m256i b, int s)
 
 /* fx_rsqrt_q60 on 4 lanes, step for step the same integers, for squared
  * norms in [2^56, 2^62) (every blend with the sign fix: its real part is at
- * least the pivot's weight, 1/4, long). Lanes outside are flagged in *bad. */
-static inline __attribute__((always_inline)) void rsqrt4(__m256i x, __m256i *m, __m256i *shift, __m256i *bad)
+ * least the pivot's weight, 1/4, long). In stages (seed, Newton steps,
+ * clamp) so that chunk_norms can run each stage over a whole chunk: one
+ * rsqrt is a chain of dependent multiplies, and the core only overlaps
+ * chains that are close together in the instruction stream. The seed
+ * replaces x by X in Q30 (xq) and flags lanes outside the range in *bad. */
+static inline __attribute__((always_inline)) __m256i rsqrt_seed4(__m256i *x, __m256i *shift, __m256i *bad)
 {
-	__m256i lt60 = _mm256_cmpgt_epi64(epi64(1ll << 60), x);
-	__m256i lt58 = _mm256_cmpgt_epi64(epi64(1ll << 58), x);
-	*bad = _mm256_or_si256(_mm256_cmpgt_epi64(epi64(1ll << 56), x),
-			       _mm256_cmpgt_epi64(x, epi64((1ll << 62) - 1)));
+	__m256i lt60 = _mm256_cmpgt_epi64(epi64(1ll << 60), *x);
+	__m256i lt58 = _mm256_cmpgt_epi64(epi64(1ll << 58), *x);
+	*bad = _mm256_or_si256(_mm256_cmpgt_epi64(epi64(1ll << 56), *x),
+			       _mm256_cmpgt_epi64(*x, epi64((1ll << 62) - 1)));
 	__m256i e = _mm256_sub_epi64(_mm256_setzero_si256(), _mm256_add_epi64(lt60, lt58));
-	x = _mm256_sllv_epi64(x, _mm256_add_epi64(e, e));
-	__m256i xq = _mm256_srli_epi64(x, 30); /* floor, < 2^32 */
+	*shift = _mm256_sub_epi64(epi64(31), e);
+	__m256i xq = _mm256_srli_epi64(_mm256_sllv_epi64(*x, _mm256_add_epi64(e, e)), 30); /* floor, < 2^32 */
+	*x = xq;
 	/* fx_rsqrt_segment: the index in the low half of each lane is what
 	 * vpermd reads; the high halves pick garbage, masked off for a */
 	__m256i high = _mm256_cmpgt_epi64(xq, epi64(0x7fffffff));
@@ -138,19 +143,21 @@ static inline __attribute__((always_inline)) void rsqrt4(__m256i x, __m256i *m, 
 					     _mm256_loadu_si256((const __m256i *)fx_rsqrt_seed_a), seg),
 				     epi64(0xffffffff));
 	__m256i bs = _mm256_permutevar8x32_epi32(_mm256_loadu_si256((const __m256i *)fx_rsqrt_seed_b), seg);
-	__m256i y = _mm256_sub_epi64(a, mul_round(bs, xq, 30));
+	return _mm256_sub_epi64(a, mul_round(bs, xq, 30));
+}
+
+static inline __attribute__((always_inline)) __m256i rsqrt_step4(__m256i xq, __m256i y)
+{
 	const __m256i three_halves = epi64(3ll << 30);
-#pragma GCC unroll 8
-	for (int i = 0; i < FX_RSQRT_STEPS; i++) {
-		__m256i y2 = mul_round(y, y, 31);
-		__m256i h = mul_round(xq, y2, 31);
-		__m256i f = _mm256_andnot_si256(_mm256_cmpgt_epi64(h, three_halves),
-						_mm256_sub_epi64(three_halves, h));
-		y = mul_round(y, f, 31);
-	}
-	__m256i big = _mm256_cmpgt_epi64(y, epi64(INT32_MAX));
-	*m = _mm256_blendv_epi8(y, epi64(INT32_MAX), big);
-	*shift = _mm256_sub_epi64(epi64(31), e);
+	__m256i y2 = mul_round(y, y, 31);
+	__m256i h = mul_round(xq, y2, 31);
+	__m256i f = _mm256_andnot_si256(_mm256_cmpgt_epi64(h, three_halves), _mm256_sub_epi64(three_halves, h));
+	return mul_round(y, f, 31);
+}
+
+static inline __m256i rsqrt_clamp4(__m256i y)
+{
+	return _mm256_blendv_epi8(y, epi64(INT32_MAX), _mm256_cmpgt_epi64(y, epi64(INT32_MAX)));
 }
 
 /* The transform takes 4 vertices at a time in 64-bit lanes, each value in
@@ -250,8 +257,8 @@ static __m256i q30_to_q16(__m256i v)
 
 typedef struct chunk {
 	__m256i d[CHUNK_BATCHES][8];
-	__m256i n2e[CHUNK_BATCHES], n2o[CHUNK_BATCHES];
-	__m256i m[CHUNK_BATCHES][2], shift[CHUNK_BATCHES][2]; /* even, odd lanes */
+	/* even, odd lanes: squared norm (then X in Q30), rsqrt, shift */
+	__m256i n2[CHUNK_BATCHES][2], m[CHUNK_BATCHES][2], shift[CHUNK_BATCHES][2];
 	int bad[CHUNK_BATCHES];
 } chunk;
 
@@ -262,9 +269,9 @@ static void chunk_blend(const skin_soa *in, const skin_bones *b, int v, int batc
 		c->bad[i] = blend(in, b, v + i * SKIN_LANES, d);
 		__m256i even[4], odd[4];
 		split_lanes(d, even, odd, 4);
-		c->n2e[i] = _mm256_add_epi64(_mm256_add_epi64(mul4(even[0], even[0]), mul4(even[1], even[1])),
+		c->n2[i][0] = _mm256_add_epi64(_mm256_add_epi64(mul4(even[0], even[0]), mul4(even[1], even[1])),
 					     _mm256_add_epi64(mul4(even[2], even[2]), mul4(even[3], even[3])));
-		c->n2o[i] = _mm256_add_epi64(_mm256_add_epi64(mul4(odd[0], odd[0]), mul4(odd[1], odd[1])),
+		c->n2[i][1] = _mm256_add_epi64(_mm256_add_epi64(mul4(odd[0], odd[0]), mul4(odd[1], odd[1])),
 					     _mm256_add_epi64(mul4(odd[2], odd[2]), mul4(odd[3], odd[3])));
 	}
 }
@@ -273,11 +280,17 @@ static void chunk_norms(int batches, chunk *c)
 {
 	for (int i = 0; i < batches; i++) {
 		__m256i be, bo;
-		rsqrt4(c->n2e[i], &c->m[i][0], &c->shift[i][0], &be);
-		rsqrt4(c->n2o[i], &c->m[i][1], &c->shift[i][1], &bo);
+		c->m[i][0] = rsqrt_seed4(&c->n2[i][0], &c->shift[i][0], &be);
+		c->m[i][1] = rsqrt_seed4(&c->n2[i][1], &c->shift[i][1], &bo);
 		__m256i bad = _mm256_or_si256(be, bo);
 		c->bad[i] |= !_mm256_testz_si256(bad, bad);
 	}
+	__m256i *xq = &c->n2[0][0], *y = &c->m[0][0];
+	for (int s = 0; s < FX_RSQRT_STEPS; s++)
+		for (int i = 0; i < 2 * batches; i++)
+			y[i] = rsqrt_step4(xq[i], y[i]);
+	for (int i = 0; i < 2 * batches; i++)
+		y[i] = rsqrt_clamp4(y[i]);
 }
 
 static void transform8(const skin_soa *in, const __m256i d[8], const __m256i m[2],

@@ -35,6 +35,12 @@ static quat random_quat(void)
 	return quat_normalize(q);
 }
 
+static int by_weight_desc(const void *a, const void *b)
+{
+	float x = *(const float *)a, y = *(const float *)b;
+	return (x < y) - (x > y);
+}
+
 /* A mesh of n vertices in a 2-unit box, 4 influences on random bones. */
 static int make_scene(bench *b, int n, void **block)
 {
@@ -51,6 +57,8 @@ static int make_scene(bench *b, int n, void **block)
 		float w[4], sum = 0;
 		for (int k = 0; k < 4; k++)
 			sum += w[k] = 0.05f + frand();
+		/* largest first, as skin_soa_load leaves them (the DQBS pivot) */
+		qsort(w, 4, sizeof w[0], by_weight_desc);
 		for (int k = 0; k < 4; k++) {
 			b->soa.bone[k][v] = (uint16_t)(frand() * BENCH_BONES) % BENCH_BONES;
 			b->soa.weight[k][v] = w[k] / sum;
@@ -98,7 +106,7 @@ static void run_slice(void *ctx, int slice, int slices)
 	skin_run(b->algo, &b->soa, &b->bones, from, to - from, &b->out);
 }
 
-/* Seconds per pass of one timed round: passes for at least 0.2 s. */
+/* Seconds per pass of one timed round: passes for at least 50 ms. */
 static double round_seconds_per_pass(workers *w, bench *b)
 {
 	int passes = 0;
@@ -107,18 +115,19 @@ static double round_seconds_per_pass(workers *w, bench *b)
 		workers_run(w, run_slice, b);
 		passes++;
 		t1 = clock_now_ns();
-	} while (t1 - t0 < 200000000u);
+	} while (t1 - t0 < 50000000u);
 	return (double)(t1 - t0) * 1e-9 / passes;
 }
 
-/* Best of several rounds per algorithm, the algorithms taking turns so
+/* Best of many short rounds per algorithm, the algorithms taking turns so
  * that a machine slowing down or speeding up (a shared VM) shifts all of
- * them alike and their ratios stay meaningful. */
+ * them alike and their ratios stay meaningful: short rounds give each
+ * algorithm more chances to be timed in the machine's fast phases. */
 static void best_seconds_per_pass(workers *w, bench *b, double best[SKIN_ALGO_COUNT])
 {
 	for (int a = 0; a < SKIN_ALGO_COUNT; a++)
 		best[a] = 1e30;
-	for (int round = 0; round < 5; round++)
+	for (int round = 0; round < 20; round++)
 		for (int a = 0; a < SKIN_ALGO_COUNT; a++) {
 			b->algo = (skin_algo)a;
 			double s = round_seconds_per_pass(w, b);
