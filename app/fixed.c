@@ -2,6 +2,8 @@
  * registers disabled. Overflow bounds are argued in fixed.h. */
 #include "fixed.h"
 
+#include <stddef.h>
+
 static const fx_quat fx_quat_identity = { FX_Q30_ONE, 0, 0, 0 };
 
 int64_t fx_quat_dot(fx_quat a, fx_quat b)
@@ -264,8 +266,57 @@ fx_dq fx_dq_blend(const fx_dq *bone_dqs, const uint16_t *bone_idx,
 	return b;
 }
 
-fx_dq fx_dq_blend_normalized(const fx_dq *bone_dqs, const uint16_t *bone_idx,
-			     const fx_w15 *weights, int count, fx_quat pivot)
+int fx_dq_blend_scale(fx_quat real, uint32_t *inv)
 {
-	return fx_dq_normalize(fx_dq_blend(bone_dqs, bone_idx, weights, count, pivot));
+	uint64_t s = quat_norm2_sat(real);
+	int shift;
+
+	*inv = 0;
+	if (s >= (uint64_t)1 << 61)
+		return 0;
+	uint32_t m = fx_rsqrt_q60(s, &shift);
+	int sh = 2 * shift - 33; /* >= 1 (a defined rounding shift) for s >= 2^-28 */
+	if (m == 0 || sh < 1)
+		return 0;
+	*inv = (uint32_t)(((uint64_t)m * m + ((uint64_t)1 << 31)) >> 32);
+	return sh;
+}
+
+/* v + (2 / s) (r x (r x v + w v + dv) + w dv - dw r), dual = (dw, dv) or
+ * NULL for a normal. Each sum is a dot product of (part of) the real part,
+ * shorter than 2^30.5 for s < 2, with at most 4 int32 values (at most
+ * 2^32 long): below 2^62.5, and b inv below 2^61. */
+static fx_vec3 move_blended(const fx_quat *q, const fx_quat *dual, fx_vec3 v, uint32_t inv, int sh)
+{
+	const int64_t w = q->w, r[3] = { q->x, q->y, q->z };
+	const int64_t vv[3] = { v.x, v.y, v.z };
+	const int64_t dw = dual ? dual->w : 0;
+	const int64_t dv[3] = { dual ? dual->x : 0, dual ? dual->y : 0, dual ? dual->z : 0 };
+	int64_t a[3], out[3];
+
+	for (int i = 0; i < 3; i++) {
+		int j = (i + 1) % 3, k = (i + 2) % 3;
+		a[i] = fx_sat32(fx_shr_round(r[j] * vv[k] - r[k] * vv[j] + w * vv[i], 30) + dv[i]);
+	}
+	for (int i = 0; i < 3; i++) {
+		int j = (i + 1) % 3, k = (i + 2) % 3;
+		int64_t b = fx_sat32(fx_shr_round(r[j] * a[k] - r[k] * a[j] + w * dv[i] - dw * r[i], 30));
+		out[i] = fx_sat32(vv[i] + fx_shr_round(b * inv, sh));
+	}
+	fx_vec3 o = { (int32_t)out[0], (int32_t)out[1], (int32_t)out[2] };
+	return o;
+}
+
+void fx_dq_transform_blend(const fx_dq *d, fx_vec3 p, fx_vec3 n, fx_vec3 *po, fx_vec3 *no)
+{
+	uint32_t inv;
+	int sh = fx_dq_blend_scale(d->real, &inv);
+
+	if (sh == 0) {
+		*po = p;
+		*no = n;
+		return;
+	}
+	*po = move_blended(&d->real, &d->dual, p, inv, sh);
+	*no = move_blended(&d->real, NULL, n, inv, sh);
 }

@@ -97,11 +97,13 @@ typedef struct skin_bones {
 	int32_t flip_x[SKP_MAX_BONES + 1][SKP_MAX_BONES + 1];
 	/* fdq with every component c split as c = hi * 2^16 + lo, lo and hi
 	 * signed 16-bit halves of one word: the AVX2 fixed kernel blends them
-	 * with 16-bit multiply-adds. split_ok is 0 when a component is too
-	 * close to the int32 limits for hi to fit (a translation near the
-	 * fixed-point range): the kernel then takes the scalar path. */
+	 * with 16-bit multiply-adds. simd_ok is 0 when a dual component is
+	 * 2^26 (1024 units) or longer: beyond that the kernel's 32-bit
+	 * intermediates could overflow where the scalar kernel saturates, so
+	 * it takes the scalar path for the frame. */
+#define SKIN_SIMD_DUAL_LIMIT ((int32_t)1 << 26)
 	int32_t fdq_split[SKP_MAX_BONES + 1][8];
-	int split_ok;
+	int simd_ok;
 #endif
 } skin_bones;
 

@@ -47,7 +47,7 @@ static void compute_flips(skin_bones *out)
 
 static void compute_split(skin_bones *out)
 {
-	out->split_ok = 1;
+	out->simd_ok = 1;
 	for (int b = 0; b <= SKP_MAX_BONES; b++) {
 		if (b >= out->count && b != SKIN_IDENTITY_BONE)
 			continue;
@@ -58,8 +58,8 @@ static void compute_split(skin_bones *out)
 			int64_t v = c[i];
 			int64_t lo = (int16_t)(uint16_t)((uint64_t)v & 0xffff);
 			int64_t hi = (v - lo) / 65536;
-			if (hi < INT16_MIN || hi > INT16_MAX)
-				out->split_ok = 0;
+			if (i >= 4 && (v >= SKIN_SIMD_DUAL_LIMIT || v <= -SKIN_SIMD_DUAL_LIMIT))
+				out->simd_ok = 0; /* (then hi fits int16 too) */
 			out->fdq_split[b][i] = (int32_t)(((uint32_t)hi << 16) | (uint16_t)lo);
 		}
 	}

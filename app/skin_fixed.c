@@ -23,11 +23,11 @@ void skin_dqbs_fixed(const skin_soa *in, const skin_bones *b, int first, int end
 			idx[k] = in->bone[k][v];
 			w[k] = in->fweight[k][v];
 		}
-		fx_dq d = fx_dq_blend_normalized(b->fdq, idx, w, SKP_MAX_INFLUENCES, b->fdq[idx[0]].real);
+		fx_dq d = fx_dq_blend(b->fdq, idx, w, SKP_MAX_INFLUENCES, b->fdq[idx[0]].real);
 		fx_vec3 p = { in->fpx[v], in->fpy[v], in->fpz[v] };
 		fx_vec3 n = { in->fnx[v], in->fny[v], in->fnz[v] };
-		fx_vec3 pp = fx_dq_transform_point(&d, p);
-		fx_vec3 nn = fx_dq_transform_normal(&d, n);
+		fx_vec3 pp, nn;
+		fx_dq_transform_blend(&d, p, n, &pp, &nn);
 		int32_t *po = out->fpos + 3 * v, *no = out->fnrm + 3 * v;
 		po[0] = pos_to_q16(pp.x); po[1] = pos_to_q16(pp.y); po[2] = pos_to_q16(pp.z);
 		no[0] = q30_to_q16(nn.x); no[1] = q30_to_q16(nn.y); no[2] = q30_to_q16(nn.z);

@@ -118,8 +118,9 @@ static inline __m256i mul_round(__m256i a, __m256i b, int s)
 }
 
 /* fx_rsqrt_q60 on 4 lanes, step for step the same integers, for squared
- * norms in [2^56, 2^62) (every blend with the sign fix: its real part is at
- * least the pivot's weight, 1/4, long). In stages (seed, Newton steps,
+ * norms in [2^56, 2^60 + 2^32] (every blend with the sign fix whose weights
+ * sum to at most 1: its real part is at least the pivot's weight, 1/4, and
+ * at most 1 plus rounding long). In stages (seed, Newton steps,
  * clamp) so that chunk_norms can run each stage over a whole chunk: one
  * rsqrt is a chain of dependent multiplies, and the core only overlaps
  * chains that are close together in the instruction stream. The seed
@@ -129,7 +130,7 @@ static inline __attribute__((always_inline)) __m256i rsqrt_seed4(__m256i *x, __m
 	__m256i lt60 = _mm256_cmpgt_epi64(epi64(1ll << 60), *x);
 	__m256i lt58 = _mm256_cmpgt_epi64(epi64(1ll << 58), *x);
 	*bad = _mm256_or_si256(_mm256_cmpgt_epi64(epi64(1ll << 56), *x),
-			       _mm256_cmpgt_epi64(*x, epi64((1ll << 62) - 1)));
+			       _mm256_cmpgt_epi64(*x, epi64((1ll << 60) + (1ll << 32))));
 	__m256i e = _mm256_sub_epi64(_mm256_setzero_si256(), _mm256_add_epi64(lt60, lt58));
 	*shift = _mm256_sub_epi64(epi64(31), e);
 	__m256i xq = _mm256_srli_epi64(_mm256_sllv_epi64(*x, _mm256_add_epi64(e, e)), 30); /* floor, < 2^32 */
@@ -155,9 +156,12 @@ static inline __attribute__((always_inline)) __m256i rsqrt_step4(__m256i xq, __m
 	return mul_round(y, f, 31);
 }
 
-static inline __m256i rsqrt_clamp4(__m256i y)
+/* fx_dq_blend_scale from the rsqrt m, shift: 2 / |real|^2 = inv / 2^sh */
+static inline void blend_scale4(__m256i *y, __m256i *shift)
 {
-	return _mm256_blendv_epi8(y, epi64(INT32_MAX), _mm256_cmpgt_epi64(y, epi64(INT32_MAX)));
+	__m256i m = _mm256_blendv_epi8(*y, epi64(INT32_MAX), _mm256_cmpgt_epi64(*y, epi64(INT32_MAX)));
+	*y = mul_round(m, m, 32);
+	*shift = _mm256_sub_epi64(_mm256_add_epi64(*shift, *shift), epi64(33));
 }
 
 /* The transform takes 4 vertices at a time in 64-bit lanes, each value in
@@ -175,58 +179,45 @@ static inline __m256i mul4(__m256i a, __m256i b)
 	return _mm256_mul_epi32(a, b);
 }
 
-/* v + 2 r x (r x v + w v) with r, w in Q30: sums of products in 64 bits */
-static inline __attribute__((always_inline)) void rotate4(const __m256i q[4], const __m256i v[3],
-							    __m256i out[3])
+/* fx_dq_transform_blend's move_blended on 4 lanes: v + (2 / s) (r x (r x v
+ * + w v + dv) + w dv - dw r), dual = d + 4 or NULL for the normal; 2 / s =
+ * inv / 2^sh. Inside the envelope the batch was checked against, no
+ * intermediate leaves int32, so nothing saturates and the low 32 bits of
+ * each lane are the scalar kernel's values. */
+static inline __attribute__((always_inline)) void move4(const __m256i d[8], const __m256i *dual,
+							  const __m256i v[3], __m256i inv, __m256i sh,
+							  __m256i rnd, __m256i out[3])
 {
-	const __m256i w = q[0], *r = q + 1;
-	__m256i t[3];
+	const __m256i w = d[0], *r = d + 1;
+	__m256i a[3];
 #pragma GCC unroll 3
 	for (int i = 0; i < 3; i++) {
 		int j = (i + 1) % 3, k = (i + 2) % 3;
-		t[i] = round_shift(_mm256_add_epi64(_mm256_sub_epi64(mul4(r[j], v[k]), mul4(r[k], v[j])),
+		a[i] = round_shift(_mm256_add_epi64(_mm256_sub_epi64(mul4(r[j], v[k]), mul4(r[k], v[j])),
 						    mul4(w, v[i])), 30);
+		if (dual)
+			a[i] = _mm256_add_epi64(a[i], dual[i + 1]);
 	}
 #pragma GCC unroll 3
 	for (int i = 0; i < 3; i++) {
 		int j = (i + 1) % 3, k = (i + 2) % 3;
-		out[i] = _mm256_add_epi64(v[i], round_shift(_mm256_sub_epi64(mul4(r[j], t[k]),
-									     mul4(r[k], t[j])), 29));
+		__m256i sum = _mm256_sub_epi64(mul4(r[j], a[k]), mul4(r[k], a[j]));
+		if (dual)
+			sum = _mm256_add_epi64(sum, _mm256_sub_epi64(mul4(w, dual[i + 1]), mul4(dual[0], r[i])));
+		__m256i b = round_shift(sum, 30);
+		out[i] = _mm256_add_epi64(v[i], _mm256_srlv_epi64(_mm256_add_epi64(mul4(b, inv), rnd), sh));
 	}
 }
 
-/* 2 (w d_v - d_w r_v + r_v x d_v) */
-static inline __attribute__((always_inline)) void translation4(const __m256i q[8], __m256i t[3])
-{
-	const __m256i *r = q, *d = q + 4;
-#pragma GCC unroll 3
-	for (int i = 1; i <= 3; i++) {
-		int j = i % 3 + 1, k = (i + 1) % 3 + 1;
-		t[i - 1] = round_shift(_mm256_add_epi64(_mm256_sub_epi64(mul4(r[0], d[i]), mul4(d[0], r[i])),
-							_mm256_sub_epi64(mul4(r[j], d[k]), mul4(r[k], d[j]))),
-				       29);
-	}
-}
-
-/* Normalises the blend (times m >> shift per lane, as fx_dq_normalize) and
- * moves the point p and the normal n with it. */
-static inline __attribute__((always_inline)) void transform4(const __m256i d[8], __m256i m,
-							       __m256i shift, const __m256i p[3],
+static inline __attribute__((always_inline)) void transform4(const __m256i d[8], __m256i inv,
+							       __m256i sh, const __m256i p[3],
 							       const __m256i n[3], __m256i po[3],
 							       __m256i no[3])
 {
 	const __m256i one = epi64(1);
-	const __m256i rnd = _mm256_sllv_epi64(one, _mm256_sub_epi64(shift, one));
-	__m256i q[8], t[3];
-#pragma GCC unroll 8
-	for (int c = 0; c < 8; c++)
-		q[c] = _mm256_srlv_epi64(_mm256_add_epi64(mul4(d[c], m), rnd), shift);
-	translation4(q, t);
-	rotate4(q, p, po);
-#pragma GCC unroll 3
-	for (int i = 0; i < 3; i++)
-		po[i] = _mm256_add_epi64(po[i], t[i]);
-	rotate4(q, n, no);
+	const __m256i rnd = _mm256_sllv_epi64(one, _mm256_sub_epi64(sh, one));
+	move4(d, d + 4, p, inv, sh, rnd, po);
+	move4(d, NULL, n, inv, sh, rnd, no);
 }
 
 /* 8 int32 lanes to the even (low halves already) and odd vertices */
@@ -257,16 +248,37 @@ static __m256i q30_to_q16(__m256i v)
 
 typedef struct chunk {
 	__m256i d[CHUNK_BATCHES][8];
-	/* even, odd lanes: squared norm (then X in Q30), rsqrt, shift */
-	__m256i n2[CHUNK_BATCHES][2], m[CHUNK_BATCHES][2], shift[CHUNK_BATCHES][2];
+	/* even, odd lanes: squared norm (then X in Q30); rsqrt m, then inv;
+	 * its shift, then sh (see fx_dq_blend_scale) */
+	__m256i n2[CHUNK_BATCHES][2], inv[CHUNK_BATCHES][2], sh[CHUNK_BATCHES][2];
 	int bad[CHUNK_BATCHES];
 } chunk;
+
+/* Whether a vertex of the batch is outside what the vector path keeps
+ * within int32 (see move4): a position coordinate of 4096 units or more
+ * (x + 2^28 leaves [0, 2^29)), a normal component longer than 1. */
+static int outside_envelope(const skin_soa *in, int v)
+{
+	const int32_t *const pos[3] = { in->fpx, in->fpy, in->fpz }, *const nrm[3] = { in->fnx, in->fny, in->fnz };
+	const __m256i one = _mm256_set1_epi32(FX_Q30_ONE);
+	__m256i p = _mm256_setzero_si256(), n = p;
+#pragma GCC unroll 3
+	for (int i = 0; i < 3; i++) {
+		__m256i x = _mm256_load_si256((const __m256i *)(pos[i] + v));
+		p = _mm256_or_si256(p, _mm256_add_epi32(x, _mm256_set1_epi32(1 << 28)));
+		/* unsigned: INT32_MIN stays negative under abs */
+		n = _mm256_max_epu32(n, _mm256_abs_epi32(_mm256_load_si256((const __m256i *)(nrm[i] + v))));
+	}
+	__m256i bad = _mm256_or_si256(_mm256_and_si256(p, _mm256_set1_epi32(~((1 << 29) - 1))),
+				      _mm256_xor_si256(_mm256_max_epu32(n, one), one));
+	return !_mm256_testz_si256(bad, bad);
+}
 
 static void chunk_blend(const skin_soa *in, const skin_bones *b, int v, int batches, chunk *c)
 {
 	for (int i = 0; i < batches; i++) {
 		__m256i *d = c->d[i];
-		c->bad[i] = blend(in, b, v + i * SKIN_LANES, d);
+		c->bad[i] = blend(in, b, v + i * SKIN_LANES, d) | outside_envelope(in, v + i * SKIN_LANES);
 		__m256i even[4], odd[4];
 		split_lanes(d, even, odd, 4);
 		c->n2[i][0] = _mm256_add_epi64(_mm256_add_epi64(mul4(even[0], even[0]), mul4(even[1], even[1])),
@@ -280,21 +292,21 @@ static void chunk_norms(int batches, chunk *c)
 {
 	for (int i = 0; i < batches; i++) {
 		__m256i be, bo;
-		c->m[i][0] = rsqrt_seed4(&c->n2[i][0], &c->shift[i][0], &be);
-		c->m[i][1] = rsqrt_seed4(&c->n2[i][1], &c->shift[i][1], &bo);
+		c->inv[i][0] = rsqrt_seed4(&c->n2[i][0], &c->sh[i][0], &be);
+		c->inv[i][1] = rsqrt_seed4(&c->n2[i][1], &c->sh[i][1], &bo);
 		__m256i bad = _mm256_or_si256(be, bo);
 		c->bad[i] |= !_mm256_testz_si256(bad, bad);
 	}
-	__m256i *xq = &c->n2[0][0], *y = &c->m[0][0];
+	__m256i *xq = &c->n2[0][0], *y = &c->inv[0][0];
 	for (int s = 0; s < FX_RSQRT_STEPS; s++)
 		for (int i = 0; i < 2 * batches; i++)
 			y[i] = rsqrt_step4(xq[i], y[i]);
 	for (int i = 0; i < 2 * batches; i++)
-		y[i] = rsqrt_clamp4(y[i]);
+		blend_scale4(&y[i], &c->sh[0][0] + i);
 }
 
-static void transform8(const skin_soa *in, const __m256i d[8], const __m256i m[2],
-		       const __m256i shift[2], int v, int valid, const skin_out *out)
+static void transform8(const skin_soa *in, const __m256i d[8], const __m256i inv[2],
+		       const __m256i sh[2], int v, int valid, const skin_out *out)
 {
 	__m256i dh[2][8], ph[2][3], nh[2][3], po[2][3], no[2][3];
 	const __m256i pos[3] = { _mm256_load_si256((const __m256i *)(in->fpx + v)),
@@ -308,7 +320,7 @@ static void transform8(const skin_soa *in, const __m256i d[8], const __m256i m[2
 	split_lanes(nrm, nh[0], nh[1], 3);
 #pragma GCC unroll 2
 	for (int h = 0; h < 2; h++)
-		transform4(dh[h], m[h], shift[h], ph[h], nh[h], po[h], no[h]);
+		transform4(dh[h], inv[h], sh[h], ph[h], nh[h], po[h], no[h]);
 	__m256i p[3], n[3];
 #pragma GCC unroll 3
 	for (int i = 0; i < 3; i++) {
@@ -325,7 +337,7 @@ void skin_dqbs_fixed_avx2(const skin_soa *in, const skin_bones *b, int first, in
 			  const skin_out *out)
 {
 	_Static_assert(FX_POS_FRAC == 16, "the AVX2 fixed kernel writes fx_pos as Q16.16 directly");
-	if (!b->split_ok) {
+	if (!b->simd_ok) {
 		skin_dqbs_fixed(in, b, first, end, out);
 		return;
 	}
@@ -340,11 +352,12 @@ void skin_dqbs_fixed_avx2(const skin_soa *in, const skin_bones *b, int first, in
 			int valid = end - v < SKIN_LANES ? end - v : SKIN_LANES;
 			if (c.bad[i])
 				/* a norm outside the vector path's range (a blend
-				 * that nearly cancelled) or weights outside
-				 * skin_soa_load's: the scalar kernel handles them */
+				 * that nearly cancelled), weights outside
+				 * skin_soa_load's or a vertex outside the envelope:
+				 * the scalar kernel handles them */
 				skin_dqbs_fixed(in, b, v, v + valid, out);
 			else
-				transform8(in, c.d[i], c.m[i], c.shift[i], v, valid, out);
+				transform8(in, c.d[i], c.inv[i], c.sh[i], v, valid, out);
 		}
 	}
 }

@@ -369,7 +369,7 @@ static void blend_run(double tmax)
 		}
 		assert_int_equal(sum, 32768);
 		fx_quat pivot = fx_dq_blend_pivot(bones, idx, w, n);
-		fx_dq b = fx_dq_blend_normalized(bones, idx, w, n, pivot);
+		fx_dq blend = fx_dq_blend(bones, idx, w, n, pivot), b = fx_dq_normalize(blend);
 		dxf ref = dlb_ref(real, dual, dw, n, dquat_q30(pivot));
 
 		/* normalised real part against b0 / |b0| in double */
@@ -386,14 +386,15 @@ static void blend_run(double tmax)
 		for (int k = 0; k < 4; k++)
 			track(E_BLEND_R, got.c[k], b0.c[k] / nb, 1e-6, "blend real / |real|");
 
-		fx_vec3 p = rand_pos(1000), np = fx_dq_transform_point(&b, p);
+		/* the kernels' path: the transform with the division folded in */
+		fx_vec3 p = rand_pos(1000), nn = rand_normal(), np, rn;
+		fx_dq_transform_blend(&blend, p, nn, &np, &rn);
 		double dp[3] = { posd(p.x), posd(p.y), posd(p.z) }, want[3];
 		dmat_apply(ref.r, dp, want);
 		track(E_BLEND_P, posd(np.x), want[0] + ref.t[0], 1e-3, "DQBS point x");
 		track(E_BLEND_P, posd(np.y), want[1] + ref.t[1], 1e-3, "DQBS point y");
 		track(E_BLEND_P, posd(np.z), want[2] + ref.t[2], 1e-3, "DQBS point z");
 
-		fx_vec3 nn = rand_normal(), rn = fx_dq_transform_normal(&b, nn);
 		double dn[3] = { q30d(nn.x), q30d(nn.y), q30d(nn.z) };
 		dmat_apply(ref.r, dn, want);
 		track(E_BLEND_N, q30d(rn.x), want[0], 1e-6, "DQBS normal x");
@@ -438,9 +439,10 @@ static void test_blend_special(void **state)
 	fx_dq pair[2] = { bones[0], neg };
 	uint16_t pidx[2] = { 0, 1 };
 	fx_w15 half[2] = { 16384, 16384 };
-	fx_dq h = fx_dq_blend_normalized(pair, pidx, half, 2, fx_dq_blend_pivot(pair, pidx, half, 2));
-	fx_vec3 p = { 100 * FX_POS_ONE, -20 * FX_POS_ONE, 3 * FX_POS_ONE };
-	fx_vec3 a = fx_dq_transform_point(&bones[0], p), c = fx_dq_transform_point(&h, p);
+	fx_dq h = fx_dq_blend(pair, pidx, half, 2, fx_dq_blend_pivot(pair, pidx, half, 2));
+	fx_vec3 p = { 100 * FX_POS_ONE, -20 * FX_POS_ONE, 3 * FX_POS_ONE }, c, cn;
+	fx_vec3 a = fx_dq_transform_point(&bones[0], p);
+	fx_dq_transform_blend(&h, p, p, &c, &cn);
 	assert_true(llabs((long long)a.x - c.x) <= 4 && llabs((long long)a.y - c.y) <= 4 &&
 		    llabs((long long)a.z - c.z) <= 4);
 
@@ -490,11 +492,13 @@ static void test_end_to_end_from_float(void **state)
 			dw[j] = w[j] / 32768.0;
 		}
 		fx_quat pivot = fx_dq_blend_pivot(bones, idx, w, n);
-		fx_dq b = fx_dq_blend_normalized(bones, idx, w, n, pivot);
+		fx_dq b = fx_dq_blend(bones, idx, w, n, pivot);
 		dxf ref = dlb_ref(real, dual, dw, n, dquat_q30(pivot));
 		vec3 fp = vec3_make((float)test_rng_range(-1000, 1000), (float)test_rng_range(-1000, 1000),
 				    (float)test_rng_range(-1000, 1000));
-		vec3 got = fx_vec3_to_vec3(fx_dq_transform_point(&b, fx_vec3_from_vec3(fp)));
+		fx_vec3 moved, moved_n, n0 = { FX_Q30_ONE, 0, 0 };
+		fx_dq_transform_blend(&b, fx_vec3_from_vec3(fp), n0, &moved, &moved_n);
+		vec3 got = fx_vec3_to_vec3(moved);
 		double dp[3] = { fp.x, fp.y, fp.z }, want[3];
 		dmat_apply(ref.r, dp, want);
 		/* float dq input, Q16 point input and float output each add
