@@ -189,6 +189,23 @@ static void test_fixed_saturated_dual(void **state)
 	expect_fixed_same_as_scalar();
 }
 
+/* Vertices the vector path cannot keep within 32 bits (a position 34,641
+ * units from the origin, normals of length up to 2^31): where the scalar
+ * kernel saturates, the SIMD kernel must hand them over rather than wrap. */
+static void test_fixed_outside_envelope(void **state)
+{
+	(void)state;
+	setup_scene();
+	for (int v = 0; v < N; v += 5) {
+		int32_t far = (v % 2 ? 20000 : -20000) * FX_POS_ONE;
+		soa.fpx[v] = far; soa.fpy[v] = -far; soa.fpz[v] = far;
+	}
+	for (int v = 2; v < N; v += 11) {
+		soa.fnx[v] = INT32_MAX; soa.fny[v] = INT32_MIN; soa.fnz[v] = INT32_MAX;
+	}
+	expect_fixed_same_as_scalar();
+}
+
 int main(void)
 {
 	const struct CMUnitTest tests[] = {
@@ -197,6 +214,7 @@ int main(void)
 		cmocka_unit_test(test_fixed_norm_just_below_one),
 		cmocka_unit_test(test_fixed_weights_outside_invariants),
 		cmocka_unit_test(test_fixed_saturated_dual),
+		cmocka_unit_test(test_fixed_outside_envelope),
 	};
 	return cmocka_run_group_tests_name("skin_simd", tests, NULL, NULL);
 }
