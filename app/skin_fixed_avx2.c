@@ -78,17 +78,11 @@ static inline __attribute__((always_inline)) __m256i blend_vertex(const int32_t 
 	return _mm256_add_epi32(sum, _mm256_loadu_si256((const __m256i *)pivot));
 }
 
-/* Nonzero when the batch must take the scalar path (see blend_weights). */
-static inline __attribute__((always_inline)) int blend(const skin_soa *in, const skin_bones *b, int v,
-							 __m256i out[8])
+/* The blend of one batch from its weights (see blend_weights). */
+static inline __attribute__((always_inline)) void blend(const skin_soa *in, const skin_bones *b, int v,
+							  const int32_t wl[][SKIN_LANES],
+							  const int32_t wh[][SKIN_LANES], __m256i out[8])
 {
-	int32_t wl[SKP_MAX_INFLUENCES][SKIN_LANES] __attribute__((aligned(32)));
-	int32_t wh[SKP_MAX_INFLUENCES][SKIN_LANES] __attribute__((aligned(32)));
-	int bad = blend_weights(in, b, v, wl, wh);
-	/* read back through memory: forwarded in registers, GCC broadcasts
-	 * them with shuffles, which compete with the transpose for the
-	 * shuffle port, where a broadcast load costs only a load */
-	__asm__("" : "+m"(wl), "+m"(wh));
 	__m256 r[SKIN_LANES];
 #pragma GCC unroll 8
 	for (int j = 0; j < SKIN_LANES; j++) {
@@ -102,7 +96,6 @@ static inline __attribute__((always_inline)) int blend(const skin_soa *in, const
 #pragma GCC unroll 8
 	for (int c = 0; c < 8; c++)
 		out[c] = _mm256_castps_si256(r[c]);
-	return bad;
 }
 
 static inline __m256i epi64(long long v)
@@ -247,6 +240,8 @@ static __m256i q30_to_q16(__m256i v)
 #define CHUNK_BATCHES 8
 
 typedef struct chunk {
+	int32_t wl[CHUNK_BATCHES][SKP_MAX_INFLUENCES][SKIN_LANES];
+	int32_t wh[CHUNK_BATCHES][SKP_MAX_INFLUENCES][SKIN_LANES];
 	__m256i d[CHUNK_BATCHES][8];
 	/* even, odd lanes: squared norm (then X in Q30); rsqrt m, then inv;
 	 * its shift, then sh (see fx_dq_blend_scale) */
@@ -274,11 +269,16 @@ static int outside_envelope(const skin_soa *in, int v)
 	return !_mm256_testz_si256(bad, bad);
 }
 
+/* The weights first, in a loop of their own: each batch's begin with
+ * gathers and a multiply whose latency would otherwise stall the blend. */
 static void chunk_blend(const skin_soa *in, const skin_bones *b, int v, int batches, chunk *c)
 {
+	for (int i = 0; i < batches; i++)
+		c->bad[i] = blend_weights(in, b, v + i * SKIN_LANES, c->wl[i], c->wh[i]) |
+			    outside_envelope(in, v + i * SKIN_LANES);
 	for (int i = 0; i < batches; i++) {
 		__m256i *d = c->d[i];
-		c->bad[i] = blend(in, b, v + i * SKIN_LANES, d) | outside_envelope(in, v + i * SKIN_LANES);
+		blend(in, b, v + i * SKIN_LANES, c->wl[i], c->wh[i], d);
 		__m256i even[4], odd[4];
 		split_lanes(d, even, odd, 4);
 		c->n2[i][0] = _mm256_add_epi64(_mm256_add_epi64(mul4(even[0], even[0]), mul4(even[1], even[1])),
