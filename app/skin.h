@@ -92,17 +92,19 @@ typedef struct skin_bones {
 	 * fixed-point decision for every pair, computed once per frame with the
 	 * dot product the scalar kernel uses, so the SIMD fixed kernel looks it
 	 * up instead of recomputing it per vertex: a mask, -1 (flip) or 0.
-	 * Only the AVX2 fixed kernel reads it (and fdq_split below), so other
+	 * Only the AVX2 fixed kernel reads it (and fdq_halves below), so other
 	 * boards neither store nor compute it. */
 	int32_t flip_x[SKP_MAX_BONES + 1][SKP_MAX_BONES + 1];
 	/* fdq with every component c split as c = hi * 2^16 + lo, lo and hi
-	 * signed 16-bit halves of one word: the AVX2 fixed kernel blends them
-	 * with 16-bit multiply-adds. simd_ok is 0 when a dual component is
-	 * 2^26 (1024 units) or longer: beyond that the kernel's 32-bit
-	 * intermediates could overflow where the scalar kernel saturates, so
-	 * it takes the scalar path for the frame. */
+	 * signed 16-bit halves, laid out per bone as lo of components 0-3,
+	 * hi of 0-3, lo of 4-7, hi of 4-7: a 16-bit unpack of two bones' rows
+	 * then pairs their lo (or hi) halves component by component, and the
+	 * AVX2 fixed kernel blends them with 16-bit multiply-adds. simd_ok is
+	 * 0 when a dual component is 2^26 (1024 units) or longer: beyond that
+	 * the kernel's 32-bit intermediates could overflow where the scalar
+	 * kernel saturates, so it takes the scalar path for the frame. */
 #define SKIN_SIMD_DUAL_LIMIT ((int32_t)1 << 26)
-	int32_t fdq_split[SKP_MAX_BONES + 1][8];
+	int16_t fdq_halves[SKP_MAX_BONES + 1][16];
 	int simd_ok;
 #endif
 } skin_bones;
@@ -110,7 +112,7 @@ typedef struct skin_bones {
 void skin_bones_compute(skin_bones *out, const skel *s, const skel_pose *bind,
 			const skel_pose *pose);
 
-/* Recomputes the kernels' lookup tables (flip_x, fdq_split) from fdq, for
+/* Recomputes the kernels' lookup tables (flip_x, fdq_halves) from fdq, for
  * a caller that set fdq itself. */
 void skin_bones_derive(skin_bones *out);
 

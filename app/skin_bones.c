@@ -45,7 +45,7 @@ static void compute_flips(skin_bones *out)
 	}
 }
 
-static void compute_split(skin_bones *out)
+static void compute_halves(skin_bones *out)
 {
 	out->simd_ok = 1;
 	for (int b = 0; b <= SKP_MAX_BONES; b++) {
@@ -55,12 +55,14 @@ static void compute_split(skin_bones *out)
 		const int32_t c[8] = { d->real.w, d->real.x, d->real.y, d->real.z,
 				       d->dual.w, d->dual.x, d->dual.y, d->dual.z };
 		for (int i = 0; i < 8; i++) {
-			int64_t v = c[i];
-			int64_t lo = (int16_t)(uint16_t)((uint64_t)v & 0xffff);
-			int64_t hi = (v - lo) / 65536;
-			if (i >= 4 && (v >= SKIN_SIMD_DUAL_LIMIT || v <= -SKIN_SIMD_DUAL_LIMIT))
-				out->simd_ok = 0; /* (then hi fits int16 too) */
-			out->fdq_split[b][i] = (int32_t)(((uint32_t)hi << 16) | (uint16_t)lo);
+			/* within the limit, hi fits int16 too (real parts are
+			 * at most 2^30) */
+			if (i >= 4 && (c[i] >= SKIN_SIMD_DUAL_LIMIT || c[i] <= -SKIN_SIMD_DUAL_LIMIT))
+				out->simd_ok = 0;
+			int16_t lo = (int16_t)(uint16_t)((uint32_t)c[i] & 0xffff);
+			int16_t hi = (int16_t)(((int64_t)c[i] - lo) / 65536);
+			out->fdq_halves[b][i / 4 * 8 + i % 4] = lo;
+			out->fdq_halves[b][i / 4 * 8 + 4 + i % 4] = hi;
 		}
 	}
 }
@@ -83,7 +85,7 @@ void skin_bones_derive(skin_bones *out)
 {
 #ifdef SKP_SIMD_AVX2
 	compute_flips(out);
-	compute_split(out);
+	compute_halves(out);
 #else
 	(void)out;
 #endif

@@ -17,21 +17,21 @@ static __m256i load_weights(const fx_w15 *w, int v)
 }
 
 /* Weights with the sign fix (looked up per bone pair, see skin_bones), as
- * 16-bit multiply-add operands: wl (w, 0) multiplies the low half of a
- * split component, wh (0, w) the high half. Slot 0 (the pivot, never
- * flipped) may hold 32768, which int16 cannot: it enters as w - 32768,
- * and blend_vertex adds 32768 c / 2^15 = c after the rounding (exact: c is
- * an integer). Returns nonzero when a lane breaks what the 16-bit products
- * need and skin_soa_load guarantees (weights summing to at most 1.0, a
- * full weight only in slot 0): the caller then takes the scalar path. */
+ * 16-bit multiply-add operands: w01 holds the pair (w0, w1), w23 (w2, w3).
+ * Slot 0 (the pivot, never flipped) may hold 32768, which int16 cannot: it
+ * enters as w0 - 32768, and blend_vertex adds 32768 c / 2^15 = c after the
+ * rounding (exact: c is an integer). Returns nonzero when a lane breaks
+ * what the 16-bit products need and skin_soa_load guarantees (weights
+ * summing to at most 1.0, a full weight only in slot 0): the caller then
+ * takes the scalar path. */
 static inline __attribute__((always_inline)) int blend_weights(const skin_soa *in,
 								const skin_bones *b, int v,
-								int32_t wl[][SKIN_LANES],
-								int32_t wh[][SKIN_LANES])
+								int32_t w01[SKIN_LANES],
+								int32_t w23[SKIN_LANES])
 {
 	const int *flip = &b->flip_x[0][0];
 	const __m256i low16 = _mm256_set1_epi32(0xffff), full = _mm256_set1_epi32(FX_W15_ONE);
-	__m256i bad = _mm256_setzero_si256(), sum = _mm256_setzero_si256();
+	__m256i bad = _mm256_setzero_si256(), sum = _mm256_setzero_si256(), w[SKP_MAX_INFLUENCES];
 #pragma GCC unroll 8
 	for (int k = 0; k < SKP_MAX_INFLUENCES; k++) {
 		__m256i x = load_weights(in->fweight[k], v);
@@ -43,36 +43,40 @@ static inline __attribute__((always_inline)) int blend_weights(const skin_soa *i
 			bad = _mm256_or_si256(bad, _mm256_cmpeq_epi32(x, full));
 			x = _mm256_sub_epi32(_mm256_xor_si256(x, neg), neg);
 		}
-		_mm256_store_si256((__m256i *)wl[k], _mm256_and_si256(x, low16));
-		_mm256_store_si256((__m256i *)wh[k], _mm256_slli_epi32(x, 16));
+		w[k] = x;
 	}
+	_mm256_store_si256((__m256i *)w01, _mm256_or_si256(_mm256_and_si256(w[0], low16), _mm256_slli_epi32(w[1], 16)));
+	_mm256_store_si256((__m256i *)w23, _mm256_or_si256(_mm256_and_si256(w[2], low16), _mm256_slli_epi32(w[3], 16)));
 	bad = _mm256_or_si256(bad, _mm256_cmpgt_epi32(sum, full));
 	return !_mm256_testz_si256(bad, bad);
 }
 
-/* One vertex's blend, all eight components at once: its four bones'
- * split rows times its weights broadcast, so the rows need no transpose
- * (only the eight results do, once). With c = hi 2^16 + lo, sum(w c) =
- * 2^16 sum(w hi) + sum(w lo); with the pivot's weight entering as
- * w0 - 2^15, sum |w| <= 2^15 - w0 + min(3 w0, 2^15 - w0) <= 1.5 2^15, so
- * both sums and the rounding below fit in 32 bits. The rounded shift by
- * 15 is then 2 sum(w hi) + round(sum(w lo) / 2^15) + c0, exactly the
- * scalar kernel's 64-bit result; 2 sum(w hi) may wrap, but the total is
- * that in-range result, and wrapping adds are exact modulo 2^32. */
-static inline __attribute__((always_inline)) __m256i blend_vertex(const int32_t *const row[SKP_MAX_INFLUENCES],
-								  const fx_dq *pivot,
-								  const int32_t wl[][SKIN_LANES],
-								  const int32_t wh[][SKIN_LANES], int j)
+/* One vertex's blend, all eight components at once: a 16-bit unpack of two
+ * bones' rows (see fdq_halves) pairs their low halves (and their high
+ * halves) component by component, and one multiply-add with the pair of
+ * weights sums both; the rows need no transpose (only the eight results
+ * do, once). With c = hi 2^16 + lo, sum(w c) = 2^16 sum(w hi) + sum(w lo);
+ * with the pivot's weight entering as w0 - 2^15, sum |w| <= 2^15 - w0 +
+ * min(3 w0, 2^15 - w0) <= 1.5 2^15, so both sums and the rounding below
+ * fit in 32 bits (nor can a multiply-add overflow: only w0 - 2^15 may be
+ * -2^15). The rounded shift by 15 is then 2 sum(w hi) + round(sum(w lo) /
+ * 2^15) + c0, exactly the scalar kernel's 64-bit result; 2 sum(w hi) may
+ * wrap, but the total is that in-range result, and wrapping adds are exact
+ * modulo 2^32. */
+static inline __attribute__((always_inline)) __m256i blend_vertex(const int16_t *const row[SKP_MAX_INFLUENCES],
+								  const fx_dq *pivot, int32_t w01,
+								  int32_t w23)
 {
-	__m256i lo = _mm256_setzero_si256(), hi = _mm256_setzero_si256();
+	_Static_assert(SKP_MAX_INFLUENCES == 4, "blend_vertex pairs four influences");
+	__m256i r[SKP_MAX_INFLUENCES];
 #pragma GCC unroll 8
-	for (int k = 0; k < SKP_MAX_INFLUENCES; k++) {
-		__m256i a = _mm256_loadu_si256((const __m256i *)row[k]);
-		__m256i pl = _mm256_madd_epi16(a, _mm256_set1_epi32(wl[k][j]));
-		__m256i ph = _mm256_madd_epi16(a, _mm256_set1_epi32(wh[k][j]));
-		lo = _mm256_add_epi32(lo, pl);
-		hi = _mm256_add_epi32(hi, ph);
-	}
+	for (int k = 0; k < SKP_MAX_INFLUENCES; k++)
+		r[k] = _mm256_loadu_si256((const __m256i *)row[k]);
+	__m256i wa = _mm256_set1_epi32(w01), wb = _mm256_set1_epi32(w23);
+	__m256i lo = _mm256_add_epi32(_mm256_madd_epi16(_mm256_unpacklo_epi16(r[0], r[1]), wa),
+				      _mm256_madd_epi16(_mm256_unpacklo_epi16(r[2], r[3]), wb));
+	__m256i hi = _mm256_add_epi32(_mm256_madd_epi16(_mm256_unpackhi_epi16(r[0], r[1]), wa),
+				      _mm256_madd_epi16(_mm256_unpackhi_epi16(r[2], r[3]), wb));
 	__m256i sum = _mm256_add_epi32(_mm256_add_epi32(hi, hi),
 				       _mm256_srai_epi32(_mm256_add_epi32(lo, _mm256_set1_epi32(1 << 14)), 15));
 	return _mm256_add_epi32(sum, _mm256_loadu_si256((const __m256i *)pivot));
@@ -80,17 +84,17 @@ static inline __attribute__((always_inline)) __m256i blend_vertex(const int32_t 
 
 /* The blend of one batch from its weights (see blend_weights). */
 static inline __attribute__((always_inline)) void blend(const skin_soa *in, const skin_bones *b, int v,
-							  const int32_t wl[][SKIN_LANES],
-							  const int32_t wh[][SKIN_LANES], __m256i out[8])
+							  const int32_t w01[SKIN_LANES],
+							  const int32_t w23[SKIN_LANES], __m256i out[8])
 {
 	__m256 r[SKIN_LANES];
 #pragma GCC unroll 8
 	for (int j = 0; j < SKIN_LANES; j++) {
-		const int32_t *row[SKP_MAX_INFLUENCES];
+		const int16_t *row[SKP_MAX_INFLUENCES];
 #pragma GCC unroll 8
 		for (int k = 0; k < SKP_MAX_INFLUENCES; k++)
-			row[k] = b->fdq_split[in->bone[k][v + j]];
-		r[j] = _mm256_castsi256_ps(blend_vertex(row, &b->fdq[in->bone[0][v + j]], wl, wh, j));
+			row[k] = b->fdq_halves[in->bone[k][v + j]];
+		r[j] = _mm256_castsi256_ps(blend_vertex(row, &b->fdq[in->bone[0][v + j]], w01[j], w23[j]));
 	}
 	skin_transpose8(r);
 #pragma GCC unroll 8
@@ -240,8 +244,7 @@ static __m256i q30_to_q16(__m256i v)
 #define CHUNK_BATCHES 8
 
 typedef struct chunk {
-	int32_t wl[CHUNK_BATCHES][SKP_MAX_INFLUENCES][SKIN_LANES];
-	int32_t wh[CHUNK_BATCHES][SKP_MAX_INFLUENCES][SKIN_LANES];
+	int32_t w01[CHUNK_BATCHES][SKIN_LANES], w23[CHUNK_BATCHES][SKIN_LANES];
 	__m256i d[CHUNK_BATCHES][8];
 	/* even, odd lanes: squared norm (then X in Q30); rsqrt m, then inv;
 	 * its shift, then sh (see fx_dq_blend_scale) */
@@ -274,11 +277,11 @@ static int outside_envelope(const skin_soa *in, int v)
 static void chunk_blend(const skin_soa *in, const skin_bones *b, int v, int batches, chunk *c)
 {
 	for (int i = 0; i < batches; i++)
-		c->bad[i] = blend_weights(in, b, v + i * SKIN_LANES, c->wl[i], c->wh[i]) |
+		c->bad[i] = blend_weights(in, b, v + i * SKIN_LANES, c->w01[i], c->w23[i]) |
 			    outside_envelope(in, v + i * SKIN_LANES);
 	for (int i = 0; i < batches; i++) {
 		__m256i *d = c->d[i];
-		blend(in, b, v + i * SKIN_LANES, c->wl[i], c->wh[i], d);
+		blend(in, b, v + i * SKIN_LANES, c->w01[i], c->w23[i], d);
 		__m256i even[4], odd[4];
 		split_lanes(d, even, odd, 4);
 		c->n2[i][0] = _mm256_add_epi64(_mm256_add_epi64(mul4(even[0], even[0]), mul4(even[1], even[1])),
