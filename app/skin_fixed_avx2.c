@@ -1,9 +1,9 @@
 /* DQBS in fixed point with AVX2 integer instructions, eight vertices per
  * step, bit for bit the results of skin_fixed.c: the blend with 16-bit
  * multiply-adds on components split into 16-bit halves (blend_vertex), the
- * normalisation and the transform with 32x32->64 products (vpmuldq) on the
- * even and odd vertices in 64-bit lanes, sums kept in 64 bits and rounded
- * once. No floating-point instruction: `make test` disassembles this object
+ * transform with the division by |real|^2 folded in (as
+ * fx_dq_transform_blend) with 32x32->64 products (vpmuldq) on the even and
+ * odd vertices in 64-bit lanes, sums kept in 64 bits and rounded once. No floating-point instruction: `make test` disassembles this object
  * to check (tests/check_simd_integer.sh). */
 #include "skin.h"
 
@@ -117,8 +117,9 @@ static inline __m256i mul_round(__m256i a, __m256i b, int s)
 /* fx_rsqrt_q60 on 4 lanes, step for step the same integers, for squared
  * norms in [2^56, 2^60 + 2^32] (every blend with the sign fix whose weights
  * sum to at most 1: its real part is at least the pivot's weight, 1/4, and
- * at most 1 plus rounding long). In stages (seed, Newton steps,
- * clamp) so that chunk_norms can run each stage over a whole chunk: one
+ * at most 1 plus rounding long; the bound above also keeps move4's
+ * intermediates in int32). In stages (seed, Newton steps, blend_scale4)
+ * so that chunk_norms can run each stage over a whole chunk: one
  * rsqrt is a chain of dependent multiplies, and the core only overlaps
  * chains that are close together in the instruction stream. The seed
  * replaces x by X in Q30 (xq) and flags lanes outside the range in *bad. */
