@@ -1,7 +1,9 @@
-/* AVX2+FMA kernels: eight vertices per step in structure-of-arrays form,
- * bone data fetched with gathers (LBS) or 8x8 transposes (DQBS). Built
- * when the board sets SIMD=avx2; results match skin_scalar.c to float
- * rounding. The small fixed loops carry `#pragma GCC unroll`: left rolled,
+/* AVX2+FMA kernels: eight vertices per step in structure-of-arrays form.
+ * The blend runs per vertex (its bones' rows times its weights broadcast)
+ * and one transpose turns the eight results into lanes: gathering every
+ * bone value into lanes first costs a gather or a transpose per influence.
+ * Built when the board sets SIMD=avx2; results match skin_scalar.c to
+ * float rounding. The small fixed loops carry `#pragma GCC unroll`: left rolled,
  * GCC keeps their vectors in stack arrays (DQBS ran 30% slower). */
 #include "skin.h"
 
@@ -19,12 +21,6 @@ static v3x8 load3(const float *x, const float *y, const float *z, int v)
 	return r;
 }
 
-static __m256i bone_offsets(const uint16_t *bone, int v, int stride)
-{
-	__m128i b16 = _mm_load_si128((const __m128i *)(bone + v));
-	return _mm256_mullo_epi32(_mm256_cvtepu16_epi32(b16), _mm256_set1_epi32(stride));
-}
-
 static v3x8 normalize8(v3x8 a)
 {
 	__m256 len2 = _mm256_fmadd_ps(a.x, a.x, _mm256_fmadd_ps(a.y, a.y, _mm256_mul_ps(a.z, a.z)));
@@ -33,20 +29,46 @@ static v3x8 normalize8(v3x8 a)
 	return r;
 }
 
-static void lbs_block(const skin_soa *in, const skin_bones *b, int v, __m256 m[12])
+/* 8 rows of 4 values (vertex j in row j) to 4 lanes registers */
+static inline __attribute__((always_inline)) void transpose8x4(const __m128 r[8], __m256 out[4])
 {
-	const float *base = &b->lbs12[0][0];
-#pragma GCC unroll 12
-	for (int i = 0; i < 12; i++)
-		m[i] = _mm256_setzero_ps();
-#pragma GCC unroll 12
-	for (int k = 0; k < SKP_MAX_INFLUENCES; k++) {
-		__m256 w = _mm256_load_ps(in->weight[k] + v);
-		__m256i off = bone_offsets(in->bone[k], v, 12);
-#pragma GCC unroll 12
-		for (int i = 0; i < 12; i++)
-			m[i] = _mm256_fmadd_ps(w, _mm256_i32gather_ps(base + i, off, 4), m[i]);
+	__m256 a[4];
+#pragma GCC unroll 4
+	for (int j = 0; j < 4; j++)
+		a[j] = _mm256_insertf128_ps(_mm256_castps128_ps256(r[j]), r[j + 4], 1);
+	__m256 t0 = _mm256_unpacklo_ps(a[0], a[1]), t1 = _mm256_unpackhi_ps(a[0], a[1]);
+	__m256 t2 = _mm256_unpacklo_ps(a[2], a[3]), t3 = _mm256_unpackhi_ps(a[2], a[3]);
+	out[0] = _mm256_shuffle_ps(t0, t2, _MM_SHUFFLE(1, 0, 1, 0));
+	out[1] = _mm256_shuffle_ps(t0, t2, _MM_SHUFFLE(3, 2, 3, 2));
+	out[2] = _mm256_shuffle_ps(t1, t3, _MM_SHUFFLE(1, 0, 1, 0));
+	out[3] = _mm256_shuffle_ps(t1, t3, _MM_SHUFFLE(3, 2, 3, 2));
+}
+
+/* The blended 3x4 matrices of 8 vertices, m[i] = element i in lanes */
+static inline __attribute__((always_inline)) void lbs_block(const skin_soa *in, const skin_bones *b, int v,
+							      __m256 m[12])
+{
+	__m256 head[SKIN_LANES];
+	__m128 tail[SKIN_LANES];
+#pragma GCC unroll 8
+	for (int j = 0; j < SKIN_LANES; j++) {
+		__m256 h = _mm256_setzero_ps();
+		__m128 t = _mm_setzero_ps();
+#pragma GCC unroll 4
+		for (int k = 0; k < SKP_MAX_INFLUENCES; k++) {
+			const float *row = b->lbs12[in->bone[k][v + j]];
+			const float *w = in->weight[k] + v + j;
+			h = _mm256_fmadd_ps(_mm256_broadcast_ss(w), _mm256_loadu_ps(row), h);
+			t = _mm_fmadd_ps(_mm_broadcast_ss(w), _mm_loadu_ps(row + 8), t);
+		}
+		head[j] = h;
+		tail[j] = t;
 	}
+	skin_transpose8(head);
+#pragma GCC unroll 8
+	for (int i = 0; i < 8; i++)
+		m[i] = head[i];
+	transpose8x4(tail, m + 8);
 }
 
 static v3x8 apply_rows(const __m256 m[12], v3x8 p, int with_translation)
@@ -81,49 +103,39 @@ typedef struct dq8 {
 	__m256 rw, rx, ry, rz, dw, dx, dy, dz;
 } dq8;
 
-/* The 8-float dual quaternions of 8 vertices' bones */
-static inline __attribute__((always_inline)) dq8 gather_dq(const skin_bones *b, const uint16_t *bone, int v)
+/* Weighted sum with each influence's sign flipped when its real part
+ * points away from the pivot (influence 0, the largest weight): the flip
+ * per bone pair is looked up (flip_f, the scalar kernel's own test), the
+ * signed weights staged in memory and broadcast per vertex. */
+static inline __attribute__((always_inline)) dq8 dq_blend8(const skin_soa *in, const skin_bones *b, int v)
 {
-	__m256 r[8];
-#pragma GCC unroll 12
-	for (int j = 0; j < 8; j++)
-		r[j] = _mm256_loadu_ps(b->dq8[bone[v + j]]);
+	const int *flip = &b->flip_f[0][0];
+	float ws[SKP_MAX_INFLUENCES][SKIN_LANES] __attribute__((aligned(32)));
+#pragma GCC unroll 4
+	for (int k = 0; k < SKP_MAX_INFLUENCES; k++) {
+		__m256 w = _mm256_load_ps(in->weight[k] + v);
+		if (k) {
+			__m256i neg = _mm256_i32gather_epi32(flip, skin_flip_index(in->bone[0], in->bone[k], v), 4);
+			w = _mm256_xor_ps(w, _mm256_and_ps(_mm256_castsi256_ps(neg), _mm256_set1_ps(-0.0f)));
+		}
+		_mm256_store_ps(ws[k], w);
+	}
+	/* read back through memory: forwarded in registers, GCC broadcasts
+	 * them with shuffles, where a broadcast load costs only a load */
+	__asm__("" : "+m"(ws));
+	__m256 r[SKIN_LANES];
+#pragma GCC unroll 8
+	for (int j = 0; j < SKIN_LANES; j++) {
+		__m256 acc = _mm256_mul_ps(_mm256_broadcast_ss(&ws[0][j]), _mm256_loadu_ps(b->dq8[in->bone[0][v + j]]));
+#pragma GCC unroll 4
+		for (int k = 1; k < SKP_MAX_INFLUENCES; k++)
+			acc = _mm256_fmadd_ps(_mm256_broadcast_ss(&ws[k][j]), _mm256_loadu_ps(b->dq8[in->bone[k][v + j]]),
+					      acc);
+		r[j] = acc;
+	}
 	skin_transpose8(r);
 	dq8 d = { r[0], r[1], r[2], r[3], r[4], r[5], r[6], r[7] };
 	return d;
-}
-
-static void dq_accumulate(dq8 *acc, const dq8 *d, __m256 w)
-{
-	acc->rw = _mm256_fmadd_ps(w, d->rw, acc->rw);
-	acc->rx = _mm256_fmadd_ps(w, d->rx, acc->rx);
-	acc->ry = _mm256_fmadd_ps(w, d->ry, acc->ry);
-	acc->rz = _mm256_fmadd_ps(w, d->rz, acc->rz);
-	acc->dw = _mm256_fmadd_ps(w, d->dw, acc->dw);
-	acc->dx = _mm256_fmadd_ps(w, d->dx, acc->dx);
-	acc->dy = _mm256_fmadd_ps(w, d->dy, acc->dy);
-	acc->dz = _mm256_fmadd_ps(w, d->dz, acc->dz);
-}
-
-/* Weighted sum with each influence's sign flipped when its real part
- * points away from the pivot (influence 0, the largest weight). */
-static dq8 dq_blend8(const skin_soa *in, const skin_bones *b, int v)
-{
-	const __m256 sign = _mm256_set1_ps(-0.0f);
-	dq8 pivot = gather_dq(b, in->bone[0], v);
-	dq8 acc = { 0 };
-	dq_accumulate(&acc, &pivot, _mm256_load_ps(in->weight[0] + v));
-#pragma GCC unroll 12
-	for (int k = 1; k < SKP_MAX_INFLUENCES; k++) {
-		dq8 d = gather_dq(b, in->bone[k], v);
-		__m256 dot = _mm256_mul_ps(d.rw, pivot.rw);
-		dot = _mm256_fmadd_ps(d.rx, pivot.rx, dot);
-		dot = _mm256_fmadd_ps(d.ry, pivot.ry, dot);
-		dot = _mm256_fmadd_ps(d.rz, pivot.rz, dot);
-		__m256 w = _mm256_xor_ps(_mm256_load_ps(in->weight[k] + v), _mm256_and_ps(dot, sign));
-		dq_accumulate(&acc, &d, w);
-	}
-	return acc;
 }
 
 static v3x8 cross8(v3x8 a, v3x8 b)
