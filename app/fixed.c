@@ -89,7 +89,7 @@ uint32_t fx_isqrt64(uint64_t x)
 	return (uint32_t)isqrt_rem(x, &rem);
 }
 
-uint64_t fx_rsqrt_step(uint64_t xq, uint64_t y)
+static uint64_t rsqrt_step(uint64_t xq, uint64_t y)
 {
 	uint64_t y2 = (y * y + (1u << 30)) >> 31;          /* Q31, < 2^32 */
 	uint64_t half_xy2 = (xq * y2 + (1u << 30)) >> 31;  /* X y^2 / 2 in Q31, < 2^32 */
@@ -101,19 +101,20 @@ uint64_t fx_rsqrt_step(uint64_t xq, uint64_t y)
 /* Per segment [p, q] of X: the line through 1/sqrt at p and q, moved half
  * way to the tangent of the same slope (equal error at the ends and in the
  * middle). */
-const uint32_t fx_rsqrt_seed_a[FX_RSQRT_SEGMENTS] = {
+static const uint32_t rsqrt_seed_a[8] = {
 	3049607619u, 2754682106u, 2531942015u, 2355946473u,
 	2156398227u, 1947854397u, 1790353369u, 1665905727u,
 };
-const uint32_t fx_rsqrt_seed_b[FX_RSQRT_SEGMENTS] = {
+static const uint32_t rsqrt_seed_b[8] = {
 	906863524u, 669418843u, 520272022u, 419379203u,
 	320624674u, 236675302u, 183943938u, 148272939u,
 };
 
-uint64_t fx_rsqrt_seed(uint64_t xq)
+/* xq = X in Q30, X in [1, 4): [1, 2) in quarters, then [2, 4) in halves */
+static uint64_t rsqrt_seed(uint64_t xq)
 {
-	int s = fx_rsqrt_segment(xq);
-	return fx_rsqrt_seed_a[s] - (((uint64_t)fx_rsqrt_seed_b[s] * xq + (1u << 29)) >> 30);
+	int s = xq >> 31 ? (int)(xq >> 29) : (int)(xq >> 28) - 4;
+	return rsqrt_seed_a[s] - (((uint64_t)rsqrt_seed_b[s] * xq + (1u << 29)) >> 30);
 }
 
 uint32_t fx_rsqrt_q60(uint64_t x, int *shift)
@@ -125,12 +126,39 @@ uint32_t fx_rsqrt_q60(uint64_t x, int *shift)
 	int e = (__builtin_clzll(x) - 2) / 2;
 	x <<= 2 * e;
 	uint64_t xq = x >> 30; /* floor: below 2^32, as the SIMD multiplies need */
-	uint64_t y = fx_rsqrt_seed(xq);
-	for (int i = 0; i < FX_RSQRT_STEPS; i++)
-		y = fx_rsqrt_step(xq, y);
+	uint64_t y = rsqrt_seed(xq);
+	for (int i = 0; i < 2; i++)
+		y = rsqrt_step(xq, y);
 	/* 1/sqrt(x / 2^60) before scaling is 2^e / sqrt(X) = y / 2^(31 - e) */
 	*shift = 31 - e;
 	return y > INT32_MAX ? INT32_MAX : (uint32_t)y;
+}
+
+/* Per segment [p, q] of X, as for the rsqrt seed: the chord of 1/X moved
+ * half way to the tangent of the same slope. */
+const uint32_t fx_recip_seed_a[FX_RECIP_SEGMENTS] = {
+	4052846001u, 3624347854u, 3277932859u, 2992046706u,
+	2752082450u, 2547787585u, 2371752666u, 2218489005u,
+};
+const uint32_t fx_recip_seed_b[FX_RECIP_SEGMENTS] = {
+	1908874354u, 1527099483u, 1249445032u, 1041204193u,
+	881018933u, 755159085u, 654471207u, 572662306u,
+};
+
+uint32_t fx_recip_q60(uint64_t x, int *e)
+{
+	*e = 0;
+	if (x == 0 || x >= (uint64_t)1 << 61)
+		return 0;
+	*e = __builtin_clzll(x) - 3; /* x 2^e in [2^60, 2^61) */
+	uint64_t xq = (x << *e) >> 30;  /* X in Q30, below 2^31 */
+	int s = (int)(xq >> 27) - 8;
+	uint64_t y = fx_recip_seed_a[s] - ((fx_recip_seed_b[s] * xq + (1u << 29)) >> 30);
+	for (int i = 0; i < FX_RECIP_STEPS; i++) {
+		uint64_t xy = (xq * y + (1u << 29)) >> 30; /* X y in Q31, near 2^31 */
+		y = (y * (((uint64_t)1 << 32) - xy) + (1u << 30)) >> 31;
+	}
+	return (uint32_t)y;
 }
 
 fx_dq fx_dq_from_quat_trans(fx_quat q, fx_vec3 t)
@@ -268,17 +296,16 @@ fx_dq fx_dq_blend(const fx_dq *bone_dqs, const uint16_t *bone_idx,
 
 int fx_dq_blend_scale(fx_quat real, uint32_t *inv)
 {
-	uint64_t s = quat_norm2_sat(real);
-	int shift;
+	int e;
+	uint32_t y = fx_recip_q60(quat_norm2_sat(real), &e);
+	/* 2 / s = y 2^(e + 1) / 2^31; sh >= 1 (a defined rounding shift)
+	 * for s >= 2^-28 */
+	int sh = 29 - e;
 
 	*inv = 0;
-	if (s >= (uint64_t)1 << 61)
+	if (y == 0 || sh < 1)
 		return 0;
-	uint32_t m = fx_rsqrt_q60(s, &shift);
-	int sh = 2 * shift - 33; /* >= 1 (a defined rounding shift) for s >= 2^-28 */
-	if (m == 0 || sh < 1)
-		return 0;
-	*inv = (uint32_t)(((uint64_t)m * m + ((uint64_t)1 << 31)) >> 32);
+	*inv = (y + 1) >> 1;
 	return sh;
 }
 

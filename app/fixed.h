@@ -113,25 +113,27 @@ uint32_t fx_isqrt64(uint64_t x);
  * Relative error below 2^-29. Returns 0 (and *shift = 0) for x = 0 or
  * x >= 2^62.
  *
- * Method (shared with the SIMD kernels, which must match bit for bit): x is
- * scaled by 4^e into [2^60, 2^62), X = x / 2^60 in [1, 4) is cut to Q30
- * (xq), the seed is a minimax line on one of 8 segments of [1, 4) (width
- * 1/4 below 2, 1/2 above: within 0.25%), then FX_RSQRT_STEPS Newton steps
+ * Method: x is scaled by 4^e into [2^60, 2^62), X = x / 2^60 in [1, 4) is
+ * cut to Q30, the seed is a minimax line on one of 8 segments of [1, 4)
+ * (width 1/4 below 2, 1/2 above: within 0.25%), then 2 Newton steps
  * y' = y (1.5 - X y^2 / 2) in Q31 (0.25% -> 9e-6 -> 1.1e-9), all products
  * of two values below 2^32. */
-#define FX_RSQRT_SEGMENTS 8
-#define FX_RSQRT_STEPS 2
-/* seed = a[s] - b[s] X, a and b in Q31, s = fx_rsqrt_segment(xq) */
-extern const uint32_t fx_rsqrt_seed_a[FX_RSQRT_SEGMENTS];
-extern const uint32_t fx_rsqrt_seed_b[FX_RSQRT_SEGMENTS];
 uint32_t fx_rsqrt_q60(uint64_t x, int *shift);
-/* xq = X in Q30, X in [1, 4): [1, 2) in quarters, then [2, 4) in halves */
-static inline int fx_rsqrt_segment(uint64_t xq)
-{
-	return xq >> 31 ? (int)(xq >> 29) : (int)(xq >> 28) - 4;
-}
-uint64_t fx_rsqrt_seed(uint64_t xq);
-uint64_t fx_rsqrt_step(uint64_t xq, uint64_t y);
+
+/* 1 / (x / 2^60) for 0 < x < 2^61 as y / 2^(31 - *e), y in [2^30, 2^31]:
+ * 1 / X in Q31 for X = x 2^e / 2^60 in [1, 2). Returns 0 (and *e = 0) for
+ * x = 0 or x >= 2^61. Relative error below 2^-29 (X is cut to Q30).
+ *
+ * Method (shared with the SIMD kernel, which must match bit for bit): xq =
+ * X cut to Q30, the seed a[s] - b[s] X a minimax line on one of 8 segments
+ * of width 1/8 (within 0.19%), then FX_RECIP_STEPS Newton steps
+ * y' = y (2 - X y) in Q31 (0.19% -> 3.4e-6 -> 1.2e-11), every product of
+ * two values below 2^32. */
+#define FX_RECIP_SEGMENTS 8
+#define FX_RECIP_STEPS 2
+extern const uint32_t fx_recip_seed_a[FX_RECIP_SEGMENTS]; /* Q31 */
+extern const uint32_t fx_recip_seed_b[FX_RECIP_SEGMENTS]; /* Q31 */
+uint32_t fx_recip_q60(uint64_t x, int *e);
 
 /* Rotate by the unit Q30 quaternion q, then translate by t (fx_pos).
  * |t| < 32768 units so that the dual part fits. */
@@ -168,9 +170,9 @@ fx_dq fx_dq_blend(const fx_dq *bone_dqs, const uint16_t *bone_idx,
  *   p' = p + (2 / s) (r x (r x p + w p + dv) + w dv - dw r)
  *   n' = n + (2 / s) r x (r x n + w n)
  * 42 products instead of the 50 of normalising, rotating and translating,
- * and no normalised copy of d. 2 / s = inv / 2^sh with inv = round(m^2 /
- * 2^32) in [2^28, 2^30] and sh = 2 shift - 33, (m, shift) from
- * fx_rsqrt_q60(s in Q60). The two inner sums are rounded to p's format
+ * and no normalised copy of d, nor a square root: 2 / s = inv / 2^sh with
+ * inv = round(y / 2) in [2^29, 2^30] and sh = 29 - e, (y, e) from
+ * fx_recip_q60(s in Q60). The two inner sums are rounded to p's format
  * (n's for the normal) and saturated, so no product leaves int64; within
  * int32 range (|p| + |t| < 32768 units) the results match the normalised
  * path to a few LSB, more only as 2 / s grows. Identity (p, n returned as

@@ -114,52 +114,49 @@ static inline __m256i mul_round(__m256i a, __m256i b, int s)
 				_mm_cvtsi32_si128(s));
 }
 
-/* fx_rsqrt_q60 on 4 lanes, step for step the same integers, for squared
- * norms in [2^56, 2^60 + 2^32] (every blend with the sign fix whose weights
- * sum to at most 1: its real part is at least the pivot's weight, 1/4, and
- * at most 1 plus rounding long; the bound above also keeps move4's
- * intermediates in int32). In stages (seed, Newton steps, blend_scale4)
- * so that chunk_norms can run each stage over a whole chunk: one
- * rsqrt is a chain of dependent multiplies, and the core only overlaps
- * chains that are close together in the instruction stream. The seed
- * replaces x by X in Q30 (xq) and flags lanes outside the range in *bad. */
-static inline __attribute__((always_inline)) __m256i rsqrt_seed4(__m256i *x, __m256i *shift, __m256i *bad)
+/* fx_dq_blend_scale on 4 lanes (fx_recip_q60 step for step the same
+ * integers) for squared norms in [2^56, 2^60 + 2^32]: every blend with the
+ * sign fix whose weights sum to at most 1 (its real part is at least the
+ * pivot's weight, 1/4, and at most 1 plus rounding long; the bound above
+ * also keeps move4's intermediates in int32). In stages (seed, Newton
+ * steps, scale) so that chunk_norms can run each stage over a whole
+ * chunk: one reciprocal is a chain of dependent multiplies, and the core
+ * only overlaps chains that are close together in the instruction stream.
+ * The seed replaces x by X in Q30 and *e_sh by e, and flags lanes outside
+ * the range in *bad. */
+static inline __attribute__((always_inline)) __m256i recip_seed4(__m256i *x, __m256i *e_sh, __m256i *bad)
 {
-	__m256i lt60 = _mm256_cmpgt_epi64(epi64(1ll << 60), *x);
-	__m256i lt58 = _mm256_cmpgt_epi64(epi64(1ll << 58), *x);
+	__m256i below = _mm256_setzero_si256();
+#pragma GCC unroll 4
+	for (int bit = 57; bit <= 60; bit++)
+		below = _mm256_add_epi64(below, _mm256_cmpgt_epi64(epi64(1ll << bit), *x));
 	*bad = _mm256_or_si256(_mm256_cmpgt_epi64(epi64(1ll << 56), *x),
 			       _mm256_cmpgt_epi64(*x, epi64((1ll << 60) + (1ll << 32))));
-	__m256i e = _mm256_sub_epi64(_mm256_setzero_si256(), _mm256_add_epi64(lt60, lt58));
-	*shift = _mm256_sub_epi64(epi64(31), e);
-	__m256i xq = _mm256_srli_epi64(_mm256_sllv_epi64(*x, _mm256_add_epi64(e, e)), 30); /* floor, < 2^32 */
+	__m256i e = _mm256_sub_epi64(_mm256_setzero_si256(), below); /* x 2^e in [2^60, 2^61) */
+	__m256i xq = _mm256_srli_epi64(_mm256_sllv_epi64(*x, e), 30);
 	*x = xq;
-	/* fx_rsqrt_segment: the index in the low half of each lane is what
-	 * vpermd reads; the high halves pick garbage, masked off for a */
-	__m256i high = _mm256_cmpgt_epi64(xq, epi64(0x7fffffff));
-	__m256i seg = _mm256_blendv_epi8(_mm256_sub_epi64(_mm256_srli_epi64(xq, 28), epi64(4)),
-					 _mm256_srli_epi64(xq, 29), high);
+	*e_sh = e;
+	/* the segment in the low half of each lane is what vpermd reads; the
+	 * high halves (zero) pick garbage, masked off for a */
+	__m256i seg = _mm256_and_si256(_mm256_srli_epi64(xq, 27), epi64(7));
 	__m256i a = _mm256_and_si256(_mm256_permutevar8x32_epi32(
-					     _mm256_loadu_si256((const __m256i *)fx_rsqrt_seed_a), seg),
+					     _mm256_loadu_si256((const __m256i *)fx_recip_seed_a), seg),
 				     epi64(0xffffffff));
-	__m256i bs = _mm256_permutevar8x32_epi32(_mm256_loadu_si256((const __m256i *)fx_rsqrt_seed_b), seg);
+	__m256i bs = _mm256_permutevar8x32_epi32(_mm256_loadu_si256((const __m256i *)fx_recip_seed_b), seg);
 	return _mm256_sub_epi64(a, mul_round(bs, xq, 30));
 }
 
-static inline __attribute__((always_inline)) __m256i rsqrt_step4(__m256i xq, __m256i y)
+static inline __attribute__((always_inline)) __m256i recip_step4(__m256i xq, __m256i y)
 {
-	const __m256i three_halves = epi64(3ll << 30);
-	__m256i y2 = mul_round(y, y, 31);
-	__m256i h = mul_round(xq, y2, 31);
-	__m256i f = _mm256_andnot_si256(_mm256_cmpgt_epi64(h, three_halves), _mm256_sub_epi64(three_halves, h));
-	return mul_round(y, f, 31);
+	__m256i xy = mul_round(xq, y, 30);
+	return mul_round(y, _mm256_sub_epi64(epi64(1ll << 32), xy), 31);
 }
 
-/* fx_dq_blend_scale from the rsqrt m, shift: 2 / |real|^2 = inv / 2^sh */
-static inline void blend_scale4(__m256i *y, __m256i *shift)
+/* 2 / |real|^2 = inv / 2^sh from 1 / X = y / 2^31 and e */
+static inline void blend_scale4(__m256i *y, __m256i *e_sh)
 {
-	__m256i m = _mm256_blendv_epi8(*y, epi64(INT32_MAX), _mm256_cmpgt_epi64(*y, epi64(INT32_MAX)));
-	*y = mul_round(m, m, 32);
-	*shift = _mm256_sub_epi64(_mm256_add_epi64(*shift, *shift), epi64(33));
+	*y = _mm256_srli_epi64(_mm256_add_epi64(*y, epi64(1)), 1);
+	*e_sh = _mm256_sub_epi64(epi64(29), *e_sh);
 }
 
 /* The transform takes 4 vertices at a time in 64-bit lanes, each value in
@@ -239,7 +236,7 @@ static __m256i q30_to_q16(__m256i v)
 }
 
 /* The work is split in three passes over a chunk of vertices (blend,
- * reciprocal norm, transform): the integer rsqrt is a chain of dependent
+ * reciprocal norm, transform): the integer reciprocal is a chain of dependent
  * multiplies, which a short loop of its own lets the out-of-order core
  * overlap across batches, and each pass keeps fewer values live. */
 #define CHUNK_BATCHES 8
@@ -247,8 +244,8 @@ static __m256i q30_to_q16(__m256i v)
 typedef struct chunk {
 	int32_t w01[CHUNK_BATCHES][SKIN_LANES], w23[CHUNK_BATCHES][SKIN_LANES];
 	__m256i d[CHUNK_BATCHES][8];
-	/* even, odd lanes: squared norm (then X in Q30); rsqrt m, then inv;
-	 * its shift, then sh (see fx_dq_blend_scale) */
+	/* even, odd lanes: squared norm (then X in Q30); 1 / X, then inv;
+	 * e, then sh (see fx_dq_blend_scale) */
 	__m256i n2[CHUNK_BATCHES][2], inv[CHUNK_BATCHES][2], sh[CHUNK_BATCHES][2];
 	int bad[CHUNK_BATCHES];
 } chunk;
@@ -296,15 +293,15 @@ static void chunk_norms(int batches, chunk *c)
 {
 	for (int i = 0; i < batches; i++) {
 		__m256i be, bo;
-		c->inv[i][0] = rsqrt_seed4(&c->n2[i][0], &c->sh[i][0], &be);
-		c->inv[i][1] = rsqrt_seed4(&c->n2[i][1], &c->sh[i][1], &bo);
+		c->inv[i][0] = recip_seed4(&c->n2[i][0], &c->sh[i][0], &be);
+		c->inv[i][1] = recip_seed4(&c->n2[i][1], &c->sh[i][1], &bo);
 		__m256i bad = _mm256_or_si256(be, bo);
 		c->bad[i] |= !_mm256_testz_si256(bad, bad);
 	}
 	__m256i *xq = &c->n2[0][0], *y = &c->inv[0][0];
-	for (int s = 0; s < FX_RSQRT_STEPS; s++)
+	for (int s = 0; s < FX_RECIP_STEPS; s++)
 		for (int i = 0; i < 2 * batches; i++)
-			y[i] = rsqrt_step4(xq[i], y[i]);
+			y[i] = recip_step4(xq[i], y[i]);
 	for (int i = 0; i < 2 * batches; i++)
 		blend_scale4(&y[i], &c->sh[0][0] + i);
 }

@@ -301,6 +301,35 @@ static void test_isqrt_rsqrt(void **state)
 	print_message("fx_isqrt64 exact; fx_rsqrt_q60: max relative error %.3g (bound 2^-29 = 1.9e-9)\n", worst);
 }
 
+static void test_recip(void **state)
+{
+	(void)state;
+	double worst = 0;
+	for (int i = 0; i < 20 * N_RANDOM + 4; i++) {
+		/* squared norms from 2^-60 up to just below 2 (Q60), the ends
+		 * of the range and of the seed's segments among them */
+		uint64_t x = i == 0 ? 1 : i == 1 ? ((uint64_t)1 << 61) - 1 : i == 2 ? (uint64_t)1 << 60
+			   : i == 3 ? ((uint64_t)9 << 57) - 1 : (test_rng_u64() >> 3) >> (test_rng_u32() % 61);
+		if (x == 0)
+			continue;
+		int e;
+		uint32_t y = fx_recip_q60(x, &e);
+		double want = 1152921504606846976.0 / (double)x, got = ldexp(y, e - 31);
+		double rel = fabs(got / want - 1.0);
+		if (rel > worst)
+			worst = rel;
+		/* X cut to Q30 (up to 2^-30) and Newton in Q31 */
+		assert_true(rel < 2.0 / Q30);
+		assert_true(y >= (1u << 30) && y <= (1u << 31) && e >= 0 && e <= 60);
+	}
+	int e = 7;
+	assert_int_equal(fx_recip_q60(0, &e), 0);
+	assert_int_equal(e, 0);
+	assert_int_equal(fx_recip_q60((uint64_t)1 << 61, &e), 0);
+	assert_int_equal(fx_recip_q60(UINT64_MAX, &e), 0);
+	print_message("fx_recip_q60: max relative error %.3g (bound 2^-29 = 1.9e-9)\n", worst);
+}
+
 /* Bone with a rotation and |t| < tmax, built in fixed from exact Q30/Q16. */
 static fx_dq rand_fx_bone(double tmax)
 {
@@ -588,6 +617,7 @@ int main(void)
 		cmocka_unit_test_setup(test_rotate, rng_reset),
 		cmocka_unit_test_setup(test_rotate_extremes, rng_reset),
 		cmocka_unit_test_setup(test_isqrt_rsqrt, rng_reset),
+		cmocka_unit_test_setup(test_recip, rng_reset),
 		cmocka_unit_test_setup(test_dq_mul, rng_reset),
 		cmocka_unit_test_setup(test_blend, rng_reset),
 		cmocka_unit_test_setup(test_blend_far, rng_reset),
