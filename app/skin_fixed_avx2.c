@@ -176,9 +176,10 @@ static inline __m256i mul4(__m256i a, __m256i b)
 
 /* fx_dq_transform_blend's move_blended on 4 lanes: v + (2 / s) (r x (r x v
  * + w v + dv) + w dv - dw r), dual = d + 4 or NULL for the normal; 2 / s =
- * inv / 2^sh. Inside the envelope the batch was checked against, no
- * intermediate leaves int32, so nothing saturates and the low 32 bits of
- * each lane are the scalar kernel's values. */
+ * inv / 2^sh; a normal's shifts cut instead of rounding, as there. Inside
+ * the envelope the batch was checked against, no intermediate leaves int32,
+ * so nothing saturates and the low 32 bits of each lane are the scalar
+ * kernel's values. */
 static inline __attribute__((always_inline)) void move4(const __m256i d[8], const __m256i *dual,
 							  const __m256i v[3], __m256i inv, __m256i sh,
 							  __m256i rnd, __m256i out[3])
@@ -188,10 +189,8 @@ static inline __attribute__((always_inline)) void move4(const __m256i d[8], cons
 #pragma GCC unroll 3
 	for (int i = 0; i < 3; i++) {
 		int j = (i + 1) % 3, k = (i + 2) % 3;
-		a[i] = round_shift(_mm256_add_epi64(_mm256_sub_epi64(mul4(r[j], v[k]), mul4(r[k], v[j])),
-						    mul4(w, v[i])), 30);
-		if (dual)
-			a[i] = _mm256_add_epi64(a[i], dual[i + 1]);
+		__m256i sum = _mm256_add_epi64(_mm256_sub_epi64(mul4(r[j], v[k]), mul4(r[k], v[j])), mul4(w, v[i]));
+		a[i] = dual ? _mm256_add_epi64(round_shift(sum, 30), dual[i + 1]) : _mm256_srli_epi64(sum, 30);
 	}
 #pragma GCC unroll 3
 	for (int i = 0; i < 3; i++) {
@@ -199,8 +198,11 @@ static inline __attribute__((always_inline)) void move4(const __m256i d[8], cons
 		__m256i sum = _mm256_sub_epi64(mul4(r[j], a[k]), mul4(r[k], a[j]));
 		if (dual)
 			sum = _mm256_add_epi64(sum, _mm256_sub_epi64(mul4(w, dual[i + 1]), mul4(dual[0], r[i])));
-		__m256i b = round_shift(sum, 30);
-		out[i] = _mm256_add_epi64(v[i], _mm256_srlv_epi64(_mm256_add_epi64(mul4(b, inv), rnd), sh));
+		__m256i b = dual ? round_shift(sum, 30) : _mm256_srli_epi64(sum, 30);
+		__m256i delta = mul4(b, inv);
+		if (dual)
+			delta = _mm256_add_epi64(delta, rnd);
+		out[i] = _mm256_add_epi64(v[i], _mm256_srlv_epi64(delta, sh));
 	}
 }
 
