@@ -114,8 +114,8 @@ typedef struct skin_bones {
 void skin_bones_compute(skin_bones *out, const skel *s, const skel_pose *bind,
 			const skel_pose *pose);
 
-/* Recomputes the kernels' lookup tables (flip_x, fdq_halves) from fdq, for
- * a caller that set fdq itself. */
+/* Recomputes the kernels' lookup tables (flip_x and fdq_halves from fdq,
+ * flip_f from dq), for a caller that set fdq or dq itself. */
 void skin_bones_derive(skin_bones *out);
 
 /* Where a kernel writes: float kernels xyz triples in pos/nrm, the

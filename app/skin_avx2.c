@@ -3,8 +3,8 @@
  * and one transpose turns the eight results into lanes: gathering every
  * bone value into lanes first costs a gather or a transpose per influence.
  * Built when the board sets SIMD=avx2; results match skin_scalar.c to
- * float rounding. The small fixed loops carry `#pragma GCC unroll`: left rolled,
- * GCC keeps their vectors in stack arrays (DQBS ran 30% slower). */
+ * float rounding. The small fixed loops carry `#pragma GCC unroll`: left
+ * rolled, GCC keeps their vectors in stack arrays (DQBS ran 30% slower). */
 #include "skin.h"
 
 #ifdef SKP_SIMD_AVX2
