@@ -37,8 +37,9 @@
  * after dividing a degenerate blend by a small norm) saturate instead of
  * wrapping.
  *
- * Rounding: every right shift rounds to nearest (ties towards +infinity);
- * signed right shift must be arithmetic (checked at compile time below).
+ * Rounding: every right shift rounds to nearest (ties towards +infinity),
+ * except that fx_dq_transform_blend cuts a normal's (14 spare bits); signed
+ * right shift must be arithmetic (checked at compile time below).
  */
 #ifndef FIXED_H
 #define FIXED_H
