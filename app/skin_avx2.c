@@ -109,13 +109,12 @@ typedef struct dq8 {
  * signed weights staged in memory and broadcast per vertex. */
 static inline __attribute__((always_inline)) dq8 dq_blend8(const skin_soa *in, const skin_bones *b, int v)
 {
-	const int *flip = &b->flip_f[0][0];
 	float ws[SKP_MAX_INFLUENCES][SKIN_LANES] __attribute__((aligned(32)));
 #pragma GCC unroll 4
 	for (int k = 0; k < SKP_MAX_INFLUENCES; k++) {
 		__m256 w = _mm256_load_ps(in->weight[k] + v);
 		if (k) {
-			__m256i neg = _mm256_i32gather_epi32(flip, skin_flip_index(in->bone[0], in->bone[k], v), 4);
+			__m256i neg = skin_flip_mask(&b->flip_f[0][0], in->bone[0], in->bone[k], v);
 			w = _mm256_xor_ps(w, _mm256_and_ps(_mm256_castsi256_ps(neg), _mm256_set1_ps(-0.0f)));
 		}
 		_mm256_store_ps(ws[k], w);

@@ -35,12 +35,14 @@ static inline void skin_transpose8(__m256 r[8])
 	r[7] = _mm256_permute2f128_ps(s3, s7, 0x31);
 }
 
-/* Index of (pivot bone, bone) in the flip tables, for 8 lanes. */
-static inline __m256i skin_flip_index(const uint16_t *pivot, const uint16_t *bone, int v)
+/* The flip masks (-1 or 0) of 8 lanes' (pivot bone, bone) pairs, looked up
+ * in a (SKP_MAX_BONES + 1)-square table such as skin_bones' flip_x. */
+static inline __m256i skin_flip_mask(const int32_t *flip, const uint16_t *pivot, const uint16_t *bone, int v)
 {
 	__m256i p = _mm256_cvtepu16_epi32(_mm_load_si128((const __m128i *)(pivot + v)));
 	__m256i k = _mm256_cvtepu16_epi32(_mm_load_si128((const __m128i *)(bone + v)));
-	return _mm256_add_epi32(_mm256_mullo_epi32(p, _mm256_set1_epi32(SKP_MAX_BONES + 1)), k);
+	__m256i index = _mm256_add_epi32(_mm256_mullo_epi32(p, _mm256_set1_epi32(SKP_MAX_BONES + 1)), k);
+	return _mm256_i32gather_epi32((const int *)flip, index, 4);
 }
 
 /* 8 xyz triples from three lane registers to 24 interleaved values at dst

@@ -29,7 +29,6 @@ static inline __attribute__((always_inline)) int blend_weights(const skin_soa *i
 								int32_t w01[SKIN_LANES],
 								int32_t w23[SKIN_LANES])
 {
-	const int *flip = &b->flip_x[0][0];
 	const __m256i low16 = _mm256_set1_epi32(0xffff), full = _mm256_set1_epi32(FX_W15_ONE);
 	__m256i bad = _mm256_setzero_si256(), sum = _mm256_setzero_si256(), w[SKP_MAX_INFLUENCES];
 #pragma GCC unroll 8
@@ -39,7 +38,7 @@ static inline __attribute__((always_inline)) int blend_weights(const skin_soa *i
 		if (k == 0) {
 			x = _mm256_sub_epi32(x, full);
 		} else {
-			__m256i neg = _mm256_i32gather_epi32(flip, skin_flip_index(in->bone[0], in->bone[k], v), 4);
+			__m256i neg = skin_flip_mask(&b->flip_x[0][0], in->bone[0], in->bone[k], v);
 			bad = _mm256_or_si256(bad, _mm256_cmpeq_epi32(x, full));
 			x = _mm256_sub_epi32(_mm256_xor_si256(x, neg), neg);
 		}
