@@ -178,10 +178,7 @@ fx_dq fx_dq_blend(const fx_dq *bone_dqs, const uint16_t *bone_idx,
  * int32 range (|p| + |t| < 32768 units) the results match the normalised
  * path to a few LSB, more only as 2 / s grows. Identity (p, n returned as
  * they are) when s is 0, below 2^-28 (an all but cancelled blend) or 2 or
- * more (weights summing well past 1): see fx_dq_blend_scale. */
+ * more (weights summing well past 1). */
 void fx_dq_transform_blend(const fx_dq *d, fx_vec3 p, fx_vec3 n, fx_vec3 *po, fx_vec3 *no);
-/* inv and the return value sh of fx_dq_transform_blend (0: identity) for
- * the blend's real part; what the SIMD kernel computes per lane. */
-int fx_dq_blend_scale(fx_quat real, uint32_t *inv);
 
 #endif

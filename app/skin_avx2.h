@@ -1,6 +1,7 @@
 /* Shared by the AVX2 kernels: moving eight vertices between the
- * per-vertex (AoS) and per-lane (SoA) layouts. Only bit moves here, no
- * arithmetic, so the fixed-point kernel may use them too. */
+ * per-vertex (AoS) and per-lane (SoA) layouts, and the DQBS flip lookup.
+ * No floating-point arithmetic here, so the fixed-point kernel may use
+ * them too. */
 #ifndef SKIN_AVX2_H
 #define SKIN_AVX2_H
 

@@ -113,7 +113,7 @@ static inline __m256i mul_round(__m256i a, __m256i b, int s)
 				_mm_cvtsi32_si128(s));
 }
 
-/* fx_dq_blend_scale on 4 lanes (fx_recip_q60 step for step the same
+/* fixed.c's blend_scale on 4 lanes (fx_recip_q60 step for step the same
  * integers) for squared norms in [2^56, 2^60 + 2^32]: every blend with the
  * sign fix whose weights sum to at most 1 (its real part is at least the
  * pivot's weight, 1/4, and at most 1 plus rounding long; the bound above
@@ -246,7 +246,7 @@ typedef struct chunk {
 	int32_t w01[CHUNK_BATCHES][SKIN_LANES], w23[CHUNK_BATCHES][SKIN_LANES];
 	__m256i d[CHUNK_BATCHES][8];
 	/* even, odd lanes: squared norm (then X in Q30); 1 / X, then inv;
-	 * e, then sh (see fx_dq_blend_scale) */
+	 * e, then sh (see blend_scale4) */
 	__m256i n2[CHUNK_BATCHES][2], inv[CHUNK_BATCHES][2], sh[CHUNK_BATCHES][2];
 	int bad[CHUNK_BATCHES];
 } chunk;
