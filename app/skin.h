@@ -78,6 +78,9 @@ void skin_soa_attach(skin_soa *s, void *mem, int count);
 skp_status skin_soa_load(skin_soa *s, const mesh *m, const skin_weights *w, int bone_count,
 			 skp_error *err);
 
+/* See skin_bones.simd_ok. */
+#define SKIN_SIMD_DUAL_LIMIT ((int32_t)1 << 26)
+
 /* Per-frame transforms of every bone, in the forms the kernels read. */
 typedef struct skin_bones {
 	int count;
@@ -105,7 +108,6 @@ typedef struct skin_bones {
 	 * 0 when a dual component is 2^26 (1024 units) or longer: beyond that
 	 * the kernel's 32-bit intermediates could overflow where the scalar
 	 * kernel saturates, so it takes the scalar path for the frame. */
-#define SKIN_SIMD_DUAL_LIMIT ((int32_t)1 << 26)
 	int16_t fdq_halves[SKP_MAX_BONES + 1][16];
 	int simd_ok;
 #endif

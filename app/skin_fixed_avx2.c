@@ -3,8 +3,9 @@
  * multiply-adds on components split into 16-bit halves (blend_vertex), the
  * transform with the division by |real|^2 folded in (as
  * fx_dq_transform_blend) with 32x32->64 products (vpmuldq) on the even and
- * odd vertices in 64-bit lanes, sums kept in 64 bits and rounded once. No floating-point instruction: `make test` disassembles this object
- * to check (tests/check_simd_integer.sh). */
+ * odd vertices in 64-bit lanes, each sum of products kept in 64 bits until
+ * its one shift. No floating-point instruction: `make test` disassembles
+ * this object to check (tests/check_simd_integer.sh). */
 #include "skin.h"
 
 #ifdef SKP_SIMD_AVX2
