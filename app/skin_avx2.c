@@ -57,9 +57,9 @@ static inline __attribute__((always_inline)) void lbs_block(const skin_soa *in, 
 #pragma GCC unroll 4
 		for (int k = 0; k < SKP_MAX_INFLUENCES; k++) {
 			const float *row = b->lbs12[in->bone[k][v + j]];
-			const float *w = in->weight[k] + v + j;
-			h = _mm256_fmadd_ps(_mm256_broadcast_ss(w), _mm256_loadu_ps(row), h);
-			t = _mm_fmadd_ps(_mm_broadcast_ss(w), _mm_loadu_ps(row + 8), t);
+			__m256 w = _mm256_broadcast_ss(in->weight[k] + v + j);
+			h = _mm256_fmadd_ps(w, _mm256_loadu_ps(row), h);
+			t = _mm_fmadd_ps(_mm256_castps256_ps128(w), _mm_loadu_ps(row + 8), t);
 		}
 		head[j] = h;
 		tail[j] = t;
