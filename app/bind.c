@@ -11,6 +11,11 @@ const bind_params bind_default_params = {
 	.blend = 0.20f,
 };
 
+/* |d_parent + d_child| below this (bones folded back by more than about
+ * 150 degrees) leaves the child's own direction: the bisector turns too
+ * fast there to mean anything. */
+#define BIND_MITER_MIN 0.5f
+
 static float clampf(float x, float lo, float hi)
 {
 	return x < lo ? lo : (x > hi ? hi : x);
@@ -66,6 +71,26 @@ static void find_neighbours(bind_rig *rig, const skel *s, const int *anc)
 	}
 }
 
+/* Where a bone is its parent's only child, both ramps of the joint project
+ * on the bisector of the two bones, so that the cross-fade's mid surface
+ * cuts the joint like a mitre instead of square to the child: at an angled
+ * joint (ankle, hip) a square cut leaves more flesh on one side of the
+ * joint than the other, and a bend then changes the volume in proportion
+ * to its angle. */
+static void find_miters(bind_rig *rig, const skel *s, const int *anc, const uint8_t *starting)
+{
+	for (int b = 1; b < s->count; b++) {
+		bind_segment *g = &rig->seg[b];
+		if (g->length <= 0.0f || anc[b] < 0 || starting[anc[b] + 1] != 1)
+			continue;
+		bind_segment *up = &rig->seg[anc[b]];
+		vec3 m = vec3_add(g->dir, up->dir);
+		float len = vec3_length(m);
+		if (len > BIND_MITER_MIN)
+			g->head_n = up->tip_n = vec3_scale(m, 1.0f / len);
+	}
+}
+
 /* A ramp is only needed where a neighbour takes over: count the boxed
  * bones meeting at each joint (keyed by the bone ending there, -1 for the
  * root joint). */
@@ -89,7 +114,9 @@ static void find_ramps(bind_rig *rig, const skel *s)
 		g->ramp_head = meeting >= 2;
 		g->parent = (int16_t)(anc[b] >= 0 ? anc[b] : 0);
 		g->ramp_tip = starting[b + 1] >= 1;
+		g->head_n = g->tip_n = g->dir;
 	}
+	find_miters(rig, s, anc, starting);
 }
 
 void bind_prepare(bind_rig *rig, const skel *s, const skel_pose *pose,
@@ -145,12 +172,13 @@ static float segment_weight(const bind_segment *g, vec3 p, int *inside, float *h
 	*inside = 1;
 	float w = 1.0f;
 	if (g->ramp_head) {
-		float r = ramp(s, g->half);
+		float r = ramp(vec3_dot(q, g->head_n), g->half);
 		w = fminf(w, r);
 		*head_share = clampf(1.0f - r, 0.0f, 1.0f);
 	}
 	if (g->ramp_tip)
-		w = fminf(w, ramp(g->length - s, g->half));
+		w = fminf(w, ramp(vec3_dot(vec3_scale(g->dir, g->length), g->tip_n) - vec3_dot(q, g->tip_n),
+				  g->half));
 	return clampf(w, 0.0f, 1.0f);
 }
 

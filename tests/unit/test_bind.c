@@ -131,6 +131,61 @@ static void test_ramp_past_joint_is_linear(void **state)
 	assert_float_equal(bind_segment_weight(&rig.seg[1], far, NULL), 0.0f, 0.0f);
 }
 
+/* root -> a (0,0,0)-(0,10,0) -> b (0,10,0)-(10,10,0): a right angle. */
+static void right_angle(void)
+{
+	start_skel();
+	add_bone("a", 0, vec3_make(0, 0, 0), vec3_make(0, 10, 0));
+	add_bone("b", 1, vec3_make(0, 10, 0), vec3_make(10, 10, 0));
+	bind_prepare(&rig, &s, &pose, &sharp);
+}
+
+/* At an angled joint both ramps run along the bisector m = (1,1,0)/sqrt 2:
+ * the mitre plane x + y = 10 is the 0.5 line (cut square to b, a point on
+ * it off the axis would get 0.5 + x / 2h), and a point and its mirror
+ * image across that plane swap weights. */
+static void test_angled_joint_ramps_on_the_mitre(void **state)
+{
+	(void)state;
+	right_angle();
+	const float r = 1.0f / sqrtf(2.0f);
+	assert_float_equal(rig.seg[2].head_n.x, r, 1e-6f);
+	assert_float_equal(rig.seg[2].head_n.y, r, 1e-6f);
+	assert_float_equal(rig.seg[1].tip_n.x, r, 1e-6f);
+	assert_float_equal(rig.seg[1].tip_n.y, r, 1e-6f);
+	vec3 p[3] = { vec3_make(1.0f, 9.0f, 0.5f), vec3_make(0.5f, 9.2f, 0.3f), vec3_make(0.8f, 9.5f, 0.3f) };
+	bind_points(p, 3, NULL);
+	assert_float_equal(skin_weights_of(&sw, 0, 1), 0.5f, 1e-6f);
+	assert_float_equal(skin_weights_of(&sw, 0, 2), 0.5f, 1e-6f);
+	float wb = 0.5f + (0.5f - 0.8f) * r / (2 * 2.0f);
+	assert_float_equal(skin_weights_of(&sw, 1, 2), wb, 1e-6f);
+	assert_float_equal(skin_weights_of(&sw, 1, 1), 1.0f - wb, 1e-6f);
+	assert_float_equal(skin_weights_of(&sw, 2, 1), wb, 1e-6f);
+	assert_float_equal(skin_weights_of(&sw, 2, 2), 1.0f - wb, 1e-6f);
+}
+
+/* Folded back by more than about 150 degrees the bisector is left alone:
+ * the child ramps along its own direction; and where two bones start at
+ * a joint neither takes a mitre. */
+static void test_mitre_only_where_it_means_something(void **state)
+{
+	(void)state;
+	start_skel();
+	add_bone("a", 0, vec3_make(0, 0, 0), vec3_make(0, 10, 0));
+	add_bone("b", 1, vec3_make(0, 10, 0), vec3_make(3.0f, 0.5f, 0));
+	bind_prepare(&rig, &s, &pose, &sharp);
+	assert_float_equal(rig.seg[2].head_n.x, rig.seg[2].dir.x, 0.0f);
+	assert_float_equal(rig.seg[2].head_n.y, rig.seg[2].dir.y, 0.0f);
+	assert_float_equal(rig.seg[1].tip_n.y, 1.0f, 0.0f);
+
+	right_angle();
+	add_bone("c", 1, vec3_make(0, 10, 0), vec3_make(-10, 10, 0));
+	bind_prepare(&rig, &s, &pose, &sharp);
+	assert_float_equal(rig.seg[2].head_n.x, 1.0f, 0.0f);
+	assert_float_equal(rig.seg[3].head_n.x, -1.0f, 0.0f);
+	assert_float_equal(rig.seg[1].tip_n.y, 1.0f, 0.0f);
+}
+
 /* root -> a (0,0,0)-(0,1,0), short -> b (0,1,0)-(0,11,0): a's box
  * (R = 0.2) misses a point beside the joint that lies in b's head ramp
  * (R = 2, h = 2); a still takes what b's ramp leaves there. */
@@ -558,6 +613,8 @@ int main(void)
 		cmocka_unit_test(test_mid_bone_gets_one),
 		cmocka_unit_test(test_joint_is_half_half),
 		cmocka_unit_test(test_ramp_past_joint_is_linear),
+		cmocka_unit_test(test_angled_joint_ramps_on_the_mitre),
+		cmocka_unit_test(test_mitre_only_where_it_means_something),
 		cmocka_unit_test(test_head_ramp_rest_goes_to_parent),
 		cmocka_unit_test(test_far_bones_do_not_share),
 		cmocka_unit_test(test_outside_every_box_goes_to_nearest),
