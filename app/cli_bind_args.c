@@ -71,12 +71,14 @@ static int load_pose(const bind_args *a, bound_body *body)
 	static amc_frame f;
 
 	body->pose_frame = -1;
+	memset(body->pose_value, 0, sizeof body->pose_value);
 	if (!a->pose_path) {
 		fk_pose(&body->skel, NULL, &body->pose);
 		return 0;
 	}
 	if (tool_read_frame(a->pose_path, &body->skel, a->pose_frame, &f) < 0)
 		return -1;
+	memcpy(body->pose_value, f.value, sizeof body->pose_value);
 	fk_pose(&body->skel, f.value, &body->pose);
 	body->pose_frame = f.number;
 	return 0;

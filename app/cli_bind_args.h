@@ -36,6 +36,7 @@ typedef struct bound_body {
 	skel skel;
 	skel_pose pose;             /* the bind pose */
 	long pose_frame;            /* frame bound in, -1 for the ASF rest pose */
+	float pose_value[SKP_MAX_DOF]; /* its channel values (all 0 for the rest pose) */
 	mesh mesh;                  /* fitted when --fit */
 	int fitted;
 	bind_fit_result fit;

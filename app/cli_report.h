@@ -1,9 +1,12 @@
 /* The LBS vs DQBS comparison report of skintool compare: what the command
- * measures (cli_report.c: joint regions) and the page that shows it
- * (cli_report_html.c). Front-end code: it writes files. */
+ * measures (cli_report.c: joint regions; cli_report_joints.c: which bends
+ * carry a volume change) and the page that shows it (cli_report_html.c).
+ * Front-end code: it writes files. */
 #ifndef CLI_REPORT_H
 #define CLI_REPORT_H
 
+#include "cli_measure.h"
+#include "cli_skin.h"
 #include "skel.h"
 #include "skin.h"
 #include "skin_scene.h"
@@ -57,6 +60,36 @@ typedef struct report_scene {
 	double vol[SKIN_ALGO_COUNT], rmin[SKIN_ALGO_COUNT], rmax[SKIN_ALGO_COUNT];
 } report_scene;
 
+/* One joint's part in a pose's volume change. */
+typedef struct report_joint {
+	int bone;
+	double share;               /* the pose's volume ratio minus the ratio with
+				     * this joint's rotation back at the bind pose */
+	int count;                  /* rotation channels */
+	uint8_t channel[3];         /* SKEL_RX.. in the ASF's dof order */
+	float deg[3];               /* their values, degrees */
+	int past;                   /* channel farthest outside the ASF limits, -1: none */
+	float past_deg;             /* by how much (modulo 360: 370 is 10) */
+	float lo_deg, hi_deg;       /* its limits */
+} report_joint;
+
+#define REPORT_MAX_JOINTS 6
+typedef struct report_joints {
+	long frame;                 /* -1: not measured */
+	double volume;              /* the frame's volume ratio */
+	int count;
+	report_joint joint[REPORT_MAX_JOINTS]; /* largest |share| first, |share| >= 0.05% */
+} report_joints;
+
+/* Skins frame `values` with algo once as it is and once per bone with
+ * rotation channels, that bone's rotations set back to their bind-pose
+ * values (bind_values): the joints whose bend moves the volume most.
+ * The root is left out (it moves the body rigidly); so are translations.
+ * sk and meas are left in an arbitrary pose; pos and nrm are scratch. */
+void report_find_joints(tool_skin *sk, tool_measure *meas, skin_algo algo, long frame,
+			const float *values, const float *bind_values, float *pos, float *nrm,
+			report_joints *out);
+
 #define REPORT_MAX_STILLS 8
 typedef struct report_still {
 	long frame;
@@ -72,6 +105,9 @@ typedef struct report_chart {
 	const char *title, *caption;
 } report_chart;
 
+/* report.mesh_name without --mesh */
+#define GENERATED_BODY "generated body"
+
 #define REPORT_MAX_CHARTS 12
 typedef struct report {
 	const char *asf, *amc, *mesh_name, *clip;
@@ -82,10 +118,12 @@ typedef struct report {
 	double seconds;             /* measuring the clip */
 	report_algo algo[SKIN_ALGO_COUNT];
 	report_extreme rel_min;     /* worst LBS - DQBS over the clip */
-	/* at DQBS's largest volume deviation: the volume the skin passing
-	 * through itself adds to the signed volume, over the bound volume
-	 * (skin_overlap.h); NAN when not measured */
+	/* at DQBS's largest volume deviation: the volume where the skin passes
+	 * through itself, which the signed volume counts twice, over the bound
+	 * volume (skin_overlap.h); NAN when not measured */
 	double dqbs_overlap;
+	/* LBS at its worst volume loss, DQBS at its largest deviation */
+	report_joints vol_joints[2];
 	report_scene scene[2 * REPORT_ANGLES];
 	int scene_count;
 	report_still still[REPORT_MAX_STILLS];

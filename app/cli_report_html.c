@@ -27,6 +27,7 @@ static const char css[] =
 	"td small{display:block;color:#6e7781;font-size:12px}\n"
 	".verdict{margin:8px 0;padding:10px 14px;border-left:4px solid #9aa4af;background:#f7f8fa}\n"
 	".verdict.yes{border-color:#2da44e}.verdict.no{border-color:#cf222e}\n"
+	"td.past{color:#cf222e}\n"
 	".verdict b{font-weight:600}\n"
 	".swatch{display:inline-block;width:26px;height:0;border-top:3px solid;vertical-align:middle;"
 	"margin:0 6px 0 16px}\n"
@@ -109,10 +110,15 @@ static void verdicts(FILE *f, const report *r)
 		"on every frame: <b>%s</b> &mdash; its largest deviation is %+.2f%% (frame %ld%s)",
 		within ? "yes" : "no", within ? "yes" : "no", dq_dev_signed, d->vol_dev_frame,
 		dq_dev_signed > 0 ? ", a gain: DQBS bulges at bends" : "");
-	if (dq_dev_signed > 0 && r->dqbs_overlap >= 0.0005)
-		fprintf(f, "; of it, <span id=\"dqbs-overlap\">%.2f%%</span> is where the skin passes "
-			"through itself, which the signed volume counts twice (the enclosed volume there is "
-			"%+.2f%%)", 100.0 * r->dqbs_overlap, dq_dev_signed - 100.0 * r->dqbs_overlap);
+	if (r->vol_joints[SKIN_DQBS].count > 0)
+		fprintf(f, "; the largest share, %+.2f%%, from the bend of <code>%s</code> (<a href=\"#joints\">"
+			"where the volume goes</a>)", 100.0 * r->vol_joints[SKIN_DQBS].joint[0].share,
+			r->skel->bone[r->vol_joints[SKIN_DQBS].joint[0].bone].name);
+	if (r->dqbs_overlap >= 0.0005)
+		fprintf(f, ". In that pose the skin also passes through itself: "
+			"<span id=\"dqbs-overlap\">%.2f%%</span> of the bound volume lies inside two parts at "
+			"once, which the signed volume counts twice, as the flesh of both; the space the body "
+			"takes up is %+.2f%%", 100.0 * r->dqbs_overlap, dq_dev_signed - 100.0 * r->dqbs_overlap);
 	fputs(".</p>\n", f);
 	fprintf(f, "<p class=\"verdict %s\" id=\"verdict-lbs-loss\">LBS's worst frame loses more volume "
 		"than DQBS's: <b>%s</b> &mdash; LBS loses up to %.2f%% (frame %ld), DQBS at most %.2f%%",
@@ -165,11 +171,78 @@ static void summary_table(FILE *f, const report *r)
 		fprintf(f, "</td><td>%.4f<small>frame %ld</small></td></tr>\n", s->rad_max.value,
 			s->rad_max.frame);
 	}
-	fputs("</table>\n<p class=\"meta\">Volume: enclosed volume over the volume as bound. Radius "
+	fputs("</table>\n<p class=\"meta\">Volume: the closed mesh's signed volume over the volume as bound. Radius "
 	      "ratio: a vertex's distance to the nearest posed bone over the same distance as bound; "
 	      "the minimum over all vertices also drops where a limb touches another one (for every "
 	      "algorithm alike), which is why the renders below are chosen by the difference between "
 	      "LBS and DQBS at the same vertex.</p>\n", f);
+}
+
+static void joint_row(FILE *f, const report *r, const report_joint *j)
+{
+	static const char *const axis[3] = { "rx", "ry", "rz" };
+	fputs("<tr><td><code>", f);
+	put_escaped(f, r->skel->bone[j->bone].name);
+	fputs("</code></td><td>", f);
+	for (int c = 0; c < j->count; c++)
+		fprintf(f, "%s%s %.1f", c ? ", " : "", axis[j->channel[c]], (double)j->deg[c]);
+	if (j->past >= 0)
+		fprintf(f, "</td><td class=\"past\">%s %.1f&deg; past (%.0f, %.0f)", axis[j->channel[j->past]],
+			(double)j->past_deg, (double)j->lo_deg, (double)j->hi_deg);
+	else
+		fputs("</td><td>within", f);
+	fprintf(f, "</td><td>%+.2f%%</td></tr>\n", 100.0 * j->share);
+}
+
+/* The listed joints of j outside their ASF limits. */
+static int joints_past(const report_joints *j)
+{
+	int n = 0;
+	for (int i = 0; i < j->count; i++)
+		n += j->joint[i].past >= 0;
+	return n;
+}
+
+static void joint_table(FILE *f, const report *r, int algo)
+{
+	static const char *const what[2] = { "LBS at its worst volume loss", "DQBS at its largest deviation" };
+	static const char *const id[2] = { "joints-lbs", "joints-dqbs" };
+	const report_joints *j = &r->vol_joints[algo];
+	if (j->frame < 0)
+		return;
+	fprintf(f, "<h3>%s: frame %ld, volume %+.2f%%</h3>\n", what[algo], j->frame, 100.0 * (j->volume - 1.0));
+	if (j->count == 0) {
+		fputs("<p>No single joint moves the volume by 0.05% or more.</p>\n", f);
+		return;
+	}
+	fprintf(f, "<table id=\"%s\" data-frame=\"%ld\">\n<tr><th>joint</th><th>rotation (degrees)</th><th>ASF limits</th>"
+		"<th>volume change from its bend</th></tr>\n", id[algo], j->frame);
+	for (int i = 0; i < j->count; i++)
+		joint_row(f, r, &j->joint[i]);
+	fputs("</table>\n", f);
+	int past = joints_past(j);
+	if (past > 0)
+		fprintf(f, "<p class=\"meta\">%d of these joints %s a channel outside the limits the "
+			"skeleton file gives it (compared modulo 360 degrees).</p>\n", past, past > 1 ? "have" : "has");
+}
+
+static void joints_section(FILE *f, const report *r)
+{
+	if (r->vol_joints[0].frame < 0 && r->vol_joints[1].frame < 0)
+		return;
+	fputs("<h2 id=\"joints\">Where the volume goes</h2>\n<p>Each worst frame skinned again with one "
+	      "joint at a time turned back to its bind-pose rotation: the difference is what that joint's "
+	      "bend does to the volume. DQBS turns each cross-section of a bending joint rigidly about the "
+	      "joint, so it keeps the volume only where the flesh around the joint is centred on it; "
+	      "elsewhere the volume changes in proportion to the bend angle, up one way and down the other", f);
+	if (strcmp(r->mesh_name, GENERATED_BODY) == 0)
+		fputs(" (on the generated body, the hips: a CMU hip joint lies in front of the pelvis; and the "
+		      "ankles, where the foot leaves the shin at a right angle)", f);
+	fputs(". LBS adds its collapse, which grows faster than the angle. The shares need not add up to "
+	      "the total: bends interact where their regions meet. Joints moving the volume by less than "
+	      "0.05% are left out.</p>\n", f);
+	joint_table(f, r, SKIN_LBS);
+	joint_table(f, r, SKIN_DQBS);
 }
 
 static void region_table(FILE *f, const report *r)
@@ -293,9 +366,10 @@ static void scenes(FILE *f, const report *r)
 static void definitions(FILE *f, const report *r)
 {
 	fprintf(f, "<h2>Definitions</h2>\n<dl>\n"
-		"<dt>volume ratio</dt><dd>The volume the closed mesh encloses (divergence theorem, in "
-		"double) over the volume as bound. 1 means kept; a self-intersecting pose counts the "
-		"overlap twice.</dd>\n"
+		"<dt>volume ratio</dt><dd>The closed mesh's signed volume (divergence theorem, in "
+		"double) over the volume as bound. 1 means kept. Where the skin passes through itself "
+		"the overlap counts twice, as the flesh of both parts: the ratio measures what the "
+		"skinning does to the body, not the space the pose takes up.</dd>\n"
 		"<dt>radius ratio</dt><dd>For each vertex farther than 1e-4 of the mesh's size from the "
 		"bones as bound (%d of %d vertices): its distance to the nearest posed bone segment over "
 		"the same distance in the bind pose. Below 1 the skin moved towards the bones (collapse, "
@@ -332,6 +406,7 @@ int report_write_html(const report *r, const char *dir)
 	fputs("<h2>Summary</h2>\n", f);
 	verdicts(f, r);
 	summary_table(f, r);
+	joints_section(f, r);
 	stills(f, r);
 	region_table(f, r);
 	charts(f, r);

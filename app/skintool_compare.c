@@ -373,7 +373,7 @@ static int open_csv(compare_run *c, const compare_args *a)
 static int load_clip(compare_run *c, const compare_args *a)
 {
 	report *r = &c->rep;
-	const char *what = a->mesh ? a->mesh : "generated body";
+	const char *what = a->mesh ? a->mesh : GENERATED_BODY;
 	if (bind_args_load(&a->bind, a->asf, a->mesh, &c->body) < 0 ||
 	    tool_skin_init(&c->sk, &c->body.skel, &c->body.pose, &c->body.mesh, &c->body.weights, what) < 0 ||
 	    tool_measure_init(&c->meas, &c->body.mesh, &c->body.pose, c->body.skel.count, what) < 0)
@@ -595,8 +595,9 @@ static int render_stills(compare_run *c, const compare_args *a)
 	return rc;
 }
 
-/* How much of DQBS's worst volume deviation is the skin passing through
- * itself (counted twice by the signed volume) rather than bulging. */
+/* At DQBS's worst volume deviation: how much of the body is inside two of
+ * its parts at once (a thigh pressed into the belly), which the signed
+ * volume counts twice and the space the body takes up once. */
 static int measure_overlap(compare_run *c, const compare_args *a)
 {
 	static int ray_start[OVERLAP_GRID * OVERLAP_GRID + 1];
@@ -618,6 +619,24 @@ static int measure_overlap(compare_run *c, const compare_args *a)
 					  &work, &ok);
 	if (ok)
 		r->dqbs_overlap = excess / c->meas.rest_volume;
+	return 0;
+}
+
+/* Which bends carry LBS's worst loss and DQBS's largest deviation. */
+static int explain_volume(compare_run *c, const compare_args *a)
+{
+	static amc_frame f;
+	const long frame[2] = { c->rep.algo[SKIN_LBS].vol_min.frame, c->rep.algo[SKIN_DQBS].vol_dev_frame };
+	for (int k = 0; k < 2; k++) {
+		report_joints *j = &c->rep.vol_joints[k];
+		j->frame = -1;
+		if (frame[k] < 0)
+			continue;
+		if (tool_read_frame(a->amc, &c->body.skel, frame[k], &f) < 0)
+			return -1;
+		report_find_joints(&c->sk, &c->meas, (skin_algo)k, frame[k], f.value, c->body.pose_value,
+				   c->pos, c->nrm, j);
+	}
 	return 0;
 }
 
@@ -650,7 +669,7 @@ int cmd_compare(int argc, char **argv)
 		return 1;
 	uint64_t t1 = clock_now_ns();
 	pick_stills(&c, (int)a.renders);
-	if (measure_overlap(&c, &a) < 0 || render_stills(&c, &a) < 0 || write_charts(&c, a.out) < 0 || report_write_html(&c.rep, a.out) < 0)
+	if (measure_overlap(&c, &a) < 0 || explain_volume(&c, &a) < 0 || render_stills(&c, &a) < 0 || write_charts(&c, a.out) < 0 || report_write_html(&c.rep, a.out) < 0)
 		return 1;
 	uint64_t t2 = clock_now_ns();
 	fprintf(stderr, "%s: %ld frames x 3 algorithms, %d vertices: measured in %.2f s, renders, "
