@@ -16,6 +16,10 @@ const bind_params bind_default_params = {
  * fast there to mean anything. */
 #define BIND_MITER_MIN 0.5f
 
+/* Outside every box, boxes grow to this many times the distance to the
+ * nearest bone. */
+#define BIND_REACH 1.25f
+
 static float clampf(float x, float lo, float hi)
 {
 	return x < lo ? lo : (x > hi ? hi : x);
@@ -155,8 +159,9 @@ static float ramp(float x, float h)
 }
 
 /* The box weight, and in *head_share what the head ramp leaves for the
- * bone before the joint (1 - ramp, 0 past the ramp or outside the box). */
-static float segment_weight(const bind_segment *g, vec3 p, int *inside, float *head_share)
+ * bone before the joint (1 - ramp, 0 past the ramp or outside the box).
+ * The box reaches at least `reach` from the bone's line. */
+static float segment_weight(const bind_segment *g, vec3 p, float reach, int *inside, float *head_share)
 {
 	*inside = 0;
 	*head_share = 0.0f;
@@ -167,7 +172,8 @@ static float segment_weight(const bind_segment *g, vec3 p, int *inside, float *h
 	if (s < -g->half || s > g->length + g->half)
 		return 0.0f;
 	vec3 perp = vec3_madd(q, g->dir, -s);
-	if (vec3_dot(perp, perp) > g->radius * g->radius)
+	float box_r = fmaxf(g->radius, reach);
+	if (vec3_dot(perp, perp) > box_r * box_r)
 		return 0.0f;
 	*inside = 1;
 	float w = 1.0f;
@@ -186,7 +192,7 @@ float bind_segment_weight(const bind_segment *g, vec3 p, int *inside)
 {
 	int in;
 	float share;
-	float w = segment_weight(g, p, &in, &share);
+	float w = segment_weight(g, p, 0.0f, &in, &share);
 	if (inside)
 		*inside = in;
 	return w;
@@ -223,7 +229,7 @@ static void top_insert(top_influences *t, int bone, float w)
 	t->weight[k] = w;
 }
 
-static int nearest_bone(const bind_rig *rig, vec3 p)
+static int nearest_bone(const bind_rig *rig, vec3 p, float *dist)
 {
 	int best = 0;
 	float best_d = INFINITY;
@@ -236,23 +242,26 @@ static int nearest_bone(const bind_rig *rig, vec3 p)
 			best = b;
 		}
 	}
+	*dist = best_d;
 	return best;
 }
 
-/* Returns 1 when the vertex fell back to the nearest bone. */
-static int bind_vertex(const bind_rig *rig, vec3 p, skin_weights *out, int v)
+/* The weights of the bones meeting the nearest one (w, indexed by bone);
+ * their sum. */
+static float near_weights(const bind_rig *rig, int nearest, vec3 p, float reach, float *w)
 {
-	/* only bones meeting the nearest one at a joint share a vertex: across
-	 * the crotch or the armpit a box may reach a limb the vertex does not
-	 * belong to */
-	int nearest = nearest_bone(rig, p);
-	float w[SKP_MAX_BONES] = { 0.0f };
+	for (int b = 0; b < rig->bone_count; b++)
+		w[b] = 0.0f;
 	for (int b = 1; b < rig->bone_count; b++) {
 		if (!is_near(rig, nearest, b))
 			continue;
+		/* grown boxes: only along the nearest bone's chain, so that a
+		 * sibling (the lower back, for a hip) does not take its skin */
+		if (reach > 0.0f && b != nearest && rig->seg[b].parent != nearest && rig->seg[nearest].parent != b)
+			continue;
 		int in;
 		float share;
-		float wb = segment_weight(&rig->seg[b], p, &in, &share);
+		float wb = segment_weight(&rig->seg[b], p, reach, &in, &share);
 		w[b] = fmaxf(w[b], wb);
 		/* across the joint the bone before it takes the rest, even where
 		 * its own box does not reach (a short bone, the root) */
@@ -260,6 +269,29 @@ static int bind_vertex(const bind_rig *rig, vec3 p, skin_weights *out, int v)
 		if (is_near(rig, nearest, up))
 			w[up] = fmaxf(w[up], share);
 	}
+	float sum = 0.0f;
+	for (int b = 0; b < rig->bone_count; b++)
+		sum += w[b];
+	return sum;
+}
+
+/* Returns 1 when the vertex lies outside every box. */
+static int bind_vertex(const bind_rig *rig, vec3 p, skin_weights *out, int v)
+{
+	/* only bones meeting the nearest one at a joint share a vertex: across
+	 * the crotch or the armpit a box may reach a limb the vertex does not
+	 * belong to */
+	float dist;
+	int nearest = nearest_bone(rig, p, &dist);
+	float w[SKP_MAX_BONES];
+	int outside = !(near_weights(rig, nearest, p, 0.0f, w) > 0.0f);
+	/* beyond the boxes' radius (the flanks of a wide trunk around short
+	 * spine bones) the ramps still cross-fade the bones meeting the nearest
+	 * one, rather than cutting the skin where the nearest bone changes:
+	 * the boxes grow to reach the vertex, but not much further, so that a
+	 * bone pointing away (a clavicle, for the neck) stays out */
+	if (outside)
+		near_weights(rig, nearest, p, BIND_REACH * dist, w);
 	top_influences t = { 0 };
 	for (int b = 0; b < rig->bone_count; b++)
 		if (w[b] > 0.0f)
@@ -267,8 +299,7 @@ static int bind_vertex(const bind_rig *rig, vec3 p, skin_weights *out, int v)
 	float sum = 0.0f;
 	for (int k = 0; k < t.count; k++)
 		sum += t.weight[k];
-	int fallback = !(sum > 0.0f);
-	if (fallback) {
+	if (!(sum > 0.0f)) {
 		t.count = 1;
 		t.bone[0] = (uint16_t)nearest;
 		t.weight[0] = sum = 1.0f;
@@ -278,7 +309,7 @@ static int bind_vertex(const bind_rig *rig, vec3 p, skin_weights *out, int v)
 		out->bone[v][k] = t.bone[k];
 		out->weight[v][k] = t.weight[k] / sum;
 	}
-	return fallback;
+	return outside;
 }
 
 skp_status bind_weights(const bind_rig *rig, const vec3 *pos, int n,

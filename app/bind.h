@@ -44,8 +44,16 @@
  * share a vertex.
  *
  * Then per vertex: keep the 4 largest w_b, clamp at 0, normalise to sum 1.
- * A vertex with no weight (outside every box) goes, weight 1, to the
- * nearest bone (ties: the lower bone index).
+ * A vertex with no weight (outside every box) is weighed again with the
+ * boxes of the nearest bone n, of the bone ending at n's head and of the
+ * bones starting at n's tip grown to 1.25 times the vertex's distance to n
+ * (R' = max(R, 1.25 d)); siblings of n stay out (the lower back for a hip
+ * vertex). The paper gives such a vertex to the nearest bone alone, which
+ * cuts the skin where the nearest bone changes: the flanks of the
+ * generated body's trunk lie outside the short spine bones' boxes, and a
+ * bent back showed a jagged crease at every spine joint. Still no weight
+ * (past a chain's free end): weight 1 to the nearest bone (ties: the lower
+ * bone index).
  *
  * Zero-length bones (length <= 1e-6 S), the root among them, get no box and
  * never win the nearest-bone test (the root only takes head-ramp shares): a point has no direction to project on,

@@ -243,7 +243,9 @@ static void test_far_bones_do_not_share(void **state)
 	assert_true(skin_weights_of(&sw, 0, lhip) > 0.0f && skin_weights_of(&sw, 0, rhip) > 0.0f);
 }
 
-static void test_outside_every_box_goes_to_nearest(void **state)
+/* Outside every box: the nearest bone, or where the nearest bone's ramps
+ * reach (boxes grown to 1.25 times the distance to it), their cross-fade. */
+static void test_outside_every_box(void **state)
 {
 	(void)state;
 	two_bones();
@@ -251,19 +253,23 @@ static void test_outside_every_box_goes_to_nearest(void **state)
 	vec3 p[3] = { vec3_make(5, 3, 0), vec3_make(0, 30, 0), vec3_make(-4, 11, 0) };
 	assert_float_equal(bind_segment_weight(&rig.seg[1], p[0], &inside), 0.0f, 0.0f);
 	assert_int_equal(inside, 0);
+	assert_float_equal(bind_segment_weight(&rig.seg[2], p[2], &inside), 0.0f, 0.0f);
+	assert_int_equal(inside, 0);
 	bind_info info;
 	bind_points(p, 3, &info);
 	assert_int_equal(info.fallback, 3);
-	const int want[3] = { 1, 2, 2 };
-	for (int v = 0; v < 3; v++) {
+	const int want[2] = { 1, 2 };
+	for (int v = 0; v < 2; v++) {
 		assert_int_equal(sw.count[v], 1);
 		assert_int_equal(sw.bone[v][0], want[v]);
 		assert_float_equal(sw.weight[v][0], 1.0f, 0.0f);
 	}
+	/* 1 past the joint, 4 from the bones (R = 2): the ramp's 0.75 / 0.25 */
+	assert_int_equal(sw.count[2], 2);
+	assert_float_equal(skin_weights_of(&sw, 2, 2), 0.75f, 1e-6f);
+	assert_float_equal(skin_weights_of(&sw, 2, 1), 0.25f, 1e-6f);
 }
 
-/* Six bones fan out of one joint, with a zero-length bone in one chain:
- * every vertex has at most 4 weights, none negative, summing to 1. */
 static void test_invariants_on_a_fan(void **state)
 {
 	(void)state;
@@ -617,7 +623,7 @@ int main(void)
 		cmocka_unit_test(test_mitre_only_where_it_means_something),
 		cmocka_unit_test(test_head_ramp_rest_goes_to_parent),
 		cmocka_unit_test(test_far_bones_do_not_share),
-		cmocka_unit_test(test_outside_every_box_goes_to_nearest),
+		cmocka_unit_test(test_outside_every_box),
 		cmocka_unit_test(test_invariants_on_a_fan),
 		cmocka_unit_test(test_all_zero_length_goes_to_root),
 		cmocka_unit_test(test_bad_positions_rejected),
