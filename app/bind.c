@@ -14,7 +14,7 @@ const bind_params bind_default_params = {
 /* |d_parent + d_child| below this (bones folded back by more than about
  * 150 degrees) leaves the child's own direction: the bisector turns too
  * fast there to mean anything. */
-#define BIND_MITER_MIN 0.5f
+#define BIND_MITRE_MIN 0.5f
 
 /* Outside every box, boxes grow to this many times the distance to the
  * nearest bone. */
@@ -81,7 +81,7 @@ static void find_neighbours(bind_rig *rig, const skel *s, const int *anc)
  * joint (ankle, hip) a square cut leaves more flesh on one side of the
  * joint than the other, and a bend then changes the volume in proportion
  * to its angle. */
-static void find_miters(bind_rig *rig, const skel *s, const int *anc, const uint8_t *starting)
+static void find_mitres(bind_rig *rig, const skel *s, const int *anc, const uint8_t *starting)
 {
 	for (int b = 1; b < s->count; b++) {
 		bind_segment *g = &rig->seg[b];
@@ -90,7 +90,7 @@ static void find_miters(bind_rig *rig, const skel *s, const int *anc, const uint
 		bind_segment *up = &rig->seg[anc[b]];
 		vec3 m = vec3_add(g->dir, up->dir);
 		float len = vec3_length(m);
-		if (len > BIND_MITER_MIN)
+		if (len > BIND_MITRE_MIN)
 			g->head_n = up->tip_n = vec3_scale(m, 1.0f / len);
 	}
 }
@@ -120,7 +120,7 @@ static void find_ramps(bind_rig *rig, const skel *s)
 		g->ramp_tip = starting[b + 1] >= 1;
 		g->head_n = g->tip_n = g->dir;
 	}
-	find_miters(rig, s, anc, starting);
+	find_mitres(rig, s, anc, starting);
 }
 
 void bind_prepare(bind_rig *rig, const skel *s, const skel_pose *pose,
