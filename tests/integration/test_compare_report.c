@@ -220,6 +220,111 @@ static void write_straightened(const char *amc, long frame, const char *bone, co
 	assert_int_equal(fclose(f), 0);
 }
 
+/* The values on bone's line in frame `frame` of amc; their count. */
+static int amc_values(const char *amc, long frame, const char *bone, double *v, int max)
+{
+	char *text = slurp(amc), *save, *line;
+	int in = 0, n = -1;
+	size_t bl = strlen(bone);
+	for (line = strtok_r(text, "\r\n", &save); line && n < 0; line = strtok_r(NULL, "\r\n", &save)) {
+		if (line[0] >= '0' && line[0] <= '9' && strspn(line, "0123456789 \t") == strlen(line))
+			in = atol(line) == frame;
+		else if (in && strncmp(line, bone, bl) == 0 && (line[bl] == ' ' || line[bl] == '\t'))
+			for (char *t = line + bl, *e; n < max; t = e) {
+				double x = strtod(t, &e);
+				if (e == t)
+					break;
+				v[n < 0 ? (n = 0) : n] = x, n++;
+			}
+	}
+	free(text);
+	return n;
+}
+
+/* Limits of bone's k-th dof as the ASF writes them. */
+static int asf_limits(const char *asf_text, const char *bone, int k, double *lo, double *hi)
+{
+	char key[96];
+	snprintf(key, sizeof key, "name %s", bone);
+	const char *p = asf_text;
+	while ((p = strstr(p, key)) && p[strlen(key)] != ' ' && p[strlen(key)] != '\r' && p[strlen(key)] != '\n')
+		p++;
+	const char *l = p ? strstr(p, "limits") : NULL, *end = p ? strstr(p, "\n  end") : NULL;
+	if (!l || (end && l > end))
+		return -1;
+	for (int i = 0; i <= k; i++) {
+		if (!(l = strchr(l, '(')) || sscanf(l, "(%lf %lf)", lo, hi) != 2)
+			return -1;
+		l++;
+	}
+	return 0;
+}
+
+static double past_limits(double v, double lo, double hi)
+{
+	double best = INFINITY;
+	for (int k = -3; k <= 3; k++) {
+		double w = v + 360.0 * k;
+		best = fmin(best, w < lo ? lo - w : w > hi ? w - hi : 0.0);
+	}
+	return best;
+}
+
+/* Every row of the DQBS joint table: the rotations as the AMC has them,
+ * and the ASF-limit column as the ASF's limits give it (modulo 360). */
+static void check_joint_limits(const char *html, const char *asf, const char *amc, const char *clip)
+{
+	const char *t = strstr(html, "id=\"joints-dqbs\" data-frame=\"");
+	if (!t)
+		return;
+	long frame = atol(t + strlen("id=\"joints-dqbs\" data-frame=\""));
+	const char *end = strstr(t, "</table>");
+	char *asf_text = slurp(asf);
+	int rows = 0, past_rows = 0;
+	for (const char *row = strstr(t, "<tr><td><code>"); row && row < end; row = strstr(row + 1, "<tr><td><code>")) {
+		char bone[64], rot[256], limit[256];
+		assert_int_equal(sscanf(row, "<tr><td><code>%63[^<]</code></td><td>%255[^<]</td><td%255[^<]", bone, rot,
+					limit), 3);
+		double want[8];
+		int n = amc_values(amc, frame, bone, want, 8), k = 0;
+		assert_true(n > 0);
+		double worst = 0;
+		int worst_k = -1;
+		char axis[8][4];
+		for (const char *r = rot; k < n; k++) {
+			double deg;
+			int used;
+			assert_int_equal(sscanf(r, " %3[rxyz] %lf%n", axis[k], &deg, &used), 2);
+			if (fabs(deg - want[k]) > 0.051)
+				fail_msg("%s frame %ld: %s %s %.1f on the page, %.4f in the AMC", clip, frame, bone, axis[k],
+					 deg, want[k]);
+			double lo, hi;
+			if (asf_limits(asf_text, bone, k, &lo, &hi) == 0 && past_limits(want[k], lo, hi) > worst)
+				worst = past_limits(want[k], lo, hi), worst_k = k;
+			r += used;
+			if (*r == ',')
+				r++;
+		}
+		const char *past = strstr(limit, "past");
+		if ((worst_k >= 0) != (past != NULL))
+			fail_msg("%s frame %ld: %s is %.1f past its limits, the page says '%s'", clip, frame, bone, worst, limit);
+		if (past) {
+			char shown_axis[4];
+			double shown;
+			assert_int_equal(sscanf(strchr(limit, '>') + 1, "%3s %lf", shown_axis, &shown), 2);
+			if (strcmp(shown_axis, axis[worst_k]) != 0 || fabs(shown - worst) > 0.051)
+				fail_msg("%s: %s %s %.1f past on the page, %s %.3f by the ASF", clip, bone, shown_axis, shown,
+					 axis[worst_k], worst);
+			past_rows++;
+		}
+		rows++;
+	}
+	free(asf_text);
+	assert_true(rows > 0);
+	print_message("%-10s DQBS frame %ld: %d joints listed, %d past their ASF limits\n", clip, frame, rows,
+		      past_rows);
+}
+
 /* The DQBS table's first joint: its share as the page gives it against
  * skintool metrics on the frame with and without that joint's bend. */
 static void check_joint_share(const char *html, const char *asf, const char *amc, const char *body,
@@ -293,6 +398,7 @@ static void check_clip(const char *asf, const char *amc, const char *clip)
 	char *html = slurp(path);
 	check_verdicts(html, &s, clip);
 	check_joint_share(html, asf, amc, body, clip);
+	check_joint_limits(html, asf, amc, clip);
 	free(html);
 	print_message("%-10s %ld frames: compare %.2f s, metrics %.2f s\n", clip, s.rows / 3, t1 - t0, t2 - t1);
 	snprintf(last_report, sizeof last_report, "%s", dir);
