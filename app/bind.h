@@ -46,8 +46,8 @@
  * Then per vertex: keep the 4 largest w_b, clamp at 0, normalise to sum 1.
  * A vertex with no weight (outside every box) is weighed again with the
  * boxes of the nearest bone n, of the bone ending at n's head and of the
- * bones starting at n's tip grown to 1.25 times the vertex's distance to n
- * (R' = max(R, 1.25 d)); siblings of n stay out (the lower back for a hip
+ * bones starting at n's tip grown to 1.1 times the vertex's distance to n
+ * (R' = max(R, 1.1 d)); siblings of n stay out (the lower back for a hip
  * vertex). The paper gives such a vertex to the nearest bone alone, which
  * cuts the skin where the nearest bone changes: the flanks of the
  * generated body's trunk lie outside the short spine bones' boxes, and a

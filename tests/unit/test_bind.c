@@ -244,7 +244,7 @@ static void test_far_bones_do_not_share(void **state)
 }
 
 /* Outside every box: the nearest bone, or where the nearest bone's ramps
- * reach (boxes grown to 1.25 times the distance to it), their cross-fade. */
+ * reach (boxes grown to 1.1 times the distance to it), their cross-fade. */
 static void test_outside_every_box(void **state)
 {
 	(void)state;
