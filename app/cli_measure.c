@@ -74,14 +74,19 @@ static void nearest2(const skin_segments *g, const float *xyz, int n, float *out
 	}
 }
 
+double tool_measure_volume(const tool_measure *t, const float *xyz)
+{
+	const mesh *m = t->mesh;
+	return skin_mesh_volume(xyz, (const uint32_t (*)[3])m->tri, m->tri_count) / t->rest_volume;
+}
+
 /* skin_radius_ratio's loop, keeping each ratio and the worst vertex. */
 tool_measure_row tool_measure_skinned(const tool_measure *t, const float *xyz, float *ratio)
 {
 	static float d2[SKP_MAX_VERTS + 4];
 	const mesh *m = t->mesh;
 	tool_measure_row row = { 0.0, { INFINITY, -INFINITY, 0 }, -1 };
-	row.volume_ratio = skin_mesh_volume(xyz, (const uint32_t (*)[3])m->tri, m->tri_count) /
-			   t->rest_volume;
+	row.volume_ratio = tool_measure_volume(t, xyz);
 	nearest2(&t->seg, xyz, m->vert_count, d2);
 	for (int v = 0; v < m->vert_count; v++) {
 		float r = NAN;

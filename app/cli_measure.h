@@ -37,6 +37,9 @@ int tool_measure_init(tool_measure *t, const mesh *m, const skel_pose *bind, int
 /* Sets the posed bones the radius ratios are measured against. */
 void tool_measure_pose(tool_measure *t, const skel_pose *pose);
 
+/* The volume ratio alone of skinned positions (xyz per vertex). */
+double tool_measure_volume(const tool_measure *t, const float *xyz);
+
 /* Measures skinned positions (xyz per vertex) in the current pose. ratio,
  * when not NULL, gets every vertex's radius ratio (NAN where skipped). */
 tool_measure_row tool_measure_skinned(const tool_measure *t, const float *xyz, float *ratio);

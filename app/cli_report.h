@@ -85,8 +85,8 @@ typedef struct report_joints {
  * rotation channels, that bone's rotations set back to their bind-pose
  * values (bind_values): the joints whose bend moves the volume most.
  * The root is left out (it moves the body rigidly); so are translations.
- * sk and meas are left in an arbitrary pose; pos and nrm are scratch. */
-void report_find_joints(tool_skin *sk, tool_measure *meas, skin_algo algo, long frame,
+ * sk is left in an arbitrary pose; pos and nrm are scratch. */
+void report_find_joints(tool_skin *sk, const tool_measure *meas, skin_algo algo, long frame,
 			const float *values, const float *bind_values, float *pos, float *nrm,
 			report_joints *out);
 

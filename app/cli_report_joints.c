@@ -60,12 +60,12 @@ static int describe(const skel *s, int b, const float *values, report_joint *j)
 	return j->count > 0 ? 0 : -1;
 }
 
-static double volume_of(tool_skin *sk, tool_measure *meas, skin_algo algo, const float *values,
+static double volume_of(tool_skin *sk, const tool_measure *meas, skin_algo algo, const float *values,
 			float *pos, float *nrm)
 {
 	tool_skin_frame(sk, values);
 	tool_skin_run(sk, algo, pos, nrm);
-	return tool_measure_skinned(meas, pos, NULL).volume_ratio;
+	return tool_measure_volume(meas, pos);
 }
 
 static void keep_largest(report_joints *out, const report_joint *j)
@@ -83,7 +83,7 @@ static void keep_largest(report_joints *out, const report_joint *j)
 	out->joint[k] = *j;
 }
 
-void report_find_joints(tool_skin *sk, tool_measure *meas, skin_algo algo, long frame,
+void report_find_joints(tool_skin *sk, const tool_measure *meas, skin_algo algo, long frame,
 			const float *values, const float *bind_values, float *pos, float *nrm,
 			report_joints *out)
 {
