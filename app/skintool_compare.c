@@ -595,38 +595,34 @@ static int render_stills(compare_run *c, const compare_args *a)
 	return rc;
 }
 
-/* At DQBS's worst volume deviation: how much of the body is inside two of
- * its parts at once (a thigh pressed into the belly), which the signed
- * volume counts twice and the space the body takes up once. */
-static int measure_overlap(compare_run *c, const compare_args *a)
+/* How much of the body, posed by values and skinned with DQBS, is inside
+ * two of its parts at once (a thigh pressed into the belly), which the
+ * signed volume counts twice and the space the body takes up once. */
+static void measure_overlap(compare_run *c, const float *values)
 {
 	static int ray_start[OVERLAP_GRID * OVERLAP_GRID + 1];
 	static float hit_z[OVERLAP_HITS];
 	static signed char hit_dir[OVERLAP_HITS];
 	static const skin_overlap_work work = { OVERLAP_GRID, OVERLAP_HITS, ray_start, hit_z, hit_dir };
-	static amc_frame f;
-	report *r = &c->rep;
-	r->dqbs_overlap = NAN;
-	if (r->algo[SKIN_DQBS].vol_dev_frame < 0 || !(c->meas.rest_volume > 0.0))
-		return 0;
-	if (tool_read_frame(a->amc, &c->body.skel, r->algo[SKIN_DQBS].vol_dev_frame, &f) < 0)
-		return -1;
-	tool_skin_frame(&c->sk, f.value);
+	if (!(c->meas.rest_volume > 0.0))
+		return;
+	tool_skin_frame(&c->sk, values);
 	tool_skin_run(&c->sk, SKIN_DQBS, c->pos, c->nrm);
 	const mesh *m = &c->body.mesh;
 	int ok;
 	double excess = skin_mesh_overlap(c->pos, m->vert_count, (const uint32_t (*)[3])m->tri, m->tri_count,
 					  &work, &ok);
 	if (ok)
-		r->dqbs_overlap = excess / c->meas.rest_volume;
-	return 0;
+		c->rep.dqbs_overlap = excess / c->meas.rest_volume;
 }
 
-/* Which bends carry LBS's worst loss and DQBS's largest deviation. */
+/* Which bends carry LBS's worst loss and DQBS's largest deviation, and at
+ * the latter the overlap: each frame read once. */
 static int explain_volume(compare_run *c, const compare_args *a)
 {
 	static amc_frame f;
 	const long frame[2] = { c->rep.algo[SKIN_LBS].vol_min.frame, c->rep.algo[SKIN_DQBS].vol_dev_frame };
+	c->rep.dqbs_overlap = NAN;
 	for (int k = 0; k < 2; k++) {
 		report_joints *j = &c->rep.vol_joints[k];
 		j->frame = -1;
@@ -634,6 +630,8 @@ static int explain_volume(compare_run *c, const compare_args *a)
 			continue;
 		if (tool_read_frame(a->amc, &c->body.skel, frame[k], &f) < 0)
 			return -1;
+		if (k == SKIN_DQBS)
+			measure_overlap(c, f.value);
 		report_find_joints(&c->sk, &c->meas, (skin_algo)k, frame[k], f.value, c->body.pose_value,
 				   c->pos, c->nrm, j);
 	}
@@ -669,7 +667,7 @@ int cmd_compare(int argc, char **argv)
 		return 1;
 	uint64_t t1 = clock_now_ns();
 	pick_stills(&c, (int)a.renders);
-	if (measure_overlap(&c, &a) < 0 || explain_volume(&c, &a) < 0 || render_stills(&c, &a) < 0 || write_charts(&c, a.out) < 0 || report_write_html(&c.rep, a.out) < 0)
+	if (explain_volume(&c, &a) < 0 || render_stills(&c, &a) < 0 || write_charts(&c, a.out) < 0 || report_write_html(&c.rep, a.out) < 0)
 		return 1;
 	uint64_t t2 = clock_now_ns();
 	fprintf(stderr, "%s: %ld frames x 3 algorithms, %d vertices: measured in %.2f s, renders, "
