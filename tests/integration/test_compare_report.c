@@ -183,62 +183,77 @@ static void check_verdicts(const char *html, const clip_stats *s, const char *cl
 	}
 }
 
+static int is_frame_number(const char *line)
+{
+	return line[0] >= '0' && line[0] <= '9' && strspn(line, "0123456789 \t") == strlen(line);
+}
+
+static int is_bone_line(const char *line, const char *bone)
+{
+	size_t n = strlen(bone);
+	return strncmp(line, bone, n) == 0 && (line[n] == ' ' || line[n] == '\t');
+}
+
+/* The AMC's lines before its first frame, and frame `frame`'s lines after
+ * its number, each ending in a newline. */
+static void read_frame_text(const char *amc, long frame, char *header, size_t hsize, char *block, size_t bsize)
+{
+	char *text = slurp(amc), *save;
+	int before = 1, in = 0;
+	header[0] = block[0] = '\0';
+	for (char *line = strtok_r(text, "\r\n", &save); line; line = strtok_r(NULL, "\r\n", &save)) {
+		if (is_frame_number(line)) {
+			before = 0;
+			in = atol(line) == frame;
+			continue;
+		}
+		char *dst = before ? header : in ? block : NULL;
+		size_t size = before ? hsize : bsize;
+		if (dst && strlen(dst) + strlen(line) + 2 < size)
+			strcat(strcat(dst, line), "\n");
+	}
+	free(text);
+	assert_true(block[0] != '\0');
+}
+
 /* Writes frame `frame` of amc to out twice, as frames 1 and 2, the second
  * with every value on bone's line zeroed. */
 static void write_straightened(const char *amc, long frame, const char *bone, const char *out)
 {
-	char *text = slurp(amc), *save, *line;
+	char header[4096], block[8192], *save;
+	read_frame_text(amc, frame, header, sizeof header, block, sizeof block);
 	FILE *f = fopen(out, "w");
 	assert_non_null(f);
-	char block[8192] = "", num[32];
-	int in = 0, header = 1;
-	snprintf(num, sizeof num, "%ld", frame);
-	size_t bl = strlen(bone);
-	for (line = strtok_r(text, "\r\n", &save); line; line = strtok_r(NULL, "\r\n", &save)) {
-		int is_number = line[0] >= '0' && line[0] <= '9' && strspn(line, "0123456789 \t") == strlen(line);
-		if (is_number)
-			header = 0, in = atol(line) == frame;
-		if (header)
+	fprintf(f, "%s1\n%s2\n", header, block);
+	for (char *line = strtok_r(block, "\n", &save); line; line = strtok_r(NULL, "\n", &save)) {
+		if (!is_bone_line(line, bone)) {
 			fprintf(f, "%s\n", line);
-		else if (in && !is_number && strlen(block) + strlen(line) + 2 < sizeof block)
-			strcat(strcat(block, line), "\n");
-	}
-	assert_true(block[0] != '\0');
-	fprintf(f, "1\n%s2\n", block);
-	for (line = strtok_r(block, "\n", &save); line; line = strtok_r(NULL, "\n", &save)) {
-		if (strncmp(line, bone, bl) == 0 && (line[bl] == ' ' || line[bl] == '\t')) {
-			fputs(bone, f);
-			for (char *t = line + bl; (t = strpbrk(t, " \t")); t += strspn(t, " \t"))
-				if (t[strspn(t, " \t")])
-					fputs(" 0", f);
-			fputc('\n', f);
-		} else {
-			fprintf(f, "%s\n", line);
+			continue;
 		}
+		fputs(bone, f);
+		for (char *t = line + strlen(bone); (t = strpbrk(t, " \t")); t += strspn(t, " \t"))
+			if (t[strspn(t, " \t")])
+				fputs(" 0", f);
+		fputc('\n', f);
 	}
-	free(text);
 	assert_int_equal(fclose(f), 0);
 }
 
-/* The values on bone's line in frame `frame` of amc; their count. */
+/* The values on bone's line in frame `frame` of amc; their count, -1 when
+ * the frame has no such line. */
 static int amc_values(const char *amc, long frame, const char *bone, double *v, int max)
 {
-	char *text = slurp(amc), *save, *line;
-	int in = 0, n = -1;
-	size_t bl = strlen(bone);
-	for (line = strtok_r(text, "\r\n", &save); line && n < 0; line = strtok_r(NULL, "\r\n", &save)) {
-		if (line[0] >= '0' && line[0] <= '9' && strspn(line, "0123456789 \t") == strlen(line))
-			in = atol(line) == frame;
-		else if (in && strncmp(line, bone, bl) == 0 && (line[bl] == ' ' || line[bl] == '\t'))
-			for (char *t = line + bl, *e; n < max; t = e) {
-				double x = strtod(t, &e);
-				if (e == t)
-					break;
-				v[n < 0 ? (n = 0) : n] = x, n++;
-			}
+	char header[4096], block[8192], *save;
+	read_frame_text(amc, frame, header, sizeof header, block, sizeof block);
+	for (char *line = strtok_r(block, "\n", &save); line; line = strtok_r(NULL, "\n", &save)) {
+		if (!is_bone_line(line, bone))
+			continue;
+		int n = 0;
+		for (char *t = line + strlen(bone), *e; n < max && (v[n] = strtod(t, &e), e != t); t = e)
+			n++;
+		return n;
 	}
-	free(text);
-	return n;
+	return -1;
 }
 
 /* Limits of bone's k-th dof as the ASF writes them. */
