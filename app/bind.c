@@ -186,8 +186,7 @@ static float segment_weight(const bind_segment *g, vec3 p, float reach, int *ins
 		*head_share = clampf(1.0f - r, 0.0f, 1.0f);
 	}
 	if (g->ramp_tip)
-		w = fminf(w, ramp(vec3_dot(vec3_scale(g->dir, g->length), g->tip_n) - vec3_dot(q, g->tip_n),
-				  g->half));
+		w = fminf(w, ramp(vec3_dot(vec3_sub(vec3_scale(g->dir, g->length), q), g->tip_n), g->half));
 	return clampf(w, 0.0f, 1.0f);
 }
 
