@@ -45,6 +45,10 @@ int bind_args_parse(bind_args *a, int argc, char **argv, int *i)
 		a->fit = 1;
 		return 1;
 	}
+	if (strcmp(opt, "--no-balance") == 0) {
+		a->no_balance = 1;
+		return 1;
+	}
 	if (strcmp(opt, "--group") == 0) {
 		if (!(val = tool_option_value("skintool", opt, argc, argv, i)))
 			return -1;
@@ -96,13 +100,19 @@ static int fit_mesh(const char *obj, bound_body *body)
 	return 0;
 }
 
-static int auto_weights(const char *obj, bound_body *body)
+static int auto_weights(const bind_args *a, const char *obj, bound_body *body)
 {
+	static bind_balance_work work;
 	skp_error err;
+	const mesh *m = &body->mesh;
 	uint64_t t0 = clock_now_ns();
 	bind_prepare(&body->rig, &body->skel, &body->pose, NULL);
-	skp_status rc = bind_weights(&body->rig, body->mesh.pos, body->mesh.vert_count,
-				     &body->weights, &body->info, &err);
+	skp_status rc = bind_weights(&body->rig, m->pos, m->vert_count, &body->weights, &body->info, &err);
+	body->balanced = rc == SKP_OK && !a->no_balance;
+	if (body->balanced)
+		rc = bind_balance(&body->skel, &body->pose, m->pos, m->vert_count,
+				  (const uint32_t (*)[3])m->tri, m->tri_count, &body->weights,
+				  &work, &body->balance, &err);
 	body->bind_ns = clock_now_ns() - t0;
 	if (rc != SKP_OK) {
 		fprintf(stderr, "%s: bind: %s\n", obj, err.msg);
@@ -136,7 +146,7 @@ int bind_args_load(const bind_args *a, const char *asf, const char *obj, bound_b
 	if (tool_load_skel(asf, &body->skel) < 0 || load_pose(a, body) < 0)
 		return -1;
 	if (!obj)
-		return generate_body(a, asf, body) < 0 ? -1 : auto_weights(asf, body);
+		return generate_body(a, asf, body) < 0 ? -1 : auto_weights(a, asf, body);
 	if (!tool_load_obj(obj, a->group, &body->mesh))
 		return -1;
 	if (body->mesh.vert_count == 0) {
@@ -149,5 +159,5 @@ int bind_args_load(const bind_args *a, const char *asf, const char *obj, bound_b
 	if (a->weights_path)
 		return tool_load_weights(a->weights_path, &body->skel, body->mesh.vert_count,
 					 &body->weights);
-	return auto_weights(obj, body);
+	return auto_weights(a, obj, body);
 }

@@ -5,15 +5,18 @@
  *   --bind-pose P.amc[:F]   bind in frame F of P (the number written in the
  *                           file; default its first frame), not the ASF rest pose
  *   --weights W.csv         read the weights instead of computing them (bind.h)
+ *   --no-balance            computed weights as the paper's rule gives them,
+ *                           without the volume balancing (bind_balance.h)
  * and the one call that turns them into a skeleton, a mesh and weights. */
 #ifndef CLI_BIND_ARGS_H
 #define CLI_BIND_ARGS_H
 
 #include "bind.h"
+#include "bind_balance.h"
 #include "bind_fit.h"
 #include "mesh.h"
 
-#define BIND_ARGS_USAGE "[--group G] [--fit] [--bind-pose P.amc[:F]] [--weights IN.csv]"
+#define BIND_ARGS_USAGE "[--group G] [--fit] [--bind-pose P.amc[:F]] [--weights IN.csv] [--no-balance]"
 
 typedef struct bind_args {
 	const char *group;          /* NULL: every face */
@@ -21,6 +24,7 @@ typedef struct bind_args {
 	const char *pose_path;      /* NULL: ASF rest pose */
 	long pose_frame;            /* -1: the file's first frame */
 	const char *weights_path;   /* NULL: automatic weights */
+	int no_balance;             /* automatic weights without bind_balance */
 	char pose_buf[1024];        /* pose_path without its :F */
 } bind_args;
 
@@ -44,7 +48,9 @@ typedef struct bound_body {
 	skin_weights weights;
 	int automatic;              /* 1: computed (info, bind_ns valid), 0: --weights */
 	bind_info info;
-	unsigned long long bind_ns; /* time bind_prepare + bind_weights took */
+	bind_balance_info balance;  /* valid when automatic and balanced */
+	int balanced;
+	unsigned long long bind_ns; /* time bind_prepare + bind_weights (+ bind_balance) took */
 } bound_body;
 
 /* Loads skeleton asf, mesh obj (group), the bind pose, fits the mesh when

@@ -1,7 +1,7 @@
 /* skintool bind SKELETON.asf MESH.obj [--group G] [--fit] [--bind-pose P.amc[:F]]
- *               [--weights IN.csv] [--report] -o weights.csv
- * Binds the mesh to the skeleton (automatic weights, bind.h, or the given
- * CSV after validation) and writes the weights CSV (-o - for stdout). The
+ *               [--weights IN.csv] [--no-balance] [--report] -o weights.csv
+ * Binds the mesh to the skeleton (automatic weights, bind.h, balanced by
+ * bind_balance.h unless --no-balance, or the given CSV after validation) and writes the weights CSV (-o - for stdout). The
  * report always goes to stderr, so it never mixes with a CSV on stdout. */
 #include <stdio.h>
 #include <string.h>
@@ -25,6 +25,30 @@ static void report_pose(FILE *to, const bind_args *a, const bound_body *b)
 			(double)b->fit.offset.z, (double)b->fit.mesh_height, (double)b->fit.skel_height);
 }
 
+static const char *const outcome_name[] = {
+	[BIND_BALANCE_NEEDLESS] = "needless",
+	[BIND_BALANCE_DONE] = "balanced",
+	[BIND_BALANCE_TOO_FAR] = "left: change too large",
+};
+
+/* Per joint with a cross-fade: the first-order volume change of a 30
+ * degree bend before and after, the largest weight change, the rings. */
+static void report_balance(FILE *to, const bound_body *b)
+{
+	const bind_balance_info *in = &b->balance;
+	if (!b->balanced) {
+		fprintf(to, "volume balancing: off (--no-balance)\n");
+		return;
+	}
+	fprintf(to, "volume balancing (volume %.6g; %% of it per 30 degrees):\n", in->volume);
+	fprintf(to, "joint,moment_before,moment_after,largest_change,rings,outcome\n");
+	for (int i = 1; i < b->skel.count; i++)
+		if (in->outcome[i] != BIND_BALANCE_NONE)
+			fprintf(to, "%s,%.4f,%.4f,%.3f,%d,%s\n", b->skel.bone[i].name,
+				100.0 * in->moment[i], 100.0 * in->moment_after[i],
+				(double)in->change[i], in->rings[i], outcome_name[in->outcome[i]]);
+}
+
 static void report(FILE *to, const bind_args *a, const bound_body *b)
 {
 	static skin_weights_stats st;
@@ -37,6 +61,7 @@ static void report(FILE *to, const bind_args *a, const bound_body *b)
 	if (b->automatic) {
 		fprintf(to, "weights: automatic, %.3f ms\n", (double)b->bind_ns / 1e6);
 		fprintf(to, "fallback to nearest bone: %d vertices\n", b->info.fallback);
+		report_balance(to, b);
 	} else {
 		fprintf(to, "weights: read from %s\n", a->weights_path);
 	}

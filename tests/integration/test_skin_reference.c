@@ -21,6 +21,7 @@
 #include <unistd.h>
 
 #include "bind.h"
+#include "bind_balance.h"
 #include "mannequin.h"
 #include "obj.h"
 #include "skin.h"
@@ -409,6 +410,7 @@ static void test_skintool_skin_output(void **state)
 	static mesh in, out;
 	static skin_weights w;
 	static bind_rig rig;
+	static bind_balance_work balance;
 	static amc_frame f;
 	static skel_pose pose;
 	char dir[] = "/tmp/skp_skin_XXXXXX", cmd[4096], body_obj[256], out_obj[256];
@@ -422,6 +424,8 @@ static void test_skintool_skin_output(void **state)
 	parse_obj(body_obj, &in);
 	bind_prepare(&rig, &s02, &rest02, NULL);
 	assert_int_equal(bind_weights(&rig, in.pos, in.vert_count, &w, NULL, &err), SKP_OK);
+	assert_int_equal(bind_balance(&s02, &rest02, in.pos, in.vert_count, (const uint32_t (*)[3])in.tri,
+				      in.tri_count, &w, &balance, NULL, &err), SKP_OK);
 	skin_soa_attach(&soa, block, in.vert_count);
 	assert_int_equal(skin_soa_load(&soa, &in, &w, s02.count, &err), SKP_OK);
 	size_t len;
