@@ -182,32 +182,30 @@ static void tidy_vertex(skin_weights *sw, int v, const uint16_t *bone, const flo
 	}
 }
 
-/* Gives vertex v the subtree share t1: the bones on each side keep their
- * proportions; a side that had nothing takes the joint's bone (subtree) or
- * its parent (the rest). */
+/* Gives vertex v the subtree share t1: the side that loses keeps its
+ * bones' proportions; what the other side gains goes to the bone next to
+ * the joint (the joint's own bone, or its parent), not to a bone that
+ * merely had a trace of weight there (a forearm vertex with 1e-4 on the
+ * clavicle would otherwise take the forearm's share to the clavicle). */
 static void reshare(skin_weights *sw, int v, const uint8_t *sub, int joint, int parent, float t0, float t1)
 {
 	uint16_t bone[SKP_MAX_INFLUENCES + 1];
 	float weight[SKP_MAX_INFLUENCES + 1];
-	int count = sw->count[v];
-	float in = t0 > SHARE_EDGE ? t1 / t0 : 0.0f;
-	float out = t0 < 1.0f - SHARE_EDGE ? (1.0f - t1) / (1.0f - t0) : 0.0f;
+	int count = sw->count[v], gainer = t1 > t0 ? joint : parent;
+	float keep_in = t1 < t0 ? t1 / t0 : 1.0f;
+	float keep_out = t1 > t0 ? (1.0f - t1) / (1.0f - t0) : 1.0f;
 	for (int k = 0; k < count; k++) {
 		bone[k] = sw->bone[v][k];
-		weight[k] = sw->weight[v][k] * (sub[bone[k]] ? in : out);
+		weight[k] = sw->weight[v][k] * (sub[bone[k]] ? keep_in : keep_out);
 	}
-	if (t0 <= SHARE_EDGE || t0 >= 1.0f - SHARE_EDGE) {
-		int side = t0 <= SHARE_EDGE ? joint : parent;
-		float add = t0 <= SHARE_EDGE ? t1 : 1.0f - t1;
-		int k = 0;
-		while (k < count && bone[k] != side)
-			k++;
-		if (k == count) {
-			bone[count] = (uint16_t)side;
-			weight[count++] = 0.0f;
-		}
-		weight[k] += add;
+	int k = 0;
+	while (k < count && bone[k] != gainer)
+		k++;
+	if (k == count) {
+		bone[count] = (uint16_t)gainer;
+		weight[count++] = 0.0f;
 	}
+	weight[k] += fabsf(t1 - t0);
 	tidy_vertex(sw, v, bone, weight, count);
 }
 

@@ -14,6 +14,7 @@ void bind_args_init(bind_args *a)
 {
 	memset(a, 0, sizeof *a);
 	a->pose_frame = -1;
+	a->balance = -1;
 }
 
 /* P.amc:F -> path P.amc, frame F. A colon not followed by digits only is
@@ -45,8 +46,14 @@ int bind_args_parse(bind_args *a, int argc, char **argv, int *i)
 		a->fit = 1;
 		return 1;
 	}
-	if (strcmp(opt, "--no-balance") == 0) {
-		a->no_balance = 1;
+	if (strcmp(opt, "--balance") == 0) {
+		if (!(val = tool_option_value("skintool", opt, argc, argv, i)))
+			return -1;
+		if (strcmp(val, "on") != 0 && strcmp(val, "off") != 0) {
+			fprintf(stderr, "skintool: --balance: expected on or off, got '%s'\n", val);
+			return -1;
+		}
+		a->balance = strcmp(val, "on") == 0;
 		return 1;
 	}
 	if (strcmp(opt, "--group") == 0) {
@@ -100,7 +107,8 @@ static int fit_mesh(const char *obj, bound_body *body)
 	return 0;
 }
 
-static int auto_weights(const bind_args *a, const char *obj, bound_body *body)
+/* generated: the body is the generated one, where balancing is measured */
+static int auto_weights(const bind_args *a, int generated, const char *obj, bound_body *body)
 {
 	static bind_balance_work work;
 	skp_error err;
@@ -108,7 +116,7 @@ static int auto_weights(const bind_args *a, const char *obj, bound_body *body)
 	uint64_t t0 = clock_now_ns();
 	bind_prepare(&body->rig, &body->skel, &body->pose, NULL);
 	skp_status rc = bind_weights(&body->rig, m->pos, m->vert_count, &body->weights, &body->info, &err);
-	body->balanced = rc == SKP_OK && !a->no_balance;
+	body->balanced = rc == SKP_OK && (a->balance < 0 ? generated : a->balance);
 	if (body->balanced)
 		rc = bind_balance(&body->skel, &body->pose, m->pos, m->vert_count,
 				  (const uint32_t (*)[3])m->tri, m->tri_count, &body->weights,
@@ -146,7 +154,7 @@ int bind_args_load(const bind_args *a, const char *asf, const char *obj, bound_b
 	if (tool_load_skel(asf, &body->skel) < 0 || load_pose(a, body) < 0)
 		return -1;
 	if (!obj)
-		return generate_body(a, asf, body) < 0 ? -1 : auto_weights(a, asf, body);
+		return generate_body(a, asf, body) < 0 ? -1 : auto_weights(a, 1, asf, body);
 	if (!tool_load_obj(obj, a->group, &body->mesh))
 		return -1;
 	if (body->mesh.vert_count == 0) {
@@ -159,5 +167,5 @@ int bind_args_load(const bind_args *a, const char *asf, const char *obj, bound_b
 	if (a->weights_path)
 		return tool_load_weights(a->weights_path, &body->skel, body->mesh.vert_count,
 					 &body->weights);
-	return auto_weights(a, obj, body);
+	return auto_weights(a, tool_obj_is_generated(obj), obj, body);
 }

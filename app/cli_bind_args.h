@@ -5,8 +5,12 @@
  *   --bind-pose P.amc[:F]   bind in frame F of P (the number written in the
  *                           file; default its first frame), not the ASF rest pose
  *   --weights W.csv         read the weights instead of computing them (bind.h)
- *   --no-balance            computed weights as the paper's rule gives them,
- *                           without the volume balancing (bind_balance.h)
+ *   --balance on|off        volume balancing of computed weights (bind_balance.h);
+ *                           default on for the generated body (also as the OBJ
+ *                           `skintool mannequin` writes), off for a mesh of
+ *                           your own: measured on the generated body; on the
+ *                           MakeHuman A-pose it spreads chest weight down the
+ *                           upper arm (max radius ratio 10 -> 27 on 02_01)
  * and the one call that turns them into a skeleton, a mesh and weights. */
 #ifndef CLI_BIND_ARGS_H
 #define CLI_BIND_ARGS_H
@@ -16,7 +20,7 @@
 #include "bind_fit.h"
 #include "mesh.h"
 
-#define BIND_ARGS_USAGE "[--group G] [--fit] [--bind-pose P.amc[:F]] [--weights IN.csv] [--no-balance]"
+#define BIND_ARGS_USAGE "[--group G] [--fit] [--bind-pose P.amc[:F]] [--weights IN.csv] [--balance on|off]"
 
 typedef struct bind_args {
 	const char *group;          /* NULL: every face */
@@ -24,7 +28,7 @@ typedef struct bind_args {
 	const char *pose_path;      /* NULL: ASF rest pose */
 	long pose_frame;            /* -1: the file's first frame */
 	const char *weights_path;   /* NULL: automatic weights */
-	int no_balance;             /* automatic weights without bind_balance */
+	int balance;                /* -1 default, 0 off, 1 on (bind_balance) */
 	char pose_buf[1024];        /* pose_path without its :F */
 } bind_args;
 

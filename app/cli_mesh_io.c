@@ -30,9 +30,9 @@ const obj_work *tool_load_obj(const char *path, const char *group, mesh *out)
 	return &work;
 }
 
-static void write_body(FILE *f, const mesh *m)
+static void write_body(FILE *f, const mesh *m, const char *what)
 {
-	fprintf(f, "# skinplay mesh: %d vertices, %d triangles\n", m->vert_count, m->tri_count);
+	fprintf(f, "# %s: %d vertices, %d triangles\n", what, m->vert_count, m->tri_count);
 	for (int i = 0; i < m->vert_count; i++)
 		fprintf(f, "v %.9g %.9g %.9g\n", m->pos[i].x, m->pos[i].y, m->pos[i].z);
 	for (int i = 0; i < m->vert_count; i++)
@@ -43,18 +43,31 @@ static void write_body(FILE *f, const mesh *m)
 	}
 }
 
-int mesh_write_obj(const char *path, const mesh *m)
+int mesh_write_obj(const char *path, const mesh *m, const char *what)
 {
 	FILE *f = fopen(path, "w");
 	if (!f) {
 		fprintf(stderr, "%s: cannot create: %s\n", path, strerror(errno));
 		return -1;
 	}
-	write_body(f, m);
+	write_body(f, m, what ? what : "skinplay mesh");
 	int bad = ferror(f);
 	if (fclose(f) != 0 || bad) {
 		fprintf(stderr, "%s: write error\n", path);
 		return -1;
 	}
 	return 0;
+}
+
+int tool_obj_is_generated(const char *path)
+{
+	char line[128];
+	FILE *f = fopen(path, "r");
+	if (!f)
+		return 0;
+	size_t n = strlen(TOOL_GENERATED_BODY);
+	int yes = fgets(line, sizeof line, f) && line[0] == '#' && line[1] == ' ' &&
+		  strncmp(line + 2, TOOL_GENERATED_BODY, n) == 0 && line[2 + n] == ':';
+	fclose(f);
+	return yes;
 }

@@ -12,8 +12,16 @@
  * overwrites it. */
 const obj_work *tool_load_obj(const char *path, const char *group, mesh *out);
 
-/* Writes v (9 significant digits), vn and `f a//a b//b c//c` lines.
- * Returns 0, or -1 after reporting the error. */
-int mesh_write_obj(const char *path, const mesh *m);
+/* Writes a first comment "# WHAT: N vertices, M triangles" (what NULL:
+ * "skinplay mesh"), v (9 significant digits), vn and `f a//a b//b c//c`
+ * lines. Returns 0, or -1 after reporting the error. */
+int mesh_write_obj(const char *path, const mesh *m, const char *what);
+
+/* What the first comment of `skintool mannequin`'s OBJ says: a mesh that
+ * starts with it is bound like the generated body (balanced by default). */
+#define TOOL_GENERATED_BODY "skintool mannequin, the generated body"
+
+/* 1 when path starts with that comment. */
+int tool_obj_is_generated(const char *path);
 
 #endif

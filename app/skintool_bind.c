@@ -1,7 +1,7 @@
 /* skintool bind SKELETON.asf MESH.obj [--group G] [--fit] [--bind-pose P.amc[:F]]
- *               [--weights IN.csv] [--no-balance] [--report] -o weights.csv
+ *               [--weights IN.csv] [--balance on|off] [--report] -o weights.csv
  * Binds the mesh to the skeleton (automatic weights, bind.h, balanced by
- * bind_balance.h unless --no-balance, or the given CSV after validation) and writes the weights CSV (-o - for stdout). The
+ * bind_balance.h with --balance on (the default for the generated body), or the given CSV after validation) and writes the weights CSV (-o - for stdout). The
  * report always goes to stderr, so it never mixes with a CSV on stdout. */
 #include <stdio.h>
 #include <string.h>
@@ -37,7 +37,7 @@ static void report_balance(FILE *to, const bound_body *b)
 {
 	const bind_balance_info *in = &b->balance;
 	if (!b->balanced) {
-		fprintf(to, "volume balancing: off (--no-balance)\n");
+		fprintf(to, "volume balancing: off\n");
 		return;
 	}
 	fprintf(to, "volume balancing (volume %.6g; %% of it per 30 degrees):\n", in->volume);

@@ -65,7 +65,7 @@ int cmd_mannequin(int argc, char **argv)
 		tool_report(a.asf, &err);
 		return 1;
 	}
-	if (mesh_write_obj(a.out, &body) < 0)
+	if (mesh_write_obj(a.out, &body, TOOL_GENERATED_BODY) < 0)
 		return 1;
 	printf("%s: %d vertices, %d triangles\n", a.out, body.vert_count, body.tri_count);
 	return 0;

@@ -98,5 +98,5 @@ int cmd_skin(int argc, char **argv)
 	tool_skin_frame(&sk, f.value);
 	tool_skin_run(&sk, (skin_algo)a.algo, pos, nrm);
 	store(&body.mesh, pos, nrm);
-	return mesh_write_obj(a.out, &body.mesh) < 0 ? 1 : 0;
+	return mesh_write_obj(a.out, &body.mesh, NULL) < 0 ? 1 : 0;
 }

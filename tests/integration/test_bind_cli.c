@@ -106,9 +106,27 @@ static void bind_mannequin(const char *asf_rel)
 	assert_int_equal(test_run("%s mannequin %s -o %s >/dev/null 2>&1", test_tool_path("skintool"), asf, obj), 0);
 	long verts = count_obj_verts(obj);
 	assert_true(verts > 100);
-	assert_int_equal(test_run("%s bind %s %s -o %s", test_tool_path("skintool"), asf, obj, csv), 0);
+	const char *rep = test_scratch("body.txt"), *plain = test_scratch("plain.csv");
+	assert_int_equal(test_run("%s bind %s %s --report -o %s 2>%s", test_tool_path("skintool"), asf, obj, csv, rep), 0);
 	check_csv(csv, verts, &wf);
-	print_message("%s: %ld vertices bound\n", asf_rel, verts);
+	/* the generated body's OBJ is balanced by default: some joint was */
+	size_t n;
+	char *text = test_read_file(rep, &n);
+	assert_non_null(text);
+	if (!strstr(text, "volume balancing (volume ") || !strstr(text, ",balanced\n"))
+		fail_msg("report shows no balanced joint:\n%s", text);
+	free(text);
+	assert_int_equal(test_run("%s bind %s %s --balance off --report -o %s 2>%s", test_tool_path("skintool"),
+				  asf, obj, plain, rep), 0);
+	check_csv(plain, verts, &wf2);
+	text = test_read_file(rep, &n);
+	assert_non_null(strstr(text, "volume balancing: off"));
+	free(text);
+	long moved = 0;
+	for (long v = 0; v < verts; v++)
+		moved += wf.rows[v] != wf2.rows[v] || fabs(wf.w[v][0] - wf2.w[v][0]) > 1e-6;
+	assert_true(moved > 0);
+	print_message("%s: %ld vertices bound, %ld of them changed by balancing\n", asf_rel, verts, moved);
 }
 
 static void test_mannequin_cmu(void **state)
@@ -149,6 +167,7 @@ static void test_makehuman_apose(void **state)
 	assert_non_null(text);
 	const char *want[] = { "vertices: 13380", "bind pose: tests/data/makehuman_apose.amc frame 1",
 			       "fit: scale", "weights: automatic", "fallback to nearest bone:",
+			       "volume balancing: off",
 			       "largest influence count: 4", "smoothness", "bone,vertices\nroot,",
 			       "lhumerus," };
 	for (size_t i = 0; i < sizeof want / sizeof want[0]; i++)
@@ -189,6 +208,7 @@ static const err_case err_cases[] = {
 	{ "tests/data/tiny.asf %s/tri.obj --group nothere -o %s/out.csv%s", NULL, "tri.obj" },
 	{ "tests/data/tiny.asf %s/tri.obj%s%s", NULL, "usage: skintool bind" },
 	{ "tests/data/tiny.asf %s/tri.obj --frobnicate -o %s/out.csv%s", NULL, "unknown option '--frobnicate'" },
+	{ "tests/data/tiny.asf %s/tri.obj --balance maybe -o %s/out.csv%s", NULL, "--balance: expected on or off, got 'maybe'" },
 };
 
 static void test_bad_input_fails_cleanly(void **state)
