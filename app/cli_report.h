@@ -111,6 +111,8 @@ typedef struct report_chart {
 #define REPORT_MAX_CHARTS 12
 typedef struct report {
 	const char *asf, *amc, *mesh_name, *clip;
+	const char *weights;        /* how the weights came about, for the page */
+	int balanced;               /* weights volume-balanced (bind_balance.h) */
 	const skel *skel;
 	int vert_count, tri_count, measured;
 	int region_verts[REGION_COUNT];

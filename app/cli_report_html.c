@@ -92,9 +92,9 @@ static void head(FILE *f, const report *r)
 	put_escaped(f, r->amc);
 	fputs("</code>, mesh: ", f);
 	put_escaped(f, r->mesh_name);
-	fprintf(f, " (%d vertices, %d triangles). %ld frames, each skinned with LBS, DQBS and fixed-point "
-		"DQBS and measured in %.1f s. Numbers per frame: <a href=\"metrics.csv\">metrics.csv</a>.</p>\n",
-		r->vert_count, r->tri_count, r->frames, r->seconds);
+	fprintf(f, " (%d vertices, %d triangles), weights %s. %ld frames, each skinned with LBS, DQBS and "
+		"fixed-point DQBS and measured in %.1f s. Numbers per frame: <a href=\"metrics.csv\">metrics.csv</a>.</p>\n",
+		r->vert_count, r->tri_count, r->weights, r->frames, r->seconds);
 }
 
 static void verdicts(FILE *f, const report *r)
@@ -235,7 +235,12 @@ static void joints_section(FILE *f, const report *r)
 	      "bend does to the volume. DQBS turns each cross-section of a bending joint rigidly about the "
 	      "joint, so it keeps the volume only where the flesh around the joint is centred on it; "
 	      "elsewhere the volume changes in proportion to the bend angle, up one way and down the other", f);
-	if (strcmp(r->mesh_name, GENERATED_BODY) == 0)
+	if (r->balanced)
+		fputs(". These weights are volume-balanced: at each joint the cross-fade was moved so that "
+		      "this change is zero for small bends of the bind pose (skintool bind --report tables "
+		      "it), so what is left grows faster than the angle, or comes from joints the balancing "
+		      "left alone", f);
+	else if (strcmp(r->mesh_name, GENERATED_BODY) == 0)
 		fputs(" (on the generated body, the hips: a CMU hip joint lies in front of the pelvis; and the "
 		      "ankles, where the foot leaves the shin at a right angle)", f);
 	fputs(". LBS adds its collapse, which grows faster than the angle. The shares need not add up to "

@@ -380,6 +380,9 @@ static int load_clip(compare_run *c, const compare_args *a)
 		return -1;
 	r->skel = &c->body.skel;
 	r->mesh_name = what;
+	r->balanced = c->body.balanced;
+	r->weights = !c->body.automatic ? "read from the weights file" :
+		     c->body.balanced ? "automatic, volume-balanced" : "automatic (the paper's rule alone)";
 	r->vert_count = c->body.mesh.vert_count;
 	r->tri_count = c->body.mesh.tri_count;
 	report_classify(&c->body.skel, &c->body.pose, c->meas.bind_xyz, r->vert_count, c->joint, c->region);
