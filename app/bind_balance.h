@@ -34,7 +34,7 @@
  * The pass depends only on the bind pose and the mesh, never on a clip.
  * Measured on the eight CMU clips with the generated body: DQBS's worst
  * volume deviation per clip fell from 0.33-1.75% to 0.15-0.81% (backflip
- * 1.75 -> 0.81); 0.3-0.5 s for 11700 vertices on this machine. On the
+ * 1.75 -> 0.81); about 0.6 s for 11700 vertices on this machine. On the
  * MakeHuman A-pose the wide regions the clavicles need reach down the
  * upper arm (max radius ratio 10 -> 27 on 02_01), so the tools balance the
  * generated body by default and a mesh of your own only when asked. */

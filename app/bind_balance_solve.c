@@ -7,7 +7,7 @@
  * whole closed mesh); small, so the field stays smooth. */
 #define SOLVE_EPS 0.01
 #define CG_MAX_ITER 500
-#define CG_TOL2 1e-20              /* squared residual, relative */
+#define CG_TOL2 1e-12              /* squared residual, relative: 1e-6 of the right side */
 #define CLAMP_ROUNDS 6
 
 /* (L + eps I) x on the free slots: neighbours outside the band or clamped

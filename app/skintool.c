@@ -13,9 +13,9 @@ typedef struct command {
 static const command commands[] = {
 	{ "fk", cmd_fk, "fk SKELETON.asf MOTION.amc [--frame N]    joint positions and rotations as CSV" },
 	{ "bench", cmd_bench, "bench [--verts N] [--threads T]    skinning speed against the memory-bandwidth bound" },
-	{ "bind", cmd_bind, "bind SKELETON.asf MESH.obj [--group G] [--fit] [--bind-pose P.amc[:F]] [--weights IN.csv] [--report] -o W.csv    skin weights as CSV (report on stderr)" },
+	{ "bind", cmd_bind, "bind SKELETON.asf MESH.obj [--group G] [--fit] [--bind-pose P.amc[:F]] [--weights IN.csv] [--balance on|off] [--report] -o W.csv    skin weights as CSV (report on stderr)" },
 	{ "mannequin", cmd_mannequin, "mannequin SKELETON.asf -o BODY.obj [--detail N]    closed body mesh around the rest pose" },
-	{ "skin", cmd_skin, "skin SKELETON.asf MOTION.amc MESH.obj --frame N --algo lbs|dqbs|dqbs-fixed [--group G] [--fit] [--bind-pose P.amc[:F]] [--weights IN.csv] -o OUT.obj    the mesh deformed for frame N" },
+	{ "skin", cmd_skin, "skin SKELETON.asf MOTION.amc MESH.obj --frame N --algo lbs|dqbs|dqbs-fixed [--group G] [--fit] [--bind-pose P.amc[:F]] [--weights IN.csv] [--balance on|off] -o OUT.obj    the mesh deformed for frame N" },
 	{ "pack", cmd_pack, "pack SKELETON.asf MOTION.amc [MOTION2.amc ...] [--mesh MESH.obj [bind options]] [--fps F] [--sequence N] [--block-size B] -o show.skn    flash image for skinplay --image" },
 	{ "info", cmd_info, "info show.skn    header, sections and clips of an image; checks every block (exit 2 when damaged)" },
 	{ "bench-image", cmd_bench_image, "bench-image show.skn [--amc M.amc]    time to the first frame, bytes per frame" },
