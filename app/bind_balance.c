@@ -221,9 +221,20 @@ static void apply_change(bind_balance_work *w, int m, const skel *s, int b, skin
 	}
 }
 
+/* Scales the change down to the largest share change allowed; the moment
+ * left scales with it. */
+static void cap_change(bind_balance_work *w, int m, const double moment[3], double left[3], double most)
+{
+	double f = BIND_BALANCE_MAX_CHANGE / most;
+	for (int i = 0; i < m; i++)
+		w->change[i] *= f;
+	for (int k = 0; k < 3; k++)
+		left[k] = moment[k] + f * (left[k] - moment[k]);
+}
+
 /* The smallest band (by rings of two) whose change stays within
- * BIND_BALANCE_AIM, else the widest; applied when its change stays within
- * BIND_BALANCE_MAX_CHANGE. */
+ * BIND_BALANCE_AIM, else the widest, its change capped at
+ * BIND_BALANCE_MAX_CHANGE; applied. */
 static void balance_joint(bind_balance_work *w, const skel *s, const skel_pose *pose, int b,
 			  const vec3 *pos, skin_weights *sw, double volume, bind_balance_info *info)
 {
@@ -244,13 +255,13 @@ static void balance_joint(bind_balance_work *w, const skel *s, const skel_pose *
 		if (most <= BIND_BALANCE_AIM || rings + 2 > BIND_BALANCE_MAX_RINGS)
 			break;
 	}
-	info->change[b] = (float)most;
-	if (most > BIND_BALANCE_MAX_CHANGE) {
-		info->outcome[b] = BIND_BALANCE_TOO_FAR;
-		info->moment_after[b] = info->moment[b];
-		return;
-	}
 	info->outcome[b] = BIND_BALANCE_DONE;
+	if (most > BIND_BALANCE_MAX_CHANGE) {
+		cap_change(w, m, moment, left, most);
+		most = BIND_BALANCE_MAX_CHANGE;
+		info->outcome[b] = BIND_BALANCE_PARTLY;
+	}
+	info->change[b] = (float)most;
 	info->rings[b] = (uint8_t)rings;
 	info->moment_after[b] = (float)(norm3(left) * scale);
 	apply_change(w, m, s, b, sw);

@@ -25,8 +25,10 @@
  * vertices pushed past 0 or 1 are clamped there and the rest solved again.
  * While the largest change exceeds BIND_BALANCE_AIM the region grows by
  * two rings (up to BIND_BALANCE_MAX_RINGS): a wider region needs a smaller
- * change. If it still exceeds BIND_BALANCE_MAX_CHANGE the joint is left as
- * bound: the change would move skin visibly. The new share is
+ * change. If it still exceeds BIND_BALANCE_MAX_CHANGE the change is scaled
+ * down to it and the joint balanced in part: more would move skin visibly,
+ * and a joint left as bound while its mirror image is balanced (the two
+ * sides of a body are never quite alike) would make a lopsided body. The new share is
  * spread over the vertex's bones in proportion (a vertex that had none on
  * one side takes it from the joint's bone or its parent), then the 4
  * largest are kept and normalised.
@@ -57,7 +59,7 @@ typedef enum bind_balance_outcome {
 	BIND_BALANCE_NONE = 0,   /* no rotation channel, or no cross-fade */
 	BIND_BALANCE_NEEDLESS,   /* moment below BIND_BALANCE_MIN_MOMENT */
 	BIND_BALANCE_DONE,
-	BIND_BALANCE_TOO_FAR     /* would need a change > BIND_BALANCE_MAX_CHANGE */
+	BIND_BALANCE_PARTLY      /* change capped at BIND_BALANCE_MAX_CHANGE */
 } bind_balance_outcome;
 
 /* Per bone (the joint at its head). */
@@ -65,7 +67,7 @@ typedef struct bind_balance_info {
 	uint8_t outcome[SKP_MAX_BONES];   /* bind_balance_outcome */
 	float moment[SKP_MAX_BONES];      /* |M| before, as a fraction of the volume per 30 degrees */
 	float moment_after[SKP_MAX_BONES];
-	float change[SKP_MAX_BONES];      /* largest |dt| applied (or needed, TOO_FAR) */
+	float change[SKP_MAX_BONES];      /* largest |dt| applied */
 	uint8_t rings[SKP_MAX_BONES];     /* rings of neighbours around the cross-fade */
 	double volume;                    /* signed volume of the bind-pose mesh */
 } bind_balance_info;

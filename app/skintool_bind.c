@@ -28,7 +28,7 @@ static void report_pose(FILE *to, const bind_args *a, const bound_body *b)
 static const char *const outcome_name[] = {
 	[BIND_BALANCE_NEEDLESS] = "needless",
 	[BIND_BALANCE_DONE] = "balanced",
-	[BIND_BALANCE_TOO_FAR] = "left: change too large",
+	[BIND_BALANCE_PARTLY] = "in part: change capped",
 };
 
 /* Per joint with a cross-fade: the first-order volume change of a 30

@@ -18,6 +18,7 @@
 #include "skin_weights.h"
 #include "test_parse.h"
 #include "test_paths.h"
+#include "test_skel.h"
 #include "weights_csv.h"
 
 static skel s;
@@ -32,14 +33,7 @@ static const bind_params sharp = {
 
 static int add_bone(const char *name, int parent, vec3 head, vec3 tip)
 {
-	int b = s.count++;
-	memset(&s.bone[b], 0, sizeof s.bone[b]);
-	snprintf(s.bone[b].name, sizeof s.bone[b].name, "%s", name);
-	s.bone[b].parent = parent;
-	s.bone[b].length = vec3_length(vec3_sub(tip, head));
-	pose.head[b] = head;
-	pose.tip[b] = tip;
-	return b;
+	return test_skel_add_bone(&s, &pose, name, parent, head, tip);
 }
 
 static void start_skel(void)
