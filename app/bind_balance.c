@@ -96,8 +96,18 @@ static void mark_subtree(const skel *s, int joint, uint8_t *sub)
 	}
 }
 
-/* Shares, arms and the moment of the joint at bone b's head; returns how
- * many vertices lie in the cross-fade. */
+static int dominant_bone(const skin_weights *sw, int v)
+{
+	int best = 0;
+	for (int k = 1; k < sw->count[v]; k++)
+		if (sw->weight[v][k] > sw->weight[v][best])
+			best = k;
+	return sw->bone[v][best];
+}
+
+/* Shares, arms, which vertices the balancing may touch and the moment of
+ * the joint at bone b's head; returns how many vertices lie in the
+ * cross-fade. */
 static int joint_moment(bind_balance_work *w, const skel_pose *pose, int b, const vec3 *pos,
 			const skin_weights *sw, double moment[3])
 {
@@ -111,6 +121,8 @@ static int joint_moment(bind_balance_work *w, const skel_pose *pose, int b, cons
 			if (w->subtree[sw->bone[v][k]])
 				t += sw->weight[v][k];
 		w->share[v] = t;
+		int d = dominant_bone(sw, v);
+		w->reachable[v] = (uint8_t)(d == b || !w->subtree[d]);
 		double p[3], r[3];
 		to_double(pos[v], p);
 		for (int i = 0; i < 3; i++)
@@ -123,13 +135,16 @@ static int joint_moment(bind_balance_work *w, const skel_pose *pose, int b, cons
 	return cross_fade;
 }
 
-/* The cross-fade, then `rings` rings of neighbours around it. */
+/* The cross-fade, then `rings` rings of neighbours around it; only
+ * vertices mostly on the joint's own bone or outside its subtree: the
+ * limb beyond (the upper arm, for a clavicle) must not take the body's
+ * weight, nor the body's weight move onto it. */
 static int grow_band(bind_balance_work *w, int n, int rings)
 {
 	int m = 0;
 	for (int v = 0; v < n; v++) {
 		w->slot[v] = -1;
-		if (w->share[v] > SHARE_EDGE && w->share[v] < 1.0 - SHARE_EDGE) {
+		if (w->share[v] > SHARE_EDGE && w->share[v] < 1.0 - SHARE_EDGE && w->reachable[v]) {
 			w->slot[v] = m;
 			w->band[m++] = (uint32_t)v;
 		}
@@ -140,7 +155,7 @@ static int grow_band(bind_balance_work *w, int n, int rings)
 			uint32_t v = w->band[i];
 			for (uint32_t k = w->adj_start[v]; k < w->adj_start[v + 1]; k++) {
 				uint32_t u = w->adj[k];
-				if (w->slot[u] < 0) {
+				if (w->slot[u] < 0 && w->reachable[u]) {
 					w->slot[u] = m;
 					w->band[m++] = u;
 				}

@@ -19,7 +19,10 @@
  *   minimise  sum over mesh edges (dt_a - dt_b)^2 + eps sum dt^2
  *   subject to M + sum_v dt_v (p_v - c) x dV/dp_v = 0,  0 <= t_v + dt_v <= 1
  * over the vertices of the cross-fade (0 < t < 1) and a few rings of mesh
- * neighbours around it, dt = 0 beyond. The minimiser is a sum of three
+ * neighbours around it, dt = 0 beyond; of those, only vertices whose
+ * largest weight is on the joint's own bone or outside its subtree (the
+ * upper arm, beyond a clavicle's joint, would otherwise take weight of the
+ * chest and lag when the arm moves). The minimiser is a sum of three
  * harmonic-like fields, (L + eps I)^-1 applied to each component of
  * (p - c) x dV/dp (conjugate gradients), weighted to meet the constraint;
  * vertices pushed past 0 or 1 are clamped there and the rest solved again.
@@ -79,6 +82,7 @@ typedef struct bind_balance_work {
 	double grad[SKP_MAX_VERTS][3];    /* dV/dp */
 	double arm[SKP_MAX_VERTS][3];     /* (p - c) x dV/dp for the current joint */
 	float share[SKP_MAX_VERTS];       /* t: weight on the joint's subtree */
+	uint8_t reachable[SKP_MAX_VERTS]; /* mostly on the joint's bone or outside its subtree */
 	int32_t slot[SKP_MAX_VERTS];      /* index in band, or -1 */
 	uint32_t band[SKP_MAX_VERTS];     /* cross-fade and rings */
 	double change[SKP_MAX_VERTS];     /* dt, by slot */

@@ -41,8 +41,9 @@ static int add_bone(const char *name, int parent, vec3 head, vec3 tip)
 }
 
 /* root, "upper" (0,-10,0)-(0,0,0), "lower" (0,0,0)-(0,10,0): the joint at
- * the origin, the "lower" bone turns about it. */
-static void limb(void)
+ * the origin, the "lower" bone turns about it. With `hand`, "lower" stops
+ * at (0,5,0) and a "hand" without channels carries on to (0,10,0). */
+static void limb_with(int hand)
 {
 	static const bind_params wide = {
 		.radius = 0.6f, .radius_min = 0.0f, .radius_max = 1.0f, .radius_cap = 1.0f, .blend = 0.2f,
@@ -52,8 +53,15 @@ static void limb(void)
 	add_bone("root", -1, vec3_make(0, 0, 0), vec3_make(0, 0, 0));
 	s.bone[0].channel_count = 0;
 	add_bone("upper", 0, vec3_make(0, -10, 0), vec3_make(0, 0, 0));
-	add_bone("lower", 1, vec3_make(0, 0, 0), vec3_make(0, 10, 0));
+	add_bone("lower", 1, vec3_make(0, 0, 0), vec3_make(0, hand ? 5 : 10, 0));
+	if (hand)
+		s.bone[add_bone("hand", 2, vec3_make(0, 5, 0), vec3_make(0, 10, 0))].channel_count = 0;
 	bind_prepare(&rig, &s, &pose, &wide);
+}
+
+static void limb(void)
+{
+	limb_with(0);
 }
 
 static int add_vertex(vec3 p)
@@ -226,6 +234,36 @@ static void test_too_far_is_balanced_in_part(void **state)
 	check_weights(&sw);
 }
 
+/* The limb beyond the joint's own bone (the "hand") keeps its weights:
+ * the balancing works on the joint's bone and the body before it. */
+static void test_limb_beyond_is_untouched(void **state)
+{
+	(void)state;
+	skp_error err;
+	skin_weights bound;
+	limb_with(1);
+	make_tube(1.5f);
+	assert_int_equal(bind_weights(&rig, tube.pos, tube.vert_count, &sw, NULL, &err), SKP_OK);
+	bound = before = sw;
+	assert_int_equal(balance_tube(-1, &err), SKP_OK);
+	assert_true(info.outcome[2] == BIND_BALANCE_DONE || info.outcome[2] == BIND_BALANCE_PARTLY);
+	int hand_verts = 0, changed = 0;
+	for (int v = 0; v < tube.vert_count; v++) {
+		int same = sw.count[v] == bound.count[v] &&
+			   memcmp(sw.weight[v], bound.weight[v], sizeof sw.weight[v]) == 0 &&
+			   memcmp(sw.bone[v], bound.bone[v], sizeof sw.bone[v]) == 0;
+		changed += !same;
+		if (bound.bone[v][0] == 3 && bound.weight[v][0] > 0.5f) {
+			hand_verts++;
+			if (!same)
+				fail_msg("hand vertex %d changed", v);
+		}
+	}
+	print_message("%d hand vertices kept, %d vertices changed\n", hand_verts, changed);
+	assert_true(hand_verts > 100 && changed > 100);
+	check_weights(&sw);
+}
+
 static void test_bad_input_changes_nothing(void **state)
 {
 	(void)state;
@@ -252,6 +290,7 @@ int main(void)
 		cmocka_unit_test(test_off_centre_flesh_is_balanced),
 		cmocka_unit_test(test_centred_flesh_is_left_alone),
 		cmocka_unit_test(test_too_far_is_balanced_in_part),
+		cmocka_unit_test(test_limb_beyond_is_untouched),
 		cmocka_unit_test(test_bad_input_changes_nothing),
 	};
 	return cmocka_run_group_tests(tests, NULL, NULL);
