@@ -31,18 +31,19 @@
  * change. If it still exceeds BIND_BALANCE_MAX_CHANGE the change is scaled
  * down to it and the joint balanced in part: more would move skin visibly,
  * and a joint left as bound while its mirror image is balanced (the two
- * sides of a body are never quite alike) would make a lopsided body. The new share is
- * spread over the vertex's bones in proportion (a vertex that had none on
- * one side takes it from the joint's bone or its parent), then the 4
- * largest are kept and normalised.
+ * sides of a body are never quite alike) would make a lopsided body. The
+ * side that loses share keeps its bones' proportions; what the other side
+ * gains goes to the joint's own bone or its parent; then the 4 largest are
+ * kept and normalised.
  *
  * The pass depends only on the bind pose and the mesh, never on a clip.
- * Measured on the eight CMU clips with the generated body: DQBS's worst
- * volume deviation per clip fell from 0.33-1.75% to 0.15-0.81% (backflip
- * 1.75 -> 0.81); about 0.6 s for 11700 vertices on this machine. On the
- * MakeHuman A-pose the wide regions the clavicles need reach down the
- * upper arm (max radius ratio 10 -> 27 on 02_01), so the tools balance the
- * generated body by default and a mesh of your own only when asked. */
+ * Measured with the generated body: DQBS's worst volume deviation per clip
+ * 0.33-1.75% -> 0.24-0.92% on the eight CMU clips (backflip 1.75 -> 0.92),
+ * 3.64 -> 0.58% on the endorphin walk; about 0.6 s for 11700 vertices. On
+ * the MakeHuman A-pose the hip moments are fifteen times larger, and the
+ * regions they need reach the knee and across the back (max radius
+ * ratio 10.1 -> 12.2 on 02_01), so the tools balance the generated body by
+ * default and a mesh of your own only when asked. */
 #ifndef BIND_BALANCE_H
 #define BIND_BALANCE_H
 
