@@ -248,6 +248,32 @@ static int nearest_bone(const bind_rig *rig, vec3 p, float *dist)
 	return best;
 }
 
+/* Bones starting where the nearest one starts and pointing away from it
+ * (the lower back against a CMU hip bone, one clavicle against the other)
+ * cross-fade across the plane that bisects them: the nearest-bone test
+ * alone cuts the skin where the nearest bone changes, and the hip bone,
+ * pointing sideways, is nearest to the flanks above the waist. Across
+ * that plane the sibling takes min(its head ramp, the cross-fade) and the
+ * nearest bone gives way. Siblings at less than 90 degrees (the two hip
+ * bones at the crotch) keep the hard cut: a vertex stays on its side. */
+static void sibling_cross_fade(const bind_rig *rig, int nearest, vec3 p, float *w)
+{
+	const bind_segment *n = &rig->seg[nearest];
+	for (int b = 1; b < rig->bone_count; b++) {
+		const bind_segment *g = &rig->seg[b];
+		vec3 gap = vec3_sub(g->head, n->head), m = vec3_sub(g->dir, n->dir);
+		if (b == nearest || g->length <= 0.0f || g->parent != n->parent ||
+		    vec3_dot(gap, gap) > 0.0f || !(vec3_dot(g->dir, n->dir) < 0.0f))
+			continue;
+		vec3 q = vec3_sub(p, g->head);
+		float across = ramp(vec3_dot(q, vec3_scale(m, 1.0f / vec3_length(m))), 0.5f * (g->half + n->half));
+		float own = g->ramp_head ? ramp(vec3_dot(q, g->head_n), g->half) : 1.0f;
+		across = clampf(across, 0.0f, 1.0f);
+		w[b] = fmaxf(w[b], clampf(fminf(own, across), 0.0f, 1.0f));
+		w[nearest] = fminf(w[nearest], 1.0f - across);
+	}
+}
+
 /* The weights of the bones meeting the nearest one (w, indexed by bone);
  * their sum. */
 static float near_weights(const bind_rig *rig, int nearest, vec3 p, float reach, float *w)
@@ -294,6 +320,7 @@ static int bind_vertex(const bind_rig *rig, vec3 p, skin_weights *out, int v)
 	 * bone pointing away (a clavicle, for the neck) stays out */
 	if (outside)
 		near_weights(rig, nearest, p, BIND_REACH * dist, w);
+	sibling_cross_fade(rig, nearest, p, w);
 	top_influences t = { 0 };
 	for (int b = 0; b < rig->bone_count; b++)
 		if (w[b] > 0.0f)

@@ -43,6 +43,16 @@
  * overlap (the thighs at the crotch, arm and chest at the armpit) do not
  * share a vertex.
  *
+ * Bones starting where the nearest bone starts and pointing away from it
+ * (more than 90 degrees apart: the lower back and a CMU hip bone, the two
+ * clavicles) cross-fade across the plane bisecting them, with half-width
+ * the mean of their h: the sibling takes min(its head ramp, the
+ * cross-fade), the nearest bone at most 1 minus the cross-fade. The
+ * nearest-bone test alone cut the skin where the nearest bone changes:
+ * the hip bone, pointing sideways, is nearest to the flanks above the
+ * waist, and a bent back showed a jagged crease there. Siblings closer
+ * than 90 degrees (the hip bones at the crotch) keep the hard cut.
+ *
  * Then per vertex: keep the 4 largest w_b, clamp at 0, normalise to sum 1.
  * A vertex with no weight (outside every box) is weighed again with the
  * boxes of the nearest bone n, of the bone ending at n's head and of the

@@ -38,7 +38,7 @@
  *
  * The pass depends only on the bind pose and the mesh, never on a clip.
  * Measured with the generated body: DQBS's worst volume deviation per clip
- * 0.33-1.75% -> 0.24-0.92% on the eight CMU clips (backflip 1.75 -> 0.92),
+ * 0.33-1.76% -> 0.23-0.96% on the eight CMU clips (backflip 1.76 -> 0.96),
  * 3.64 -> 0.58% on the endorphin walk; about 0.6 s for 11700 vertices. On
  * the MakeHuman A-pose the hip moments are fifteen times larger, and the
  * regions they need reach the knee and across the back (max radius

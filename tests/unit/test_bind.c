@@ -237,6 +237,44 @@ static void test_far_bones_do_not_share(void **state)
 	assert_true(skin_weights_of(&sw, 0, lhip) > 0.0f && skin_weights_of(&sw, 0, rhip) > 0.0f);
 }
 
+/* A waist: the back up from the root joint, a hip bone down and sideways
+ * from it. Up a flank, outside both boxes, the nearest bone changes from
+ * the hip to the back; the two cross-fade across their bisector instead
+ * of cutting the skin there. */
+static void test_siblings_pointing_apart_cross_fade(void **state)
+{
+	(void)state;
+	start_skel();
+	int back = add_bone("back", 0, vec3_make(0, 0, 0), vec3_make(0, 10, 0));
+	int hip = add_bone("hip", 0, vec3_make(0, 0, 0), vec3_make(6, -6, 0));
+	bind_prepare(&rig, &s, &pose, &sharp);
+	enum { N = 101 };
+	vec3 p[N];
+	for (int i = 0; i < N; i++)
+		p[i] = vec3_make(4, -1 + 5.0f * i / (N - 1), 0);
+	bind_points(p, N, NULL);
+	float most = 0.0f, at_bisector = -1.0f;
+	for (int i = 0; i < N; i++) {
+		float t = skin_weights_of(&sw, i, back);
+		if (i > 0) {
+			float prev = skin_weights_of(&sw, i - 1, back);
+			most = fmaxf(most, fabsf(t - prev));
+		}
+		/* the bisector plane meets the flank at y = 4 (1 - cos 45) / (1 + sin 45) */
+		if (fabsf(p[i].y - 1.657f) < 0.026f)
+			at_bisector = t + skin_weights_of(&sw, i, hip) > 0.0f ? t / (t + skin_weights_of(&sw, i, hip)) : 0.0f;
+	}
+	/* (where the nearest bone changes, the root's share of the rest does,
+	 * by 0.02 here) */
+	print_message("back's weight up the flank: %.2f .. %.2f, largest step %.3f, %.2f of back and hip at the bisector\n",
+		      (double)skin_weights_of(&sw, 0, back), (double)skin_weights_of(&sw, N - 1, back), (double)most,
+		      (double)at_bisector);
+	assert_float_equal(skin_weights_of(&sw, 0, back), 0.0f, 1e-6f);
+	assert_float_equal(skin_weights_of(&sw, N - 1, back), 1.0f, 1e-6f);
+	assert_true(most < 0.05f);
+	assert_float_equal(at_bisector, 0.5f, 0.05f);
+}
+
 /* Outside every box: the nearest bone, or where the nearest bone's ramps
  * reach (boxes grown to 1.1 times the distance to it), their cross-fade. */
 static void test_outside_every_box(void **state)
@@ -617,6 +655,7 @@ int main(void)
 		cmocka_unit_test(test_mitre_only_where_it_means_something),
 		cmocka_unit_test(test_head_ramp_rest_goes_to_parent),
 		cmocka_unit_test(test_far_bones_do_not_share),
+		cmocka_unit_test(test_siblings_pointing_apart_cross_fade),
 		cmocka_unit_test(test_outside_every_box),
 		cmocka_unit_test(test_invariants_on_a_fan),
 		cmocka_unit_test(test_all_zero_length_goes_to_root),
