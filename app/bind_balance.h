@@ -42,7 +42,7 @@
  * 3.64 -> 0.58% on the endorphin walk; about 0.6 s for 11700 vertices. On
  * the MakeHuman A-pose the hip moments are fifteen times larger, and the
  * regions they need reach the knee and across the back (max radius
- * ratio 10.1 -> 12.2 on 02_01), so the tools balance the generated body by
+ * ratio 10.1 -> 12.1 on 02_01), so the tools balance the generated body by
  * default and a mesh of your own only when asked. */
 #ifndef BIND_BALANCE_H
 #define BIND_BALANCE_H

@@ -8,9 +8,9 @@
  *   --balance on|off        volume balancing of computed weights (bind_balance.h);
  *                           default on for the generated body (also as the OBJ
  *                           `skintool mannequin` writes), off for a mesh of
- *                           your own: measured on the generated body; on the
- *                           MakeHuman A-pose it spreads chest weight down the
- *                           upper arm (max radius ratio 10 -> 27 on 02_01)
+ *                           your own: on the MakeHuman A-pose the regions its
+ *                           large hip moments need reach the knee (max radius
+ *                           ratio 10.1 -> 12.1 on 02_01)
  * and the one call that turns them into a skeleton, a mesh and weights. */
 #ifndef CLI_BIND_ARGS_H
 #define CLI_BIND_ARGS_H
