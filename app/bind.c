@@ -207,30 +207,6 @@ float bind_segment_distance(const bind_segment *g, vec3 p)
 	return vec3_length(vec3_madd(q, g->dir, -s));
 }
 
-typedef struct top_influences {
-	int count;
-	uint16_t bone[SKP_MAX_INFLUENCES];
-	float weight[SKP_MAX_INFLUENCES];
-} top_influences;
-
-/* Keeps the SKP_MAX_INFLUENCES largest, sorted, largest first; on equal
- * weights the earlier (lower) bone stays ahead. */
-static void top_insert(top_influences *t, int bone, float w)
-{
-	int k = t->count < SKP_MAX_INFLUENCES ? t->count++ : SKP_MAX_INFLUENCES;
-	if (k == SKP_MAX_INFLUENCES && !(w > t->weight[k - 1]))
-		return;
-	if (k == SKP_MAX_INFLUENCES)
-		k--;
-	while (k > 0 && w > t->weight[k - 1]) {
-		t->bone[k] = t->bone[k - 1];
-		t->weight[k] = t->weight[k - 1];
-		k--;
-	}
-	t->bone[k] = (uint16_t)bone;
-	t->weight[k] = w;
-}
-
 static int nearest_bone(const bind_rig *rig, vec3 p, float *dist)
 {
 	int best = 0;
@@ -303,8 +279,8 @@ static float near_weights(const bind_rig *rig, int nearest, vec3 p, float reach,
 	return sum;
 }
 
-/* Returns 1 when the vertex lies outside every box. */
-static int bind_vertex(const bind_rig *rig, vec3 p, skin_weights *out, int v)
+/* Returns 1 when the vertex lies outside every box. bone[b] = b. */
+static int bind_vertex(const bind_rig *rig, const uint16_t *bone, vec3 p, skin_weights *out, int v)
 {
 	/* only bones meeting the nearest one at a joint share a vertex: across
 	 * the crotch or the armpit a box may reach a limb the vertex does not
@@ -321,22 +297,10 @@ static int bind_vertex(const bind_rig *rig, vec3 p, skin_weights *out, int v)
 	if (outside)
 		near_weights(rig, nearest, p, BIND_REACH * dist, w);
 	sibling_cross_fade(rig, nearest, p, w);
-	top_influences t = { 0 };
-	for (int b = 0; b < rig->bone_count; b++)
-		if (w[b] > 0.0f)
-			top_insert(&t, b, w[b]);
-	float sum = 0.0f;
-	for (int k = 0; k < t.count; k++)
-		sum += t.weight[k];
-	if (!(sum > 0.0f)) {
-		t.count = 1;
-		t.bone[0] = (uint16_t)nearest;
-		t.weight[0] = sum = 1.0f;
-	}
-	out->count[v] = (uint8_t)t.count;
-	for (int k = 0; k < t.count; k++) {
-		out->bone[v][k] = t.bone[k];
-		out->weight[v][k] = t.weight[k] / sum;
+	if (!(skin_weights_set_largest(out, v, bone, w, rig->bone_count) > 0.0f)) {
+		out->count[v] = 1;
+		out->bone[v][0] = (uint16_t)nearest;
+		out->weight[v][0] = 1.0f;
 	}
 	return outside;
 }
@@ -354,9 +318,12 @@ skp_status bind_weights(const bind_rig *rig, const vec3 *pos, int n,
 	if (!info)
 		info = &local;
 	memset(info, 0, sizeof *info);
+	uint16_t bone[SKP_MAX_BONES];
+	for (int b = 0; b < rig->bone_count; b++)
+		bone[b] = (uint16_t)b;
 	out->vert_count = n;
 	for (int v = 0; v < n; v++) {
-		info->fallback += bind_vertex(rig, pos[v], out, v);
+		info->fallback += bind_vertex(rig, bone, pos[v], out, v);
 		if (out->count[v] > info->max_influences)
 			info->max_influences = out->count[v];
 	}

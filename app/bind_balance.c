@@ -96,15 +96,6 @@ static void mark_subtree(const skel *s, int joint, uint8_t *sub)
 	}
 }
 
-static int dominant_bone(const skin_weights *sw, int v)
-{
-	int best = 0;
-	for (int k = 1; k < sw->count[v]; k++)
-		if (sw->weight[v][k] > sw->weight[v][best])
-			best = k;
-	return sw->bone[v][best];
-}
-
 /* Shares, arms, which vertices the balancing may touch and the moment of
  * the joint at bone b's head; returns how many vertices lie in the
  * cross-fade. */
@@ -121,8 +112,8 @@ static int joint_moment(bind_balance_work *w, const skel_pose *pose, int b, cons
 			if (w->subtree[sw->bone[v][k]])
 				t += sw->weight[v][k];
 		w->share[v] = t;
-		int d = dominant_bone(sw, v);
-		w->reachable[v] = (uint8_t)(d == b || !w->subtree[d]);
+		int d = skin_weights_dominant(sw, v);
+		w->reachable[v] = (uint8_t)(d >= 0 && (d == b || !w->subtree[d]));
 		double p[3], r[3];
 		to_double(pos[v], p);
 		for (int i = 0; i < 3; i++)
@@ -171,32 +162,6 @@ static double norm3(const double v[3])
 	return sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
 }
 
-/* Largest first, zeros dropped, at most SKP_MAX_INFLUENCES, sum 1. */
-static void tidy_vertex(skin_weights *sw, int v, const uint16_t *bone, const float *weight, int count)
-{
-	int order[SKP_MAX_INFLUENCES + 1], kept = 0;
-	for (int k = 0; k < count; k++) {
-		if (!(weight[k] > 0.0f))
-			continue;
-		int i = kept < SKP_MAX_INFLUENCES ? kept++ : SKP_MAX_INFLUENCES;
-		if (i == SKP_MAX_INFLUENCES && !(weight[k] > weight[order[i - 1]]))
-			continue;
-		if (i == SKP_MAX_INFLUENCES)
-			i--;
-		for (; i > 0 && weight[k] > weight[order[i - 1]]; i--)
-			order[i] = order[i - 1];
-		order[i] = k;
-	}
-	float sum = 0.0f;
-	for (int i = 0; i < kept; i++)
-		sum += weight[order[i]];
-	sw->count[v] = (uint8_t)kept;
-	for (int i = 0; i < kept; i++) {
-		sw->bone[v][i] = bone[order[i]];
-		sw->weight[v][i] = weight[order[i]] / sum;
-	}
-}
-
 /* Gives vertex v the subtree share t1: the side that loses keeps its
  * bones' proportions; what the other side gains goes to the bone next to
  * the joint (the joint's own bone, or its parent), not to a bone that
@@ -221,7 +186,7 @@ static void reshare(skin_weights *sw, int v, const uint8_t *sub, int joint, int 
 		weight[count++] = 0.0f;
 	}
 	weight[k] += fabsf(t1 - t0);
-	tidy_vertex(sw, v, bone, weight, count);
+	skin_weights_set_largest(sw, v, bone, weight, count);
 }
 
 static void apply_change(bind_balance_work *w, int m, const skel *s, int b, skin_weights *sw)

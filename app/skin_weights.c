@@ -20,6 +20,35 @@ float skin_weights_of(const skin_weights *w, int v, int b)
 	return 0.0f;
 }
 
+float skin_weights_set_largest(skin_weights *w, int v, const uint16_t *bone, const float *weight,
+			       int count)
+{
+	int top[SKP_MAX_INFLUENCES], kept = 0;
+	for (int i = 0; i < count; i++) {
+		if (!(weight[i] > 0.0f))
+			continue;
+		int k = kept < SKP_MAX_INFLUENCES ? kept++ : SKP_MAX_INFLUENCES;
+		if (k == SKP_MAX_INFLUENCES && !(weight[i] > weight[top[k - 1]]))
+			continue;
+		if (k == SKP_MAX_INFLUENCES)
+			k--;
+		for (; k > 0 && weight[i] > weight[top[k - 1]]; k--)
+			top[k] = top[k - 1];
+		top[k] = i;
+	}
+	float sum = 0.0f;
+	for (int k = 0; k < kept; k++)
+		sum += weight[top[k]];
+	if (!(sum > 0.0f))
+		return 0.0f;
+	w->count[v] = (uint8_t)kept;
+	for (int k = 0; k < kept; k++) {
+		w->bone[v][k] = bone[top[k]];
+		w->weight[v][k] = weight[top[k]] / sum;
+	}
+	return sum;
+}
+
 /* Total variation between the weight vectors of two vertices: walk a's
  * influences against b's, then b's that a lacks. */
 static double edge_diff(const skin_weights *w, int a, int b)

@@ -31,6 +31,14 @@ int skin_weights_dominant(const skin_weights *w, int v);
 /* Weight of bone b on vertex v (0 when b does not influence it). */
 float skin_weights_of(const skin_weights *w, int v, int b);
 
+/* Sets vertex v's influences to the SKP_MAX_INFLUENCES largest positive
+ * weights among count candidates (bone[i], weight[i]), largest first (on
+ * equal weights the earlier candidate first), normalised to sum 1.
+ * Returns their sum before normalising; 0 (no positive weight) leaves v
+ * untouched. */
+float skin_weights_set_largest(skin_weights *w, int v, const uint16_t *bone, const float *weight,
+			       int count);
+
 /* tri may be NULL (tri_count 0): then the edge figures stay 0. */
 void skin_weights_stats_compute(const skin_weights *w, int bone_count,
 				const uint32_t (*tri)[3], int tri_count,
