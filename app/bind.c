@@ -63,6 +63,28 @@ static int is_near(const bind_rig *rig, int a, int b)
 	return (rig->near[a][b / 32] >> (b % 32)) & 1u;
 }
 
+static int is_apart(const bind_rig *rig, int a, int b)
+{
+	return (rig->apart[a][b / 32] >> (b % 32)) & 1u;
+}
+
+/* Siblings pointing apart: same parent, same head, more than 90 degrees
+ * between them (the lower back and a CMU hip bone, the two clavicles;
+ * not the two hip bones at the crotch). */
+static void find_apart(bind_rig *rig)
+{
+	for (int a = 1; a < rig->bone_count; a++)
+		for (int b = 1; b < a; b++) {
+			const bind_segment *g = &rig->seg[a], *n = &rig->seg[b];
+			vec3 gap = vec3_sub(g->head, n->head);
+			if (g->length > 0.0f && n->length > 0.0f && g->parent == n->parent &&
+			    !(vec3_dot(gap, gap) > 0.0f) && vec3_dot(g->dir, n->dir) < 0.0f) {
+				rig->apart[a][b / 32] |= 1u << (b % 32);
+				rig->apart[b][a / 32] |= 1u << (a % 32);
+			}
+		}
+}
+
 /* Bones meeting at a joint: a bone and the one ending at its head, bones
  * starting at the same joint; the root (0) meets the bones starting at the
  * root joint. */
@@ -124,6 +146,7 @@ static void find_ramps(bind_rig *rig, const skel *s)
 		g->head_n = g->tip_n = g->dir;
 	}
 	find_mitres(rig, s, anc, starting);
+	find_apart(rig);
 }
 
 void bind_prepare(bind_rig *rig, const skel *s, const skel_pose *pose,
@@ -225,23 +248,19 @@ static int nearest_bone(const bind_rig *rig, vec3 p, float *dist)
 }
 
 /* Bones starting where the nearest one starts and pointing away from it
- * (the lower back against a CMU hip bone, one clavicle against the other)
- * cross-fade across the plane that bisects them: the nearest-bone test
- * alone cuts the skin where the nearest bone changes, and the hip bone,
- * pointing sideways, is nearest to the flanks above the waist. Across
- * that plane the sibling takes min(its head ramp, the cross-fade) and the
- * nearest bone gives way. Siblings at less than 90 degrees (the two hip
- * bones at the crotch) keep the hard cut: a vertex stays on its side. */
+ * (find_apart) cross-fade across the plane that bisects them: the
+ * nearest-bone test alone cuts the skin where the nearest bone changes,
+ * and the hip bone, pointing sideways, is nearest to the flanks above the
+ * waist. Across that plane the sibling takes min(its head ramp, the
+ * cross-fade) and the nearest bone gives way. */
 static void sibling_cross_fade(const bind_rig *rig, int nearest, vec3 p, float *w)
 {
 	const bind_segment *n = &rig->seg[nearest];
 	for (int b = 1; b < rig->bone_count; b++) {
-		const bind_segment *g = &rig->seg[b];
-		vec3 gap = vec3_sub(g->head, n->head), m = vec3_sub(g->dir, n->dir);
-		if (b == nearest || g->length <= 0.0f || g->parent != n->parent ||
-		    vec3_dot(gap, gap) > 0.0f || !(vec3_dot(g->dir, n->dir) < 0.0f))
+		if (!is_apart(rig, nearest, b))
 			continue;
-		vec3 q = vec3_sub(p, g->head);
+		const bind_segment *g = &rig->seg[b];
+		vec3 q = vec3_sub(p, g->head), m = vec3_sub(g->dir, n->dir);
 		float across = ramp(vec3_dot(q, vec3_scale(m, 1.0f / vec3_length(m))), 0.5f * (g->half + n->half));
 		float own = g->ramp_head ? ramp(vec3_dot(q, g->head_n), g->half) : 1.0f;
 		across = clampf(across, 0.0f, 1.0f);

@@ -115,6 +115,9 @@ typedef struct bind_rig {
 	bind_segment seg[SKP_MAX_BONES];
 	/* bones sharing a joint with bone b (itself included), a bit per bone */
 	uint32_t near[SKP_MAX_BONES][(SKP_MAX_BONES + 31) / 32];
+	/* bones starting where bone b starts and pointing more than 90 degrees
+	 * away from it (they cross-fade across their bisector) */
+	uint32_t apart[SKP_MAX_BONES][(SKP_MAX_BONES + 31) / 32];
 } bind_rig;
 
 /* What binding saw, beyond the weights themselves. */
