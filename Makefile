@@ -4,7 +4,12 @@ BUILD    ?= build
 PREFIX   ?= /usr/local
 DESTDIR  ?=
 
+.DEFAULT_GOAL := all
+VERSION  := 0.15.0
+GIT_REV  := $(or $(shell git describe --always --dirty --abbrev=12 2>/dev/null),unknown)
+
 include board/$(BOARD)/board.mk
+include board/deps.mk
 
 # Microcontroller boards (cortex-m4, cortex-m0) build the portable core and
 # a semihosted test instead of the Linux programs: tests/embedded/mcu.mk.
@@ -39,10 +44,13 @@ WARN     := -Wall -Wextra -Werror -Wshadow -Wstrict-prototypes -Wvla
 DISPLAY_PC     := egl gbm libdrm x11 libpng libgpiod
 DISPLAY_CFLAGS := $(shell $(PKG_CONFIG) --cflags $(DISPLAY_PC) 2>/dev/null)
 DISPLAY_LIBS   := $(shell $(PKG_CONFIG) --libs $(DISPLAY_PC) 2>/dev/null) -ldl
+# libgpiod's API changed at 2.0: one seam file per API, by the library's
+# pkg-config version (1.6 on Debian 12 / Pi OS bookworm, 2.x on trixie).
+GPIOD_API := $(if $(filter 0 1,$(firstword $(subst ., ,$(shell $(PKG_CONFIG) --modversion libgpiod 2>/dev/null)))),1,2)
 CPPFLAGS := -Iapp -Iboard/$(BOARD) $(SIMD_DEFS) -MMD -MP
 CFLAGS_APP  := -std=c11 $(WARN) $(BOARD_CFLAGS) $(SAN_FLAGS) $(EXTRA_CFLAGS)
 # Platform code talks to Linux and POSIX APIs, so it may use GNU extensions.
-CFLAGS_PLAT := -std=gnu11 $(WARN) $(BOARD_CFLAGS) $(SAN_FLAGS) $(DISPLAY_CFLAGS) $(EXTRA_CFLAGS)
+CFLAGS_PLAT := -std=gnu11 $(WARN) $(BOARD_CFLAGS) $(SAN_FLAGS) $(DISPLAY_CFLAGS) -DSKP_GPIOD_API=$(GPIOD_API) $(EXTRA_CFLAGS)
 LDFLAGS  := $(SAN_FLAGS) $(EXTRA_LDFLAGS)
 LDLIBS   := -lm -pthread $(DISPLAY_LIBS)
 
@@ -51,7 +59,7 @@ LDLIBS   := -lm -pthread $(DISPLAY_LIBS)
 CLI_SRC     := $(wildcard app/cli_*.c)
 FRONT_SRC   := $(wildcard app/skintool*.c app/skinplay*.c) $(CLI_SRC)
 CORE_SRC    := $(filter-out $(FRONT_SRC),$(wildcard app/*.c))
-PLAT_SRC    := $(wildcard platform/*.c)
+PLAT_SRC    := $(filter-out platform/input_gpiod%.c,$(wildcard platform/*.c)) platform/input_gpiod$(GPIOD_API).c
 TOOL_SRC    := $(wildcard app/skintool*.c) $(CLI_SRC)
 PLAY_SRC    := $(wildcard app/skinplay*.c) $(CLI_SRC)
 UNIT_SRC    := $(wildcard tests/unit/test_*.c tests/integration/test_*.c)
@@ -108,7 +116,19 @@ $(OUT)/app/skin_avx2.o $(OUT)/app/skin_fixed_avx2.o: CFLAGS_APP += $(SIMD_FLAGS)
 # Front ends see the platform headers and POSIX.
 $(FRONT_SRC:%.c=$(OUT)/%.o): $(OUT)/app/%.o: app/%.c
 	@mkdir -p $(@D)
-	$(CC) $(CPPFLAGS) -Iplatform $(CFLAGS_PLAT) -c $< -o $@
+	$(CC) $(CPPFLAGS) -Iplatform -I$(OUT)/gen $(CFLAGS_PLAT) -c $< -o $@
+
+# --version: rewritten only when its text changes, so a new commit rebuilds
+# one object.
+VERSION_H := $(OUT)/gen/skp_version.h
+$(OUT)/app/cli_version.o: $(VERSION_H)
+$(VERSION_H): FORCE
+	@mkdir -p $(@D)
+	@printf '#define SKP_VERSION "%s"\n#define SKP_GIT_REV "%s"\n#define SKP_BOARD "%s"\n' \
+	  '$(VERSION)' '$(GIT_REV)' '$(BOARD) ($(BOARD_DESC))' > $@.tmp
+	@if cmp -s $@.tmp $@; then rm -f $@.tmp; else mv $@.tmp $@; fi
+.PHONY: FORCE
+FORCE:
 
 $(OUT)/platform/%.o: platform/%.c
 	@mkdir -p $(@D)
@@ -143,24 +163,6 @@ $(OUT)/tests/%: $(OUT)/tests/obj/%.o $(TESTLIB_OBJ) $(PLAT_LIB) $(CORE_LIB)
 	@mkdir -p $(@D)
 	$(CC) $(LDFLAGS) -o $@ $^ $(CMOCKA_LIBS) $(LDLIBS)
 
-# Check that the dependencies are present; as root install what is missing.
-deps:
-	@missing=""; \
-	command -v pkg-config >/dev/null 2>&1 || missing="pkg-config"; \
-	if [ -z "$$missing" ]; then \
-	  for m in $(PC_MODULES); do $(PKG_CONFIG) --exists $$m || missing="$$missing $$m"; done; \
-	fi; \
-	for t in $(DEB_TOOLS); do command -v $$t >/dev/null 2>&1 || missing="$$missing $$t"; done; \
-	if [ -n "$$missing" ]; then \
-	  echo "deps: missing:$$missing"; \
-	  if [ "$$(id -u)" = 0 ] && command -v apt-get >/dev/null 2>&1; then \
-	    $(DEPS_PREPARE) apt-get update -qq && DEBIAN_FRONTEND=noninteractive apt-get install -y -qq $(DEB_PKGS) >/dev/null || exit 1; \
-	    echo "deps: installed $(DEB_PKGS)"; \
-	  else \
-	    echo "deps: run as root:  apt-get install -y $(DEB_PKGS)"; exit 1; \
-	  fi; \
-	fi
-
 # app/ core objects must not allocate or do stdio: the runtime is fixed-memory.
 check-core: $(CORE_OBJ)
 	@sh tests/check_core_symbols.sh $(CORE_OBJ)
@@ -173,7 +175,8 @@ test: deps
 
 # On a console or desktop: the demo on the display. Without one: headless,
 # compare view, a few frames and a contact sheet in out/.
-run: deps all
+run: deps
+	@$(MAKE) --no-print-directory all
 	@plat=$$($(SKINPLAY) --print-platform); \
 	if [ "$$plat" = surfaceless ]; then \
 	  rm -rf out && mkdir -p out && \

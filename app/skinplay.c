@@ -11,6 +11,7 @@
 #include "cli_common.h"
 #include "cli_show.h"
 #include "cli_skin.h"
+#include "cli_version.h"
 #include "clock.h"
 #include "display.h"
 #include "png_writer.h"
@@ -368,6 +369,8 @@ static int play(player *p)
 int main(int argc, char **argv)
 {
 	static player p;
+	if (cli_wants_version(argc, argv))
+		return cli_print_version("skinplay"), 0;
 	int rc = play_parse(&p.o, argc, argv);
 	if (rc != 0)
 		return rc < 0 ? 1 : 0;

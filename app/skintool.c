@@ -2,6 +2,7 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "cli_version.h"
 #include "skintool_cmds.h"
 
 typedef struct command {
@@ -32,6 +33,8 @@ static void usage(FILE *to)
 
 int main(int argc, char **argv)
 {
+	if (cli_wants_version(argc, argv))
+		return cli_print_version("skintool"), 0;
 	if (argc < 2 || strcmp(argv[1], "--help") == 0 || strcmp(argv[1], "-h") == 0) {
 		usage(argc < 2 ? stderr : stdout);
 		return argc < 2 ? 1 : 0;

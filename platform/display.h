@@ -7,6 +7,8 @@
 #ifndef DISPLAY_H
 #define DISPLAY_H
 
+#include <stddef.h>
+
 #include "skp_error.h"
 
 typedef struct display_config {
@@ -49,6 +51,9 @@ extern const display_backend display_x11;
 
 /* "surfaceless", "osmesa", "kms", "x11"; NULL if unknown. */
 const display_backend *display_find(const char *name);
+
+/* The backends built in, by name, space-separated, into out. */
+void display_list(char *out, size_t size);
 
 /* kms on a text console with a usable DRM device, x11 when DISPLAY is set,
  * surfaceless otherwise. */

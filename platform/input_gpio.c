@@ -1,13 +1,14 @@
-/* Buttons on GPIO lines through libgpiod 1.6: one both-edge event request
- * per button, the line event fds polled by the main loop (no thread), each
- * edge fed to the button's debouncer with the kernel's timestamp. With
- * ACTIVE_LOW the kernel reports edges of the active level, so a rising
- * edge is always "pressed". */
+/* Buttons on GPIO lines: one both-edge event request per button, the line
+ * event fds polled by the main loop (no thread), each edge fed to the
+ * button's debouncer with the kernel's timestamp. With ACTIVE_LOW the kernel
+ * reports edges of the active level, so a rising edge is always "pressed".
+ * The chip and line calls and the event decoding are libgpiod's, behind the
+ * seam in input.h: input_gpiod1.c (libgpiod 1.6) or input_gpiod2.c (2.x),
+ * chosen by the Makefile from the library's pkg-config version. */
 #include "input.h"
 
 #include <errno.h>
 #include <fcntl.h>
-#include <gpiod.h>
 #include <string.h>
 
 #define CONSUMER "skinplay"
@@ -27,44 +28,6 @@ static struct {
 	int count;
 } g;
 
-/* libgpiod behind the seam. */
-static void *lg_open_chip(const char *chip)
-{
-	return gpiod_chip_open_lookup(chip);
-}
-
-static void *lg_request(void *chip, unsigned int offset, int flags, const char *consumer)
-{
-	struct gpiod_line *line = gpiod_chip_get_line(chip, offset);
-	if (!line || gpiod_line_request_both_edges_events_flags(line, consumer, flags) != 0)
-		return NULL;
-	return line;
-}
-
-static int lg_event_fd(void *line)
-{
-	return gpiod_line_event_get_fd(line);
-}
-
-static int lg_get_value(void *line)
-{
-	return gpiod_line_get_value(line);
-}
-
-static void lg_release(void *line)
-{
-	gpiod_line_release(line);
-}
-
-static void lg_close_chip(void *chip)
-{
-	gpiod_chip_close(chip);
-}
-
-const input_gpio_ops input_gpio_libgpiod = {
-	lg_open_chip, lg_request, lg_event_fd, lg_get_value, lg_release, lg_close_chip
-};
-
 void input_gpio_set_ops(const input_gpio_ops *ops)
 {
 	g.ops = ops;
@@ -77,11 +40,11 @@ static const input_gpio_ops *ops(void)
 
 int input_gpio_flags(const board_button *b)
 {
-	int f = b->active_low ? GPIOD_LINE_REQUEST_FLAG_ACTIVE_LOW : 0;
+	int f = b->active_low ? INPUT_GPIO_ACTIVE_LOW : 0;
 	switch (b->bias) {
-	case BOARD_BIAS_DISABLE: return f | GPIOD_LINE_REQUEST_FLAG_BIAS_DISABLE;
-	case BOARD_BIAS_PULL_UP: return f | GPIOD_LINE_REQUEST_FLAG_BIAS_PULL_UP;
-	case BOARD_BIAS_PULL_DOWN: return f | GPIOD_LINE_REQUEST_FLAG_BIAS_PULL_DOWN;
+	case BOARD_BIAS_DISABLE: return f | INPUT_GPIO_BIAS_DISABLE;
+	case BOARD_BIAS_PULL_UP: return f | INPUT_GPIO_PULL_UP;
+	case BOARD_BIAS_PULL_DOWN: return f | INPUT_GPIO_PULL_DOWN;
 	default: return f;
 	}
 }
@@ -155,25 +118,25 @@ static int gpio_fds(struct pollfd *pfd, int max)
 
 /* A kernel timestamp far from now is from another clock (kernels before
  * 5.7 stamp v1 events with CLOCK_REALTIME): use the time of reading. */
-static uint64_t event_ms(const struct gpiod_line_event *e, uint64_t now_ms)
+static uint64_t event_ms(const input_gpio_edge *e, uint64_t now_ms)
 {
-	uint64_t t = (uint64_t)e->ts.tv_sec * 1000u + (uint64_t)e->ts.tv_nsec / 1000000u;
+	uint64_t t = e->ts_ns / 1000000u;
 	return t + 10000 < now_ms || t > now_ms + 10000 ? now_ms : t;
 }
 
 /* Drains one line's fd while there is room for one edge's events. */
 static int drain(gpio_button *gb, uint64_t now_ms, player_event *ev, int room, skp_error *err)
 {
-	struct gpiod_line_event e;
+	input_gpio_edge e;
 	int n = 0;
 	while (room - n >= 3) {
-		if (gpiod_line_event_read_fd(gb->fd, &e) != 0) {
+		if (input_gpio_read_edge(gb->fd, &e) != 0) {
 			if (errno == EAGAIN || errno == EWOULDBLOCK)
 				break;
 			return skp_fail(err, SKP_ERR_IO, 0, "reading %s button events: %s",
 					player_button_name(gb->button), strerror(errno)), -1;
 		}
-		int level = e.event_type == GPIOD_LINE_EVENT_RISING_EDGE;
+		int level = e.rising;
 		unsigned bits = debounce_update(&gb->cfg, &gb->deb, event_ms(&e, now_ms), level);
 		n += input_emit(bits, gb->button, gb->deb.last_ms, ev + n);
 	}

@@ -19,9 +19,7 @@ QEMU_SYSTEM   := qemu-system-arm
 QEMU_MACHINE  := mps2-an385
 EMB_FRAMES    := 8
 EMB_STRIDE    := 140
-DEB_PKGS      := gcc-arm-none-eabi libnewlib-arm-none-eabi qemu-system-arm
-MCU_NEED_CMDS := arm-none-eabi-gcc qemu-system-arm
-MCU_NEED_FILES := /usr/lib/arm-none-eabi/include/newlib.h
+DEB_PKGS      := gcc libc6-dev make gcc-arm-none-eabi libnewlib-arm-none-eabi qemu-system-arm
 
 # Its own build directory unless BUILD= is given, so that switching between
 # boards rebuilds nothing that another board built.

@@ -21,10 +21,8 @@ QEMU_MACHINE  := mps2-an386
 # The embedded test's data: frames of the demo motion, every STRIDE-th.
 EMB_FRAMES    := 8
 EMB_STRIDE    := 140
-# Debian packages `make deps BOARD=cortex-m4` installs, and what proves them.
-DEB_PKGS      := gcc-arm-none-eabi libnewlib-arm-none-eabi qemu-system-arm
-MCU_NEED_CMDS := arm-none-eabi-gcc qemu-system-arm
-MCU_NEED_FILES := /usr/lib/arm-none-eabi/include/newlib.h
+# Debian packages `make deps BOARD=cortex-m4` installs (board/deps.mk).
+DEB_PKGS      := gcc libc6-dev make gcc-arm-none-eabi libnewlib-arm-none-eabi qemu-system-arm
 
 # Its own build directory unless BUILD= is given, so that switching between
 # boards rebuilds nothing that another board built.

@@ -11,9 +11,10 @@ SIZE          := $(CROSS_COMPILE)size
 BOARD_CFLAGS  := -O2 -g -mcpu=cortex-a72
 # No AVX2 on ARM: NEON float kernels (app/skin_neon.c), or SIMD=scalar.
 SIMD          ?= neon
-DEB_PKGS      := pkg-config libcmocka-dev libegl-dev libgles-dev libosmesa6-dev \
-                 libgbm-dev libdrm-dev libgpiod-dev libpng-dev libx11-dev
-PC_MODULES    := cmocka egl glesv2 osmesa gbm libdrm libgpiod libpng x11
+# Debian packages `make deps` installs (board/deps.mk), building on the Pi.
+LIB_PKGS      := libcmocka-dev libegl-dev libgles-dev libosmesa6-dev libgbm-dev libdrm-dev \
+                 libgpiod-dev libpng-dev libx11-dev
+DEB_PKGS      := gcc libc6-dev make pkg-config $(LIB_PKGS) dpkg-dev help2man lintian
 
 # Cross build from another architecture (Debian 12 x86-64): the compiler,
 # the arm64 multiarch -dev packages (dpkg --add-architecture arm64), a
@@ -22,11 +23,8 @@ PC_MODULES    := cmocka egl glesv2 osmesa gbm libdrm libgpiod libpng x11
 # are skipped there, see that script for why).
 ifneq ($(CROSS_COMPILE),)
 ifneq ($(shell uname -m),aarch64)
-CROSS_LIBS    := libcmocka-dev libegl-dev libgles-dev libosmesa6-dev libgbm-dev libdrm-dev \
-                 libgpiod-dev libpng-dev libx11-dev
-DEB_PKGS      := pkg-config gcc-aarch64-linux-gnu qemu-user-static binfmt-support \
-                 $(addsuffix :arm64,$(CROSS_LIBS))
-DEB_TOOLS     := $(CC) qemu-aarch64-static
+DEB_PKGS      := gcc libc6-dev make pkg-config gcc-aarch64-linux-gnu qemu-user-static binfmt-support \
+                 $(addsuffix :arm64,$(LIB_PKGS)) dpkg-dev help2man lintian
 DEPS_PREPARE  := dpkg --add-architecture arm64 &&
 PKG_CONFIG    := PKG_CONFIG_LIBDIR=/usr/lib/aarch64-linux-gnu/pkgconfig:/usr/share/pkgconfig pkg-config
 export QEMU_LD_PREFIX := /usr/aarch64-linux-gnu

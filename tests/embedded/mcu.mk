@@ -33,7 +33,7 @@ EMB_HOST      := $(OUT)/host/emb_skin
 EMB_GEN       := $(OUT)/host/emb_gen
 DEMO_AMC      := $(OUT)/assets/demo.amc
 
-.PHONY: all deps test size clean help
+.PHONY: all test size clean help
 all: $(CORE_LIB) $(EMB_ELF) $(EMB_HOST)
 
 # Objects depend on the flags they were built with.
@@ -93,7 +93,8 @@ $(EMB_HOST): $(OUT)/host/emb/emb_skin.o $(OUT)/host/emb/emb_host.o $(HOST_CORE_L
 
 QEMU_RUN := timeout 300 $(QEMU_SYSTEM) -M $(QEMU_MACHINE) -nographic -semihosting -monitor none -serial null -kernel
 
-test: deps all
+test: deps
+	@$(MAKE) --no-print-directory all
 	@echo "== host reference: $(EMB_HOST)"; \
 	$(EMB_HOST) > $(OUT)/emb_host.log 2>&1; hrc=$$?; cat $(OUT)/emb_host.log; \
 	echo "== $(QEMU_SYSTEM) -M $(QEMU_MACHINE): $(EMB_ELF)"; \
@@ -112,21 +113,6 @@ size: $(EMB_ELF) $(CORE_LIB)
 	@$(SIZE) -t $(CORE_LIB) | awk 'END { printf "libskp.a ($(BOARD), whole portable core): code %d bytes, .data %d, .bss %d\n", $$1, $$2, $$3 }'
 	@cat $(CORE_OBJ:.o=.su) $(OUT)/emb/*.su 2>/dev/null | sort -t'	' -k2 -n -r | head -3 | \
 	  awk -F'\t' '{ printf "  stack frame %s bytes: %s\n", $$2, $$1 }'
-
-# Check the tools; as root install what is missing.
-deps:
-	@missing=""; \
-	for c in $(MCU_NEED_CMDS); do command -v $$c >/dev/null 2>&1 || missing="$$missing $$c"; done; \
-	for f in $(MCU_NEED_FILES); do [ -e $$f ] || missing="$$missing $$f"; done; \
-	if [ -n "$$missing" ]; then \
-	  echo "deps: missing:$$missing"; \
-	  if [ "$$(id -u)" = 0 ] && command -v apt-get >/dev/null 2>&1; then \
-	    apt-get update -qq && DEBIAN_FRONTEND=noninteractive apt-get install -y -qq $(DEB_PKGS) >/dev/null || exit 1; \
-	    echo "deps: installed $(DEB_PKGS)"; \
-	  else \
-	    echo "deps: run as root:  apt-get install -y $(DEB_PKGS)"; exit 1; \
-	  fi; \
-	fi
 
 clean:
 	rm -rf $(BUILD)

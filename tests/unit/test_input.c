@@ -1,7 +1,9 @@
 /* The input backends without hardware. The gpio backend runs for real with
- * its chip and line requests replaced by pipes: struct gpioevent_data
- * written into a pipe is decoded by libgpiod's gpiod_line_event_read_fd(),
- * exactly as a line's event fd would be on the board. */
+ * its chip and line requests replaced by pipes: the kernel's own event
+ * structs written into a pipe are decoded by the build's libgpiod seam
+ * exactly as a line's event fd would be on the board (struct gpioevent_data
+ * through gpiod_line_event_read_fd() with libgpiod 1.6, struct
+ * gpio_v2_line_event with 2.x; SKP_GPIOD_API says which). */
 #include <stdarg.h>
 #include <stddef.h>
 #include <setjmp.h>
@@ -9,7 +11,6 @@
 #include <cmocka.h>
 
 #include <errno.h>
-#include <gpiod.h>
 #include <linux/gpio.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -117,10 +118,18 @@ static int teardown(void **state)
 /* A kernel line event: an edge of the active level at t_ms. */
 static void edge(int button, int rising, uint64_t t_ms)
 {
+#if SKP_GPIOD_API >= 2
+	struct gpio_v2_line_event e;
+	memset(&e, 0, sizeof e);
+	e.timestamp_ns = t_ms * 1000000u + 123456u;
+	e.id = rising ? GPIO_V2_LINE_EVENT_RISING_EDGE : GPIO_V2_LINE_EVENT_FALLING_EDGE;
+	e.offset = fake.line[button].offset;
+#else
 	struct gpioevent_data e;
 	memset(&e, 0, sizeof e);
 	e.timestamp = t_ms * 1000000u + 123456u;
 	e.id = rising ? GPIOEVENT_EVENT_RISING_EDGE : GPIOEVENT_EVENT_FALLING_EDGE;
+#endif
 	assert_int_equal(write(fake.line[button].pipe[1], &e, sizeof e), (ssize_t)sizeof e);
 }
 
@@ -144,9 +153,9 @@ static void test_gpio_requests_lines_with_flags(void **state)
 	assert_string_equal(fake.chip_name, "gpiochip0");
 	assert_int_equal(fake.count, 3);
 	assert_int_equal(fake.line[0].offset, 17);
-	assert_int_equal(fake.line[0].flags, GPIOD_LINE_REQUEST_FLAG_ACTIVE_LOW | GPIOD_LINE_REQUEST_FLAG_BIAS_PULL_UP);
+	assert_int_equal(fake.line[0].flags, INPUT_GPIO_ACTIVE_LOW | INPUT_GPIO_PULL_UP);
 	assert_int_equal(fake.line[2].offset, 22);
-	assert_int_equal(fake.line[2].flags, GPIOD_LINE_REQUEST_FLAG_BIAS_DISABLE);
+	assert_int_equal(fake.line[2].flags, INPUT_GPIO_BIAS_DISABLE);
 	struct pollfd p[INPUT_MAX_FDS];
 	assert_int_equal(input_gpio.fds(p, INPUT_MAX_FDS), 3);
 	assert_int_equal(p[1].fd, fake.line[1].pipe[0]);
