@@ -89,7 +89,7 @@ DEMO_AMC := $(OUT)/assets/demo.amc
 CMOCKA_CFLAGS = $(shell $(PKG_CONFIG) --cflags cmocka 2>/dev/null)
 CMOCKA_LIBS   = $(shell $(PKG_CONFIG) --libs cmocka 2>/dev/null || echo -lcmocka)
 
-.PHONY: all deps test run size install clean help check-core
+.PHONY: all test run size install clean help check-core
 all: $(SKINTOOL) $(SKINPLAY) $(DEMO_AMC)
 
 $(OUT)/assets/demo_motion: assets/demo_motion.c
@@ -190,18 +190,50 @@ run: deps
 size: $(SKINPLAY)
 	@size $(SKINPLAY) | awk 'NR==2 { printf "skinplay (%s): code %d bytes (text), static RAM %d bytes (.data %d + .bss %d)\n", "$(BOARD)", $$1, $$2+$$3, $$2, $$3 }'
 
-install: all
-	install -d $(DESTDIR)$(PREFIX)/bin
-	install -m 755 $(SKINTOOL) $(SKINPLAY) $(DESTDIR)$(PREFIX)/bin/
-	install -d $(DESTDIR)$(PREFIX)/share/skinplay/board/$(BOARD)
-	install -m 644 $(wildcard board/$(BOARD)/*.ini board/$(BOARD)/*.md) $(DESTDIR)$(PREFIX)/share/skinplay/board/$(BOARD)/
-	@# the kiosk: unit, udev rule, and the board config unless one is already there
-	if [ -f board/$(BOARD)/skinplay.service ]; then \
-	  install -d $(DESTDIR)/etc/systemd/system $(DESTDIR)/etc/udev/rules.d $(DESTDIR)/etc/skinplay && \
-	  sed 's|@PREFIX@|$(PREFIX)|g' board/$(BOARD)/skinplay.service > $(DESTDIR)/etc/systemd/system/skinplay.service && \
-	  install -m 644 board/$(BOARD)/99-skinplay-gpio.rules $(DESTDIR)/etc/udev/rules.d/ && \
-	  { [ -e $(DESTDIR)/etc/skinplay/board.ini ] || install -m 644 board/$(BOARD)/board.ini $(DESTDIR)/etc/skinplay/; }; \
-	fi
+# Installed layout. The package (platform/debian/deb.mk) installs with
+# PREFIX=/usr and Debian's unit and udev directories.
+BINDIR     := $(PREFIX)/bin
+DATADIR    := $(PREFIX)/share/skinplay
+MANDIR     := $(PREFIX)/share/man/man1
+UNITDIR    ?= /etc/systemd/system
+UDEVDIR    ?= /etc/udev/rules.d
+STRIP      ?= strip
+# The board's programs run on this machine (board.mk sets an emulator for a
+# cross build): the demo image and the man pages are made by them.
+RUN_DIR    := $(OUT)/run
+DEMO_SKN   := $(OUT)/assets/demo.skn
+MAN_PAGES  := $(OUT)/man/skinplay.1 $(OUT)/man/skintool.1
+
+$(RUN_DIR)/%: $(OUT)/%
+	@mkdir -p $(@D)
+	@printf '#!/bin/sh\nexec %s %s "$$@"\n' '$(TARGET_RUN)' '$(abspath $<)' > $@ && chmod 755 $@
+
+# sequence 0: older than any show a user packs, so it plays only when no
+# image slot holds a valid show (board.ini lists it last)
+$(DEMO_SKN): $(RUN_DIR)/skintool $(DEMO_AMC) $(DEMO_ASF)
+	@$< pack $(DEMO_ASF) $(DEMO_AMC) --sequence 0 -o $@ >/dev/null
+
+# man pages from --help and --version (help2man), so they never drift
+$(OUT)/man/%.1: $(RUN_DIR)/% platform/debian/%.h2m
+	@mkdir -p $(@D)
+	@help2man --no-info --section=1 --include=platform/debian/$*.h2m --output=$@ $<
+
+install: all $(DEMO_SKN) $(MAN_PAGES)
+	@install -d $(DESTDIR)$(BINDIR) $(DESTDIR)$(DATADIR)/board/$(BOARD) $(DESTDIR)$(MANDIR) \
+	  $(DESTDIR)$(UNITDIR) $(DESTDIR)$(UDEVDIR) $(DESTDIR)/etc/skinplay
+	@install -m 755 -s --strip-program=$(STRIP) $(SKINTOOL) $(SKINPLAY) $(DESTDIR)$(BINDIR)/
+	@install -m 644 $(DEMO_SKN) $(DESTDIR)$(DATADIR)/
+	@install -m 644 board/$(BOARD)/board.ini $(DESTDIR)$(DATADIR)/board/$(BOARD)/
+	@for f in $(wildcard board/$(BOARD)/README.md); do \
+	  install -D -m 644 $$f $(DESTDIR)$(PREFIX)/share/doc/skinplay/README.$(BOARD).md; done
+	@for m in $(MAN_PAGES); do gzip -9n < $$m > $(DESTDIR)$(MANDIR)/$$(basename $$m).gz; done
+	@sed 's|@PREFIX@|$(PREFIX)|g' platform/debian/skinplay.service > $(DESTDIR)$(UNITDIR)/skinplay.service
+	@install -m 644 platform/debian/60-skinplay-gpio.rules $(DESTDIR)$(UDEVDIR)/
+	@# the board config stays when there is one: it is the integrator's
+	@[ -e $(DESTDIR)/etc/skinplay/board.ini ] || \
+	  sed 's|/usr/share/skinplay/|$(DATADIR)/|' board/$(BOARD)/board.ini > $(DESTDIR)/etc/skinplay/board.ini
+	@echo "install: skinplay and skintool in $(DESTDIR)$(BINDIR), the demo in $(DESTDIR)$(DATADIR)," \
+	  "the unit in $(DESTDIR)$(UNITDIR), the udev rule in $(DESTDIR)$(UDEVDIR), the config in $(DESTDIR)/etc/skinplay"
 
 clean:
 	rm -rf $(BUILD)
@@ -213,9 +245,12 @@ help:
 	@echo "make size               code size and static RAM of skinplay"
 	@echo "make deps               check (and as root install) the Debian packages"
 	@echo "make install PREFIX=/usr/local DESTDIR="
+	@echo "make deb                skinplay_$(VERSION)_$(DEB_ARCH).deb (dpkg-deb; lintian when installed)"
 
 # fuzz, fuzz-smoke, lint, soak
 include tests/hardening.mk
+# deb
+include platform/debian/deb.mk
 
 -include $(CORE_OBJ:.o=.d) $(PLAT_OBJ:.o=.d) $(FRONT_SRC:%.c=$(OUT)/%.d) $(TESTLIB_OBJ:.o=.d) $(UNIT_BIN:$(OUT)/tests/%=$(OUT)/tests/obj/%.d)
 

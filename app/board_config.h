@@ -25,7 +25,7 @@
 #define SKP_MAX_PATH 256     /* device and file paths in a board config */
 #endif
 #ifndef SKP_MAX_SLOTS
-#define SKP_MAX_SLOTS 2      /* image slots (A/B update) */
+#define SKP_MAX_SLOTS 3      /* image slots: A/B update, and the demo as the last resort */
 #endif
 
 typedef enum board_bias {

@@ -8,6 +8,8 @@ CC            := $(CROSS_COMPILE)gcc
 AR            := $(CROSS_COMPILE)ar
 NM            := $(CROSS_COMPILE)nm
 SIZE          := $(CROSS_COMPILE)size
+STRIP         := $(CROSS_COMPILE)strip
+DEB_ARCH      := arm64
 BOARD_CFLAGS  := -O2 -g -mcpu=cortex-a72
 # No AVX2 on ARM: NEON float kernels (app/skin_neon.c), or SIMD=scalar.
 SIMD          ?= neon
@@ -28,6 +30,8 @@ DEB_PKGS      := gcc libc6-dev make pkg-config gcc-aarch64-linux-gnu qemu-user-s
 DEPS_PREPARE  := dpkg --add-architecture arm64 &&
 PKG_CONFIG    := PKG_CONFIG_LIBDIR=/usr/lib/aarch64-linux-gnu/pkgconfig:/usr/share/pkgconfig pkg-config
 export QEMU_LD_PREFIX := /usr/aarch64-linux-gnu
+# the demo image and the man pages are made by the arm64 programs
+TARGET_RUN    := qemu-aarch64-static
 RPI4_QEMU_SKIP := test_render test_display test_kiosk test_image_cli test_compare_report
 TEST_WRAP     := sh tests/cross_run.sh aarch64 "$(RPI4_QEMU_SKIP)" --
 endif

@@ -52,8 +52,9 @@ static void test_rpi4_board(void **state)
 		assert_int_equal(cfg.button[b].deb.debounce_ms, 30);
 		assert_int_equal(cfg.button[b].deb.long_press_ms, 800);
 	}
-	assert_int_equal(cfg.slot_count, 2);
+	assert_int_equal(cfg.slot_count, 3);
 	assert_string_equal(cfg.slot[1], "/var/lib/skinplay/show-b.skn");
+	assert_string_equal(cfg.slot[2], "/usr/share/skinplay/demo.skn");
 	assert_int_equal(cfg.max_fps, 60);
 }
 
@@ -63,6 +64,8 @@ static void test_host_board(void **state)
 	parse_file("board/host/board.ini");
 	assert_string_equal(cfg.input, "keyboard");
 	assert_false(cfg.button[PLAYER_BTN_ALGO].present);
+	assert_int_equal(cfg.slot_count, 3);
+	assert_string_equal(cfg.slot[2], "/usr/share/skinplay/demo.skn");
 }
 
 static void test_inheritance_and_syntax(void **state)
@@ -119,7 +122,7 @@ static void test_errors_name_line_and_key(void **state)
 		{ "[input]\nbackend = joystick\n", 2, "key 'backend' in [input]: expected gpio, keyboard, none or script:FILE" },
 		{ "[input]\ndebounce_ms = -5\n", 2, "key 'debounce_ms'" },
 		{ "[limits]\nmax_fps = fast\n", 2, "key 'max_fps' in [limits]" },
-		{ "[storage]\nslot = a\nslot = b\nslot = c\n", 4, "SKP_MAX_SLOTS" },
+		{ "[storage]\nslot = a\nslot = b\nslot = c\nslot = d\n", 5, "SKP_MAX_SLOTS" },
 		{ "line = 3\n", 1, "key 'line' before any [section]" },
 		{ "[display\n", 1, "expected ']'" },
 		{ "[display]\njust words\n", 2, "expected 'key = value', found 'just words'" },
