@@ -17,10 +17,13 @@ for t in "$@"; do
 	esac
 	$SKP_TEST_RUNNER "$t" >"$log" 2>&1; rc=$?
 	cat "$log"
-	r=$(sed -n 's/^\[==========\] \([0-9]*\) test(s) run\./\1/p' "$log" | tail -n 1)
-	p=$(sed -n 's/^\[  PASSED  \] \([0-9]*\) test(s)\./\1/p' "$log" | tail -n 1)
-	f=$(sed -n 's/^\[  FAILED  \] \([0-9]*\) test(s), listed below:/\1/p' "$log" | tail -n 1)
-	s=$(sed -n 's/^\[  SKIPPED \] \([0-9]*\) test(s), listed below:/\1/p' "$log" | tail -n 1)
+	# cmocka 1.1.7 (Debian 13) puts the group's name before the count:
+	# "[==========] tests: 4 test(s) run."; 1.1.5 (Debian 12) does not
+	g='\([^ ]*: \)\{0,1\}'
+	r=$(sed -n "s/^\[==========\] $g\([0-9]*\) test(s) run\./\2/p" "$log" | tail -n 1)
+	p=$(sed -n "s/^\[  PASSED  \] $g\([0-9]*\) test(s)\./\2/p" "$log" | tail -n 1)
+	f=$(sed -n "s/^\[  FAILED  \] $g\([0-9]*\) test(s), listed below:/\2/p" "$log" | tail -n 1)
+	s=$(sed -n "s/^\[  SKIPPED \] $g\([0-9]*\) test(s), listed below:/\2/p" "$log" | tail -n 1)
 	run=$((run + ${r:-0})); passed=$((passed + ${p:-0}))
 	failed=$((failed + ${f:-0})); skipped=$((skipped + ${s:-0}))
 	if [ "$rc" -ne 0 ] || [ -z "$r" ]; then

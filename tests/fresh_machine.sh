@@ -1,0 +1,152 @@
+#!/bin/sh
+# The README's commands on a fresh machine: a Debian minbase root with only
+# git and make (debootstrap), a clone of this repository's HEAD, then
+# `make test` and `make run` exactly as the README has them, each timed.
+# With --deb it also builds the package there (`make deb`, lintian) and
+# installs it in a second, pristine root with `apt install ./skinplay_*.deb`,
+# plays the installed demo image headless to the end of its clip, runs
+# `skintool info` on it, purges the package and checks that nothing is left.
+#
+#   tests/fresh_machine.sh [--suite=trixie|bookworm] [--deb] [--keep]
+#                          [--cache=DIR] [--mirror=URL] [--quiet]
+#
+# Needs root (debootstrap, chroot, mounts), util-linux's unshare, overlayfs
+# and the network to the mirror. The minbase root is made once per suite and
+# kept in the cache (default /var/cache/skinplay-fresh; --refresh makes it
+# again); each run works on an overlay of it, so a second run starts from
+# the same untouched system in seconds. Downloaded .debs are cached too.
+# Everything is mounted in a private mount and pid namespace: when the run
+# ends, however it ends, its mounts and processes are gone. The shared test
+# data (../shared) is mounted read-only beside the clone when present.
+# Exit status: 0 when every step passed, 1 when one failed (its log's tail
+# is printed), 2 for bad usage or a machine that cannot run the check.
+set -eu
+
+suite=trixie deb=0 keep=0 quiet=0 refresh=0
+cache=/var/cache/skinplay-fresh mirror=http://deb.debian.org/debian
+repo=$(cd "$(dirname "$0")/.." && pwd)
+for a in "$@"; do
+	case $a in
+	--suite=*) suite=${a#*=} ;;
+	--deb) deb=1 ;;
+	--keep) keep=1 ;;
+	--quiet) quiet=1 ;;
+	--refresh) refresh=1 ;;
+	--cache=*) cache=${a#*=} ;;
+	--mirror=*) mirror=${a#*=} ;;
+	--inside=*) inside=${a#*=} ;;
+	--help) sed -n '2,/^set -eu/p' "$0" | sed '$d; s/^# \{0,1\}//'; exit 0 ;;
+	*) echo "fresh_machine: unknown argument '$a' (--help lists them)" >&2; exit 2 ;;
+	esac
+done
+
+say() { [ "$quiet" = 1 ] || echo "fresh-machine $suite: $*"; }
+die() { echo "fresh-machine $suite: $*" >&2; exit 2; }
+now() { date +%s; }
+
+# ---- inside the namespaces: mount, chroot, run one step ----------------
+# $inside is "build" or "package": which root, which steps.
+if [ -n "${inside:-}" ]; then
+	work=$FRESH_WORK
+	root=$work/$inside
+	mount -t overlay overlay -o "lowerdir=$cache/$suite,upperdir=$work/$inside-upper,workdir=$work/$inside-ovl" "$root"
+	mount -t proc proc "$root/proc"
+	mount --rbind /dev "$root/dev"
+	mount -t tmpfs -o mode=1777 tmpfs "$root/dev/shm"
+	mount --rbind /sys "$root/sys"
+	mkdir -p "$cache/$suite-archives" "$root/var/cache/apt/archives"
+	mount --bind "$cache/$suite-archives" "$root/var/cache/apt/archives"
+	cp /etc/resolv.conf "$root/etc/resolv.conf"
+	mkdir -p "$root/src/repo"
+	mount --bind -o ro "$repo" "$root/src/repo"
+	if [ -d "$repo/../shared" ] && [ "$inside" = build ]; then
+		mkdir -p "$root/root/work/shared"
+		mount --bind -o ro "$repo/../shared" "$root/root/work/shared"
+	fi
+	exec chroot "$root" /usr/bin/env -i HOME=/root TERM=dumb LANG=C.UTF-8 \
+		PATH=/usr/local/sbin:/usr/local/bin:/usr/sbin:/usr/bin:/sbin:/bin \
+		/bin/sh -c "$FRESH_SCRIPT"
+fi
+
+# ---- outside: the base root, the work area, the steps -------------------
+[ "$(id -u)" = 0 ] || die "needs root (debootstrap, chroot, mounts)"
+for c in debootstrap unshare chroot; do
+	command -v $c >/dev/null 2>&1 || die "needs $c (apt-get install debootstrap util-linux)"
+done
+case $suite in bookworm|trixie) ;; *) die "--suite is bookworm or trixie, got '$suite'" ;; esac
+git -C "$repo" rev-parse HEAD >/dev/null 2>&1 || die "$repo is not a git clone"
+
+mkdir -p "$cache"
+if [ "$refresh" = 1 ] || [ ! -e "$cache/$suite/.skinplay-base" ]; then
+	t=$(now)
+	say "debootstrap --variant=minbase --include=git,make $suite (once; kept in $cache/$suite)"
+	rm -rf "$cache/$suite"
+	if ! debootstrap --variant=minbase --include=git,make "$suite" "$cache/$suite" "$mirror" \
+		> "$cache/$suite.debootstrap.log" 2>&1; then
+		tail -n 20 "$cache/$suite.debootstrap.log" >&2
+		die "debootstrap failed (log: $cache/$suite.debootstrap.log)"
+	fi
+	date -u > "$cache/$suite/.skinplay-base"
+	say "base system in $(($(now) - t)) s"
+fi
+
+work=$(mktemp -d "${TMPDIR:-/var/tmp}/skinplay-fresh.XXXXXX")
+cleanup() {
+	if [ "$keep" = 1 ]; then say "kept $work"; else rm -rf "$work"; fi
+}
+trap cleanup EXIT
+for r in build package; do mkdir -p "$work/$r" "$work/$r-upper" "$work/$r-ovl"; done
+logs=$work/logs
+mkdir -p "$logs"
+
+# Runs script (sh) in root $1 (build or package), logging to $logs/$2.log;
+# prints the step's time; on failure prints the log's tail and stops.
+fail=0
+step() {
+	r=$1 name=$2 script=$3 t=$(now)
+	if FRESH_WORK=$work FRESH_SCRIPT="$script" unshare --mount --pid --fork --propagation private \
+		"$0" --suite="$suite" --cache="$cache" --inside="$r" > "$logs/$name.log" 2>&1; then
+		summary=$(grep -E '^(tests:|run:|deb:|package:)' "$logs/$name.log" | tail -n 3 | tr '\n' ' ')
+		say "$name: passed in $(($(now) - t)) s ${summary:+($summary)}"
+	else
+		say "$name: FAILED after $(($(now) - t)) s; the end of its log:"
+		tail -n 40 "$logs/$name.log"
+		[ "$keep" = 1 ] && say "whole log: $logs/$name.log"
+		fail=1
+		exit 1
+	fi
+}
+
+rev=$(git -C "$repo" rev-parse --short HEAD)
+say "clone of $rev, then the README's commands"
+step build clone "git clone -q /src/repo /root/work/main && git -C /root/work/main log --oneline -1"
+# exactly as the README says, from the clone
+step build "make-test" "cd /root/work/main && make test"
+step build "make-run" "cd /root/work/main && make run && ls out/contact_sheet.png >/dev/null &&
+	echo \"run: \$(ls out/frame_*.png | wc -l) frames and out/contact_sheet.png\""
+
+if [ "$deb" = 1 ]; then
+	step build "make-deb" "cd /root/work/main && make deb"
+	# what the build root wrote is in its overlay's upper layer
+	mkdir -p "$work/package-upper/root"
+	cp "$work/build-upper/root/work/main/build/"skinplay_*.deb "$work/package-upper/root/"
+	pkg=$(basename "$work/package-upper/root/"skinplay_*.deb)
+	say "$pkg: $(du -k "$work/package-upper/root/$pkg" | cut -f1) KiB"
+	# the file list of the untouched system, to compare after the purge
+	list='find / -xdev \( -path /proc -o -path /sys -o -path /dev -o -path /root -o -path /tmp -o -path /var/cache \
+		-o -path /var/lib/apt -o -path /var/lib/dpkg -o -path /var/log -o -path /src \) -prune -o -print | sort'
+	step package "package-install" "apt-get update -qq && $list > /root/before.txt &&
+		DEBIAN_FRONTEND=noninteractive apt-get install -y -qq ./root/$pkg >/dev/null &&
+		echo \"package: \$(dpkg-query -W -f='\${Package} \${Version} \${Architecture}' skinplay) installed\""
+	step package "package-play" "skinplay --version | head -n 1 &&
+		skinplay --image /usr/share/skinplay/demo.skn --platform surfaceless --size 320x180 &&
+		skintool info /usr/share/skinplay/demo.skn | tail -n 1 &&
+		test -f /usr/share/man/man1/skinplay.1.gz && echo 'package: played the demo to its end; info: all good'"
+	step package "package-purge" "dpkg -L skinplay > /root/files.txt &&
+		DEBIAN_FRONTEND=noninteractive apt-get purge -y -qq skinplay >/dev/null &&
+		DEBIAN_FRONTEND=noninteractive apt-get autoremove --purge -y -qq >/dev/null &&
+		left=\$(while read -r f; do [ -e \"\$f\" ] && [ ! -d \"\$f\" ] && echo \"\$f\"; done < /root/files.txt);
+		[ -z \"\$left\" ] || { echo \"left behind: \$left\"; exit 1; };
+		$list > /root/after.txt; diff /root/before.txt /root/after.txt && echo 'package: purged, nothing left behind'"
+fi
+say "all steps passed"
