@@ -49,7 +49,11 @@ now() { date +%s; }
 if [ -n "${inside:-}" ]; then
 	work=$FRESH_WORK
 	root=$work/$inside
-	mount -t overlay overlay -o "lowerdir=$cache/$suite,upperdir=$work/$inside-upper,workdir=$work/$inside-ovl" "$root"
+	# an overlay of the cached base; where overlayfs is missing, a copy
+	if ! mount -t overlay overlay -o "lowerdir=$cache/$suite,upperdir=$work/$inside-upper,workdir=$work/$inside-ovl" \
+		"$root" 2>/dev/null && [ ! -e "$root/.skinplay-base" ]; then
+		cp -a "$cache/$suite/." "$root/"
+	fi
 	mount -t proc proc "$root/proc"
 	mount --rbind /dev "$root/dev"
 	mount -t tmpfs -o mode=1777 tmpfs "$root/dev/shm"
@@ -127,9 +131,13 @@ step build "make-run" "cd /root/work/main && make run && ls out/contact_sheet.pn
 
 if [ "$deb" = 1 ]; then
 	step build "make-deb" "cd /root/work/main && make deb"
-	# what the build root wrote is in its overlay's upper layer
-	mkdir -p "$work/package-upper/root"
-	cp "$work/build-upper/root/work/main/build/"skinplay_*.deb "$work/package-upper/root/"
+	# what the build root wrote is in its overlay's upper layer (or the copy)
+	mkdir -p "$work/package-upper/root" "$work/package/root"
+	for d in build-upper build; do
+		for f in "$work/$d/root/work/main/build/"skinplay_*.deb; do
+			[ -f "$f" ] && cp "$f" "$work/package-upper/root/" && cp "$f" "$work/package/root/"
+		done
+	done
 	pkg=$(basename "$work/package-upper/root/"skinplay_*.deb)
 	say "$pkg: $(du -k "$work/package-upper/root/$pkg" | cut -f1) KiB"
 	# the file list of the untouched system, to compare after the purge
