@@ -25,6 +25,7 @@ deps:
 	echo "deps: missing: $$missing"; \
 	if [ "$$(id -u)" != 0 ] || ! command -v apt-get >/dev/null 2>&1; then \
 	  echo "deps: install them as root: sudo make deps BOARD=$(BOARD)  (or: sudo apt-get install $$missing)"; exit 1; fi; \
+	echo "deps: installing them with apt-get (a minute or more on a fresh system)"; \
 	$(DEPS_PREPARE) apt-get update -qq && \
 	  DEBIAN_FRONTEND=noninteractive apt-get install -y -qq $$missing >/dev/null || exit 1; \
 	echo "deps: installed $$missing"

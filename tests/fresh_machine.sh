@@ -7,8 +7,13 @@
 # plays the installed demo image headless to the end of its clip, runs
 # `skintool info` on it, purges the package and checks that nothing is left.
 #
-#   tests/fresh_machine.sh [--suite=trixie|bookworm] [--deb] [--keep]
-#                          [--cache=DIR] [--mirror=URL] [--quiet]
+#   tests/fresh_machine.sh [--suite=trixie|bookworm] [--deb] [--cross=rpi4]
+#                          [--keep] [--cache=DIR] [--mirror=URL] [--quiet]
+#
+# --cross=BOARD then cross-builds that board in the same root, as its README
+# section says: `make deps BOARD=rpi4`, `make BOARD=rpi4 test` (unit tests
+# under qemu-user), `make BOARD=rpi4 deb` (arm64 package, lintian): on
+# trixie, the system Raspberry Pi OS trixie is built from.
 #
 # Needs root (debootstrap, chroot, mounts), util-linux's unshare, overlayfs
 # and the network to the mirror. The minbase root is made once per suite and
@@ -22,13 +27,14 @@
 # is printed), 2 for bad usage or a machine that cannot run the check.
 set -eu
 
-suite=trixie deb=0 keep=0 quiet=0 refresh=0
+suite=trixie deb=0 keep=0 quiet=0 refresh=0 cross=
 cache=/var/cache/skinplay-fresh mirror=http://deb.debian.org/debian
 repo=$(cd "$(dirname "$0")/.." && pwd)
 for a in "$@"; do
 	case $a in
 	--suite=*) suite=${a#*=} ;;
 	--deb) deb=1 ;;
+	--cross=*) cross=${a#*=} ;;
 	--keep) keep=1 ;;
 	--quiet) quiet=1 ;;
 	--refresh) refresh=1 ;;
@@ -78,6 +84,7 @@ for c in debootstrap unshare chroot; do
 	command -v $c >/dev/null 2>&1 || die "needs $c (apt-get install debootstrap util-linux)"
 done
 case $suite in bookworm|trixie) ;; *) die "--suite is bookworm or trixie, got '$suite'" ;; esac
+[ -z "$cross" ] || [ -f "$repo/board/$cross/board.mk" ] || die "--cross: no board/$cross/board.mk"
 git -C "$repo" rev-parse HEAD >/dev/null 2>&1 || die "$repo is not a git clone"
 
 mkdir -p "$cache"
@@ -140,8 +147,9 @@ if [ "$deb" = 1 ]; then
 	done
 	pkg=$(basename "$work/package-upper/root/"skinplay_*.deb)
 	say "$pkg: $(du -k "$work/package-upper/root/$pkg" | cut -f1) KiB"
-	# the file list of the untouched system, to compare after the purge
-	list='find / -xdev \( -path /proc -o -path /sys -o -path /dev -o -path /root -o -path /tmp -o -path /var/cache \
+	# the file list of the untouched system, to compare after the purge (/run
+	# is a tmpfs on a booted system)
+	list='find / -xdev \( -path /proc -o -path /sys -o -path /dev -o -path /root -o -path /tmp -o -path /run -o -path /var/cache \
 		-o -path /var/lib/apt -o -path /var/lib/dpkg -o -path /var/log -o -path /src \) -prune -o -print | sort'
 	step package "package-install" "apt-get update -qq && $list > /root/before.txt &&
 		DEBIAN_FRONTEND=noninteractive apt-get install -y -qq ./root/$pkg >/dev/null &&
@@ -164,5 +172,10 @@ if [ "$deb" = 1 ]; then
 		if [ -s /root/orphans.txt ]; then echo 'left behind:'; cat /root/orphans.txt; exit 1; fi;
 		! dpkg-query -W skinplay >/dev/null 2>&1 &&
 		echo \"package: purged, nothing left behind (\$(wc -l < /root/files.txt) paths were the package's)\""
+fi
+if [ -n "$cross" ]; then
+	step build "cross-$cross-deps" "cd /root/work/main && make deps BOARD=$cross"
+	step build "cross-$cross-test" "cd /root/work/main && make BOARD=$cross test"
+	step build "cross-$cross-deb" "cd /root/work/main && make BOARD=$cross deb"
 fi
 say "all steps passed"
