@@ -61,6 +61,10 @@ if [ -n "${inside:-}" ]; then
 		cp -a "$cache/$suite/." "$root/"
 	fi
 	mount -t proc proc "$root/proc"
+	# a cross board's tests run its programs through the host's qemu entry
+	if [ -e /proc/sys/fs/binfmt_misc/register ]; then
+		mount -t binfmt_misc binfmt_misc "$root/proc/sys/fs/binfmt_misc" 2>/dev/null || true
+	fi
 	mount --rbind /dev "$root/dev"
 	mount -t tmpfs -o mode=1777 tmpfs "$root/dev/shm"
 	mount --rbind /sys "$root/sys"

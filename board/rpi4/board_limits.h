@@ -24,6 +24,6 @@
 
 /* board.ini (app/board_config.h): path length and A/B image slots. */
 #define SKP_MAX_PATH  256
-#define SKP_MAX_SLOTS   2
+#define SKP_MAX_SLOTS   3
 
 #endif
