@@ -22,7 +22,7 @@
 #define SKP_IMAGE_RING_BLOCKS    4
 #define SKP_IMAGE_MAX_CLIPS     64
 
-/* board.ini (app/board_config.h): path length and A/B image slots. */
+/* board.ini (app/board_config.h): path length; image slots (A, B, the demo). */
 #define SKP_MAX_PATH  256
 #define SKP_MAX_SLOTS   3
 
