@@ -17,6 +17,8 @@ ifeq ($(BOARD_KIND),mcu)
 include tests/embedded/mcu.mk
 else
 
+include app/sources.mk
+
 ifeq ($(SANITIZE),1)
   SAN_FLAGS := -fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=undefined
   OUT       := $(BUILD)/san
@@ -26,59 +28,74 @@ else
 endif
 
 # SIMD kernels chosen at build time (board.mk sets SIMD; `make SIMD=scalar`
-# builds the portable path only).
-ifeq ($(SIMD),avx2)
-  SIMD_DEFS  := -DSKP_SIMD_AVX2
-  SIMD_FLAGS := -mavx2 -mfma
-endif
-# NEON is part of AArch64: no flags, only the kernels (app/skin_neon.c).
-ifeq ($(SIMD),neon)
-  SIMD_DEFS  := -DSKP_SIMD_NEON
-endif
+# builds the portable path only). NEON is part of AArch64: no flags.
+SIMD_DEFS_avx2  := -DSKP_SIMD_AVX2
+SIMD_FLAGS_avx2 := -mavx2 -mfma
+SIMD_DEFS_neon  := -DSKP_SIMD_NEON
+SIMD_DEFS  := $(SIMD_DEFS_$(SIMD))
+SIMD_FLAGS := $(SIMD_FLAGS_$(SIMD))
 
 # pkg-config for the board's architecture (board.mk may set a cross one).
 PKG_CONFIG ?= pkg-config
 WARN     := -Wall -Wextra -Werror -Wshadow -Wstrict-prototypes -Wvla
-# Display backends and PNG files in platform/. No GL library is linked (see
-# app/gl_api.h): EGL hands out the entry points and OSMesa is dlopen()ed.
-DISPLAY_PC     := egl gbm libdrm x11 libpng libgpiod
-DISPLAY_CFLAGS := $(shell $(PKG_CONFIG) --cflags $(DISPLAY_PC) 2>/dev/null)
-DISPLAY_LIBS   := $(shell $(PKG_CONFIG) --libs $(DISPLAY_PC) 2>/dev/null) -ldl
+# The board's backends (board.mk: DISPLAYS, INPUTS) and their libraries. No
+# GL library is linked (app/render/gl_api.h): EGL hands out the entry
+# points and OSMesa is dlopen()ed.
+PLAT_PC     := $(sort $(foreach d,$(DISPLAYS),$(PC_display_$(d))) $(foreach i,$(INPUTS),$(PC_input_$(i))) $(PC_platform))
+PLAT_CFLAGS := $(shell $(PKG_CONFIG) --cflags $(PLAT_PC) 2>/dev/null)
+PLAT_LIBS   := $(shell $(PKG_CONFIG) --libs $(PLAT_PC) 2>/dev/null) $(if $(filter osmesa,$(DISPLAYS)),-ldl)
 # libgpiod's API changed at 2.0: one seam file per API, by the library's
 # pkg-config version (1.6 on Debian 12 / Pi OS bookworm, 2.x on trixie).
 GPIOD_API := $(if $(filter 0 1,$(firstword $(subst ., ,$(shell $(PKG_CONFIG) --modversion libgpiod 2>/dev/null)))),1,2)
-CPPFLAGS := -Iapp -Iboard/$(BOARD) $(SIMD_DEFS) -MMD -MP
-CFLAGS_APP  := -std=c11 $(WARN) $(BOARD_CFLAGS) $(SAN_FLAGS) $(EXTRA_CFLAGS)
-# Platform code talks to Linux and POSIX APIs, so it may use GNU extensions.
-CFLAGS_PLAT := -std=gnu11 $(WARN) $(BOARD_CFLAGS) $(SAN_FLAGS) $(DISPLAY_CFLAGS) -DSKP_GPIOD_API=$(GPIOD_API) $(EXTRA_CFLAGS)
+BACKEND_DEFS := $(foreach d,$(DISPLAYS),-DSKP_DISPLAY_$(d)) $(foreach i,$(INPUTS),-DSKP_INPUT_$(i)) \
+                -DSKP_GPIOD_API=$(GPIOD_API)
+CPPFLAGS    := -Iboard/$(BOARD) $(SIMD_DEFS) -MMD -MP
+CFLAGS_CORE := -std=c11 $(WARN) $(BOARD_CFLAGS) $(SAN_FLAGS) $(EXTRA_CFLAGS)
+# Host code (platform, programs) talks to Linux and POSIX, so it may use
+# GNU extensions.
+CFLAGS_HOST := -std=gnu11 $(WARN) $(BOARD_CFLAGS) $(SAN_FLAGS) $(PLAT_CFLAGS) $(BACKEND_DEFS) $(EXTRA_CFLAGS)
 LDFLAGS  := $(SAN_FLAGS) $(EXTRA_LDFLAGS)
-LDLIBS   := -lm -pthread $(DISPLAY_LIBS)
+LDLIBS   := -lm -pthread $(PLAT_LIBS)
 
-# app/: the front ends (skintool*, skinplay*, and cli_* shared by both) may
-# use stdio and platform/; the portable core may not.
-CLI_SRC     := $(wildcard app/cli_*.c)
-FRONT_SRC   := $(wildcard app/skintool*.c app/skinplay*.c) $(CLI_SRC)
-CORE_SRC    := $(filter-out $(FRONT_SRC),$(wildcard app/*.c))
-PLAT_SRC    := $(filter-out platform/input_gpiod%.c,$(wildcard platform/*.c)) platform/input_gpiod$(GPIOD_API).c
-TOOL_SRC    := $(wildcard app/skintool*.c) $(CLI_SRC)
-PLAY_SRC    := $(wildcard app/skinplay*.c) $(CLI_SRC)
+# Include paths: a module sees its own folders and those of DEPS_<module>;
+# platform code sees base and the port headers' modules; the programs see
+# the platform too (app/sources.mk).
+PLAT_INC  := $(addprefix -Iplatform/,$(PLATFORM_DIRS))
+mod_inc    = $(foreach m,$(1) $(DEPS_$(1)),$(if $(filter platform,$(m)),$(PLAT_INC),-Iapp/$(m) \
+               $(addprefix -Iapp/$(m)/,$(if $(filter $(1),$(m)),$(PRIVATE_$(m))))))
+mod_src    = $(wildcard app/$(1)/*.c) $(foreach d,$(PRIVATE_$(1)),$(wildcard app/$(1)/$(d)/*.c))
+SRC_skin  := $(wildcard app/skin/*.c) $(KERNELS_$(SIMD):%=app/skin/kernels/%.c)
+$(foreach m,$(filter-out skin,$(APP_MODULES)),$(eval SRC_$(m) := $(call mod_src,$(m))))
+$(foreach m,$(APP_MODULES),$(eval OBJ_$(m) := $(SRC_$(m):%.c=$$(OUT)/%.o)))
+$(foreach m,$(CORE_MODULES),$(eval $(OBJ_$(m)): MOD_FLAGS = $(call mod_inc,$(m)) $$(CFLAGS_CORE)))
+$(foreach m,$(HOST_MODULES),$(eval $(OBJ_$(m)): MOD_FLAGS = $(call mod_inc,$(m)) $$(CFLAGS_HOST)))
+
+PLAT_SRC := platform/display/display.c platform/display/display_common.c \
+            $(if $(filter-out osmesa,$(DISPLAYS)),platform/display/display_egl.c) \
+            $(DISPLAYS:%=platform/display/display_%.c) \
+            platform/input/input.c $(INPUTS:%=platform/input/input_%.c) \
+            $(if $(filter gpio,$(INPUTS)),platform/input/input_gpiod$(GPIOD_API).c) \
+            $(wildcard platform/storage/*.c platform/sys/*.c)
+PLAT_OBJ := $(PLAT_SRC:%.c=$(OUT)/%.o)
+$(PLAT_OBJ): MOD_FLAGS = $(foreach m,$(DEPS_platform),-Iapp/$(m)) $(PLAT_INC) $(CFLAGS_HOST)
+
+CORE_OBJ := $(foreach m,$(CORE_MODULES),$(OBJ_$(m)))
+FIXED_OBJ := $(FIXED_SRC:%.c=$(OUT)/%.o) $(if $(filter avx2,$(SIMD)),$(OUT)/app/skin/kernels/skin_fixed_avx2.o)
+APP_OBJ  := $(foreach m,$(APP_MODULES),$(OBJ_$(m)))
+
+# Libraries per layer: skinplay links core + cli + platform; skintool adds
+# analysis and its report code.
+CORE_LIB     := $(OUT)/libskp_core.a
+CLI_LIB      := $(OUT)/libskp_cli.a
+ANALYSIS_LIB := $(OUT)/libskp_analysis.a
+PLAT_LIB     := $(OUT)/libskp_platform.a
+SKINTOOL     := $(OUT)/skintool
+SKINPLAY     := $(OUT)/skinplay
+
 UNIT_SRC    := $(wildcard tests/unit/test_*.c tests/integration/test_*.c)
 TESTLIB_SRC := $(wildcard tests/support/*.c)
-
-CORE_OBJ    := $(CORE_SRC:%.c=$(OUT)/%.o)
-# The fixed-point skinning path: proven free of floating point by `make test`.
-FIXED_SRC   := app/fixed.c app/skin_fixed.c
-FIXED_OBJ   := $(OUT)/app/fixed.o $(OUT)/app/skin_fixed.o $(OUT)/app/skin_fixed_avx2.o
-PLAT_OBJ    := $(PLAT_SRC:%.c=$(OUT)/%.o)
-TOOL_OBJ    := $(TOOL_SRC:%.c=$(OUT)/%.o)
-PLAY_OBJ    := $(PLAY_SRC:%.c=$(OUT)/%.o)
 TESTLIB_OBJ := $(TESTLIB_SRC:tests/%.c=$(OUT)/tests/%.o)
 UNIT_BIN    := $(addprefix $(OUT)/tests/,$(basename $(notdir $(UNIT_SRC))))
-
-CORE_LIB := $(OUT)/libskp.a
-PLAT_LIB := $(OUT)/libskp_platform.a
-SKINTOOL := $(OUT)/skintool
-SKINPLAY := $(OUT)/skinplay
 
 # Demo assets: the skeleton is authored text; the motion is generated by a
 # host program so that it can be tuned as code.
@@ -89,7 +106,7 @@ DEMO_AMC := $(OUT)/assets/demo.amc
 CMOCKA_CFLAGS = $(shell $(PKG_CONFIG) --cflags cmocka 2>/dev/null)
 CMOCKA_LIBS   = $(shell $(PKG_CONFIG) --libs cmocka 2>/dev/null || echo -lcmocka)
 
-.PHONY: all test run size install clean help check-core
+.PHONY: all test run size install clean help check-core check-layers
 all: $(SKINTOOL) $(SKINPLAY) $(DEMO_AMC)
 
 $(OUT)/assets/demo_motion: assets/demo_motion.c
@@ -98,30 +115,29 @@ $(OUT)/assets/demo_motion: assets/demo_motion.c
 $(DEMO_AMC): $(OUT)/assets/demo_motion
 	$< > $@.tmp && mv $@.tmp $@
 
-# Objects depend on the flags they were built with, so switching SIMD or
-# board flags rebuilds them.
+# Objects depend on the flags they were built with, so switching SIMD,
+# backends or board flags rebuilds them.
 FLAGS_STAMP := $(OUT)/flags.stamp
-FLAGS_NOW   := $(CC) $(CPPFLAGS) $(CFLAGS_APP) $(CFLAGS_PLAT) $(SIMD_FLAGS)
+FLAGS_NOW   := $(CC) $(CPPFLAGS) $(CFLAGS_CORE) $(CFLAGS_HOST) $(SIMD_FLAGS) $(DISPLAYS) $(INPUTS)
 ifneq ($(strip $(shell cat $(FLAGS_STAMP) 2>/dev/null)),$(strip $(FLAGS_NOW)))
   $(shell mkdir -p $(OUT) && echo '$(FLAGS_NOW)' > $(FLAGS_STAMP))
 endif
-$(CORE_OBJ) $(PLAT_OBJ) $(FRONT_SRC:%.c=$(OUT)/%.o): $(FLAGS_STAMP)
+$(APP_OBJ) $(PLAT_OBJ): $(FLAGS_STAMP)
 
 $(OUT)/app/%.o: app/%.c
 	@mkdir -p $(@D)
-	$(CC) $(CPPFLAGS) $(CFLAGS_APP) -c $< -o $@
-
-$(OUT)/app/skin_avx2.o $(OUT)/app/skin_fixed_avx2.o: CFLAGS_APP += $(SIMD_FLAGS)
-
-# Front ends see the platform headers and POSIX.
-$(FRONT_SRC:%.c=$(OUT)/%.o): $(OUT)/app/%.o: app/%.c
+	$(CC) $(CPPFLAGS) $(MOD_FLAGS) -c $< -o $@
+$(OUT)/platform/%.o: platform/%.c
 	@mkdir -p $(@D)
-	$(CC) $(CPPFLAGS) -Iplatform -I$(OUT)/gen $(CFLAGS_PLAT) -c $< -o $@
+	$(CC) $(CPPFLAGS) $(MOD_FLAGS) -c $< -o $@
+
+$(OUT)/app/skin/kernels/skin_avx2.o $(OUT)/app/skin/kernels/skin_fixed_avx2.o: CPPFLAGS += $(SIMD_FLAGS)
 
 # --version: rewritten only when its text changes, so a new commit rebuilds
 # one object.
 VERSION_H := $(OUT)/gen/skp_version.h
-$(OUT)/app/cli_version.o: $(VERSION_H)
+$(OUT)/app/cli/cli_version.o: $(VERSION_H)
+$(OUT)/app/cli/cli_version.o: CPPFLAGS += -I$(OUT)/gen
 $(VERSION_H): FORCE
 	@mkdir -p $(@D)
 	@printf '#define SKP_VERSION "%s"\n#define SKP_GIT_REV "%s"\n#define SKP_BOARD "%s"\n' \
@@ -130,11 +146,9 @@ $(VERSION_H): FORCE
 .PHONY: FORCE
 FORCE:
 
-$(OUT)/platform/%.o: platform/%.c
-	@mkdir -p $(@D)
-	$(CC) $(CPPFLAGS) -Iplatform $(CFLAGS_PLAT) -c $< -o $@
-
-TEST_CFLAGS = $(CPPFLAGS) -Iplatform -Itests/support $(CMOCKA_CFLAGS) $(CFLAGS_PLAT)
+# Tests see everything, privates included: they are white-box.
+TEST_INC    := $(foreach m,$(APP_MODULES),$(call mod_inc,$(m))) $(PLAT_INC) -Iplatform/display -Itests/support
+TEST_CFLAGS  = $(CPPFLAGS) $(sort $(TEST_INC)) $(CMOCKA_CFLAGS) $(CFLAGS_HOST)
 $(OUT)/tests/obj/%.o: tests/unit/%.c
 	@mkdir -p $(@D)
 	$(CC) $(TEST_CFLAGS) -c $< -o $@
@@ -146,31 +160,36 @@ $(OUT)/tests/support/%.o: tests/support/%.c
 	$(CC) $(TEST_CFLAGS) -c $< -o $@
 
 $(CORE_LIB): $(CORE_OBJ)
-	@mkdir -p $(@D)
-	rm -f $@ && $(AR) rcs $@ $^
-
+$(CLI_LIB): $(OBJ_cli)
+$(ANALYSIS_LIB): $(OBJ_analysis)
 $(PLAT_LIB): $(PLAT_OBJ)
+$(CORE_LIB) $(CLI_LIB) $(ANALYSIS_LIB) $(PLAT_LIB):
 	@mkdir -p $(@D)
 	rm -f $@ && $(AR) rcs $@ $^
 
-$(SKINTOOL): $(TOOL_OBJ) $(PLAT_LIB) $(CORE_LIB)
+$(SKINPLAY): $(OBJ_skinplay) $(CLI_LIB) $(PLAT_LIB) $(CORE_LIB)
+	$(CC) $(LDFLAGS) -o $@ $^ $(LDLIBS)
+$(SKINTOOL): $(OBJ_skintool) $(CLI_LIB) $(ANALYSIS_LIB) $(PLAT_LIB) $(CORE_LIB)
 	$(CC) $(LDFLAGS) -o $@ $^ $(LDLIBS)
 
-$(SKINPLAY): $(PLAY_OBJ) $(PLAT_LIB) $(CORE_LIB)
-	$(CC) $(LDFLAGS) -o $@ $^ $(LDLIBS)
-
-$(OUT)/tests/%: $(OUT)/tests/obj/%.o $(TESTLIB_OBJ) $(PLAT_LIB) $(CORE_LIB)
+# Test programs link every library.
+$(OUT)/tests/%: $(OUT)/tests/obj/%.o $(TESTLIB_OBJ) $(CLI_LIB) $(ANALYSIS_LIB) $(PLAT_LIB) $(CORE_LIB)
 	@mkdir -p $(@D)
 	$(CC) $(LDFLAGS) -o $@ $^ $(CMOCKA_LIBS) $(LDLIBS)
 
-# app/ core objects must not allocate or do stdio: the runtime is fixed-memory.
+# The core must not allocate or do stdio (the runtime is fixed-memory), the
+# fixed-point path has no floating point, and no module includes above its
+# layer.
 check-core: $(CORE_OBJ)
 	@sh tests/check_core_symbols.sh $(CORE_OBJ)
-	@for f in $(FIXED_SRC); do sh tests/check_fixed_integer.sh $(CC) -Iapp -Iboard/$(BOARD) $$f || exit 1; done
+	@for f in $(FIXED_SRC); do sh tests/check_fixed_integer.sh $(CC) $(call mod_inc,skin) -Iboard/$(BOARD) $$f || exit 1; done
 	@sh tests/check_simd_integer.sh $(FIXED_OBJ)
+check-layers:
+	@sh tests/check_layers.sh "$(CC) -Iboard/$(BOARD) $(CFLAGS_CORE)" \
+	  "$(foreach m,$(APP_MODULES),$(m)=$(DEPS_$(m)))" "$(DEPS_platform)" "$(PORT_HEADERS)" "$(PLATFORM_DIRS)"
 
 test: deps
-	@$(MAKE) --no-print-directory all $(UNIT_BIN) check-core
+	@$(MAKE) --no-print-directory all $(UNIT_BIN) check-core check-layers
 	@$(TEST_WRAP) sh tests/run_tests.sh $(OUT) $(UNIT_BIN)
 
 # On a console or desktop: the demo on the display. Without one: headless,
@@ -252,6 +271,6 @@ include tests/hardening.mk
 # deb
 include platform/debian/deb.mk
 
--include $(CORE_OBJ:.o=.d) $(PLAT_OBJ:.o=.d) $(FRONT_SRC:%.c=$(OUT)/%.d) $(TESTLIB_OBJ:.o=.d) $(UNIT_BIN:$(OUT)/tests/%=$(OUT)/tests/obj/%.d)
+-include $(APP_OBJ:.o=.d) $(PLAT_OBJ:.o=.d) $(TESTLIB_OBJ:.o=.d) $(UNIT_BIN:$(OUT)/tests/%=$(OUT)/tests/obj/%.d)
 
 endif # BOARD_KIND != mcu

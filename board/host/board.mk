@@ -3,6 +3,9 @@ BOARD_DESC    := x86-64 Debian 12 or 13 (desktop, headless, CI)
 CC            ?= cc
 BOARD_CFLAGS  := -O2 -g
 DEB_ARCH      := amd64
+# Backends (app/sources.mk): every display for development and CI.
+DISPLAYS      := surfaceless osmesa kms x11
+INPUTS        := gpio keyboard script
 # Skinning kernels: avx2 (AVX2+FMA, any x86-64 since 2013) or scalar.
 SIMD          ?= avx2
 # Debian packages `make deps` installs (board/deps.mk): compiler, libraries,

@@ -11,11 +11,14 @@ SIZE          := $(CROSS_COMPILE)size
 STRIP         := $(CROSS_COMPILE)strip
 DEB_ARCH      := arm64
 BOARD_CFLAGS  := -O2 -g -mcpu=cortex-a72
+# Backends (app/sources.mk): the kiosk's screen (kms) and headless runs;
+# no X11 and no OSMesa, so neither library is needed on the Pi.
+DISPLAYS      := kms surfaceless
+INPUTS        := gpio keyboard script
 # No AVX2 on ARM: NEON float kernels (app/skin_neon.c), or SIMD=scalar.
 SIMD          ?= neon
 # Debian packages `make deps` installs (board/deps.mk), building on the Pi.
-LIB_PKGS      := libcmocka-dev libegl-dev libgles-dev libosmesa6-dev libgbm-dev libdrm-dev \
-                 libgpiod-dev libpng-dev libx11-dev
+LIB_PKGS      := libcmocka-dev libegl-dev libgles-dev libgbm-dev libdrm-dev libgpiod-dev libpng-dev
 DEB_PKGS      := gcc libc6-dev make pkg-config $(LIB_PKGS) dpkg-dev help2man lintian
 
 # Cross build from another architecture (Debian 12 x86-64): the compiler,

@@ -21,6 +21,7 @@
 #include "crc32.h"
 #include "file_reader.h"
 #include "image_play.h"
+#include "cli_show.h"
 #include "storage_file.h"
 #include "test_clips.h"
 #include "test_parse.h"
@@ -100,7 +101,7 @@ static void compare_clip(const char *image, const char *asf_path, const char *am
 	static amc_frame want, got;
 	skp_error err;
 	assert_int_equal(test_parse_asf_file(asf_path, &s, &err), SKP_OK);
-	assert_int_equal(storage_file_open_image(&sf, image), 0);
+	assert_int_equal(show_storage_open(&sf, image), 0);
 	assert_int_equal(skp_image_open(&im, &sf.bd, &err), SKP_OK);
 	assert_int_equal(skp_image_load_skel(&im, &s2, &err), SKP_OK);
 	assert_int_equal(s2.count, s.count);
@@ -297,7 +298,7 @@ static void test_skinplay_holds_over_a_bad_block(void **state)
 	static skp_image im;
 	static storage_file sf;
 	skp_error err;
-	assert_int_equal(storage_file_open_image(&sf, image), 0);
+	assert_int_equal(show_storage_open(&sf, image), 0);
 	assert_int_equal(skp_image_open(&im, &sf.bd, &err), SKP_OK);
 	long block = (long)im.clip[0].frames_first + 2;
 	storage_file_close(&sf);

@@ -19,6 +19,9 @@
 
 #include "input.h"
 
+/* the backends themselves, not only through input_find() */
+extern const input_backend input_gpio, input_keyboard, input_script, input_none;
+
 /* The fake chip: one pipe per requested line. */
 typedef struct fake_line {
 	unsigned int offset;
@@ -156,10 +159,9 @@ static void test_gpio_requests_lines_with_flags(void **state)
 	assert_int_equal(fake.line[0].flags, INPUT_GPIO_ACTIVE_LOW | INPUT_GPIO_PULL_UP);
 	assert_int_equal(fake.line[2].offset, 22);
 	assert_int_equal(fake.line[2].flags, INPUT_GPIO_BIAS_DISABLE);
-	struct pollfd p[INPUT_MAX_FDS];
+	int p[INPUT_MAX_FDS];
 	assert_int_equal(input_gpio.fds(p, INPUT_MAX_FDS), 3);
-	assert_int_equal(p[1].fd, fake.line[1].pipe[0]);
-	assert_int_equal(p[1].events, POLLIN);
+	assert_int_equal(p[1], fake.line[1].pipe[0]);
 	input_gpio.shutdown();
 	assert_true(fake.line[0].released && fake.line[2].released);
 	assert_false(fake.chip_open);
@@ -341,7 +343,7 @@ static void test_find_backends(void **state)
 	assert_null(input_find("mouse", &arg));
 	/* keyboard without a terminal: no fds, no events, no error */
 	skp_error err;
-	struct pollfd p[1];
+	int p[1];
 	player_event ev[4];
 	if (!isatty(STDIN_FILENO)) {
 		assert_int_equal(input_keyboard.init(&board, NULL, 0, &err), 0);

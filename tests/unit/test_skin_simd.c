@@ -12,7 +12,7 @@
 #include <string.h>
 
 #include "fixed_convert.h"
-#include "skin.h"
+#include "skin_kernels.h"
 
 #define N 1003
 

@@ -17,6 +17,7 @@
 #include "image_play.h"
 #include "image_write.h"
 #include "storage_faulty.h"
+#include "cli_show.h"
 #include "storage_file.h"
 #include "test_parse.h"
 #include "test_paths.h"
@@ -84,7 +85,7 @@ static int teardown(void **state)
 /* Opens the file under the faulty wrapper (no faults yet). */
 static void open_faulty(void)
 {
-	assert_int_equal(storage_file_open_image(&sf, path), 0);
+	assert_int_equal(show_storage_open(&sf, path), 0);
 	assert_int_equal(sf.bd.block_size, BS);
 	storage_faulty_init(&fy, &sf.bd);
 }

@@ -1,0 +1,171 @@
+#include "cli_bind_args.h"
+
+#include <stdio.h>
+#include <string.h>
+
+#include "cli_common.h"
+#include "cli_mesh_io.h"
+#include "cli_weights.h"
+#include "clock.h"
+#include "mannequin.h"
+#include "text_tokens.h"
+
+void bind_args_init(bind_args *a)
+{
+	memset(a, 0, sizeof *a);
+	a->pose_frame = -1;
+	a->balance = -1;
+}
+
+/* P.amc:F -> path P.amc, frame F. A colon not followed by digits only is
+ * part of the path. */
+static int split_pose(bind_args *a, const char *spec)
+{
+	size_t n = strlen(spec);
+	if (n == 0 || n >= sizeof a->pose_buf) {
+		fprintf(stderr, "skintool: --bind-pose: bad file name '%s'\n", spec);
+		return -1;
+	}
+	memcpy(a->pose_buf, spec, n + 1);
+	a->pose_path = a->pose_buf;
+	a->pose_frame = -1;
+	char *colon = strrchr(a->pose_buf, ':');
+	if (!colon || colon == a->pose_buf || !colon[1])
+		return 0;
+	for (const char *c = colon + 1; *c; c++)
+		if (*c < '0' || *c > '9')
+			return 0;
+	*colon = '\0';
+	return cli_parse_long("--bind-pose", colon + 1, &a->pose_frame);
+}
+
+int bind_args_parse(bind_args *a, int argc, char **argv, int *i)
+{
+	const char *opt = argv[*i], *val;
+	if (strcmp(opt, "--fit") == 0) {
+		a->fit = 1;
+		return 1;
+	}
+	if (strcmp(opt, "--balance") == 0) {
+		if (!(val = cli_option_value("skintool", opt, argc, argv, i)))
+			return -1;
+		if (strcmp(val, "on") != 0 && strcmp(val, "off") != 0) {
+			fprintf(stderr, "skintool: --balance: expected on or off, got '%s'\n", val);
+			return -1;
+		}
+		a->balance = strcmp(val, "on") == 0;
+		return 1;
+	}
+	if (strcmp(opt, "--group") == 0) {
+		if (!(val = cli_option_value("skintool", opt, argc, argv, i)))
+			return -1;
+		a->group = val;
+		return 1;
+	}
+	if (strcmp(opt, "--weights") == 0) {
+		if (!(val = cli_option_value("skintool", opt, argc, argv, i)))
+			return -1;
+		a->weights_path = val;
+		return 1;
+	}
+	if (strcmp(opt, "--bind-pose") == 0) {
+		if (!(val = cli_option_value("skintool", opt, argc, argv, i)))
+			return -1;
+		return split_pose(a, val) < 0 ? -1 : 1;
+	}
+	return 0;
+}
+
+/* Poses body->skel in the requested frame, or the rest pose. */
+static int load_pose(const bind_args *a, bound_body *body)
+{
+	static amc_frame f;
+
+	body->pose_frame = -1;
+	memset(body->pose_value, 0, sizeof body->pose_value);
+	if (!a->pose_path) {
+		fk_pose(&body->skel, NULL, &body->pose);
+		return 0;
+	}
+	if (cli_read_frame(a->pose_path, &body->skel, a->pose_frame, &f) < 0)
+		return -1;
+	memcpy(body->pose_value, f.value, sizeof body->pose_value);
+	fk_pose(&body->skel, f.value, &body->pose);
+	body->pose_frame = f.number;
+	return 0;
+}
+
+static int fit_mesh(const char *obj, bound_body *body)
+{
+	skp_error err;
+	mesh *m = &body->mesh;
+	if (bind_fit(m->pos, m->vert_count, &body->skel, &body->pose, &body->fit, &err) != SKP_OK) {
+		fprintf(stderr, "%s: --fit: %s\n", obj, err.msg);
+		return -1;
+	}
+	body->fitted = 1;
+	return 0;
+}
+
+/* generated: the body is the generated one, where balancing is measured */
+static int auto_weights(const bind_args *a, int generated, const char *obj, bound_body *body)
+{
+	static bind_balance_work work;
+	skp_error err;
+	const mesh *m = &body->mesh;
+	uint64_t t0 = clock_now_ns();
+	bind_prepare(&body->rig, &body->skel, &body->pose, NULL);
+	skp_status rc = bind_weights(&body->rig, m->pos, m->vert_count, &body->weights, &body->info, &err);
+	body->balanced = rc == SKP_OK && (a->balance < 0 ? generated : a->balance);
+	if (body->balanced)
+		rc = bind_balance(&body->skel, &body->pose, m->pos, m->vert_count,
+				  (const uint32_t (*)[3])m->tri, m->tri_count, &body->weights,
+				  &work, &body->balance, &err);
+	body->bind_ns = clock_now_ns() - t0;
+	if (rc != SKP_OK) {
+		fprintf(stderr, "%s: bind: %s\n", obj, err.msg);
+		return -1;
+	}
+	body->automatic = 1;
+	return 0;
+}
+
+/* No mesh given: the generated body around the rest pose, which is then
+ * also the bind pose. */
+static int generate_body(const bind_args *a, const char *asf, bound_body *body)
+{
+	static manq_work work;
+	skp_error err;
+	if (a->pose_path || a->fit || a->group || a->weights_path) {
+		fprintf(stderr, "%s: --bind-pose, --fit, --group and --weights need a mesh\n", asf);
+		return -1;
+	}
+	if (manq_build(&body->skel, 0, &work, &body->mesh, &err) != SKP_OK) {
+		fprintf(stderr, "%s: generated body: %s\n", asf, err.msg);
+		return -1;
+	}
+	return 0;
+}
+
+int bind_args_load(const bind_args *a, const char *asf, const char *obj, bound_body *body)
+{
+	body->fitted = 0;
+	body->automatic = 0;
+	if (cli_load_skel(asf, &body->skel) < 0 || load_pose(a, body) < 0)
+		return -1;
+	if (!obj)
+		return generate_body(a, asf, body) < 0 ? -1 : auto_weights(a, 1, asf, body);
+	if (!cli_load_obj(obj, a->group, &body->mesh))
+		return -1;
+	if (body->mesh.vert_count == 0) {
+		fprintf(stderr, "%s: no vertices%s%s\n", obj, a->group ? " in group " : "",
+			a->group ? a->group : "");
+		return -1;
+	}
+	if (a->fit && fit_mesh(obj, body) < 0)
+		return -1;
+	if (a->weights_path)
+		return cli_load_weights(a->weights_path, &body->skel, body->mesh.vert_count,
+					 &body->weights);
+	return auto_weights(a, cli_obj_is_generated(obj), obj, body);
+}

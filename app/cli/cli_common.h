@@ -1,0 +1,47 @@
+/* Shared by the skintool commands: loading inputs and reporting errors as
+ * FILE:LINE: message on stderr. */
+#ifndef CLI_COMMON_H
+#define CLI_COMMON_H
+
+#include "amc.h"
+#include "file_reader.h"
+#include "skel.h"
+#include "skp_error.h"
+#include "text_lines.h"
+
+/* Prints "FILE:LINE: message" (or "FILE: message" without a line). */
+void cli_error(const char *path, const skp_error *err);
+
+/* Loads an ASF; on failure reports and returns -1. */
+int cli_load_skel(const char *path, skel *out);
+
+/* An AMC opened for streaming against s. */
+typedef struct cli_motion {
+	const char *path;
+	file_reader file;
+	text_lines lines;
+	amc_stream stream;
+} cli_motion;
+
+int cli_motion_open(cli_motion *m, const char *path, const skel *s);
+/* 1 frame, 0 end, -1 error (already reported). */
+int cli_motion_next(cli_motion *m, amc_frame *f);
+void cli_motion_close(cli_motion *m);
+
+/* Reads frame number (as written in the file; < 0: the first frame) of the
+ * AMC at path into f. Returns 0, or -1 after reporting the error (naming
+ * the frames the file has when number is not one of them). */
+int cli_read_frame(const char *path, const skel *s, long number, amc_frame *f);
+
+/* argv[*i + 1], advancing *i; NULL after reporting "CMD: OPT needs a
+ * value" when the command line ends there. */
+const char *cli_option_value(const char *cmd, const char *opt, int argc, char **argv, int *i);
+
+/* Puts arg into the first of the n slots still NULL; -1 after reporting
+ * "CMD: unexpected argument" when every slot is taken. */
+int cli_take_positional(const char *cmd, const char **const *slots, int n, const char *arg);
+
+/* Parses a whole decimal integer argument; -1 (reported) when it is not. */
+int cli_parse_long(const char *opt, const char *text, long *out);
+
+#endif

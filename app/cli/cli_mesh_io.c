@@ -1,0 +1,73 @@
+#include "cli_mesh_io.h"
+
+#include <errno.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "cli_common.h"
+#include "file_reader.h"
+
+const obj_work *cli_load_obj(const char *path, const char *group, mesh *out)
+{
+	static obj_work work;
+	static file_reader fr;
+	static text_lines tl;
+	obj_options opt = { group, 0, 0 };
+	skp_error err;
+
+	int rc = file_reader_open(&fr, path);
+	if (rc < 0) {
+		fprintf(stderr, "%s: cannot open: %s\n", path, strerror(-rc));
+		return NULL;
+	}
+	text_lines_init(&tl, file_reader_as_reader(&fr));
+	skp_status st = obj_parse(out, &work, &tl, &opt, &err);
+	file_reader_close(&fr);
+	if (st != SKP_OK) {
+		cli_error(path, &err);
+		return NULL;
+	}
+	return &work;
+}
+
+static void write_body(FILE *f, const mesh *m, const char *what)
+{
+	fprintf(f, "# %s: %d vertices, %d triangles\n", what, m->vert_count, m->tri_count);
+	for (int i = 0; i < m->vert_count; i++)
+		fprintf(f, "v %.9g %.9g %.9g\n", m->pos[i].x, m->pos[i].y, m->pos[i].z);
+	for (int i = 0; i < m->vert_count; i++)
+		fprintf(f, "vn %.6g %.6g %.6g\n", m->normal[i].x, m->normal[i].y, m->normal[i].z);
+	for (int t = 0; t < m->tri_count; t++) {
+		unsigned long a = m->tri[t][0] + 1UL, b = m->tri[t][1] + 1UL, c = m->tri[t][2] + 1UL;
+		fprintf(f, "f %lu//%lu %lu//%lu %lu//%lu\n", a, a, b, b, c, c);
+	}
+}
+
+int mesh_write_obj(const char *path, const mesh *m, const char *what)
+{
+	FILE *f = fopen(path, "w");
+	if (!f) {
+		fprintf(stderr, "%s: cannot create: %s\n", path, strerror(errno));
+		return -1;
+	}
+	write_body(f, m, what ? what : "skinplay mesh");
+	int bad = ferror(f);
+	if (fclose(f) != 0 || bad) {
+		fprintf(stderr, "%s: write error\n", path);
+		return -1;
+	}
+	return 0;
+}
+
+int cli_obj_is_generated(const char *path)
+{
+	char line[128];
+	FILE *f = fopen(path, "r");
+	if (!f)
+		return 0;
+	size_t n = strlen(TOOL_GENERATED_BODY);
+	int yes = fgets(line, sizeof line, f) && line[0] == '#' && line[1] == ' ' &&
+		  strncmp(line + 2, TOOL_GENERATED_BODY, n) == 0 && line[2 + n] == ':';
+	fclose(f);
+	return yes;
+}

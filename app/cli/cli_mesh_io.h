@@ -1,0 +1,27 @@
+/* Mesh files for the front ends: OBJ in (through the core parser, errors
+ * reported as FILE:LINE: message) and OBJ out. */
+#ifndef CLI_MESH_IO_H
+#define CLI_MESH_IO_H
+
+#include "mesh.h"
+#include "obj.h"
+
+/* Loads an OBJ, keeping only the faces of group when it is not NULL.
+ * Returns the parser's work area (vertex mapping in ->source, counts), or
+ * NULL after reporting the error. The work area is static: the next call
+ * overwrites it. */
+const obj_work *cli_load_obj(const char *path, const char *group, mesh *out);
+
+/* Writes a first comment "# WHAT: N vertices, M triangles" (what NULL:
+ * "skinplay mesh"), v (9 significant digits), vn and `f a//a b//b c//c`
+ * lines. Returns 0, or -1 after reporting the error. */
+int mesh_write_obj(const char *path, const mesh *m, const char *what);
+
+/* What the first comment of `skintool mannequin`'s OBJ says: a mesh that
+ * starts with it is bound like the generated body (balanced by default). */
+#define TOOL_GENERATED_BODY "skintool mannequin, the generated body"
+
+/* 1 when path starts with that comment. */
+int cli_obj_is_generated(const char *path);
+
+#endif

@@ -1,0 +1,277 @@
+#include "cli_show.h"
+
+#include <stdio.h>
+#include <string.h>
+
+#include "cli_common.h"
+#include "fk.h"
+
+int show_storage_open(storage_file *sf, const char *path)
+{
+	static uint8_t head[SKP_IMAGE_BLOCK_HDR + 16];
+	int rc = storage_file_open(sf, path, SKP_IMAGE_DEFAULT_BLOCK);
+	if (rc < 0)
+		return rc;
+	skp_reader rd = storage_file_reader(sf);
+	long n = rd.read(rd.ctx, head, sizeof head);
+	uint32_t bs = n > 0 ? skp_image_block_size_hint(head, (uint32_t)n) : 0;
+	if (bs)
+		storage_file_set_block_size(sf, bs);
+	return 0;
+}
+
+int show_image_open(show_image *s, const char *path, skp_error *err)
+{
+	s->path = path;
+	int rc = show_storage_open(&s->sf, path);
+	if (rc < 0) {
+		skp_fail(err, SKP_ERR_IO, 0, "cannot open: %s", strerror(-rc));
+		return -1;
+	}
+	if (skp_image_open(&s->im, &s->sf.bd, err) != SKP_OK) {
+		storage_file_close(&s->sf);
+		return -1;
+	}
+	return 0;
+}
+
+void show_image_close(show_image *s)
+{
+	if (s->path)
+		storage_file_close(&s->sf);
+	s->path = NULL;
+}
+
+/* What each block of a valid image must be: kind and item. */
+static void expected(const skp_image *im, uint32_t b, int *kind, unsigned *item)
+{
+	static const int sec_kind[] = { SKP_KIND_SKELETON, SKP_KIND_BIND, SKP_KIND_DIRECTORY };
+	*item = 0;
+	*kind = b == 0 ? SKP_KIND_HEADER : 0;
+	for (int i = 0; i < 3; i++)
+		if (b >= im->hdr.sec[i].first && b < im->hdr.sec[i].first + im->hdr.sec[i].count)
+			*kind = sec_kind[i];
+	for (int c = 0; c < im->clip_count; c++) {
+		const skp_image_clip *cl = &im->clip[c];
+		if (b >= cl->quant_first && b < cl->quant_first + cl->quant_blocks)
+			*kind = SKP_KIND_QUANT, *item = (unsigned)c;
+		if (b >= cl->frames_first && b < cl->frames_first + cl->frame_blocks)
+			*kind = SKP_KIND_FRAMES, *item = (unsigned)c;
+	}
+}
+
+long show_image_verify(show_image *s, void (*bad)(void *ctx, uint32_t block, skp_block_state st),
+		       void *ctx)
+{
+	static uint8_t buf[SKP_IMAGE_BLOCK_SIZE];
+	long count = 0;
+	for (uint32_t b = 0; b < s->im.hdr.block_count; b++) {
+		int kind;
+		unsigned item;
+		expected(&s->im, b, &kind, &item);
+		skp_block_state st = skp_image_read_block(&s->im, b, kind, item, buf);
+		if (st != SKP_BLOCK_OK) {
+			count++;
+			if (bad)
+				bad(ctx, b, st);
+		}
+	}
+	return count;
+}
+
+/* Skeleton, bind pose, mesh and weights of the slot into body. */
+static int load_body(show_image *img, bound_body *body, skp_error *err)
+{
+	static float values[SKP_MAX_DOF];
+	long number;
+	if (skp_image_load_skel(&img->im, &body->skel, err) != SKP_OK ||
+	    skp_image_load_bind(&img->im, &body->skel, &body->mesh, &body->weights, values, &number, err) != SKP_OK)
+		return -1;
+	fk_pose(&body->skel, number < 0 ? NULL : values, &body->pose);
+	body->pose_frame = number;
+	body->fitted = 0;
+	body->automatic = 0;
+	return 0;
+}
+
+static void refuse(const char *path, const skp_error *err)
+{
+	if (err->block >= 0)
+		fprintf(stderr, "image: %s refused: block %ld: %s\n", path, err->block, err->msg);
+	else
+		fprintf(stderr, "image: %s refused: %s\n", path, err->msg);
+}
+
+/* Opened slots, newest (largest sequence) first. */
+static int by_sequence(show_source *s, const char *const *paths, int n, int order[])
+{
+	int k = 0;
+	skp_error err;
+	for (int i = 0; i < n && i < SHOW_MAX_SLOTS; i++) {
+		if (show_image_open(&s->slot[i], paths[i], &err) < 0) {
+			refuse(paths[i], &err);
+			continue;
+		}
+		int j = k++;
+		while (j > 0 && s->slot[order[j - 1]].im.hdr.sequence < s->slot[i].im.hdr.sequence) {
+			order[j] = order[j - 1];
+			j--;
+		}
+		order[j] = i;
+	}
+	return k;
+}
+
+static void close_others(show_source *s, int keep)
+{
+	for (int i = 0; i < s->slot_count; i++)
+		if (i != keep)
+			show_image_close(&s->slot[i]);
+}
+
+int show_open(show_source *s, const char *const *paths, int n, bound_body *body)
+{
+	int order[SHOW_MAX_SLOTS], damaged = -1;
+	skp_error err;
+	memset(s, 0, sizeof *s);
+	s->clip = -1;
+	s->active = -1;
+	s->slot_count = n < SHOW_MAX_SLOTS ? n : SHOW_MAX_SLOTS;
+	int k = by_sequence(s, paths, n, order);
+	for (int i = 0; i < k && s->active < 0; i++) {
+		show_image *img = &s->slot[order[i]];
+		if (load_body(img, body, &err) < 0) {
+			refuse(img->path, &err);
+			continue;
+		}
+		/* one slot plays whatever survives; of several, an intact one wins */
+		long bad = n > 1 ? show_image_verify(img, NULL, NULL) : 0;
+		if (bad == 0)
+			s->active = order[i];
+		else {
+			fprintf(stderr, "image: %s has %ld bad blocks: trying an older slot\n", img->path, bad);
+			if (damaged < 0)
+				damaged = order[i];
+		}
+	}
+	if (s->active < 0 && damaged >= 0 && load_body(&s->slot[damaged], body, &err) == 0)
+		s->active = damaged;
+	if (s->active < 0) {
+		fprintf(stderr, "image: no valid image among %d slot%s\n", n, n > 1 ? "s" : "");
+		close_others(s, -1);
+		return -1;
+	}
+	close_others(s, s->active);
+	show_image *img = &s->slot[s->active];
+	fprintf(stderr, "image: playing %s (sequence %llu, %d clip%s)\n", img->path,
+		(unsigned long long)img->im.hdr.sequence, img->im.clip_count, img->im.clip_count == 1 ? "" : "s");
+	return 0;
+}
+
+int show_clip_count(const show_source *s)
+{
+	return s->active < 0 ? 0 : s->slot[s->active].im.clip_count;
+}
+
+const skp_image_clip *show_clip(const show_source *s, int i)
+{
+	return &s->slot[s->active].im.clip[i];
+}
+
+const char *show_path(const show_source *s)
+{
+	return s->active < 0 ? "" : s->slot[s->active].path;
+}
+
+int show_select_clip(show_source *s, const char *name, long start)
+{
+	show_image *img = &s->slot[s->active];
+	skp_error err;
+	int c = name ? skp_image_find_clip(&img->im, name) : 0;
+	if (c < 0 || c >= img->im.clip_count) {
+		fprintf(stderr, "%s: no clip '%s' (%d clips)\n", img->path, name ? name : "", img->im.clip_count);
+		return -1;
+	}
+	if (skp_player_open(&s->player, &img->im, c, &err) != SKP_OK) {
+		cli_error(img->path, &err);
+		return -1;
+	}
+	const skp_image_clip *cl = &img->im.clip[c];
+	if (start >= 0) {
+		if (start < cl->first_number || start - cl->first_number >= (long)cl->frame_count) {
+			fprintf(stderr, "%s: clip %s has no frame %ld (frames %ld..%ld)\n", img->path, cl->name, start,
+				(long)cl->first_number, (long)cl->first_number + (long)cl->frame_count - 1);
+			return -1;
+		}
+		skp_player_seek(&s->player, (uint32_t)(start - cl->first_number));
+	}
+	s->clip = c;
+	s->have_last = 0;
+	return 0;
+}
+
+/* Whether block was logged already; remembers it when not. */
+static int logged_before(show_source *s, long block)
+{
+	for (int i = 0; i < s->logged_count; i++)
+		if (s->logged[i] == block)
+			return 1;
+	if (s->logged_count < SHOW_MAX_LOGGED)
+		s->logged[s->logged_count++] = block;
+	return 0;
+}
+
+int show_next_frame(show_source *s, amc_frame *f)
+{
+	skp_error err;
+	int r = skp_player_next(&s->player, f, &err);
+	if (r == 1) {
+		memcpy(s->last.value, f->value, sizeof(float) * (size_t)s->player.c.dofs);
+		s->last.number = f->number;
+		s->have_last = 1;
+		return 1;
+	}
+	if (r != SKP_PLAYER_LOST)
+		return r;
+	s->lost_frames++;
+	/* nothing good yet (the clip starts in a bad block): hold the ASF rest
+	 * pose (every value 0), never undecoded values */
+	if (!s->have_last) {
+		memset(s->last.value, 0, sizeof s->last.value);
+		s->last.number = (long)s->player.c.first_number + (long)s->player.next - 1;
+		s->have_last = 1;
+	}
+	if (!logged_before(s, err.block))
+		fprintf(stderr, "image: block %ld bad (%s), holding frame %ld\n", err.block, err.msg, s->last.number);
+	memcpy(f->value, s->last.value, sizeof(float) * (size_t)s->player.c.dofs);
+	f->number = s->last.number;
+	f->line = 0;
+	return 1;
+}
+
+void show_rewind(show_source *s)
+{
+	skp_player_seek(&s->player, 0);
+}
+
+void show_close(show_source *s)
+{
+	for (int i = 0; i < s->slot_count; i++)
+		show_image_close(&s->slot[i]);
+	s->active = -1;
+}
+
+void show_report_memory(void)
+{
+	char line[256], hwm[64] = "?", rss[64] = "?";
+	FILE *f = fopen("/proc/self/status", "r");
+	while (f && fgets(line, sizeof line, f)) {
+		if (!strncmp(line, "VmHWM:", 6))
+			sscanf(line + 6, " %63[^\n]", hwm);
+		else if (!strncmp(line, "VmRSS:", 6))
+			sscanf(line + 6, " %63[^\n]", rss);
+	}
+	if (f)
+		fclose(f);
+	fprintf(stderr, "memory: VmHWM %s, VmRSS %s\n", hwm, rss);
+}

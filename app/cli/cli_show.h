@@ -1,0 +1,82 @@
+/* The show source for the front ends: animation played from packed flash
+ * images (app/image_format.h) instead of ASF/AMC text.
+ *
+ * Given one or more image slots (skinplay --image PATH, repeatable), it
+ * plays the newest valid one: slots are tried by decreasing header
+ * sequence; one whose header, skeleton, bind data or directory is bad is
+ * refused with a message, and with more than one slot a slot with any bad
+ * clip block yields to an intact older one, so an update cut short by power
+ * loss never bricks the display. It fills the bound body as bind_args_load
+ * does and hands out amc_frames: a frame lost in a bad block is replaced by
+ * the last good frame, and each bad block is logged once as
+ * "image: block N bad (CRC mismatch), holding frame F". */
+#ifndef CLI_SHOW_H
+#define CLI_SHOW_H
+
+#include "cli_bind_args.h"
+#include "image_play.h"
+#include "storage_file.h"
+
+#define SHOW_MAX_SLOTS   4
+#define SHOW_MAX_LOGGED 64   /* bad blocks remembered for log-once */
+
+/* One image file opened (header and directory checked). */
+typedef struct show_image {
+	const char *path;
+	storage_file sf;
+	skp_image im;
+} show_image;
+
+/* Opens an image file as storage with the image's own block size: the
+ * header's, or SKP_IMAGE_DEFAULT_BLOCK when block 0 does not say (then the
+ * reader reports what is wrong with it). Returns 0 or -errno. */
+int show_storage_open(storage_file *sf, const char *path);
+
+/* Returns 0, or -1 with the reason in err (nothing printed). */
+int show_image_open(show_image *s, const char *path, skp_error *err);
+void show_image_close(show_image *s);
+
+/* Checks every block of an opened image (CRC, tag, index, kind); calls bad
+ * (when non-NULL) for each bad one. Returns the count of bad blocks. */
+long show_image_verify(show_image *s, void (*bad)(void *ctx, uint32_t block, skp_block_state st),
+		       void *ctx);
+
+typedef struct show_source {
+	show_image slot[SHOW_MAX_SLOTS];
+	int slot_count;
+	int active;                 /* slot playing */
+	int clip;                   /* clip playing, -1 none */
+	skp_player player;
+	amc_frame last;             /* the last good frame, held over bad blocks */
+	int have_last;
+	long logged[SHOW_MAX_LOGGED];
+	int logged_count;
+	unsigned long lost_frames;  /* frames replaced by a held one */
+} show_source;
+
+/* Opens the newest valid slot of paths[0..n-1] and fills body (skeleton,
+ * bind pose, mesh, weights). Returns 0, or -1 after reporting on stderr. */
+int show_open(show_source *s, const char *const *paths, int n, bound_body *body);
+
+int show_clip_count(const show_source *s);
+const skp_image_clip *show_clip(const show_source *s, int i);
+const char *show_path(const show_source *s);
+
+/* Selects the clip named name (NULL: the first) and moves to frame number
+ * start (< 0: the clip's first). Returns 0, or -1 after reporting. */
+int show_select_clip(show_source *s, const char *name, long start);
+
+/* Returns 1 with the next frame in *f (a held frame when the real one is in
+ * a bad block), 0 at the end of the clip, -1 after reporting an error. */
+int show_next_frame(show_source *s, amc_frame *f);
+
+/* Back to the clip's first frame (looping on a display). */
+void show_rewind(show_source *s);
+
+void show_close(show_source *s);
+
+/* Prints the process's peak and current resident memory (VmHWM, VmRSS from
+ * /proc/self/status) on stderr, for skinplay --report-memory. */
+void show_report_memory(void);
+
+#endif

@@ -1,0 +1,63 @@
+#include "cli_skin.h"
+
+#include <stdio.h>
+
+#include "cli_common.h"
+
+static _Alignas(SKIN_ALIGN) unsigned char block[SKIN_SOA_BYTES(SKP_MAX_VERTS)];
+/* The fixed-point kernel's output before conversion. */
+static int32_t fpos[3 * SKP_MAX_VERTS], fnrm[3 * SKP_MAX_VERTS];
+
+int cli_skin_init(cli_skin *t, const skel *s, const skel_pose *bind, const mesh *m,
+		   const skin_weights *w, const char *what)
+{
+	skp_error err;
+	if (m->vert_count > SKP_MAX_VERTS || skin_soa_bytes(m->vert_count) > sizeof block) {
+		fprintf(stderr, "%s: %d vertices do not fit the skinning buffers\n", what,
+			m->vert_count);
+		return -1;
+	}
+	t->skel = s;
+	t->bind = bind;
+	skin_soa_attach(&t->soa, block, m->vert_count);
+	if (skin_soa_load(&t->soa, m, w, s->count, &err) != SKP_OK) {
+		cli_error(what, &err);
+		return -1;
+	}
+	cli_skin_pose(t, bind);
+	return 0;
+}
+
+void cli_skin_pose(cli_skin *t, const skel_pose *pose)
+{
+	if (pose != &t->pose)
+		t->pose = *pose;
+	skin_bones_compute(&t->bones, t->skel, t->bind, &t->pose);
+}
+
+void cli_skin_frame(cli_skin *t, const float *values)
+{
+	fk_pose(t->skel, values, &t->pose);
+	cli_skin_pose(t, &t->pose);
+}
+
+static void from_q16(const int32_t *in, float *out, int n)
+{
+	for (int i = 0; i < n; i++)
+		out[i] = (float)in[i] * (1.0f / 65536.0f);
+}
+
+void cli_skin_run(cli_skin *t, skin_algo algo, float *pos, float *nrm)
+{
+	int n = t->soa.count;
+	if (algo != SKIN_DQBS_FIXED) {
+		skin_out out = { pos, nrm, NULL, NULL };
+		skin_run(algo, &t->soa, &t->bones, 0, n, &out);
+		return;
+	}
+	skin_out out = { NULL, NULL, fpos, fnrm };
+	skin_run(algo, &t->soa, &t->bones, 0, n, &out);
+	from_q16(fpos, pos, 3 * n);
+	from_q16(fnrm, nrm, 3 * n);
+}
+

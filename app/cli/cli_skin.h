@@ -1,0 +1,37 @@
+/* A bound body ready for the kernels, for the front ends (skintool skin,
+ * skintool metrics, the renderer): pose the skeleton for a frame, compute
+ * the bone transforms, run a kernel into float xyz arrays. The fixed-point
+ * kernel's Q16.16 output is converted to float here, and only here. */
+#ifndef CLI_SKIN_H
+#define CLI_SKIN_H
+
+#include "amc.h"
+#include "skin.h"
+
+typedef struct cli_skin {
+	const skel *skel;
+	const skel_pose *bind;
+	skin_soa soa;         /* lives in one static block: one cli_skin at a time */
+	skel_pose pose;       /* the current pose */
+	skin_bones bones;     /* its transforms */
+} cli_skin;
+
+/* Lays the mesh and its weights out for the kernels (the mesh is bound in
+ * pose bind of s) and poses the body in bind. what names the mesh in
+ * messages. Returns 0, or -1 after reporting the error. */
+int cli_skin_init(cli_skin *t, const skel *s, const skel_pose *bind, const mesh *m,
+		   const skin_weights *w, const char *what);
+
+/* Poses the skeleton for one frame (values of an amc_frame; NULL: the ASF
+ * rest pose) and computes the bone transforms. */
+void cli_skin_frame(cli_skin *t, const float *values);
+
+/* The same for a pose computed elsewhere (the synthetic scene). */
+void cli_skin_pose(cli_skin *t, const skel_pose *pose);
+
+/* Skins every vertex with algo in the current pose: 3 floats per vertex
+ * into pos and into nrm. */
+void cli_skin_run(cli_skin *t, skin_algo algo, float *pos, float *nrm);
+
+
+#endif

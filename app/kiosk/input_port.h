@@ -1,0 +1,37 @@
+/* The button input port: the interface a platform input backend implements
+ * (platform/input/, kmscube style: one struct of function pointers per
+ * backend, static state, one active at a time). Every backend delivers
+ * debounced player_events (press, release, long press) with timestamps in
+ * the caller's millisecond clock; the main loop polls the backend's fds
+ * together with its own and calls read() once per frame (read never
+ * blocks, so calling it without poll() is fine too). */
+#ifndef INPUT_PORT_H
+#define INPUT_PORT_H
+
+#include <stdint.h>
+
+#include "board_config.h"
+#include "player.h"
+#include "skp_error.h"
+
+#define INPUT_MAX_FDS PLAYER_BTN_COUNT
+#define INPUT_MAX_EVENTS 32   /* a good size for read()'s event array */
+
+typedef struct input_backend {
+	const char *name;
+	/* cfg: the board's buttons and chip; arg: the script file (else NULL);
+	 * now_ms: the current time of the clock read() will be given. On
+	 * failure nothing is left open. */
+	int (*init)(const board_config *cfg, const char *arg, uint64_t now_ms, skp_error *err);
+	/* The fds to poll for input (at most max, INPUT_MAX_FDS is enough);
+	 * returns the count. */
+	int (*fds)(int *fd, int max);
+	/* Reads what is pending and fires timers due at now_ms. Returns the
+	 * number of events written to ev (at most max; the rest waits for the
+	 * next call), or -1 with err filled. */
+	int (*read)(uint64_t now_ms, player_event *ev, int max, skp_error *err);
+	/* Releases the lines, restores the terminal. */
+	void (*shutdown)(void);
+} input_backend;
+
+#endif

@@ -1,0 +1,188 @@
+/* AVX2+FMA kernels: eight vertices per step in structure-of-arrays form.
+ * The blend runs per vertex (its bones' rows times its weights broadcast)
+ * and one transpose turns the eight results into lanes: gathering every
+ * bone value into lanes first costs a gather or a transpose per influence.
+ * Built when the board sets SIMD=avx2; results match skin_scalar.c to
+ * float rounding. The small fixed loops carry `#pragma GCC unroll`: left
+ * rolled, GCC keeps their vectors in stack arrays (DQBS ran 30% slower). */
+#include "skin_kernels.h"
+
+#ifdef SKP_SIMD_AVX2
+
+#include "skin_avx2.h"
+
+typedef struct v3x8 {
+	__m256 x, y, z;
+} v3x8;
+
+static v3x8 load3(const float *x, const float *y, const float *z, int v)
+{
+	v3x8 r = { _mm256_load_ps(x + v), _mm256_load_ps(y + v), _mm256_load_ps(z + v) };
+	return r;
+}
+
+static v3x8 normalize8(v3x8 a)
+{
+	__m256 len2 = _mm256_fmadd_ps(a.x, a.x, _mm256_fmadd_ps(a.y, a.y, _mm256_mul_ps(a.z, a.z)));
+	__m256 inv = _mm256_div_ps(_mm256_set1_ps(1.0f), _mm256_sqrt_ps(len2));
+	v3x8 r = { _mm256_mul_ps(a.x, inv), _mm256_mul_ps(a.y, inv), _mm256_mul_ps(a.z, inv) };
+	return r;
+}
+
+/* 8 rows of 4 values (vertex j in row j) to 4 lanes registers */
+static inline __attribute__((always_inline)) void transpose8x4(const __m128 r[8], __m256 out[4])
+{
+	__m256 a[4];
+#pragma GCC unroll 4
+	for (int j = 0; j < 4; j++)
+		a[j] = _mm256_insertf128_ps(_mm256_castps128_ps256(r[j]), r[j + 4], 1);
+	__m256 t0 = _mm256_unpacklo_ps(a[0], a[1]), t1 = _mm256_unpackhi_ps(a[0], a[1]);
+	__m256 t2 = _mm256_unpacklo_ps(a[2], a[3]), t3 = _mm256_unpackhi_ps(a[2], a[3]);
+	out[0] = _mm256_shuffle_ps(t0, t2, _MM_SHUFFLE(1, 0, 1, 0));
+	out[1] = _mm256_shuffle_ps(t0, t2, _MM_SHUFFLE(3, 2, 3, 2));
+	out[2] = _mm256_shuffle_ps(t1, t3, _MM_SHUFFLE(1, 0, 1, 0));
+	out[3] = _mm256_shuffle_ps(t1, t3, _MM_SHUFFLE(3, 2, 3, 2));
+}
+
+/* The blended 3x4 matrices of 8 vertices, m[i] = element i in lanes */
+static inline __attribute__((always_inline)) void lbs_block(const skin_soa *in, const skin_bones *b, int v,
+							      __m256 m[12])
+{
+	__m256 head[SKIN_LANES];
+	__m128 tail[SKIN_LANES];
+#pragma GCC unroll 8
+	for (int j = 0; j < SKIN_LANES; j++) {
+		__m256 h = _mm256_setzero_ps();
+		__m128 t = _mm_setzero_ps();
+#pragma GCC unroll 4
+		for (int k = 0; k < SKP_MAX_INFLUENCES; k++) {
+			const float *row = b->lbs12[in->bone[k][v + j]];
+			__m256 w = _mm256_broadcast_ss(in->weight[k] + v + j);
+			h = _mm256_fmadd_ps(w, _mm256_loadu_ps(row), h);
+			t = _mm_fmadd_ps(_mm256_castps256_ps128(w), _mm_loadu_ps(row + 8), t);
+		}
+		head[j] = h;
+		tail[j] = t;
+	}
+	skin_transpose8(head);
+#pragma GCC unroll 8
+	for (int i = 0; i < 8; i++)
+		m[i] = head[i];
+	transpose8x4(tail, m + 8);
+}
+
+static v3x8 apply_rows(const __m256 m[12], v3x8 p, int with_translation)
+{
+	v3x8 r;
+	__m256 *out[3] = { &r.x, &r.y, &r.z };
+#pragma GCC unroll 12
+	for (int row = 0; row < 3; row++) {
+		const __m256 *q = m + 4 * row;
+		__m256 acc = with_translation ? q[3] : _mm256_setzero_ps();
+		acc = _mm256_fmadd_ps(q[0], p.x, acc);
+		acc = _mm256_fmadd_ps(q[1], p.y, acc);
+		*out[row] = _mm256_fmadd_ps(q[2], p.z, acc);
+	}
+	return r;
+}
+
+void skin_lbs_avx2(const skin_soa *in, const skin_bones *b, int first, int end, const skin_out *out)
+{
+	for (int v = first; v < end; v += SKIN_LANES) {
+		__m256 m[12];
+		lbs_block(in, b, v, m);
+		int valid = end - v < SKIN_LANES ? end - v : SKIN_LANES;
+		v3x8 p = apply_rows(m, load3(in->px, in->py, in->pz, v), 1);
+		v3x8 n = normalize8(apply_rows(m, load3(in->nx, in->ny, in->nz, v), 0));
+		skin_store_xyz8(out->pos + 3 * v, p.x, p.y, p.z, valid);
+		skin_store_xyz8(out->nrm + 3 * v, n.x, n.y, n.z, valid);
+	}
+}
+
+typedef struct dq8 {
+	__m256 rw, rx, ry, rz, dw, dx, dy, dz;
+} dq8;
+
+/* Weighted sum with each influence's sign flipped when its real part
+ * points away from the pivot (influence 0, the largest weight): the flip
+ * per bone pair is looked up (flip_f, the scalar kernel's own test), the
+ * signed weights staged in memory and broadcast per vertex. */
+static inline __attribute__((always_inline)) dq8 dq_blend8(const skin_soa *in, const skin_bones *b, int v)
+{
+	float ws[SKP_MAX_INFLUENCES][SKIN_LANES] __attribute__((aligned(32)));
+#pragma GCC unroll 4
+	for (int k = 0; k < SKP_MAX_INFLUENCES; k++) {
+		__m256 w = _mm256_load_ps(in->weight[k] + v);
+		if (k) {
+			__m256i neg = skin_flip_mask(&b->flip_f[0][0], in->bone[0], in->bone[k], v);
+			w = _mm256_xor_ps(w, _mm256_and_ps(_mm256_castsi256_ps(neg), _mm256_set1_ps(-0.0f)));
+		}
+		_mm256_store_ps(ws[k], w);
+	}
+	/* read back through memory: forwarded in registers, GCC broadcasts
+	 * them with shuffles, where a broadcast load costs only a load */
+	__asm__("" : "+m"(ws));
+	__m256 r[SKIN_LANES];
+#pragma GCC unroll 8
+	for (int j = 0; j < SKIN_LANES; j++) {
+		__m256 acc = _mm256_mul_ps(_mm256_broadcast_ss(&ws[0][j]), _mm256_loadu_ps(b->dq8[in->bone[0][v + j]]));
+#pragma GCC unroll 4
+		for (int k = 1; k < SKP_MAX_INFLUENCES; k++)
+			acc = _mm256_fmadd_ps(_mm256_broadcast_ss(&ws[k][j]), _mm256_loadu_ps(b->dq8[in->bone[k][v + j]]),
+					      acc);
+		r[j] = acc;
+	}
+	skin_transpose8(r);
+	dq8 d = { r[0], r[1], r[2], r[3], r[4], r[5], r[6], r[7] };
+	return d;
+}
+
+static v3x8 cross8(v3x8 a, v3x8 b)
+{
+	v3x8 r = { _mm256_fmsub_ps(a.y, b.z, _mm256_mul_ps(a.z, b.y)),
+		   _mm256_fmsub_ps(a.z, b.x, _mm256_mul_ps(a.x, b.z)),
+		   _mm256_fmsub_ps(a.x, b.y, _mm256_mul_ps(a.y, b.x)) };
+	return r;
+}
+
+static v3x8 madd8(v3x8 a, v3x8 b, __m256 s)
+{
+	v3x8 r = { _mm256_fmadd_ps(b.x, s, a.x), _mm256_fmadd_ps(b.y, s, a.y),
+		   _mm256_fmadd_ps(b.z, s, a.z) };
+	return r;
+}
+
+/* v + 2 r x (r x v + w v): rotation by the unit quaternion (w, r) */
+static v3x8 rotate8(__m256 w, v3x8 r, v3x8 v)
+{
+	v3x8 t = madd8(cross8(r, v), v, w);
+	return madd8(v, cross8(r, t), _mm256_set1_ps(2.0f));
+}
+
+void skin_dqbs_avx2(const skin_soa *in, const skin_bones *b, int first, int end, const skin_out *out)
+{
+	const __m256 two = _mm256_set1_ps(2.0f);
+	for (int v = first; v < end; v += SKIN_LANES) {
+		dq8 d = dq_blend8(in, b, v);
+		__m256 n2 = _mm256_fmadd_ps(d.rw, d.rw, _mm256_fmadd_ps(d.rx, d.rx,
+					    _mm256_fmadd_ps(d.ry, d.ry, _mm256_mul_ps(d.rz, d.rz))));
+		__m256 inv = _mm256_div_ps(_mm256_set1_ps(1.0f), _mm256_sqrt_ps(n2));
+		__m256 rw = _mm256_mul_ps(d.rw, inv), dw = _mm256_mul_ps(d.dw, inv);
+		v3x8 r = { _mm256_mul_ps(d.rx, inv), _mm256_mul_ps(d.ry, inv), _mm256_mul_ps(d.rz, inv) };
+		v3x8 dv = { _mm256_mul_ps(d.dx, inv), _mm256_mul_ps(d.dy, inv), _mm256_mul_ps(d.dz, inv) };
+		/* translation 2 (w_r d_v - w_d r_v + r_v x d_v) */
+		v3x8 t = cross8(r, dv);
+		t = madd8(t, dv, rw);
+		t = madd8(t, r, _mm256_sub_ps(_mm256_setzero_ps(), dw));
+		v3x8 p = rotate8(rw, r, load3(in->px, in->py, in->pz, v));
+		p = madd8(p, t, two);
+		v3x8 n = rotate8(rw, r, load3(in->nx, in->ny, in->nz, v));
+		int valid = end - v < SKIN_LANES ? end - v : SKIN_LANES;
+		skin_store_xyz8(out->pos + 3 * v, p.x, p.y, p.z, valid);
+		skin_store_xyz8(out->nrm + 3 * v, n.x, n.y, n.z, valid);
+	}
+}
+
+#else
+typedef int skin_avx2_not_built; /* the board chose the scalar kernels */
+#endif

@@ -1,0 +1,56 @@
+#include "skin.h"
+
+#include <string.h>
+
+#include "skin_kernels.h"
+
+static const char *const names[SKIN_ALGO_COUNT] = { "lbs", "dqbs", "dqbs-fixed" };
+
+const char *skin_algo_name(skin_algo a)
+{
+	return (unsigned)a < SKIN_ALGO_COUNT ? names[a] : "?";
+}
+
+int skin_algo_parse(const char *name)
+{
+	for (int a = 0; a < SKIN_ALGO_COUNT; a++)
+		if (strcmp(name, names[a]) == 0)
+			return a;
+	return -1;
+}
+
+#ifdef SKP_SIMD_AVX2
+#define LBS skin_lbs_avx2
+#define DQBS skin_dqbs_avx2
+#define DQBS_FIXED skin_dqbs_fixed_avx2
+#define SIMD_NAME "avx2+fma"
+#elif defined(SKP_SIMD_NEON)
+#define LBS skin_lbs_neon
+#define DQBS skin_dqbs_neon
+#define DQBS_FIXED skin_dqbs_fixed /* skin_neon.c: the fixed kernel stays scalar */
+#define SIMD_NAME "neon"
+#else
+#define LBS skin_lbs_scalar
+#define DQBS skin_dqbs_scalar
+#define DQBS_FIXED skin_dqbs_fixed
+#define SIMD_NAME "scalar"
+#endif
+
+const char *skin_simd_name(void)
+{
+	return SIMD_NAME;
+}
+
+void skin_run(skin_algo algo, const skin_soa *in, const skin_bones *b, int first, int count,
+	      const skin_out *out)
+{
+	int end = first + count;
+	if (end > in->count)
+		end = in->count;
+	switch (algo) {
+	case SKIN_LBS: LBS(in, b, first, end, out); break;
+	case SKIN_DQBS: DQBS(in, b, first, end, out); break;
+	case SKIN_DQBS_FIXED: DQBS_FIXED(in, b, first, end, out); break;
+	case SKIN_ALGO_COUNT: break;
+	}
+}

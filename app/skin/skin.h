@@ -1,0 +1,138 @@
+/* Skinning: per-frame bone transforms and the three kernels (LBS, DQBS in
+ * float, DQBS in fixed point) over vertex data laid out for SIMD.
+ *
+ * Bone transforms (contract): R_b = G_pose_b * G_bind_b^T and
+ * t_b = head_pose_b - R_b * head_bind_b, with head the bone's start (its
+ * parent's tip; the root's position) and G the FK rotation.
+ *
+ * Vertex data is a structure of arrays padded to SKIN_LANES vertices, with
+ * exactly SKP_MAX_INFLUENCES (bone, weight) slots per vertex, largest weight
+ * first (the DQBS pivot), unused slots weight 0. All arrays live in one
+ * caller-provided block (skin_soa_bytes), so the runtime keeps it static and
+ * a benchmark may allocate a bigger one. */
+#ifndef SKIN_H
+#define SKIN_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "dq.h"
+#include "fixed.h"
+#include "fk.h"
+#include "mesh.h"
+#include "rigid.h"
+#include "skin_weights.h"
+#include "skp_error.h"
+
+#define SKIN_LANES 8
+#define SKIN_ALIGN 32
+/* Slot of an identity transform after the skeleton's bones: vertices with
+ * no influence stay where they were bound. */
+#define SKIN_IDENTITY_BONE SKP_MAX_BONES
+
+typedef enum skin_algo {
+	SKIN_LBS,
+	SKIN_DQBS,
+	SKIN_DQBS_FIXED,
+	SKIN_ALGO_COUNT
+} skin_algo;
+
+/* "lbs", "dqbs", "dqbs-fixed" */
+const char *skin_algo_name(skin_algo a);
+/* -1 when the name is not an algorithm */
+int skin_algo_parse(const char *name);
+
+typedef struct skin_soa {
+	int count;                 /* vertices */
+	int padded;                /* count rounded up to SKIN_LANES */
+	float *px, *py, *pz;       /* bind-pose positions */
+	float *nx, *ny, *nz;       /* bind-pose unit normals */
+	uint16_t *bone[SKP_MAX_INFLUENCES];
+	float *weight[SKP_MAX_INFLUENCES];
+	/* the fixed-point kernel's copies: its per-frame path never converts */
+	fx_pos *fpx, *fpy, *fpz;   /* Q15.16 */
+	fx_q30 *fnx, *fny, *fnz;   /* Q2.30 */
+	fx_w15 *fweight[SKP_MAX_INFLUENCES];
+} skin_soa;
+
+/* Bytes of the block skin_soa_attach needs for count vertices, as a
+ * constant expression for static blocks: per padded vertex 6 float + 3
+ * fx_pos + 3 fx_q30 + 4 float weights of 4 bytes and 4 bone + 4 fx_w15 of
+ * 2 bytes, each array rounded up to SKIN_ALIGN. */
+#define SKIN_SOA_ALIGN_UP(n) (((size_t)(n) + SKIN_ALIGN - 1) / SKIN_ALIGN * SKIN_ALIGN)
+#define SKIN_SOA_PADDED(count) (((size_t)(count) + SKIN_LANES - 1) / SKIN_LANES * SKIN_LANES)
+#define SKIN_SOA_BYTES(count)                                                              \
+	((6 + 3 + 3 + SKP_MAX_INFLUENCES) * SKIN_SOA_ALIGN_UP(SKIN_SOA_PADDED(count) * 4) + \
+	 2 * SKP_MAX_INFLUENCES * SKIN_SOA_ALIGN_UP(SKIN_SOA_PADDED(count) * 2))
+
+/* SKIN_SOA_BYTES for a count known at run time. */
+size_t skin_soa_bytes(int count);
+
+/* Carves the arrays of s out of mem (SKIN_ALIGN-aligned, skin_soa_bytes
+ * long) for count vertices. */
+void skin_soa_attach(skin_soa *s, void *mem, int count);
+
+/* Fills s (attached for m->vert_count vertices) from a mesh and its weights.
+ * Fails on a weight naming a bone index >= bone_count, or a position out
+ * of the fixed-point range. */
+skp_status skin_soa_load(skin_soa *s, const mesh *m, const skin_weights *w, int bone_count,
+			 skp_error *err);
+
+/* See skin_bones.simd_ok. */
+#define SKIN_SIMD_DUAL_LIMIT ((int32_t)1 << 26)
+
+/* Per-frame transforms of every bone, in the forms the kernels read. */
+typedef struct skin_bones {
+	int count;
+	rigid mat[SKP_MAX_BONES + 1];
+	dq dq[SKP_MAX_BONES + 1];
+	fx_dq fdq[SKP_MAX_BONES + 1];
+	/* flat copies for SIMD gathers: 3x4 row-major, and real|dual */
+	float lbs12[SKP_MAX_BONES + 1][12];
+	float dq8[SKP_MAX_BONES + 1][8];
+#ifdef SKP_SIMD_AVX2
+	/* The DQBS sign fix depends only on the pair (pivot bone, bone): the
+	 * decision for every pair, computed once per frame with the dot
+	 * product the scalar kernel uses (fixed point for flip_x, float for
+	 * flip_f), so the SIMD kernels look it up instead of recomputing it
+	 * per vertex: a mask, -1 (flip) or 0. Only the AVX2 kernels read them
+	 * (and fdq_halves below), so other boards neither store nor compute
+	 * them. */
+	int32_t flip_x[SKP_MAX_BONES + 1][SKP_MAX_BONES + 1];
+	int32_t flip_f[SKP_MAX_BONES + 1][SKP_MAX_BONES + 1];
+	/* fdq with every component c split as c = hi * 2^16 + lo, lo and hi
+	 * signed 16-bit halves, laid out per bone as lo of components 0-3,
+	 * hi of 0-3, lo of 4-7, hi of 4-7: a 16-bit unpack of two bones' rows
+	 * then pairs their lo (or hi) halves component by component, and the
+	 * AVX2 fixed kernel blends them with 16-bit multiply-adds. simd_ok is
+	 * 0 when a dual component is 2^26 (1024 units) or longer: beyond that
+	 * the kernel's 32-bit intermediates could overflow where the scalar
+	 * kernel saturates, so it takes the scalar path for the frame. */
+	int16_t fdq_halves[SKP_MAX_BONES + 1][16];
+	int simd_ok;
+#endif
+} skin_bones;
+
+void skin_bones_compute(skin_bones *out, const skel *s, const skel_pose *bind,
+			const skel_pose *pose);
+
+/* Recomputes the kernels' lookup tables (flip_x and fdq_halves from fdq,
+ * flip_f from dq), for a caller that set fdq or dq itself. */
+void skin_bones_derive(skin_bones *out);
+
+/* Where a kernel writes: float kernels xyz triples in pos/nrm, the
+ * fixed-point kernel Q16.16 triples (GL_FIXED) in fpos/fnrm. */
+typedef struct skin_out {
+	float *pos, *nrm;
+	int32_t *fpos, *fnrm;
+} skin_out;
+
+/* Skins vertices [first, first + count) of in; first must be a multiple of
+ * SKIN_LANES (worker threads split the mesh on lane boundaries). */
+void skin_run(skin_algo algo, const skin_soa *in, const skin_bones *b, int first, int count,
+	      const skin_out *out);
+
+/* "avx2+fma" or "scalar": which float kernels skin_run uses. */
+const char *skin_simd_name(void);
+
+#endif

@@ -1,0 +1,402 @@
+/* skinplay: the device app. Streams an AMC clip, poses the skeleton, skins
+ * the body with the chosen algorithm (CPU kernels or the vertex shader) and
+ * renders it on a display or headless, optionally writing PNG frames. */
+#include <errno.h>
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include "cli_common.h"
+#include "cli_show.h"
+#include "cli_skin.h"
+#include "cli_version.h"
+#include "clock.h"
+#include "display.h"
+#include "png_writer.h"
+#include "skinplay_kiosk.h"
+#include "skinplay_opts.h"
+#include "skinplay_sheet.h"
+
+typedef struct player {
+	play_opts o;
+	bound_body body;
+	cli_skin skin;
+	cli_motion motion;
+	show_source show;  /* --image: frames from a packed image instead */
+	amc_frame frame;
+	renderer r;
+	gl_api gl;
+	const display_backend *disp;
+	display_info info;
+	int headless;
+	int pending;       /* p->frame was read ahead by --start */
+	int panel_count;
+	skin_algo algo[RENDER_MAX_PANELS];
+	int gpu[RENDER_MAX_PANELS];
+	float pos[RENDER_MAX_PANELS][3 * SKP_MAX_VERTS];
+	float nrm[RENDER_MAX_PANELS][3 * SKP_MAX_VERTS];
+	uint8_t rgba[3840 * 2160 * 4]; /* one frame read back for --out */
+	char clip[64];
+	sheet contact;
+	kiosk kiosk;       /* --board, --input, signals, systemd */
+	int reload;        /* SIGHUP: start over (main re-executes) */
+} player;
+
+typedef struct timing {
+	uint64_t decode, skin, upload, draw;
+	long frames;
+	uint64_t since;
+} timing;
+
+static timing total; /* the whole run, for the summary line */
+
+static const char *basename_of(const char *path)
+{
+	const char *s = strrchr(path, '/');
+	return s ? s + 1 : path;
+}
+
+/* Which kernels each panel runs, and where (GPU when asked and it fits). */
+static void choose_paths(player *p)
+{
+	static const skin_algo one[3] = { SKIN_LBS, SKIN_DQBS, SKIN_DQBS_FIXED };
+	p->panel_count = p->o.algo == PLAY_COMPARE ? 2 : 1;
+	p->algo[0] = p->o.algo == PLAY_COMPARE ? SKIN_LBS : one[p->o.algo];
+	p->algo[1] = SKIN_DQBS;
+	for (int i = 0; i < p->panel_count; i++) {
+		p->gpu[i] = p->o.gpu && render_gpu_fits(&p->r, p->algo[i]);
+		if (p->o.gpu && !p->gpu[i])
+			fprintf(stderr, "skin: %s on the CPU: %s\n", skin_algo_name(p->algo[i]),
+				p->algo[i] == SKIN_DQBS_FIXED
+					? "the fixed-point kernel has no shader"
+					: "the skeleton's bone uniforms exceed GLES 2.0's 128 vertex vectors");
+	}
+}
+
+static int open_display(player *p)
+{
+	skp_error err;
+	const char *name = p->o.platform;
+	p->disp = !name || !strcmp(name, "auto") ? display_auto() : display_find(name);
+	if (!p->disp) {
+		fprintf(stderr, "skinplay: unknown platform '%s' (surfaceless, osmesa, kms, x11, auto)\n", name);
+		return -1;
+	}
+	display_config cfg = { p->o.width, p->o.height, p->o.device, p->o.rotation };
+	if (p->disp->init(&cfg, &p->info, &err) != 0) {
+		fprintf(stderr, "skinplay: %s: %s\n", p->disp->name, err.msg);
+		/* headless EGL can be missing where Mesa's OSMesa still works */
+		if (name && strcmp(name, "auto"))
+			return -1;
+		p->disp = display_find("osmesa");
+		if (p->disp->init(&cfg, &p->info, &err) != 0) {
+			fprintf(stderr, "skinplay: osmesa: %s\n", err.msg);
+			return -1;
+		}
+	}
+	if (gl_api_load(&p->gl, p->disp->get_proc, &err) != SKP_OK) {
+		fprintf(stderr, "skinplay: %s: %s\n", p->disp->name, err.msg);
+		p->disp->shutdown();
+		return -1;
+	}
+	p->headless = !strcmp(p->disp->name, "surfaceless") || !strcmp(p->disp->name, "osmesa");
+	fprintf(stderr, "display: %s %dx%d, %s\n", p->disp->name, p->info.width, p->info.height,
+		p->info.gl_renderer ? p->info.gl_renderer : "?");
+	return 0;
+}
+
+static int open_motion(player *p)
+{
+	if (p->o.image_count)
+		return 0; /* floor_height() opened the clip and read ahead its first frame */
+	if (cli_motion_open(&p->motion, p->o.amc, &p->body.skel) < 0)
+		return -1;
+	if (p->o.start < 0)
+		return 0;
+	/* skip to the start frame (the stream has no index to seek with) and
+	 * keep it for the first next_frame() */
+	int r;
+	while ((r = cli_motion_next(&p->motion, &p->frame)) > 0 && p->frame.number < p->o.start)
+		;
+	if (r == 0)
+		fprintf(stderr, "%s: no frame %ld\n", p->o.amc, p->o.start);
+	p->pending = r > 0;
+	return r <= 0 ? -1 : 0;
+}
+
+/* The lowest point of the body in the clip's first frame: the floor. */
+static float floor_height(player *p)
+{
+	amc_frame *f = &p->frame;
+	if (p->o.image_count) {
+		if (show_select_clip(&p->show, p->o.clip, p->o.start) < 0 || show_next_frame(&p->show, f) <= 0)
+			return NAN;
+		p->pending = 1;
+	} else if (cli_read_frame(p->o.amc, &p->body.skel, p->o.start, f) < 0)
+		return NAN;
+	cli_skin_frame(&p->skin, f->value);
+	cli_skin_run(&p->skin, SKIN_DQBS, p->pos[0], p->nrm[0]);
+	float lo = INFINITY;
+	for (int v = 0; v < p->body.mesh.vert_count; v++)
+		lo = fminf(lo, p->pos[0][3 * v + 1]);
+	return lo;
+}
+
+static int setup(player *p)
+{
+	if (p->o.image_count ? show_open(&p->show, p->o.image, p->o.image_count, &p->body) < 0
+			     : bind_args_load(&p->o.bind, p->o.asf, p->o.mesh, &p->body) < 0)
+		return -1;
+	if (cli_skin_init(&p->skin, &p->body.skel, &p->body.pose, &p->body.mesh, &p->body.weights,
+			   p->o.image_count ? show_path(&p->show) : p->o.mesh ? p->o.mesh : "generated body") < 0)
+		return -1;
+	float floor_y = floor_height(p);
+	if (isnan(floor_y) || open_display(p) < 0)
+		return -1;
+	skp_error err;
+	const mesh *m = &p->body.mesh;
+	if (render_init(&p->r, &p->gl, p->info.width, p->info.height, p->info.rotation, &p->body.skel,
+			&p->skin.soa, (const uint32_t (*)[3])m->tri, m->tri_count, floor_y, &err) != SKP_OK) {
+		fprintf(stderr, "skinplay: renderer: %s\n", err.msg);
+		return -1;
+	}
+	choose_paths(p);
+	sheet_init(&p->contact, p->info.width, p->info.height);
+	snprintf(p->clip, sizeof p->clip, "%s", p->o.image_count ? p->show.player.c.name : basename_of(p->o.amc));
+	char *dot = strrchr(p->clip, '.');
+	if (dot)
+		*dot = '\0';
+	if (p->o.out_dir && mkdir(p->o.out_dir, 0755) != 0 && errno != EEXIST) {
+		fprintf(stderr, "skinplay: %s: %s\n", p->o.out_dir, strerror(errno));
+		return -1;
+	}
+	return open_motion(p);
+}
+
+static void skin_panels(player *p, render_frame *f)
+{
+	cli_skin_frame(&p->skin, p->frame.value);
+	f->panel_count = p->panel_count;
+	for (int i = 0; i < p->panel_count; i++) {
+		f->panel[i].algo = p->algo[i];
+		f->panel[i].label = p->panel_count > 1 ? (i ? "DQBS" : "LBS") : NULL;
+		f->panel[i].pos = p->gpu[i] ? NULL : p->pos[i];
+		f->panel[i].nrm = p->gpu[i] ? NULL : p->nrm[i];
+		if (!p->gpu[i])
+			cli_skin_run(&p->skin, p->algo[i], p->pos[i], p->nrm[i]);
+	}
+	f->pose = &p->skin.pose;
+	f->bones = &p->skin.bones;
+}
+
+static void hud_text(player *p, render_frame *f, double fps, char lines[3][96])
+{
+	const char *where = p->gpu[0] ? "GPU" : "CPU";
+	if (p->panel_count > 1)
+		snprintf(lines[0], 96, "COMPARE LBS | DQBS  %s  %s", where, render_view_name(p->o.view));
+	else
+		snprintf(lines[0], 96, "%s  %s  %s", skin_algo_name(p->algo[0]), where, render_view_name(p->o.view));
+	snprintf(lines[1], 96, "%s  FRAME %ld", p->clip, p->frame.number);
+	if (p->o.hud_fps)
+		snprintf(lines[2], 96, "%.1f FPS", fps);
+	f->hud[0] = lines[0];
+	f->hud[1] = lines[1];
+	f->hud[2] = p->o.hud_fps ? lines[2] : NULL;
+	f->hud[3] = NULL;
+}
+
+static int write_png(player *p, long n)
+{
+	char path[1024];
+	skp_error err;
+	snprintf(path, sizeof path, "%s/frame_%06ld.png", p->o.out_dir, n);
+	render_read_rgba(&p->r, p->rgba);
+	if (png_write_rgba(path, p->rgba, p->info.width, p->info.height, 1, &err) != 0) {
+		fprintf(stderr, "skinplay: %s: %s\n", path, err.msg);
+		return -1;
+	}
+	if (p->o.sheet_path)
+		sheet_add(&p->contact, p->rgba, p->info.width, p->info.height);
+	return 0;
+}
+
+static void log_second(player *p, timing *t, uint64_t now)
+{
+	double secs = (double)(now - t->since) * 1e-9, n = (double)t->frames;
+	fprintf(stderr, "frame %ld: %.1f fps, decode %.2f ms, skin %.2f ms, upload %.2f ms, draw %.2f ms\n",
+		p->frame.number, n / secs, t->decode * 1e-6 / n, t->skin * 1e-6 / n, t->upload * 1e-6 / n,
+		t->draw * 1e-6 / n);
+	total.decode += t->decode;
+	total.skin += t->skin;
+	total.upload += t->upload;
+	total.draw += t->draw;
+	total.frames += t->frames;
+	memset(t, 0, sizeof *t);
+	t->since = now;
+}
+
+/* The next frame of the clip, looping on a display and whenever --frames
+ * asks for more frames than the clip has (`make soak`). 1, 0 at the end, -1. */
+static int next_frame(player *p)
+{
+	if (p->pending) {
+		p->pending = 0;
+		return 1;
+	}
+	int r = p->o.image_count ? show_next_frame(&p->show, &p->frame) : cli_motion_next(&p->motion, &p->frame);
+	if (r != 0 || (p->headless && p->o.frames < 0))
+		return r;
+	if (p->o.image_count) {
+		show_rewind(&p->show);
+		return show_next_frame(&p->show, &p->frame);
+	}
+	cli_motion_close(&p->motion);
+	if (cli_motion_open(&p->motion, p->o.amc, &p->body.skel) < 0)
+		return -1;
+	return cli_motion_next(&p->motion, &p->frame);
+}
+
+static int draw_one(player *p, timing *t, double fps, render_frame *f)
+{
+	char lines[3][96];
+	skp_error err;
+	uint64_t t0 = clock_now_ns();
+	skin_panels(p, f);
+	uint64_t t1 = clock_now_ns();
+	render_upload(&p->r, f);
+	uint64_t t2 = clock_now_ns();
+	hud_text(p, f, fps, lines);
+	render_draw(&p->r, f);
+	memset(f->hud, 0, sizeof f->hud); /* the lines live on this stack frame */
+	p->gl.Finish();
+	uint64_t t3 = clock_now_ns();
+	t->skin += t1 - t0;
+	t->upload += t2 - t1;
+	t->draw += t3 - t2;
+	if (p->disp->present(&err) != 0) {
+		fprintf(stderr, "skinplay: %s: %s\n", p->disp->name, err.msg);
+		return -1;
+	}
+	return 0;
+}
+
+/* PLAY long, NEXT: back to the first frame of the clip (or of clip i). */
+static int restart_clip(player *p, int clip)
+{
+	p->pending = 0;
+	if (p->o.image_count) {
+		if (clip < 0) {
+			show_rewind(&p->show);
+			return 0;
+		}
+		snprintf(p->clip, sizeof p->clip, "%s", show_clip(&p->show, clip)->name);
+		return show_select_clip(&p->show, p->clip, -1);
+	}
+	cli_motion_close(&p->motion);
+	return cli_motion_open(&p->motion, p->o.amc, &p->body.skel);
+}
+
+/* The buttons' state machine (skinplay_kiosk.h) drives what is shown. */
+static int apply_input(player *p, render_frame *f, unsigned act)
+{
+	const player_state *s = &p->kiosk.ps;
+	p->o.algo = (play_algo)s->algo;
+	p->o.view = f->view = (render_view)s->view;
+	p->o.gpu = s->gpu;
+	if (act & (KIOSK_ALGO | KIOSK_GPU))
+		choose_paths(p);
+	if (act & (KIOSK_RESTART | KIOSK_CLIP))
+		return restart_clip(p, act & KIOSK_CLIP ? s->clip : -1);
+	return 0;
+}
+
+static int play(player *p)
+{
+	timing t = { 0, 0, 0, 0, 0, clock_now_ns() };
+	total.since = t.since;
+	render_frame f;
+	memset(&f, 0, sizeof f);
+	f.view = p->o.view;
+	f.dt = (float)(1.0 / p->o.fps);
+	double fps = 0;
+	long shown = 0;
+	int quit = 0, r = 1;
+	while (!quit && (p->o.frames < 0 || shown < p->o.frames)) {
+		unsigned act = kiosk_frame(&p->kiosk, shown);
+		if (act & (KIOSK_QUIT | KIOSK_RELOAD)) {
+			p->reload = !(act & KIOSK_QUIT);
+			break;
+		}
+		if (act && apply_input(p, &f, act) < 0)
+			return -1;
+		uint64_t t0 = clock_now_ns();
+		/* paused: the same frame again (the first one is always read) */
+		if (p->kiosk.ps.playing || shown == 0 || (act & (KIOSK_RESTART | KIOSK_CLIP)))
+			r = next_frame(p);
+		if (r <= 0)
+			break;
+		t.decode += clock_now_ns() - t0;
+		if (draw_one(p, &t, fps, &f) < 0)
+			return -1;
+		shown++;
+		t.frames++;
+		if (p->o.out_dir && (shown - 1) % p->o.every == 0 && write_png(p, shown) < 0)
+			return -1;
+		if (p->disp->handle_events)
+			p->disp->handle_events(&quit);
+		uint64_t now = clock_now_ns();
+		if (now - t.since >= 1000000000u) {
+			fps = (double)t.frames / ((double)(now - t.since) * 1e-9);
+			log_second(p, &t, now);
+		}
+	}
+	if (r < 0)
+		return -1;
+	log_second(p, &t, clock_now_ns());
+	double n = total.frames ? (double)total.frames : 1.0;
+	double secs = (double)(clock_now_ns() - total.since) * 1e-9;
+	fprintf(stderr, "played %ld frames of %s in %.2f s: %.1f fps; per frame decode %.2f ms, skin %.2f ms, "
+		"upload %.2f ms, draw %.2f ms (%s, %dx%d, %s skinning)\n", shown, p->o.amc ? p->o.amc : p->clip, secs, shown / secs,
+		total.decode * 1e-6 / n, total.skin * 1e-6 / n, total.upload * 1e-6 / n, total.draw * 1e-6 / n,
+		p->disp->name, p->info.width, p->info.height, p->gpu[0] ? "GPU" : "CPU");
+	if (p->o.sheet_path && sheet_write(&p->contact, p->o.sheet_path) < 0)
+		return -1;
+	return 0;
+}
+
+int main(int argc, char **argv)
+{
+	static player p;
+	if (cli_wants_version(argc, argv))
+		return cli_print_version("skinplay"), 0;
+	int rc = play_parse(&p.o, argc, argv);
+	if (rc != 0)
+		return rc < 0 ? 1 : 0;
+	if (p.o.print_platform) {
+		puts(display_auto()->name);
+		return 0;
+	}
+	if (kiosk_setup(&p.kiosk, &p.o, argc, argv) < 0)
+		return 1;
+	rc = setup(&p) == 0 &&
+	     kiosk_start(&p.kiosk, &p.o, p.headless, p.o.image_count ? show_clip_count(&p.show) : 1) == 0 &&
+	     play(&p) == 0 ? 0 : 1;
+	kiosk_shutdown(&p.kiosk);
+	cli_motion_close(&p.motion);
+	show_close(&p.show);
+	if (p.o.report_memory)
+		show_report_memory();
+	if (p.disp) {
+		render_shutdown(&p.r);
+		p.disp->shutdown();
+	}
+	if (p.reload && rc == 0) {
+		/* a new show: start over as a fresh process (same pid for systemd) */
+		execv("/proc/self/exe", argv);
+		fprintf(stderr, "skinplay: re-executing for SIGHUP: %s\n", strerror(errno));
+		return 1;
+	}
+	return rc;
+}

@@ -1,0 +1,195 @@
+#include "skinplay_kiosk.h"
+
+#include <poll.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "cli_common.h"
+#include "clock.h"
+#include "file_reader.h"
+#include "signals.h"
+
+static int given(int argc, char **argv, const char *opt)
+{
+	for (int i = 1; i < argc; i++)
+		if (!strcmp(argv[i], opt))
+			return 1;
+	return 0;
+}
+
+static int load_board(kiosk *k, const char *path)
+{
+	file_reader fr;
+	skp_error err;
+	int rc = file_reader_open(&fr, path);
+	if (rc < 0) {
+		fprintf(stderr, "%s: cannot open: %s\n", path, strerror(-rc));
+		return -1;
+	}
+	skp_status st = board_config_read(&k->board, file_reader_as_reader(&fr), &err);
+	file_reader_close(&fr);
+	if (st != SKP_OK) {
+		cli_error(path, &err);
+		return -1;
+	}
+	k->have_board = 1;
+	return 0;
+}
+
+/* The command line wins; the board fills in what it did not say. */
+static void apply_board(const board_config *b, play_opts *o, int argc, char **argv)
+{
+	if (b->platform[0] && !given(argc, argv, "--platform"))
+		o->platform = b->platform;
+	if (b->device[0] && !given(argc, argv, "--device"))
+		o->device = b->device;
+	if (b->rotation >= 0 && !given(argc, argv, "--rotation"))
+		o->rotation = b->rotation;
+	if (b->width && !given(argc, argv, "--size")) {
+		o->width = b->width;
+		o->height = b->height;
+	}
+}
+
+int kiosk_setup(kiosk *k, play_opts *o, int argc, char **argv)
+{
+	memset(k, 0, sizeof *k);
+	k->sig_fd = -1;
+	k->sd.fd = -1;
+	board_config_defaults(&k->board);
+	if (o->board && load_board(k, o->board) < 0)
+		return -1;
+	if (k->have_board)
+		apply_board(&k->board, o, argc, argv);
+	/* no show on the command line: the board's image slots (A/B update) */
+	if (!o->image_count && (!o->asf || !o->amc)) {
+		for (int i = 0; i < k->board.slot_count && o->image_count < 4; i++)
+			o->image[o->image_count++] = k->board.slot[i];
+		if (!o->image_count) {
+			fprintf(stderr, "skinplay: give --asf and --amc, --image, or [storage] slots in %s\n", o->board);
+			return -1;
+		}
+	}
+	k->input_spec = o->input ? o->input : k->have_board && k->board.input[0] ? k->board.input : "none";
+	const char *arg;
+	if (!input_find(k->input_spec, &arg)) {
+		fprintf(stderr, "skinplay: --input expects gpio, keyboard, script:FILE or none, got '%s'\n",
+			k->input_spec);
+		return -1;
+	}
+	/* before the display and the worker threads start: a SIGTERM during a
+	 * long setup is then not lost, and the handler serves every thread */
+	k->sig_fd = signals_init();
+	if (k->sig_fd < 0) {
+		fprintf(stderr, "skinplay: signals: %s\n", strerror(-k->sig_fd));
+		return -1;
+	}
+	return 0;
+}
+
+static uint64_t now_ms(const kiosk *k, long n)
+{
+	/* headless: frame n is at n * 1000 / fps ms exactly (the epsilon keeps
+	 * 100.0 from rounding down to 99), so scripted runs are reproducible */
+	if (k->headless)
+		return (uint64_t)((double)n * 1000.0 / k->fps + 1e-6);
+	return (clock_now_ns() - k->t0_ns) / 1000000u;
+}
+
+int kiosk_start(kiosk *k, const play_opts *o, int headless, int clip_count)
+{
+	skp_error err;
+	const char *arg;
+	k->headless = headless;
+	k->fps = o->fps > 0 ? o->fps : 120.0;
+	k->t0_ns = k->last_ns = clock_now_ns();
+	player_init(&k->ps, o->algo, o->view, o->gpu, clip_count);
+	k->in = input_find(k->input_spec, &arg);
+	if (k->in->init(&k->board, arg, now_ms(k, 0), &err) != 0) {
+		fprintf(stderr, "skinplay: input %s: %s\n", k->in->name, err.msg);
+		return -1;
+	}
+	k->in_started = 1;
+	if (k->in != &input_none)
+		fprintf(stderr, "input: %s%s%s\n", k->in->name, arg ? " " : "", arg ? arg : "");
+	int rc = sdnotify_init(&k->sd);
+	if (rc < 0)
+		fprintf(stderr, "skinplay: $NOTIFY_SOCKET: %s\n", strerror(-rc));
+	sdnotify_send(&k->sd, "READY=1");
+	return 0;
+}
+
+static unsigned act_bit(player_action a)
+{
+	static const unsigned bits[] = { 0, KIOSK_ALGO, KIOSK_PLAY, KIOSK_RESTART, KIOSK_CLIP, KIOSK_VIEW, KIOSK_GPU };
+	return bits[a];
+}
+
+static unsigned take_signals(kiosk *k)
+{
+	unsigned s = signals_take(), act = 0;
+	if (s & SIGNALS_RELOAD) {
+		fprintf(stderr, "signal: SIGHUP -> reopen the show\n");
+		sdnotify_send(&k->sd, "RELOADING=1");
+		act |= KIOSK_RELOAD;
+	}
+	if (s & SIGNALS_QUIT) {
+		fprintf(stderr, "signal: quit -> clean exit\n");
+		act |= KIOSK_QUIT;
+	}
+	return act;
+}
+
+/* Frame-rate cap on a display (the board's max_fps). */
+static void pace(kiosk *k)
+{
+	if (k->headless || k->board.max_fps <= 0)
+		return;
+	uint64_t next = k->last_ns + 1000000000u / (uint64_t)k->board.max_fps;
+	if (clock_now_ns() < next)
+		clock_sleep_until_ns(next);
+	k->last_ns = clock_now_ns();
+}
+
+unsigned kiosk_frame(kiosk *k, long n)
+{
+	player_event ev[INPUT_MAX_EVENTS];
+	skp_error err;
+	unsigned act = 0;
+	pace(k);
+	/* the input fds need no poll: read() never blocks and runs every frame */
+	struct pollfd sig = { .fd = k->sig_fd, .events = POLLIN };
+	if (poll(&sig, 1, 0) > 0 && (sig.revents & POLLIN))
+		act |= take_signals(k);
+	/* read() also fires the debounce and long-press timers: every frame */
+	int got = k->in->read(now_ms(k, n), ev, INPUT_MAX_EVENTS, &err);
+	if (got < 0) {
+		/* once, not every frame for months: the show goes on without buttons */
+		fprintf(stderr, "skinplay: input %s: %s; input off\n", k->in->name, err.msg);
+		k->in->shutdown();
+		k->in = &input_none;
+		got = 0;
+	}
+	for (int i = 0; i < got; i++) {
+		char line[96];
+		player_action a = player_handle(&k->ps, &ev[i], line, sizeof line);
+		if (a != PLAYER_ACT_NONE)
+			fprintf(stderr, "%s\n", line);
+		act |= act_bit(a);
+	}
+	sdnotify_watchdog(&k->sd, clock_now_ns());
+	return act;
+}
+
+void kiosk_shutdown(kiosk *k)
+{
+	if (k->in_started)
+		k->in->shutdown();
+	k->in_started = 0;
+	if (k->sd.fd >= 0)
+		sdnotify_send(&k->sd, "STOPPING=1");
+	sdnotify_close(&k->sd);
+	if (k->sig_fd >= 0)
+		signals_shutdown();
+	k->sig_fd = -1;
+}

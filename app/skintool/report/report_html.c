@@ -1,0 +1,427 @@
+/* index.html of skintool compare: one static page, no JavaScript, inline
+ * CSS, every figure a PNG beside it. */
+#include <errno.h>
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "report.h"
+
+static const char *const algo_label[SKIN_ALGO_COUNT] = { "LBS", "DQBS", "DQBS fixed" };
+
+static const char css[] =
+	"body{margin:0;background:#eef0f3;color:#1f2328;"
+	"font:15px/1.55 -apple-system,'Segoe UI',Roboto,'Helvetica Neue',Arial,sans-serif}\n"
+	"main{max-width:1040px;margin:0 auto;padding:28px 32px 64px;background:#fff;"
+	"box-shadow:0 0 0 1px #dde1e6}\n"
+	"h1{font-size:27px;margin:0 0 2px;letter-spacing:-.01em}\n"
+	"h2{font-size:19px;margin:40px 0 12px;padding-bottom:6px;border-bottom:2px solid #e6e9ee}\n"
+	"h3{font-size:16px;margin:24px 0 6px}\n"
+	".meta{color:#59636e;font-size:13.5px;margin:0}\n"
+	".meta code{font-size:12.5px}\n"
+	"table{border-collapse:collapse;width:100%;font-size:14px;margin:10px 0 4px}\n"
+	"th,td{padding:7px 10px;border-bottom:1px solid #e6e9ee;text-align:right;vertical-align:top}\n"
+	"th{background:#f5f6f8;font-weight:600;font-size:13px;color:#3d444d}\n"
+	"th:first-child,td:first-child{text-align:left}\n"
+	"td{font-variant-numeric:tabular-nums}\n"
+	"td small{display:block;color:#6e7781;font-size:12px}\n"
+	".verdict{margin:8px 0;padding:10px 14px;border-left:4px solid #9aa4af;background:#f7f8fa}\n"
+	".verdict.yes{border-color:#2da44e}.verdict.no{border-color:#cf222e}\n"
+	"td.past{color:#cf222e}\n"
+	".verdict b{font-weight:600}\n"
+	".swatch{display:inline-block;width:26px;height:0;border-top:3px solid;vertical-align:middle;"
+	"margin:0 6px 0 16px}\n"
+	".swatch.dash{border-top-style:dashed}\n"
+	".legend{font-size:14px;margin:6px 0 0}\n"
+	"figure{margin:18px 0 22px}\n"
+	"figure img{display:block;width:100%;height:auto;border:1px solid #dde1e6;border-radius:4px}\n"
+	"figcaption{font-size:13.5px;color:#444c56;margin-top:6px}\n"
+	".pair{display:grid;grid-template-columns:1fr 1fr;gap:12px}\n"
+	".lbs{color:#d64541}.dqbs{color:#266ebe}.fixed{color:#2ea05a}\n"
+	"dl{font-size:14px}dt{font-weight:600;margin-top:10px}dd{margin:2px 0 0 18px;color:#3d444d}\n"
+	"code{font-family:'SFMono-Regular',Consolas,'Liberation Mono',monospace;font-size:13px;"
+	"background:#f3f4f6;padding:1px 4px;border-radius:3px}\n";
+
+static void put_escaped(FILE *f, const char *s)
+{
+	for (; *s; s++) {
+		switch (*s) {
+		case '<': fputs("&lt;", f); break;
+		case '>': fputs("&gt;", f); break;
+		case '&': fputs("&amp;", f); break;
+		case '"': fputs("&quot;", f); break;
+		default: fputc(*s, f);
+		}
+	}
+}
+
+static const char *joint_name(const report *r, int joint)
+{
+	return joint >= 0 && joint < r->skel->count ? r->skel->bone[joint].name : "?";
+}
+
+/* "elbows (lradius)" */
+static void put_where(FILE *f, const report *r, const report_extreme *e)
+{
+	fputs(report_region_name(e->region), f);
+	if (e->joint >= 0) {
+		fputs(" (", f);
+		put_escaped(f, joint_name(r, e->joint));
+		fputc(')', f);
+	}
+}
+
+/* Volume lost on the worst frame, in percent (0 when it never shrinks). */
+static double loss_pct(const report_algo *a)
+{
+	return a->vol_min.value < 1.0 ? 100.0 * (1.0 - a->vol_min.value) : 0.0;
+}
+
+static void head(FILE *f, const report *r)
+{
+	fputs("<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
+	      "<meta name=\"viewport\" content=\"width=device-width,initial-scale=1\">\n<title>LBS vs DQBS: ",
+	      f);
+	put_escaped(f, r->clip);
+	fprintf(f, "</title>\n<style>\n%s</style>\n</head>\n<body>\n<main>\n", css);
+	fputs("<h1>LBS vs DQBS on <code>", f);
+	put_escaped(f, r->clip);
+	fputs("</code></h1>\n<p class=\"meta\">Skeleton <code>", f);
+	put_escaped(f, r->asf);
+	fputs("</code>, motion <code>", f);
+	put_escaped(f, r->amc);
+	fputs("</code>, mesh: ", f);
+	put_escaped(f, r->mesh_name);
+	fprintf(f, " (%d vertices, %d triangles), weights %s. %ld frames, each skinned with LBS, DQBS and "
+		"fixed-point DQBS and measured in %.1f s. Numbers per frame: <a href=\"metrics.csv\">metrics.csv</a>.</p>\n",
+		r->vert_count, r->tri_count, r->weights, r->frames, r->seconds);
+}
+
+static void verdicts(FILE *f, const report *r)
+{
+	const report_algo *l = &r->algo[SKIN_LBS], *d = &r->algo[SKIN_DQBS];
+	int within = d->vol_dev <= 0.01;
+	int loses_more = loss_pct(l) > loss_pct(d);
+	double dq_dev_signed = 0;
+	/* the sign of DQBS's worst deviation: a loss or a gain (bulge) */
+	dq_dev_signed = fabs(1.0 - d->vol_min.value) >= fabs(d->vol_max.value - 1.0)
+				? 100.0 * (d->vol_min.value - 1.0) : 100.0 * (d->vol_max.value - 1.0);
+	fprintf(f, "<p class=\"verdict %s\" id=\"verdict-dqbs-volume\">DQBS keeps the volume within 1%% "
+		"on every frame: <b>%s</b> &mdash; its largest deviation is %+.2f%% (frame %ld%s)",
+		within ? "yes" : "no", within ? "yes" : "no", dq_dev_signed, d->vol_dev_frame,
+		dq_dev_signed > 0 ? ", a gain: DQBS bulges at bends" : "");
+	if (r->vol_joints[SKIN_DQBS].count > 0)
+		fprintf(f, "; the largest share, %+.2f%%, from the bend of <code>%s</code> (<a href=\"#joints\">"
+			"where the volume goes</a>)", 100.0 * r->vol_joints[SKIN_DQBS].joint[0].share,
+			r->skel->bone[r->vol_joints[SKIN_DQBS].joint[0].bone].name);
+	if (r->dqbs_overlap >= 0.0005)
+		fprintf(f, ". In that pose the skin also passes through itself: "
+			"<span id=\"dqbs-overlap\">%.2f%%</span> of the bound volume lies inside two parts at "
+			"once, which the signed volume counts twice, as the flesh of both; the space the body "
+			"takes up is %+.2f%%", 100.0 * r->dqbs_overlap, dq_dev_signed - 100.0 * r->dqbs_overlap);
+	fputs(".</p>\n", f);
+	fprintf(f, "<p class=\"verdict %s\" id=\"verdict-lbs-loss\">LBS's worst frame loses more volume "
+		"than DQBS's: <b>%s</b> &mdash; LBS loses up to %.2f%% (frame %ld), DQBS at most %.2f%%",
+		loses_more ? "yes" : "no", loses_more ? "yes" : "no", loss_pct(l), l->vol_min.frame,
+		loss_pct(d));
+	if (d->vol_min.value < 1.0)
+		fprintf(f, " (frame %ld)", d->vol_min.frame);
+	fputs(".</p>\n", f);
+	if (r->rel_min.frame >= 0) {
+		fprintf(f, "<p class=\"verdict\" id=\"verdict-collapse\">Where LBS collapses most compared "
+			"with DQBS: at frame %ld a vertex keeps <b>%.3f less</b> of its radius with LBS, ",
+			r->rel_min.frame, -r->rel_min.value);
+		put_where(f, r, &r->rel_min);
+		fputs(".</p>\n", f);
+	}
+}
+
+/* The smallest region minimum, or NULL when no region was measured. */
+static const report_extreme *worst_region(const report_algo *a)
+{
+	const report_extreme *w = NULL;
+	for (int g = 0; g < REGION_COUNT; g++)
+		if (!isnan(a->reg_min[g].value) && (!w || a->reg_min[g].value < w->value))
+			w = &a->reg_min[g];
+	return w;
+}
+
+static void summary_table(FILE *f, const report *r)
+{
+	fputs("<table id=\"summary\">\n<tr><th>algorithm</th><th>worst volume loss</th>"
+	      "<th>largest volume gain</th><th>worst collapse<br>(min radius ratio)</th>"
+	      "<th>where</th><th>worst collapse in<br>a joint region</th><th>largest swelling<br>"
+	      "(max radius ratio)</th></tr>\n", f);
+	for (int a = 0; a < SKIN_ALGO_COUNT; a++) {
+		const report_algo *s = &r->algo[a];
+		fprintf(f, "<tr><td>%s</td><td>%.2f%%<small>frame %ld</small></td>", algo_label[a],
+			loss_pct(s), s->vol_min.frame);
+		fprintf(f, "<td>%.2f%%<small>frame %ld</small></td>",
+			s->vol_max.value > 1.0 ? 100.0 * (s->vol_max.value - 1.0) : 0.0, s->vol_max.frame);
+		fprintf(f, "<td>%.4f<small>frame %ld</small></td><td>", s->rad_min.value, s->rad_min.frame);
+		put_where(f, r, &s->rad_min);
+		const report_extreme *w = worst_region(s);
+		if (w) {
+			fprintf(f, "</td><td>%.4f<small>frame %ld, ", w->value, w->frame);
+			put_where(f, r, w);
+			fputs("</small>", f);
+		} else {
+			fputs("</td><td>&ndash;", f);
+		}
+		fprintf(f, "</td><td>%.4f<small>frame %ld</small></td></tr>\n", s->rad_max.value,
+			s->rad_max.frame);
+	}
+	fputs("</table>\n<p class=\"meta\">Volume: the closed mesh's signed volume over the volume as bound. Radius "
+	      "ratio: a vertex's distance to the nearest posed bone over the same distance as bound; "
+	      "the minimum over all vertices also drops where a limb touches another one (for every "
+	      "algorithm alike), which is why the renders below are chosen by the difference between "
+	      "LBS and DQBS at the same vertex.</p>\n", f);
+}
+
+static void joint_row(FILE *f, const report *r, const report_joint *j)
+{
+	static const char *const axis[3] = { "rx", "ry", "rz" };
+	fputs("<tr><td><code>", f);
+	put_escaped(f, r->skel->bone[j->bone].name);
+	fputs("</code></td><td>", f);
+	for (int c = 0; c < j->count; c++)
+		fprintf(f, "%s%s %.1f", c ? ", " : "", axis[j->channel[c]], (double)j->deg[c]);
+	if (j->past >= 0)
+		fprintf(f, "</td><td class=\"past\">%s %.1f&deg; past (%.0f, %.0f)", axis[j->channel[j->past]],
+			(double)j->past_deg, (double)j->lo_deg, (double)j->hi_deg);
+	else
+		fputs("</td><td>within", f);
+	fprintf(f, "</td><td>%+.2f%%</td></tr>\n", 100.0 * j->share);
+}
+
+/* The listed joints of j outside their ASF limits. */
+static int joints_past(const report_joints *j)
+{
+	int n = 0;
+	for (int i = 0; i < j->count; i++)
+		n += j->joint[i].past >= 0;
+	return n;
+}
+
+static void joint_table(FILE *f, const report *r, int algo)
+{
+	static const char *const what[2] = { "LBS at its worst volume loss", "DQBS at its largest deviation" };
+	static const char *const id[2] = { "joints-lbs", "joints-dqbs" };
+	const report_joints *j = &r->vol_joints[algo];
+	if (j->frame < 0)
+		return;
+	fprintf(f, "<h3>%s: frame %ld, volume %+.2f%%</h3>\n", what[algo], j->frame, 100.0 * (j->volume - 1.0));
+	if (j->count == 0) {
+		fputs("<p>No single joint moves the volume by 0.05% or more.</p>\n", f);
+		return;
+	}
+	fprintf(f, "<table id=\"%s\" data-frame=\"%ld\">\n<tr><th>joint</th><th>rotation (degrees)</th><th>ASF limits</th>"
+		"<th>volume change from its bend</th></tr>\n", id[algo], j->frame);
+	for (int i = 0; i < j->count; i++)
+		joint_row(f, r, &j->joint[i]);
+	fputs("</table>\n", f);
+	int past = joints_past(j);
+	if (past > 0)
+		fprintf(f, "<p class=\"meta\">%d of these joints %s a channel outside the limits the "
+			"skeleton file gives it (compared modulo 360 degrees).</p>\n", past, past > 1 ? "have" : "has");
+}
+
+static void joints_section(FILE *f, const report *r)
+{
+	if (r->vol_joints[0].frame < 0 && r->vol_joints[1].frame < 0)
+		return;
+	fputs("<h2 id=\"joints\">Where the volume goes</h2>\n<p>Each worst frame skinned again with one "
+	      "joint at a time turned back to its bind-pose rotation: the difference is what that joint's "
+	      "bend does to the volume. DQBS turns each cross-section of a bending joint rigidly about the "
+	      "joint, so it keeps the volume only where the flesh around the joint is centred on it; "
+	      "elsewhere the volume changes in proportion to the bend angle, up one way and down the other", f);
+	if (r->balanced)
+		fputs(". These weights are volume-balanced: at each joint the cross-fade was moved so that "
+		      "this change is zero for small bends of the bind pose (skintool bind --report tables "
+		      "it), so what is left grows faster than the angle, or comes from joints the balancing "
+		      "left alone", f);
+	else if (strcmp(r->mesh_name, GENERATED_BODY) == 0)
+		fputs(" (on the generated body, the hips: a CMU hip joint lies in front of the pelvis; and the "
+		      "ankles, where the foot leaves the shin at a right angle)", f);
+	fputs(". LBS adds its collapse, which grows faster than the angle. The shares need not add up to "
+	      "the total: bends interact where their regions meet. Joints moving the volume by less than "
+	      "0.05% are left out.</p>\n", f);
+	joint_table(f, r, SKIN_LBS);
+	joint_table(f, r, SKIN_DQBS);
+}
+
+static void region_table(FILE *f, const report *r)
+{
+	fputs("<h2>Joint regions</h2>\n<table id=\"regions\">\n<tr><th>region</th><th>vertices</th>", f);
+	for (int a = 0; a < SKIN_ALGO_COUNT; a++)
+		fprintf(f, "<th>%s min</th>", algo_label[a]);
+	for (int a = 0; a < SKIN_ALGO_COUNT; a++)
+		fprintf(f, "<th>%s max</th>", algo_label[a]);
+	fputs("</tr>\n", f);
+	for (int g = 0; g < REGION_COUNT; g++) {
+		fprintf(f, "<tr><td>%s</td><td>%d</td>", report_region_name(g), r->region_verts[g]);
+		for (int m = 0; m < 2; m++)
+			for (int a = 0; a < SKIN_ALGO_COUNT; a++) {
+				const report_extreme *e = m ? &r->algo[a].reg_max[g] : &r->algo[a].reg_min[g];
+				if (isnan(e->value)) {
+					fputs("<td>&ndash;</td>", f);
+					continue;
+				}
+				fprintf(f, "<td>%.4f<small>frame %ld", e->value, e->frame);
+				if (e->joint >= 0) {
+					fputs(", ", f);
+					put_escaped(f, joint_name(r, e->joint));
+				}
+				fputs("</small></td>", f);
+			}
+		fputs("</tr>\n", f);
+	}
+	fputs("</table>\n<p class=\"meta\">Smallest and largest radius ratio over the clip of the "
+	      "vertices in each region, with the frame and the joint nearest to the vertex.</p>\n", f);
+}
+
+static void stills(FILE *f, const report *r)
+{
+	fputs("<h2>Where LBS fails: the worst frames</h2>\n", f);
+	if (r->render_note) {
+		fputs("<p>No renders: ", f);
+		put_escaped(f, r->render_note);
+		fputs(".</p>\n", f);
+		return;
+	}
+	if (r->still_count == 0) {
+		fputs("<p>LBS is nowhere thinner than DQBS in this clip: nothing to show.</p>\n", f);
+		return;
+	}
+	fputs("<p>The frames where a vertex of a joint region keeps the least of its radius with LBS "
+	      "compared with DQBS (see <i>LBS minus DQBS</i> below), at least half a second apart. LBS "
+	      "on the left, DQBS on the right, same pose and camera. The ring marks the joint nearest "
+	      "to that vertex; the close-up looks at it from the side it faces.</p>\n", f);
+	for (int i = 0; i < r->still_count; i++) {
+		const report_still *s = &r->still[i];
+		if (!s->rendered)
+			continue;
+		fprintf(f, "<h3>%d. Frame %ld &mdash; %s joint <code>", i + 1, s->frame,
+			report_region_name(s->rel.region));
+		put_escaped(f, joint_name(r, s->rel.joint));
+		fputs("</code></h3>\n<figure>\n<div class=\"pair\">\n", f);
+		fprintf(f, "<a href=\"%s\"><img src=\"%s\" alt=\"frame %ld, whole body, LBS left, DQBS right\"></a>\n",
+			s->full_png, s->full_png, s->frame);
+		fprintf(f, "<a href=\"%s\"><img src=\"%s\" alt=\"frame %ld, close-up of the joint\"></a>\n",
+			s->close_png, s->close_png, s->frame);
+		fprintf(f, "</div>\n<figcaption>Frame %ld: by the ringed joint a vertex keeps %.3f of its "
+			"bind-pose radius with <span class=\"lbs\">LBS</span> and %.3f with "
+			"<span class=\"dqbs\">DQBS</span>. Left: whole body; right: close-up.</figcaption>\n"
+			"</figure>\n", s->frame, s->lbs_ratio, s->dqbs_ratio);
+	}
+}
+
+static void charts(FILE *f, const report *r)
+{
+	fputs("<h2>Over time</h2>\n<p class=\"legend\"><span class=\"swatch\" style=\"border-color:#d64541\">"
+	      "</span>LBS<span class=\"swatch\" style=\"border-color:#266ebe\"></span>DQBS"
+	      "<span class=\"swatch dash\" style=\"border-color:#2ea05a\"></span>DQBS fixed point"
+	      "<span class=\"swatch dash\" style=\"border-color:#969696;border-top-width:1px\"></span>"
+	      "1.0 (as bound)</p>\n", f);
+	for (int i = 0; i < r->chart_count; i++) {
+		const report_chart *c = &r->chart[i];
+		fprintf(f, "<figure>\n<img src=\"%s\" alt=\"", c->png);
+		put_escaped(f, c->title);
+		fputs("\">\n<figcaption>", f);
+		put_escaped(f, c->caption);
+		fputs("</figcaption>\n</figure>\n", f);
+	}
+}
+
+static void scenes(FILE *f, const report *r)
+{
+	fputs("<h2>The synthetic scenes</h2>\n<p>A closed cylinder of radius 0.2 around two bones of "
+	      "length 1, the weights cross-fading over 0.3 either side of the joint; the second bone "
+	      "turned about its axis (twist) or about a perpendicular axis (bend). At the joint ring a "
+	      "twist by <i>a</i> shrinks LBS to |cos(<i>a</i>/2)| of the radius (the candy wrapper: a "
+	      "point at 180&deg;); DQBS keeps it (1).</p>\n", f);
+	fputs("<table id=\"scene-twist\">\n<tr><th>twist</th><th>analytic LBS<br>|cos(a/2)|</th>"
+	      "<th>LBS min radius</th><th>analytic DQBS</th><th>DQBS min radius</th>"
+	      "<th>fixed min radius</th><th>LBS volume</th><th>DQBS volume</th><th>fixed volume</th></tr>\n", f);
+	for (int i = 0; i < r->scene_count; i++) {
+		const report_scene *s = &r->scene[i];
+		if (s->kind != SKIN_SCENE_TWIST)
+			continue;
+		double an = fabs(cos(s->angle_deg * 3.14159265358979323846 / 360.0));
+		fprintf(f, "<tr><td>%d&deg;</td><td>%.6f</td><td>%.6f</td><td>1</td><td>%.6f</td><td>%.6f</td>"
+			"<td>%.6f</td><td>%.6f</td><td>%.6f</td></tr>\n", s->angle_deg, an, s->rmin[0],
+			s->rmin[1], s->rmin[2], s->vol[0], s->vol[1], s->vol[2]);
+	}
+	fputs("</table>\n<table id=\"scene-bend\">\n<tr><th>bend</th><th>LBS min radius</th>"
+	      "<th>DQBS min radius</th><th>fixed min radius</th><th>LBS max radius</th>"
+	      "<th>DQBS max radius</th><th>LBS volume</th><th>DQBS volume</th><th>fixed volume</th></tr>\n", f);
+	for (int i = 0; i < r->scene_count; i++) {
+		const report_scene *s = &r->scene[i];
+		if (s->kind != SKIN_SCENE_BEND)
+			continue;
+		fprintf(f, "<tr><td>%d&deg;</td><td>%.6f</td><td>%.6f</td><td>%.6f</td><td>%.6f</td><td>%.6f</td>"
+			"<td>%.6f</td><td>%.6f</td><td>%.6f</td></tr>\n", s->angle_deg, s->rmin[0], s->rmin[1],
+			s->rmin[2], s->rmax[0], s->rmax[1], s->vol[0], s->vol[1], s->vol[2]);
+	}
+	fputs("</table>\n<p class=\"meta\">A bend has no closed form for the blended radius: the inside of "
+	      "the bend collapses with LBS and, less, with DQBS, which bulges on the outside instead "
+	      "(max radius &gt; 1) and keeps the volume.</p>\n", f);
+}
+
+static void definitions(FILE *f, const report *r)
+{
+	fprintf(f, "<h2>Definitions</h2>\n<dl>\n"
+		"<dt>volume ratio</dt><dd>The closed mesh's signed volume (divergence theorem, in "
+		"double) over the volume as bound. 1 means kept. Where the skin passes through itself "
+		"the overlap counts twice, as the flesh of both parts: the ratio measures what the "
+		"skinning does to the body, not the space the pose takes up.</dd>\n"
+		"<dt>radius ratio</dt><dd>For each vertex farther than 1e-4 of the mesh's size from the "
+		"bones as bound (%d of %d vertices): its distance to the nearest posed bone segment over "
+		"the same distance in the bind pose. Below 1 the skin moved towards the bones (collapse, "
+		"candy wrapper), above 1 away (bulge).</dd>\n"
+		"<dt>joint regions</dt><dd>A vertex belongs to the joint nearest to it in the bind pose, "
+		"a joint being the head of a bone; the bone's name gives the region: "
+		"<code>lhumerus</code>/<code>rhumerus</code> shoulders, <code>lradius</code>/<code>rradius</code> "
+		"elbows, <code>lwrist</code>/<code>rwrist</code>/<code>lhand</code>/<code>rhand</code> wrists, "
+		"<code>lfemur</code>/<code>rfemur</code> hips, <code>ltibia</code>/<code>rtibia</code> knees "
+		"(CMU, HDM05); for other skeletons a name containing Shoulder, Elbow, Wrist, Hip or Knee. "
+		"A region's min and max are over its vertices' radius ratios. Vertices near other joints "
+		"(spine, neck, ankles, fingers) are in no region.</dd>\n"
+		"<dt>LBS minus DQBS</dt><dd>Per vertex of the joint regions, min(LBS radius ratio, 1) minus "
+		"min(DQBS radius ratio, 1) in the same frame: contact between limbs shrinks both alike and a "
+		"bulge is no collapse, so what remains is LBS's own collapse. The worst frames are its most "
+		"negative ones.</dd>\n"
+		"<dt>metrics.csv</dt><dd>One row per frame and algorithm: <code>frame,algo,volume_ratio,"
+		"min_radius_ratio,max_radius_ratio</code> exactly as <code>skintool metrics</code> prints "
+		"them for the same inputs, then <code>elbows_min,elbows_max,knees_min,knees_max,"
+		"shoulders_min,shoulders_max,hips_min,hips_max,wrists_min,wrists_max</code> (empty when "
+		"the skeleton has no such region).</dd>\n</dl>\n", r->measured, r->vert_count);
+}
+
+int report_write_html(const report *r, const char *dir)
+{
+	char path[4096];
+	snprintf(path, sizeof path, "%s/index.html", dir);
+	FILE *f = fopen(path, "w");
+	if (!f) {
+		fprintf(stderr, "%s: %s\n", path, strerror(errno));
+		return -1;
+	}
+	head(f, r);
+	fputs("<h2>Summary</h2>\n", f);
+	verdicts(f, r);
+	summary_table(f, r);
+	joints_section(f, r);
+	stills(f, r);
+	region_table(f, r);
+	charts(f, r);
+	scenes(f, r);
+	definitions(f, r);
+	fputs("</main>\n</body>\n</html>\n", f);
+	int bad = ferror(f);
+	if (fclose(f) != 0 || bad) {
+		fprintf(stderr, "%s: write failed\n", path);
+		return -1;
+	}
+	return 0;
+}

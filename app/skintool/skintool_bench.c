@@ -1,0 +1,233 @@
+/* skintool bench [--verts N] [--threads T]: skinning throughput per
+ * algorithm on a synthetic mesh, next to the memory-bandwidth bound for the
+ * bytes each vertex reads and writes, measured in the same run. */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "clock.h"
+#include "cli_common.h"
+#include "skin.h"
+#include "skintool_cmds.h"
+#include "workers.h"
+
+#define BENCH_BONES 31
+
+typedef struct bench {
+	skin_soa soa;
+	skin_bones bones;
+	skin_out out;
+	skin_algo algo;
+} bench;
+
+static unsigned long long rng = 0x9e3779b97f4a7c15ull;
+
+static float frand(void)
+{
+	rng ^= rng << 13; rng ^= rng >> 7; rng ^= rng << 17;
+	return (float)((rng >> 40) * (1.0 / 16777216.0));
+}
+
+static quat random_quat(void)
+{
+	quat q = { frand() - 0.5f, frand() - 0.5f, frand() - 0.5f, frand() - 0.5f };
+	return quat_normalize(q);
+}
+
+static int by_weight_desc(const void *a, const void *b)
+{
+	float x = *(const float *)a, y = *(const float *)b;
+	return (x < y) - (x > y);
+}
+
+/* A mesh of n vertices in a 2-unit box, 4 influences on random bones. */
+static int make_scene(bench *b, int n, void **block)
+{
+	size_t bytes = skin_soa_bytes(n);
+	*block = aligned_alloc(SKIN_ALIGN, (bytes + SKIN_ALIGN - 1) / SKIN_ALIGN * SKIN_ALIGN);
+	float *outp = aligned_alloc(SKIN_ALIGN, sizeof(float) * 3 * (size_t)(n + SKIN_LANES) * 2);
+	int32_t *outf = aligned_alloc(SKIN_ALIGN, sizeof(int32_t) * 3 * (size_t)(n + SKIN_LANES) * 2);
+	if (!*block || !outp || !outf)
+		return -1;
+	skin_soa_attach(&b->soa, *block, n);
+	for (int v = 0; v < b->soa.padded; v++) {
+		vec3 p = vec3_make(2 * frand() - 1, 2 * frand() - 1, 2 * frand() - 1);
+		vec3 nn = vec3_normalize(vec3_make(frand() - 0.5f, frand() - 0.5f, frand() - 0.5f));
+		float w[4], sum = 0;
+		for (int k = 0; k < 4; k++)
+			sum += w[k] = 0.05f + frand();
+		/* largest first, as skin_soa_load leaves them (the DQBS pivot) */
+		qsort(w, 4, sizeof w[0], by_weight_desc);
+		for (int k = 0; k < 4; k++) {
+			b->soa.bone[k][v] = (uint16_t)(frand() * BENCH_BONES) % BENCH_BONES;
+			b->soa.weight[k][v] = w[k] / sum;
+		}
+		b->soa.px[v] = p.x; b->soa.py[v] = p.y; b->soa.pz[v] = p.z;
+		b->soa.nx[v] = nn.x; b->soa.ny[v] = nn.y; b->soa.nz[v] = nn.z;
+		b->soa.fpx[v] = (fx_pos)(p.x * FX_POS_ONE); b->soa.fpy[v] = (fx_pos)(p.y * FX_POS_ONE);
+		b->soa.fpz[v] = (fx_pos)(p.z * FX_POS_ONE);
+		b->soa.fnx[v] = (fx_q30)(nn.x * FX_Q30_ONE); b->soa.fny[v] = (fx_q30)(nn.y * FX_Q30_ONE);
+		b->soa.fnz[v] = (fx_q30)(nn.z * FX_Q30_ONE);
+		unsigned left = FX_W15_ONE;
+		for (int k = 0; k < 3; k++) {
+			b->soa.fweight[k][v] = (fx_w15)(b->soa.weight[k][v] * FX_W15_ONE);
+			left -= b->soa.fweight[k][v];
+		}
+		b->soa.fweight[3][v] = (fx_w15)left;
+	}
+	b->out.pos = outp;
+	b->out.nrm = outp + 3 * (size_t)(n + SKIN_LANES);
+	b->out.fpos = outf;
+	b->out.fnrm = outf + 3 * (size_t)(n + SKIN_LANES);
+	return 0;
+}
+
+static void make_bones(skin_bones *bones)
+{
+	static skel s;
+	static skel_pose bind, pose;
+	s.count = BENCH_BONES;
+	for (int i = 0; i < BENCH_BONES; i++) {
+		bind.rot[i] = random_quat();
+		pose.rot[i] = random_quat();
+		bind.head[i] = vec3_make(frand(), frand(), frand());
+		pose.head[i] = vec3_make(frand(), frand(), frand());
+	}
+	skin_bones_compute(bones, &s, &bind, &pose);
+}
+
+static void run_slice(void *ctx, int slice, int slices)
+{
+	bench *b = ctx;
+	int lanes = b->soa.padded / SKIN_LANES;
+	int from = lanes * slice / slices * SKIN_LANES;
+	int to = lanes * (slice + 1) / slices * SKIN_LANES;
+	skin_run(b->algo, &b->soa, &b->bones, from, to - from, &b->out);
+}
+
+/* Seconds per pass of one timed round: passes for at least 50 ms. */
+static double round_seconds_per_pass(workers *w, bench *b)
+{
+	int passes = 0;
+	uint64_t t0 = clock_now_ns(), t1;
+	do {
+		workers_run(w, run_slice, b);
+		passes++;
+		t1 = clock_now_ns();
+	} while (t1 - t0 < 50000000u);
+	return (double)(t1 - t0) * 1e-9 / passes;
+}
+
+/* Best of many short rounds per algorithm, the algorithms taking turns so
+ * that a machine slowing down or speeding up (a shared VM) shifts all of
+ * them alike and their ratios stay meaningful: short rounds give each
+ * algorithm more chances to be timed in the machine's fast phases. */
+static void best_seconds_per_pass(workers *w, bench *b, double best[SKIN_ALGO_COUNT])
+{
+	for (int a = 0; a < SKIN_ALGO_COUNT; a++)
+		best[a] = 1e30;
+	for (int round = 0; round < 20; round++)
+		for (int a = 0; a < SKIN_ALGO_COUNT; a++) {
+			b->algo = (skin_algo)a;
+			double s = round_seconds_per_pass(w, b);
+			if (s < best[a])
+				best[a] = s;
+		}
+}
+
+/* Copy bandwidth (bytes read + written per second) over buffers the size
+ * of the kernels' working set, best of several passes. */
+static double copy_bandwidth(size_t bytes)
+{
+	char *a = aligned_alloc(64, bytes), *c = aligned_alloc(64, bytes);
+	if (!a || !c)
+		return 0;
+	memset(a, 1, bytes);
+	memset(c, 2, bytes);
+	double best = 1e30;
+	for (int round = 0; round < 5; round++) {
+		uint64_t t0 = clock_now_ns();
+		memcpy(c, a, bytes);
+		double s = (double)(clock_now_ns() - t0) * 1e-9;
+		if (s < best)
+			best = s;
+		a[round] ^= c[bytes - 1 - (size_t)round];
+	}
+	free(a);
+	free(c);
+	return 2.0 * (double)bytes / best;
+}
+
+static int parse(int argc, char **argv, long *verts, long *threads)
+{
+	for (int i = 0; i < argc; i++) {
+		const char *v = i + 1 < argc ? argv[i + 1] : NULL;
+		if (strcmp(argv[i], "--verts") == 0) {
+			if (cli_parse_long("--verts", v, verts) < 0)
+				return -1;
+			i++;
+		} else if (strcmp(argv[i], "--threads") == 0) {
+			if (cli_parse_long("--threads", v, threads) < 0)
+				return -1;
+			i++;
+		} else {
+			fprintf(stderr, "usage: skintool bench [--verts N] [--threads T]\n");
+			return -1;
+		}
+	}
+	if (*verts < SKIN_LANES || *verts > 50000000 || *threads < 1 || *threads > WORKERS_MAX) {
+		fprintf(stderr, "skintool bench: --verts must be 8..50000000 and --threads 1..%d\n", WORKERS_MAX);
+		return -1;
+	}
+	return 0;
+}
+
+int cmd_bench(int argc, char **argv)
+{
+	static bench b;
+	long verts = 1000000, threads = 1;
+	void *block = NULL;
+	if (parse(argc, argv, &verts, &threads) < 0)
+		return 1;
+	if (make_scene(&b, (int)verts, &block) < 0) {
+		fprintf(stderr, "skintool bench: out of memory for %ld vertices\n", verts);
+		return 1;
+	}
+	make_bones(&b.bones);
+	workers *w = workers_start((int)threads);
+	if (!w) {
+		fprintf(stderr, "skintool bench: cannot start %ld threads\n", threads);
+		return 1;
+	}
+	/* bytes per vertex: positions, normals, 4 bone indices and 4 weights
+	 * read, positions and normals written */
+	const int bytes_float = 24 + 8 + 16 + 24, bytes_fixed = 24 + 8 + 8 + 24;
+	printf("skinning %ld vertices, 4 influences, %d bones, %d thread(s), kernels: %s\n", verts,
+	       BENCH_BONES, workers_count(w), skin_simd_name());
+	printf("%-11s %10s %9s %11s %16s %9s\n", "algo", "Mverts/s", "ns/vert", "bytes/vert",
+	       "bw bound Mv/s", "of bound");
+	double best[SKIN_ALGO_COUNT];
+	best_seconds_per_pass(w, &b, best);
+	/* one copy-bandwidth measurement per working-set size: the float
+	 * kernels share theirs */
+	const double bw_float = copy_bandwidth((size_t)verts * (size_t)bytes_float / 2);
+	const double bw_fixed = copy_bandwidth((size_t)verts * (size_t)bytes_fixed / 2);
+	for (int a = 0; a < SKIN_ALGO_COUNT; a++) {
+		double rate = (double)verts / best[a];
+		int fixed = a == SKIN_DQBS_FIXED, bytes = fixed ? bytes_fixed : bytes_float;
+		double bound = (fixed ? bw_fixed : bw_float) / bytes;
+		printf("%-11s %10.1f %9.2f %11d %16.1f %8.0f%%", skin_algo_name((skin_algo)a), rate * 1e-6,
+		       best[a] * 1e9 / (double)verts, bytes, bound * 1e-6, 100.0 * rate / bound);
+		if (a != SKIN_LBS)
+			printf("   %.2fx LBS time", best[a] / best[SKIN_LBS]);
+		if (a == SKIN_DQBS_FIXED)
+			printf(", %.2fx float DQBS speed", best[SKIN_DQBS] / best[a]);
+		printf("\n");
+	}
+	workers_stop(w);
+	free(block);
+	free(b.out.pos);
+	free(b.out.fpos);
+	return 0;
+}

@@ -1,0 +1,132 @@
+/* skintool bench-image show.skn [--amc M.amc ...] [--runs N]
+ * Figures of a flash image: time from nothing to the first decoded frame
+ * (open, header, directory, skeleton, bind data, quantisation, first frame
+ * block; no GL), decode time per frame, and bytes per frame packed against
+ * the AMC text it came from. Best of N runs (the machine is shared). */
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+
+#include "cli_common.h"
+#include "cli_show.h"
+#include "clock.h"
+#include "fk.h"
+#include "skintool_cmds.h"
+
+typedef struct first_frame_ns {
+	uint64_t open, body, frame;
+} first_frame_ns;
+
+static int time_first_frame(const char *path, first_frame_ns *t)
+{
+	static show_image img;
+	static skp_player pl;
+	static bound_body body;
+	static amc_frame f;
+	static float values[SKP_MAX_DOF];
+	skp_error err;
+	long number;
+	uint64_t t0 = clock_now_ns();
+	if (show_image_open(&img, path, &err) < 0) {
+		cli_error(path, &err);
+		return -1;
+	}
+	uint64_t t1 = clock_now_ns();
+	int ok = skp_image_load_skel(&img.im, &body.skel, &err) == SKP_OK &&
+		 skp_image_load_bind(&img.im, &body.skel, &body.mesh, &body.weights, values, &number, &err) == SKP_OK;
+	if (ok)
+		fk_pose(&body.skel, number < 0 ? NULL : values, &body.pose);
+	uint64_t t2 = clock_now_ns();
+	ok = ok && skp_player_open(&pl, &img.im, 0, &err) == SKP_OK && skp_player_next(&pl, &f, &err) == 1;
+	uint64_t t3 = clock_now_ns();
+	show_image_close(&img);
+	if (!ok) {
+		cli_error(path, &err);
+		return -1;
+	}
+	t->open = t1 - t0;
+	t->body = t2 - t1;
+	t->frame = t3 - t2;
+	return 0;
+}
+
+/* Decodes every frame of clip c; returns ns per frame. */
+static double time_decode(show_image *img, int c)
+{
+	static skp_player pl;
+	static amc_frame f;
+	skp_error err;
+	if (skp_player_open(&pl, &img->im, c, &err) != SKP_OK)
+		return -1;
+	uint64_t t0 = clock_now_ns();
+	long n = 0;
+	int r;
+	while ((r = skp_player_next(&pl, &f, &err)) != 0)
+		n++;
+	return n ? (double)(clock_now_ns() - t0) / (double)n : 0;
+}
+
+static void print_clip(show_image *img, int c, const char *amc)
+{
+	const skp_image_clip *cl = &img->im.clip[c];
+	double packed = (double)cl->frame_blocks * img->im.hdr.block_size / cl->frame_count;
+	double best = 1e30;
+	for (int run = 0; run < 5; run++) {
+		double ns = time_decode(img, c);
+		if (ns >= 0 && ns < best)
+			best = ns;
+	}
+	printf("clip %s: %lu frames, %d dofs: %.1f bytes per frame packed (%d of values, blocks included), "
+	       "decode %.2f us per frame", cl->name, (unsigned long)cl->frame_count, cl->dofs, packed,
+	       2 * cl->dofs, best * 1e-3);
+	struct stat st;
+	if (amc && stat(amc, &st) == 0)
+		printf("; AMC text %.1f bytes per frame (%.1fx larger)", (double)st.st_size / cl->frame_count,
+		       (double)st.st_size / cl->frame_count / packed);
+	printf("\n");
+}
+
+int cmd_bench_image(int argc, char **argv)
+{
+	static show_image img;
+	const char *path = NULL, *amc[SKP_IMAGE_MAX_CLIPS] = { 0 };
+	long runs = 10;
+	int amc_count = 0;
+	skp_error err;
+	for (int i = 0; i < argc; i++) {
+		if (!strcmp(argv[i], "--amc") && i + 1 < argc && amc_count < SKP_IMAGE_MAX_CLIPS)
+			amc[amc_count++] = argv[++i];
+		else if (!strcmp(argv[i], "--runs") && i + 1 < argc) {
+			if (cli_parse_long("--runs", argv[++i], &runs) < 0 || runs < 1)
+				return 1;
+		} else if (argv[i][0] != '-' && !path)
+			path = argv[i];
+		else {
+			fprintf(stderr, "usage: skintool bench-image show.skn [--amc M.amc ...] [--runs N]\n");
+			return 1;
+		}
+	}
+	if (!path) {
+		fprintf(stderr, "usage: skintool bench-image show.skn [--amc M.amc ...] [--runs N]\n");
+		return 1;
+	}
+	first_frame_ns best = { UINT64_MAX, UINT64_MAX, UINT64_MAX }, t;
+	for (long r = 0; r < runs; r++) {
+		if (time_first_frame(path, &t) < 0)
+			return 1;
+		if (t.open + t.body + t.frame < best.open + best.body + best.frame)
+			best = t;
+	}
+	printf("%s: first frame %.2f ms after start (open + header + directory %.2f ms, skeleton + body %.2f ms, "
+	       "quantisation + first block + decode %.3f ms; best of %ld, no GL)\n", path,
+	       (best.open + best.body + best.frame) * 1e-6, best.open * 1e-6, best.body * 1e-6, best.frame * 1e-6, runs);
+	if (show_image_open(&img, path, &err) < 0) {
+		cli_error(path, &err);
+		return 1;
+	}
+	for (int c = 0; c < img.im.clip_count; c++)
+		print_clip(&img, c, c < amc_count ? amc[c] : NULL);
+	show_image_close(&img);
+	return 0;
+}

@@ -1,0 +1,214 @@
+/* skintool pack SKELETON.asf MOTION.amc [MOTION2.amc ...]
+ *               [--mesh MESH.obj [--group G] [--fit] [--bind-pose P.amc[:F]] [--weights W.csv] [--balance on|off]]
+ *               [--fps F] [--sequence N] [--block-size B] -o show.skn
+ * Binds the body (the generated one without --mesh) and packs it with the
+ * clips into a flash image (app/image_format.h). Each clip is read twice
+ * (its range, then its frames), so memory does not grow with its length.
+ * The image is written to OUT.tmp, synced and renamed: a pack cut short
+ * never leaves a half image under the final name. */
+#include <errno.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+#include <unistd.h>
+
+#include "cli_bind_args.h"
+#include "cli_common.h"
+#include "image_write.h"
+#include "skintool_cmds.h"
+#include "storage_file.h"
+
+#define PACK_USAGE "usage: skintool pack SKELETON.asf MOTION.amc [MOTION2.amc ...] [--mesh MESH.obj " \
+	BIND_ARGS_USAGE "] [--fps F] [--sequence N] [--block-size B] -o show.skn\n"
+
+#define PACK_MAX_AMC SKP_IMAGE_MAX_CLIPS
+
+typedef struct pack_args {
+	bind_args bind;
+	const char *asf, *mesh, *out;
+	const char *amc[PACK_MAX_AMC];
+	int amc_count;
+	double fps;
+	long sequence;
+	long block_size;
+} pack_args;
+
+static int pack_value(pack_args *p, const char *opt, const char *v)
+{
+	if (!strcmp(opt, "--mesh"))
+		p->mesh = v;
+	else if (!strcmp(opt, "-o"))
+		p->out = v;
+	else if (!strcmp(opt, "--sequence"))
+		return cli_parse_long(opt, v, &p->sequence) < 0 || p->sequence < 0 ? -1 : 0;
+	else if (!strcmp(opt, "--block-size"))
+		return cli_parse_long(opt, v, &p->block_size);
+	else if (!strcmp(opt, "--fps")) {
+		p->fps = atof(v);
+		if (!(p->fps > 0 && p->fps < 10000))
+			return fprintf(stderr, "skintool pack: --fps expects a rate in Hz, got '%s'\n", v), -1;
+	} else
+		return 1;
+	return 0;
+}
+
+static int pack_parse(pack_args *p, int argc, char **argv)
+{
+	bind_args_init(&p->bind);
+	p->fps = 120.0;
+	p->sequence = (long)time(NULL);
+	p->block_size = SKP_IMAGE_DEFAULT_BLOCK;
+	for (int i = 0; i < argc; i++) {
+		int r = bind_args_parse(&p->bind, argc, argv, &i);
+		if (r < 0)
+			return -1;
+		if (r > 0)
+			continue;
+		if (argv[i][0] == '-' && argv[i][1]) {
+			if (i + 1 >= argc || (r = pack_value(p, argv[i], argv[i + 1])) > 0) {
+				fprintf(stderr, "skintool pack: unknown option or missing value '%s'\n%s", argv[i], PACK_USAGE);
+				return -1;
+			}
+			if (r < 0)
+				return -1;
+			i++;
+		} else if (!p->asf) {
+			p->asf = argv[i];
+		} else if (p->amc_count < PACK_MAX_AMC) {
+			p->amc[p->amc_count++] = argv[i];
+		} else {
+			fprintf(stderr, "skintool pack: more than %d clips (board limit SKP_IMAGE_MAX_CLIPS)\n", PACK_MAX_AMC);
+			return -1;
+		}
+	}
+	if (!p->asf || !p->amc_count || !p->out) {
+		fputs(PACK_USAGE, stderr);
+		return -1;
+	}
+	return 0;
+}
+
+/* The clip's name: the AMC's file name without directory and extension. */
+static void clip_name(const char *path, char *out, size_t cap)
+{
+	const char *base = strrchr(path, '/');
+	snprintf(out, cap, "%s", base ? base + 1 : path);
+	char *dot = strrchr(out, '.');
+	if (dot && dot != out)
+		*dot = '\0';
+}
+
+static int clip_range(const char *path, const skel *s, skp_clip_range *range)
+{
+	static cli_motion m;
+	static amc_frame f;
+	skp_error err;
+	int r;
+	skp_clip_range_init(range, s);
+	if (cli_motion_open(&m, path, s) < 0)
+		return -1;
+	while ((r = cli_motion_next(&m, &f)) > 0) {
+		if (skp_clip_range_add(range, &f, &err) != SKP_OK) {
+			cli_error(path, &err);
+			r = -1;
+			break;
+		}
+	}
+	cli_motion_close(&m);
+	if (r == 0 && range->frames == 0) {
+		fprintf(stderr, "%s: no frames\n", path);
+		return -1;
+	}
+	return r;
+}
+
+static int pack_clip(skp_image_writer *w, const char *path, double fps)
+{
+	static skp_clip_range range;
+	static cli_motion m;
+	static amc_frame f;
+	char name[SKP_MAX_NAME + 16];
+	skp_error err;
+	int r;
+	if (clip_range(path, w->s, &range) < 0)
+		return -1;
+	clip_name(path, name, sizeof name);
+	if (skp_image_clip_begin(w, name, (float)fps, &range, &err) != SKP_OK) {
+		cli_error(path, &err);
+		return -1;
+	}
+	if (cli_motion_open(&m, path, w->s) < 0)
+		return -1;
+	while ((r = cli_motion_next(&m, &f)) > 0) {
+		if (skp_image_clip_frame(w, &f, &err) != SKP_OK) {
+			cli_error(path, &err);
+			r = -1;
+			break;
+		}
+	}
+	cli_motion_close(&m);
+	if (r == 0)
+		printf("clip %s: %ld frames, max error %.3g rad (%.3g deg), %.3g length units\n", name,
+		       range.frames, (double)w->dir[w->clip_count - 1].max_rot_err,
+		       (double)w->dir[w->clip_count - 1].max_rot_err * 57.29577951308232,
+		       (double)w->dir[w->clip_count - 1].max_trans_err);
+	return r;
+}
+
+static int write_image(const pack_args *p, const bound_body *body, storage_file *sf, const char *tmp)
+{
+	static skp_image_writer w;
+	static amc_frame pose;
+	skp_error err;
+	if (p->bind.pose_path && cli_read_frame(p->bind.pose_path, &body->skel, p->bind.pose_frame, &pose) < 0)
+		return -1;
+	if (skp_image_write_begin(&w, &sf->bd, (uint64_t)p->sequence, &body->skel, &err) != SKP_OK ||
+	    skp_image_write_bind(&w, &body->mesh, &body->weights, p->bind.pose_path ? pose.value : NULL,
+				 pose.number, &err) != SKP_OK) {
+		cli_error(tmp, &err);
+		return -1;
+	}
+	for (int i = 0; i < p->amc_count; i++)
+		if (pack_clip(&w, p->amc[i], p->fps) < 0)
+			return -1;
+	if (skp_image_write_end(&w, &err) != SKP_OK) {
+		cli_error(tmp, &err);
+		return -1;
+	}
+	printf("%s: %lu blocks of %lu bytes (%lu bytes), sequence %ld, %d bones, %d vertices, %d triangles\n",
+	       p->out, (unsigned long)w.hdr.block_count, (unsigned long)w.hdr.block_size,
+	       (unsigned long)w.hdr.block_count * w.hdr.block_size, p->sequence, body->skel.count,
+	       body->mesh.vert_count, body->mesh.tri_count);
+	return 0;
+}
+
+int cmd_pack(int argc, char **argv)
+{
+	static pack_args p;
+	static bound_body body;
+	static storage_file sf;
+	char tmp[4096];
+	memset(&p, 0, sizeof p);
+	if (pack_parse(&p, argc, argv) < 0 || bind_args_load(&p.bind, p.asf, p.mesh, &body) < 0)
+		return 1;
+	snprintf(tmp, sizeof tmp, "%s.tmp", p.out);
+	int rc = storage_file_create(&sf, tmp, (uint32_t)p.block_size);
+	if (rc < 0) {
+		fprintf(stderr, "%s: cannot create: %s\n", tmp, strerror(-rc));
+		return 1;
+	}
+	rc = write_image(&p, &body, &sf, tmp);
+	if (rc == 0 && storage_file_sync(&sf) < 0) {
+		fprintf(stderr, "%s: fsync: %s\n", tmp, strerror(errno));
+		rc = -1;
+	}
+	storage_file_close(&sf);
+	if (rc == 0 && rename(tmp, p.out) != 0) {
+		fprintf(stderr, "%s: cannot rename to %s: %s\n", tmp, p.out, strerror(errno));
+		rc = -1;
+	}
+	if (rc < 0)
+		unlink(tmp);
+	return rc < 0 ? 1 : 0;
+}

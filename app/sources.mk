@@ -1,0 +1,68 @@
+# Every module of the build and the layers between them, in one place: the
+# Makefile, tests/embedded/mcu.mk and tests/hardening.mk include it, and
+# tests/lint/lint.sh and tests/check_layers.sh read it through them. A
+# module's files compile with -I for its own folders and for the folders of
+# the modules in its DEPS_ list only, so an include of a module above it (or
+# beside it) does not compile.
+#
+#   skinplay   skintool (+ report/)            the programs: argv, stdio, main()
+#        \      /     \
+#          cli        analysis                 shared by both / tool-only measures
+#           |
+#   platform/{display,input,storage,sys}       Linux backends (base + port headers)
+#           |
+#   bind  image  render  kiosk                 features
+#      \    |    /
+#        skin (+ kernels/, private)            LBS, DQBS, DQBS fixed
+#           |
+#     mesh -> motion -> math -> base
+
+# The portable core, bottom up: no malloc, no stdio (make check-core).
+CORE_MODULES  := base math motion mesh skin bind image render kiosk
+DEPS_base     :=
+DEPS_math     := base
+DEPS_motion   := math base
+DEPS_mesh     := motion math base
+DEPS_skin     := mesh motion math base
+DEPS_bind     := skin mesh motion math base
+DEPS_image    := skin mesh motion math base
+DEPS_render   := skin mesh motion math base
+DEPS_kiosk    := base
+# Host code, which may allocate and print: the tool-only measures, the layer
+# both programs share (loading, binding, showing, --version), the programs.
+DEPS_analysis := skin mesh motion math base
+DEPS_cli      := $(CORE_MODULES) platform
+DEPS_skinplay := cli $(CORE_MODULES) platform
+DEPS_skintool := cli analysis $(CORE_MODULES) platform
+HOST_MODULES  := analysis cli skinplay skintool
+APP_MODULES   := $(CORE_MODULES) $(HOST_MODULES)
+
+# A module's private folders: on its own include path, nobody else's.
+PRIVATE_skin     := kernels
+PRIVATE_skintool := report
+
+# The skinning kernels (app/skin/kernels/) each SIMD setting builds
+# (board.mk: SIMD; `make SIMD=scalar` builds the portable ones only).
+KERNELS_scalar := skin_scalar skin_fixed
+KERNELS_avx2   := $(KERNELS_scalar) skin_avx2 skin_fixed_avx2
+KERNELS_neon   := $(KERNELS_scalar) skin_neon
+# The fixed-point path, proven free of floating point by `make check-core`.
+FIXED_SRC      := app/math/fixed.c app/skin/kernels/skin_fixed.c
+
+# platform/: one file per backend, each board listing the ones it builds
+# (board.mk: DISPLAYS, INPUTS); the registries (display.c, input.c) are
+# the only files that name them. Each backend's pkg-config modules:
+PC_display_surfaceless := egl
+PC_display_kms         := egl gbm libdrm
+PC_display_x11         := egl x11
+PC_display_osmesa      :=
+PC_input_gpio          := libgpiod
+PC_input_keyboard      :=
+PC_input_script        :=
+PC_platform            := libpng
+# What platform code may include from app/: base, and the modules of the
+# port headers it implements (image: blockdev.h; kiosk: the button port,
+# input_port.h; render: the GL entry points, gl_api.h).
+PLATFORM_DIRS  := display input storage sys
+DEPS_platform  := base image kiosk render
+PORT_HEADERS   := blockdev.h input_port.h gl_api.h

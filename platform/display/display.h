@@ -1,0 +1,61 @@
+/* Display backends: each one brings up an OpenGL ES 2 capable context with
+ * a width x height framebuffer bound, and hands out the GL entry points
+ * (see app/gl_api.h: skinplay links no GL library itself).
+ *
+ * Backends are singletons with static state: one may be initialised at a
+ * time, and shutdown() must come before another init(). */
+#ifndef DISPLAY_H
+#define DISPLAY_H
+
+#include <stddef.h>
+
+#include "skp_error.h"
+
+typedef struct display_config {
+	int width, height;      /* wanted size; kms uses the mode of this size if the
+	                         * connector has one, else its preferred mode */
+	const char *device;     /* kms: DRM card node; x11: X display name; NULL = default */
+	int rotation;           /* 0, 90, 180 or 270 degrees: applied by the renderer */
+} display_config;
+
+typedef struct display_info {
+	int width, height;      /* actual framebuffer size */
+	int rotation;           /* cfg->rotation, checked */
+	const char *name;       /* backend name */
+	const char *gl_renderer; /* GL_RENDERER string */
+} display_info;
+
+typedef struct display_backend {
+	const char *name;
+	/* NULL, or 1 when the backend can start here (kms: a /dev/dri/card*
+	 * with a connected connector whose DRM master this process can be). */
+	int (*available)(void);
+	/* Makes a context current with a width x height framebuffer bound
+	 * (an FBO on surfaceless) and the viewport set. On failure nothing is
+	 * left open. */
+	int (*init)(const display_config *cfg, display_info *out, skp_error *err);
+	void *(*get_proc)(const char *name);
+	/* Shows the frame: swap or page flip (kms waits for the previous flip
+	 * first); surfaceless and osmesa only finish rendering. */
+	int (*present)(skp_error *err);
+	/* fd the main loop polls for input/display events, or -1. */
+	int (*event_fd)(void);
+	/* Never blocks; safe to call every frame even when poll() said nothing
+	 * (Xlib buffers events it already read). Sets *quit on a close request. */
+	int (*handle_events)(int *quit);
+	/* Releases everything init took (kms: restores the saved CRTC). */
+	void (*shutdown)(void);
+} display_backend;
+
+/* The board's backends (board.mk: DISPLAYS), by name: "surfaceless",
+ * "osmesa", "kms", "x11"; NULL if unknown or not built. */
+const display_backend *display_find(const char *name);
+
+/* kms on a text console with a usable DRM device, x11 when DISPLAY is set,
+ * surfaceless otherwise (of those the board builds). */
+const display_backend *display_auto(void);
+
+/* The backends built in, by name, space-separated, into out. */
+void display_list(char *out, size_t size);
+
+#endif

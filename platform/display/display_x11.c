@@ -1,0 +1,170 @@
+/* A fixed-size Xlib window with an EGL window surface (EGL platform X11).
+ * q, Escape or the window manager's close button quit; the buttons come
+ * from the input backends (keyboard: the terminal that started it). */
+#include "display.h"
+
+#include <string.h>
+
+#include <X11/Xlib.h>
+#include <X11/Xutil.h>
+#include <X11/keysym.h>
+
+#include "display_common.h"
+#include "display_egl.h"
+
+static struct {
+	Display *dpy;
+	Window win;
+	Colormap cmap;
+	Atom wm_delete;
+	display_egl egl;
+} s;
+
+static int open_x(const char *name, skp_error *err)
+{
+	s.dpy = XOpenDisplay(name);
+	if (!s.dpy) {
+		const char *shown = XDisplayName(name);
+		return skp_fail(err, SKP_ERR_IO, 0, "x11: cannot open display '%s'", shown ? shown : "");
+	}
+	return SKP_OK;
+}
+
+/* The window needs the X visual of the EGL config it will render with. */
+static int create_window(int width, int height, skp_error *err)
+{
+	EGLint visual_id = 0;
+	XVisualInfo want, *vi;
+	int n = 0;
+
+	eglGetConfigAttrib(s.egl.dpy, s.egl.config, EGL_NATIVE_VISUAL_ID, &visual_id);
+	want.visualid = (VisualID)visual_id;
+	vi = XGetVisualInfo(s.dpy, VisualIDMask, &want, &n);
+	if (!vi)
+		return skp_fail(err, SKP_ERR_IO, 0, "x11: no X visual %d for the EGL config", (int)visual_id);
+	Window root = RootWindow(s.dpy, vi->screen);
+	XSetWindowAttributes attr = { 0 };
+	s.cmap = XCreateColormap(s.dpy, root, vi->visual, AllocNone);
+	attr.colormap = s.cmap;
+	attr.background_pixel = 0;
+	attr.border_pixel = 0;
+	attr.event_mask = ExposureMask | StructureNotifyMask | KeyPressMask;
+	s.win = XCreateWindow(s.dpy, root, 0, 0, (unsigned)width, (unsigned)height, 0, vi->depth, InputOutput,
+			      vi->visual, CWBackPixel | CWBorderPixel | CWColormap | CWEventMask, &attr);
+	XFree(vi);
+	/* The renderer draws width x height: ask the window manager to keep
+	 * that size rather than follow every resize. */
+	XSizeHints hints = { .flags = PMinSize | PMaxSize, .min_width = width, .max_width = width,
+			     .min_height = height, .max_height = height };
+	XSetWMNormalHints(s.dpy, s.win, &hints);
+	XStoreName(s.dpy, s.win, "skinplay");
+	s.wm_delete = XInternAtom(s.dpy, "WM_DELETE_WINDOW", False);
+	XSetWMProtocols(s.dpy, s.win, &s.wm_delete, 1);
+	XMapWindow(s.dpy, s.win);
+	return SKP_OK;
+}
+
+static void x11_shutdown(void)
+{
+	display_egl_close(&s.egl);
+	if (s.dpy) {
+		if (s.win)
+			XDestroyWindow(s.dpy, s.win);
+		if (s.cmap)
+			XFreeColormap(s.dpy, s.cmap);
+		XCloseDisplay(s.dpy);
+	}
+	memset(&s, 0, sizeof s);
+}
+
+static int x11_init(const display_config *cfg, display_info *out, skp_error *err)
+{
+	static const EGLint attribs[] = {
+		EGL_SURFACE_TYPE, EGL_WINDOW_BIT,
+		EGL_RED_SIZE, 8, EGL_GREEN_SIZE, 8, EGL_BLUE_SIZE, 8,
+		EGL_DEPTH_SIZE, 24,
+		EGL_RENDERABLE_TYPE, EGL_OPENGL_ES2_BIT,
+		EGL_NONE
+	};
+	int rc = display_check_config(cfg, 16384, 16384, err);
+	if (rc != SKP_OK)
+		return rc;
+	if ((rc = open_x(cfg->device, err)) != SKP_OK)
+		goto fail;
+	rc = display_egl_open(&s.egl, EGL_PLATFORM_X11_KHR, "EGL_KHR_platform_x11", s.dpy, attribs, 0, err);
+	if (rc != SKP_OK || (rc = create_window(cfg->width, cfg->height, err)) != SKP_OK)
+		goto fail;
+	/* The core entry point takes the Window itself; the platform (EXT)
+	 * one would want a pointer to it. */
+	s.egl.surface = eglCreateWindowSurface(s.egl.dpy, s.egl.config, (EGLNativeWindowType)s.win, NULL);
+	if (s.egl.surface == EGL_NO_SURFACE) {
+		rc = skp_fail(err, SKP_ERR_IO, 0, "x11: EGL window surface failed (%s)", display_egl_error());
+		goto fail;
+	}
+	if ((rc = display_egl_bind(&s.egl, s.egl.surface, cfg->width, cfg->height, err)) != SKP_OK)
+		goto fail;
+	out->width = cfg->width;
+	out->height = cfg->height;
+	out->rotation = cfg->rotation;
+	out->name = "x11";
+	out->gl_renderer = s.egl.renderer;
+	return SKP_OK;
+fail:
+	x11_shutdown();
+	return rc;
+}
+
+static int x11_present(skp_error *err)
+{
+	if (!eglSwapBuffers(s.egl.dpy, s.egl.surface))
+		return skp_fail(err, SKP_ERR_IO, 0, "x11: eglSwapBuffers failed (%s)", display_egl_error());
+	return SKP_OK;
+}
+
+static int x11_event_fd(void)
+{
+	return s.dpy ? ConnectionNumber(s.dpy) : -1;
+}
+
+static void handle_key(XKeyEvent *ev, int *quit)
+{
+	KeySym sym = XLookupKeysym(ev, 0);
+	if (sym == XK_q || sym == XK_Escape)
+		*quit = 1;
+}
+
+static int x11_handle_events(int *quit)
+{
+	if (!s.dpy)
+		return SKP_OK;
+	while (XPending(s.dpy)) {
+		XEvent ev;
+		XNextEvent(s.dpy, &ev);
+		switch (ev.type) {
+		case KeyPress:
+			handle_key(&ev.xkey, quit);
+			break;
+		case ClientMessage:
+			if ((Atom)ev.xclient.data.l[0] == s.wm_delete)
+				*quit = 1;
+			break;
+		case Expose:
+		case ConfigureNotify:
+			/* The main loop redraws every frame at the fixed size. */
+			break;
+		default:
+			break;
+		}
+	}
+	return SKP_OK;
+}
+
+const display_backend display_x11 = {
+	.name = "x11",
+	.init = x11_init,
+	.get_proc = display_egl_get_proc,
+	.present = x11_present,
+	.event_fd = x11_event_fd,
+	.handle_events = x11_handle_events,
+	.shutdown = x11_shutdown,
+};
