@@ -57,15 +57,6 @@ CFLAGS_HOST := -std=gnu11 $(WARN) $(BOARD_CFLAGS) $(SAN_FLAGS) $(PLAT_CFLAGS) $(
 LDFLAGS  := $(SAN_FLAGS) $(EXTRA_LDFLAGS)
 LDLIBS   := -lm -pthread $(PLAT_LIBS)
 
-# Include paths: a module sees its own folders and those of DEPS_<module>;
-# platform code sees base and the port headers' modules; the programs see
-# the platform too (app/sources.mk).
-PLAT_INC  := $(addprefix -Iplatform/,$(PLATFORM_DIRS))
-mod_inc    = $(foreach m,$(1) $(DEPS_$(1)),$(if $(filter platform,$(m)),$(PLAT_INC),-Iapp/$(m) \
-               $(addprefix -Iapp/$(m)/,$(if $(filter $(1),$(m)),$(PRIVATE_$(m))))))
-mod_src    = $(wildcard app/$(1)/*.c) $(foreach d,$(PRIVATE_$(1)),$(wildcard app/$(1)/$(d)/*.c))
-SRC_skin  := $(wildcard app/skin/*.c) $(KERNELS_$(SIMD):%=app/skin/kernels/%.c)
-$(foreach m,$(filter-out skin,$(APP_MODULES)),$(eval SRC_$(m) := $(call mod_src,$(m))))
 $(foreach m,$(APP_MODULES),$(eval OBJ_$(m) := $(SRC_$(m):%.c=$$(OUT)/%.o)))
 $(foreach m,$(CORE_MODULES),$(eval $(OBJ_$(m)): MOD_FLAGS = $(call mod_inc,$(m)) $$(CFLAGS_CORE)))
 $(foreach m,$(HOST_MODULES),$(eval $(OBJ_$(m)): MOD_FLAGS = $(call mod_inc,$(m)) $$(CFLAGS_HOST)))

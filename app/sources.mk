@@ -66,3 +66,13 @@ PC_platform            := libpng
 PLATFORM_DIRS  := display input storage sys
 DEPS_platform  := base image kiosk render
 PORT_HEADERS   := blockdev.h input_port.h gl_api.h
+
+# Helpers for the makefiles. $(call mod_inc,M): the -I flags of module M
+# (its own folders, its private ones, its DEPS_); SRC_M: its sources, the
+# skin module's kernels as the board's SIMD setting has them.
+PLAT_INC = $(addprefix -Iplatform/,$(PLATFORM_DIRS))
+mod_inc  = $(foreach m,$(1) $(DEPS_$(1)),$(if $(filter platform,$(m)),$(PLAT_INC),-Iapp/$(m) \
+             $(addprefix -Iapp/$(m)/,$(if $(filter $(1),$(m)),$(PRIVATE_$(m))))))
+mod_src  = $(wildcard app/$(1)/*.c) $(foreach d,$(PRIVATE_$(1)),$(wildcard app/$(1)/$(d)/*.c))
+$(foreach m,$(filter-out skin,$(APP_MODULES)),$(eval SRC_$(m) := $(call mod_src,$(m))))
+SRC_skin = $(wildcard app/skin/*.c) $(KERNELS_$(SIMD):%=app/skin/kernels/%.c)

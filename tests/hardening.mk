@@ -13,11 +13,15 @@ FUZZ_OUT     := $(BUILD)/fuzz
 FUZZ_SRC     := $(wildcard tests/fuzz/fuzz_*.c)
 FUZZ_NAMES   := $(filter-out harness,$(patsubst tests/fuzz/fuzz_%.c,%,$(FUZZ_SRC)))
 FUZZ_BIN     := $(addprefix $(FUZZ_OUT)/fuzz_,$(FUZZ_NAMES))
-# The core as the parsers see it: no x86 kernels (no SIMD defines), no GL.
-FUZZ_CORE    := $(filter-out app/%_avx2.c app/render%.c app/gl_api.c,$(CORE_SRC))
+# The core as the parsers see it (app/sources.mk): the portable kernels
+# only (no SIMD defines), no GL.
+FUZZ_MODULES := $(filter-out render,$(CORE_MODULES))
+FUZZ_CORE    := $(foreach m,$(FUZZ_MODULES),$(filter-out app/skin/kernels/%,$(SRC_$(m)))) \
+                $(KERNELS_scalar:%=app/skin/kernels/%.c)
 FUZZ_SAN     := -fsanitize=address,undefined -fno-sanitize-recover=undefined
 FUZZ_CFLAGS  := -std=c11 -g -O1 -Wall -Wextra -Werror -Wno-unused-command-line-argument \
-                -fsanitize=fuzzer-no-link $(FUZZ_SAN) -Iapp -Iboard/$(BOARD) -Itests/fuzz -MMD -MP
+                -fsanitize=fuzzer-no-link $(FUZZ_SAN) $(sort $(foreach m,$(FUZZ_MODULES),$(call mod_inc,$(m)))) \
+                -Iboard/$(BOARD) -Itests/fuzz -MMD -MP
 
 $(FUZZ_OUT)/%.o: %.c
 	@mkdir -p $(@D)
@@ -60,7 +64,7 @@ fuzz: $(FUZZ_BIN)
 fuzz-smoke:
 	@$(MAKE) --no-print-directory fuzz SECONDS=10
 
--include $(wildcard $(FUZZ_OUT)/app/*.d $(FUZZ_OUT)/tests/fuzz/*.d)
+-include $(wildcard $(FUZZ_OUT)/app/*/*.d $(FUZZ_OUT)/app/*/*/*.d $(FUZZ_OUT)/tests/fuzz/*.d)
 
 # Soak: tests/soak.sh on the host build (not part of `make test`: about an
 # hour for the default million frames at 160x90).
@@ -72,4 +76,5 @@ soak: all
 # Static analysis (cppcheck and clang-tidy are Debian packages: cppcheck,
 # clang-tidy). Suppressions, each with its reason: tests/lint/*.supp.
 lint:
-	@sh tests/lint/lint.sh $(BOARD) "$(DISPLAY_CFLAGS)"
+	@sh tests/lint/lint.sh $(BOARD) "$(PLAT_CFLAGS) $(BACKEND_DEFS)" "$(sort $(TEST_INC))" \
+	  "$(foreach m,$(APP_MODULES),$(SRC_$(m))) $(PLAT_SRC)"

@@ -26,6 +26,15 @@ skp_status skp_fail(skp_error *err, skp_status code, long line,
 	return code;
 }
 
+skp_status skp_syntax(skp_error *err, long line, const char *fmt, ...)
+{
+	va_list ap;
+	va_start(ap, fmt);
+	skp_status rc = skp_vfail(err, SKP_ERR_SYNTAX, line, fmt, ap);
+	va_end(ap);
+	return rc;
+}
+
 void skp_error_clear(skp_error *err)
 {
 	if (!err)

@@ -29,6 +29,9 @@ skp_status skp_fail(skp_error *err, skp_status code, long line,
 skp_status skp_vfail(skp_error *err, skp_status code, long line,
 		     const char *fmt, va_list ap);
 
+/* skp_fail with SKP_ERR_SYNTAX: what the text parsers report. */
+skp_status skp_syntax(skp_error *err, long line, const char *fmt, ...);
+
 void skp_error_clear(skp_error *err);
 
 #endif

@@ -130,3 +130,9 @@ int cli_take_positional(const char *cmd, const char **const *slots, int n, const
 	fprintf(stderr, "%s: unexpected argument '%s'\n", cmd, arg);
 	return -1;
 }
+
+const char *cli_basename(const char *path)
+{
+	const char *s = strrchr(path, '/');
+	return s ? s + 1 : path;
+}

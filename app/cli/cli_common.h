@@ -41,6 +41,9 @@ const char *cli_option_value(const char *cmd, const char *opt, int argc, char **
  * "CMD: unexpected argument" when every slot is taken. */
 int cli_take_positional(const char *cmd, const char **const *slots, int n, const char *arg);
 
+/* The file name of path without its folders. */
+const char *cli_basename(const char *path);
+
 /* Parses a whole decimal integer argument; -1 (reported) when it is not. */
 int cli_parse_long(const char *opt, const char *text, long *out);
 

@@ -4,22 +4,10 @@
 #include "text_tokens.h"
 
 static const char *const button_names[PLAYER_BTN_COUNT] = { "ALGO", "PLAY", "NEXT", "VIEW" };
-static const char *const algo_names[PLAYER_ALGO_COUNT] = { "lbs", "dqbs", "dqbs-fixed", "compare" };
-static const char *const view_names[PLAYER_VIEW_COUNT] = { "body", "skeleton", "weights" };
 
 const char *player_button_name(int button)
 {
 	return button >= 0 && button < PLAYER_BTN_COUNT ? button_names[button] : "?";
-}
-
-const char *player_algo_name(int algo)
-{
-	return algo >= 0 && algo < PLAYER_ALGO_COUNT ? algo_names[algo] : "?";
-}
-
-const char *player_view_name(int view)
-{
-	return view >= 0 && view < PLAYER_VIEW_COUNT ? view_names[view] : "?";
 }
 
 int player_button_find(const char *name)
@@ -32,8 +20,8 @@ int player_button_find(const char *name)
 
 void player_init(player_state *s, int algo, int view, int gpu, int clip_count)
 {
-	s->algo = algo >= 0 && algo < PLAYER_ALGO_COUNT ? algo : PLAYER_DQBS;
-	s->view = view >= 0 && view < PLAYER_VIEW_COUNT ? view : PLAYER_VIEW_BODY;
+	s->algo = algo >= 0 && algo < SKIN_SHOW_COUNT ? algo : SKIN_DQBS;
+	s->view = view >= 0 && view < RENDER_VIEW_COUNT ? view : RENDER_VIEW_BODY;
 	s->gpu = gpu ? 1 : 0;
 	s->playing = 1;
 	s->clip = 0;
@@ -48,8 +36,8 @@ static player_action short_action(player_state *s, int b, char *log, size_t cap)
 	const char *name = button_names[b];
 	switch (b) {
 	case PLAYER_BTN_ALGO:
-		s->algo = (s->algo + 1) % PLAYER_ALGO_COUNT;
-		skp_format(log, cap, "input: %s -> %s", name, algo_names[s->algo]);
+		s->algo = (s->algo + 1) % SKIN_SHOW_COUNT;
+		skp_format(log, cap, "input: %s -> %s", name, skin_algo_name(s->algo));
 		return PLAYER_ACT_ALGO;
 	case PLAYER_BTN_PLAY:
 		s->playing = !s->playing;
@@ -60,8 +48,8 @@ static player_action short_action(player_state *s, int b, char *log, size_t cap)
 		skp_format(log, cap, "input: %s -> clip %d/%d", name, s->clip + 1, s->clip_count);
 		return PLAYER_ACT_CLIP;
 	default:
-		s->view = (s->view + 1) % PLAYER_VIEW_COUNT;
-		skp_format(log, cap, "input: %s -> %s", name, view_names[s->view]);
+		s->view = (s->view + 1) % RENDER_VIEW_COUNT;
+		skp_format(log, cap, "input: %s -> %s", name, render_view_name(s->view));
 		return PLAYER_ACT_VIEW;
 	}
 }

@@ -15,6 +15,8 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "show_modes.h"
+
 typedef enum player_button {
 	PLAYER_BTN_ALGO,
 	PLAYER_BTN_PLAY,
@@ -36,15 +38,6 @@ typedef struct player_event {
 	uint64_t t_ms;           /* when it happened (monotonic or script clock) */
 } player_event;
 
-/* Same order as play_algo and render_view. */
-typedef enum player_algo {
-	PLAYER_LBS, PLAYER_DQBS, PLAYER_DQBS_FIXED, PLAYER_COMPARE, PLAYER_ALGO_COUNT
-} player_algo;
-
-typedef enum player_view {
-	PLAYER_VIEW_BODY, PLAYER_VIEW_SKELETON, PLAYER_VIEW_WEIGHTS, PLAYER_VIEW_COUNT
-} player_view;
-
 typedef enum player_action {
 	PLAYER_ACT_NONE,
 	PLAYER_ACT_ALGO,         /* algo changed */
@@ -56,10 +49,10 @@ typedef enum player_action {
 } player_action;
 
 typedef struct player_state {
-	int algo;                /* player_algo */
+	int algo;                /* skin_algo */
 	int playing;
 	int clip, clip_count;    /* 0-based clip index; clip_count >= 1 */
-	int view;                /* player_view */
+	int view;                /* render_view */
 	int gpu;                 /* 1: skin in the vertex shader where it fits */
 	uint8_t down[PLAYER_BTN_COUNT];      /* seen pressed and not released */
 	uint8_t long_done[PLAYER_BTN_COUNT]; /* this press gave its long action */
@@ -73,8 +66,6 @@ void player_init(player_state *s, int algo, int view, int gpu, int clip_count);
 player_action player_handle(player_state *s, const player_event *ev, char *log, size_t cap);
 
 const char *player_button_name(int button);     /* "ALGO", ...; "?" */
-const char *player_algo_name(int algo);         /* "lbs", ... */
-const char *player_view_name(int view);         /* "body", ... */
 
 /* Button by name, any case ("algo", "PLAY"); -1 when unknown. */
 int player_button_find(const char *name);

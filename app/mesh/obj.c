@@ -1,7 +1,6 @@
 #include "obj.h"
 
 #include <math.h>
-#include <stdarg.h>
 #include <string.h>
 
 #include "mesh_normals.h"
@@ -17,15 +16,6 @@ typedef struct obj_state {
 	int in_object, in_group;  /* the current o / g names match the filter */
 	long kept_verts;          /* vertices used by kept faces so far */
 } obj_state;
-
-static skp_status syntax(obj_state *st, const char *fmt, ...)
-{
-	va_list ap;
-	va_start(ap, fmt);
-	skp_status rc = skp_vfail(st->err, SKP_ERR_SYNTAX, st->line, fmt, ap);
-	va_end(ap);
-	return rc;
-}
 
 /* White space only: commas and parentheses are legal in OBJ names. */
 static int obj_split(char *p, char **toks, int max)
@@ -50,12 +40,12 @@ static int obj_split(char *p, char **toks, int max)
 static skp_status parse_coords(obj_state *st, char **t, int n, int min, int max, vec3 *out)
 {
 	if (n - 1 < min || n - 1 > max)
-		return syntax(st, "'%s' expects %d to %d numbers, found %d", t[0], min, max, n - 1);
+		return skp_syntax(st->err, st->line, "'%s' expects %d to %d numbers, found %d", t[0], min, max, n - 1);
 	float c[3] = { 0.0f, 0.0f, 0.0f };
 	for (int i = 1; i < n; i++) {
 		double v;
 		if (tok_parse_double(t[i], &v) != 0 || !isfinite(v))
-			return syntax(st, "'%s': expected a finite number, found '%s'", t[0], t[i]);
+			return skp_syntax(st->err, st->line, "'%s': expected a finite number, found '%s'", t[0], t[i]);
 		if (i <= 3)
 			c[i - 1] = (float)v;
 	}
@@ -112,12 +102,12 @@ static skp_status resolve(obj_state *st, const char *tok, const char *what, long
 {
 	long i;
 	if (tok_parse_long(tok, &i) != 0)
-		return syntax(st, "'f': expected a %s index, found '%s'", what, tok);
+		return skp_syntax(st->err, st->line, "'f': expected a %s index, found '%s'", what, tok);
 	if (i == 0)
-		return syntax(st, "'f': %s index 0 (OBJ indices start at 1)", what);
+		return skp_syntax(st->err, st->line, "'f': %s index 0 (OBJ indices start at 1)", what);
 	long r = i > 0 ? i - 1 : count + i;
 	if (r < 0 || r >= count)
-		return syntax(st, "'f': %s index %ld out of range (%ld defined so far)", what, i, count);
+		return skp_syntax(st->err, st->line, "'f': %s index %ld out of range (%ld defined so far)", what, i, count);
 	*out = r;
 	return SKP_OK;
 }
@@ -129,7 +119,7 @@ static skp_status parse_corner(obj_state *st, char *tok, obj_corner *c)
 	int parts = 1;
 	for (const char *p = tok, *slash = NULL; (slash = strchr(p, '/')) != NULL; p = slash + 1)
 		if (++parts > 3)
-			return syntax(st, "'f': corner '%s' has more than two '/'", tok);
+			return skp_syntax(st->err, st->line, "'f': corner '%s' has more than two '/'", tok);
 	for (int i = 1; i < parts; i++) {
 		char *slash = strchr(part[i - 1], '/');
 		*slash = '\0';
@@ -206,7 +196,7 @@ static skp_status face_line(obj_state *st, char **t, int n)
 {
 	obj_work *w = st->w;
 	if (n - 1 < 3)
-		return syntax(st, "'f' needs at least 3 corners, found %d", n - 1);
+		return skp_syntax(st->err, st->line, "'f' needs at least 3 corners, found %d", n - 1);
 	for (int i = 1; i < n; i++) {
 		skp_status rc = parse_corner(st, t[i], &w->corner[i - 1]);
 		if (rc)
@@ -276,7 +266,7 @@ static skp_status dispatch(obj_state *st, char **t, int n)
 		return group_line(st, t, n);
 	if (ignored(k))
 		return SKP_OK;
-	return syntax(st, "unknown statement '%s' (expected v, vt, vn, f, g, o, s, usemtl, ...)", k);
+	return skp_syntax(st->err, st->line, "unknown statement '%s' (expected v, vt, vn, f, g, o, s, usemtl, ...)", k);
 }
 
 /* Mesh vertices in ascending file order; triangles still hold file indices. */
@@ -370,7 +360,7 @@ skp_status obj_parse(mesh *out, obj_work *w, text_lines *tl, const obj_options *
 		st.line = tl->line_no;
 		int n = obj_split(line, w->tok, OBJ_MAX_CORNERS + 1);
 		if (n < 0)
-			return syntax(&st, "more than %d corners on a line", OBJ_MAX_CORNERS);
+			return skp_syntax(st.err, st.line, "more than %d corners on a line", OBJ_MAX_CORNERS);
 		if (n == 0)
 			continue;
 		skp_status rc = dispatch(&st, w->tok, n);

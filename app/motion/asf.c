@@ -1,7 +1,6 @@
 #include "asf.h"
 
 #include <math.h>
-#include <stdarg.h>
 #include <string.h>
 
 #include "text_tokens.h"
@@ -24,27 +23,18 @@ typedef struct asf_state {
 	uint8_t has_parent[SKP_MAX_BONES];
 } asf_state;
 
-static skp_status syntax(asf_state *st, const char *fmt, ...)
-{
-	va_list ap;
-	va_start(ap, fmt);
-	skp_status rc = skp_vfail(st->err, SKP_ERR_SYNTAX, st->line, fmt, ap);
-	va_end(ap);
-	return rc;
-}
-
 static skp_status expect_values(asf_state *st, char **t, int n, int want)
 {
 	if (n - 1 == want)
 		return SKP_OK;
-	return syntax(st, "'%s' expects %d value(s), found %d", t[0], want, n - 1);
+	return skp_syntax(st->err, st->line, "'%s' expects %d value(s), found %d", t[0], want, n - 1);
 }
 
 static skp_status parse_float(asf_state *st, const char *key, const char *tok, float *out)
 {
 	double v;
 	if (tok_parse_double(tok, &v) != 0 || isnan(v))
-		return syntax(st, "'%s': expected a number, found '%s'", key, tok);
+		return skp_syntax(st->err, st->line, "'%s': expected a number, found '%s'", key, tok);
 	*out = (float)v;
 	return SKP_OK;
 }
@@ -83,7 +73,7 @@ static skp_status parse_axis_order(asf_state *st, const char *tok, uint8_t order
 		}
 	}
 	if (seen != 7)
-		return syntax(st, "axis order: expected a permutation of XYZ, found '%s'", tok);
+		return skp_syntax(st->err, st->line, "axis order: expected a permutation of XYZ, found '%s'", tok);
 	return SKP_OK;
 }
 
@@ -101,15 +91,15 @@ static skp_status parse_channels(asf_state *st, char **t, int n, skel_bone *b, i
 {
 	unsigned seen = 0;
 	if (n - 1 > (allow_l ? SKEL_MAX_CHANNELS : 6))
-		return syntax(st, "'%s': too many channels", t[0]);
+		return skp_syntax(st->err, st->line, "'%s': too many channels", t[0]);
 	b->channel_count = 0;
 	for (int i = 1; i < n; i++) {
 		int c = parse_channel(t[i]);
 		if (c < 0 || (c == SKEL_L && !allow_l))
-			return syntax(st, "'%s': unknown channel '%s' (expected rx ry rz tx ty tz%s)",
+			return skp_syntax(st->err, st->line, "'%s': unknown channel '%s' (expected rx ry rz tx ty tz%s)",
 				      t[0], t[i], allow_l ? " l" : "");
 		if (seen & (1u << c))
-			return syntax(st, "'%s': channel '%s' listed twice", t[0], t[i]);
+			return skp_syntax(st->err, st->line, "'%s': channel '%s' listed twice", t[0], t[i]);
 		seen |= 1u << c;
 		b->channel[b->channel_count++] = (uint8_t)c;
 	}
@@ -139,7 +129,7 @@ static skp_status units_line(asf_state *st, char **t, int n)
 		else if (tok_ieq(t[1], "rad") || tok_ieq(t[1], "radians"))
 			s->angle_in_degrees = 0;
 		else
-			return syntax(st, "'angle': expected deg or rad, found '%s'", t[1]);
+			return skp_syntax(st->err, st->line, "'angle': expected deg or rad, found '%s'", t[1]);
 		return SKP_OK;
 	}
 	if (tok_ieq(t[0], "length") || tok_ieq(t[0], "mass")) {
@@ -163,7 +153,7 @@ static skp_status root_line(asf_state *st, char **t, int n)
 		return parse_vec3(st, t, n, &st->s->root_position);
 	if (tok_ieq(t[0], "orientation"))
 		return parse_vec3(st, t, n, &root->axis_angle);
-	return syntax(st, ":root: unknown keyword '%s' (expected order, axis, position or orientation)",
+	return skp_syntax(st->err, st->line, ":root: unknown keyword '%s' (expected order, axis, position or orientation)",
 		      t[0]);
 }
 
@@ -172,7 +162,7 @@ static skp_status limits_values(asf_state *st, char **t, int n, int first)
 	skel_bone *b = st->bone;
 	for (int i = first; i < n; i++) {
 		if (st->limits_left == 0)
-			return syntax(st, "bone '%s': more limit values than the %d its dof need",
+			return skp_syntax(st->err, st->line, "bone '%s': more limit values than the %d its dof need",
 				      b->name, 2 * b->channel_count);
 		float v = 0.0f;
 		skp_status rc = parse_float(st, "limits", t[i], &v);
@@ -208,12 +198,12 @@ static skp_status end_bone(asf_state *st)
 {
 	skel_bone *b = st->bone;
 	if (st->limits_left)
-		return syntax(st, "bone '%s': 'limits' needs %d more value(s)", b->name, st->limits_left);
+		return skp_syntax(st->err, st->line, "bone '%s': 'limits' needs %d more value(s)", b->name, st->limits_left);
 	if (b->name[0] == '\0')
-		return syntax(st, "bone ends without a 'name'");
+		return skp_syntax(st->err, st->line, "bone ends without a 'name'");
 	for (int i = 0; i < st->s->count - 1; i++)
 		if (strcmp(st->s->bone[i].name, b->name) == 0)
-			return syntax(st, "bone name '%s' used twice", b->name);
+			return skp_syntax(st->err, st->line, "bone name '%s' used twice", b->name);
 	st->in_block = 0;
 	st->bone = NULL;
 	return SKP_OK;
@@ -226,13 +216,13 @@ static skp_status bone_key(asf_state *st, char **t, int n)
 	if (tok_ieq(k, "id")) {
 		skp_status rc = expect_values(st, t, n, 1);
 		if (!rc && tok_parse_long(t[1], &b->id) != 0)
-			return syntax(st, "'id': expected an integer, found '%s'", t[1]);
+			return skp_syntax(st->err, st->line, "'id': expected an integer, found '%s'", t[1]);
 		return rc;
 	}
 	if (tok_ieq(k, "name")) {
 		skp_status rc = expect_values(st, t, n, 1);
 		if (!rc && tok_ieq(t[1], "root"))
-			return syntax(st, "a bone may not be named 'root'");
+			return skp_syntax(st->err, st->line, "a bone may not be named 'root'");
 		return rc ? rc : copy_name(st, b->name, sizeof b->name, t[1]);
 	}
 	if (tok_ieq(k, "direction"))
@@ -241,7 +231,7 @@ static skp_status bone_key(asf_state *st, char **t, int n)
 		skp_status rc = expect_values(st, t, n, 1);
 		if (!rc) rc = parse_float(st, k, t[1], &b->length);
 		if (!rc && !(b->length >= 0.0f && isfinite(b->length)))
-			return syntax(st, "'length' must be finite and not negative, found '%s'", t[1]);
+			return skp_syntax(st->err, st->line, "'length' must be finite and not negative, found '%s'", t[1]);
 		return rc;
 	}
 	if (tok_ieq(k, "axis"))
@@ -252,7 +242,7 @@ static skp_status bone_key(asf_state *st, char **t, int n)
 	}
 	if (tok_ieq(k, "limits")) {
 		if (!st->dof_set)
-			return syntax(st, "bone '%s': 'limits' before 'dof'", b->name);
+			return skp_syntax(st->err, st->line, "bone '%s': 'limits' before 'dof'", b->name);
 		b->has_limits = 1;
 		st->limits_left = 2 * b->channel_count;
 		st->limit_pos = 0;
@@ -260,7 +250,7 @@ static skp_status bone_key(asf_state *st, char **t, int n)
 	}
 	if (tok_ieq(k, "bodymass") || tok_ieq(k, "cofmass"))
 		return SKP_OK; /* optional dynamics data: not used for kinematics */
-	return syntax(st, "bone '%s': unknown keyword '%s'", b->name, k);
+	return skp_syntax(st->err, st->line, "bone '%s': unknown keyword '%s'", b->name, k);
 }
 
 static skp_status bonedata_line(asf_state *st, char **t, int n)
@@ -268,7 +258,7 @@ static skp_status bonedata_line(asf_state *st, char **t, int n)
 	if (!st->in_block) {
 		if (tok_ieq(t[0], "begin") && n == 1)
 			return begin_bone(st);
-		return syntax(st, ":bonedata: expected 'begin', found '%s'", t[0]);
+		return skp_syntax(st->err, st->line, ":bonedata: expected 'begin', found '%s'", t[0]);
 	}
 	if (tok_ieq(t[0], "end") && n == 1)
 		return end_bone(st);
@@ -276,7 +266,7 @@ static skp_status bonedata_line(asf_state *st, char **t, int n)
 	if (st->limits_left && tok_parse_double(t[0], &probe) == 0)
 		return limits_values(st, t, n, 0);
 	if (st->limits_left)
-		return syntax(st, "bone '%s': 'limits' needs %d more value(s), found '%s'",
+		return skp_syntax(st->err, st->line, "bone '%s': 'limits' needs %d more value(s), found '%s'",
 			      st->bone->name, st->limits_left, t[0]);
 	return bone_key(st, t, n);
 }
@@ -289,7 +279,7 @@ static skp_status hierarchy_line(asf_state *st, char **t, int n)
 			st->in_block = 1;
 			return SKP_OK;
 		}
-		return syntax(st, ":hierarchy: expected 'begin', found '%s'", t[0]);
+		return skp_syntax(st->err, st->line, ":hierarchy: expected 'begin', found '%s'", t[0]);
 	}
 	if (tok_ieq(t[0], "end") && n == 1) {
 		st->in_block = 0;
@@ -297,15 +287,15 @@ static skp_status hierarchy_line(asf_state *st, char **t, int n)
 	}
 	int parent = skel_find(s, t[0]);
 	if (parent < 0)
-		return syntax(st, ":hierarchy: unknown bone '%s'", t[0]);
+		return skp_syntax(st->err, st->line, ":hierarchy: unknown bone '%s'", t[0]);
 	for (int i = 1; i < n; i++) {
 		int child = skel_find(s, t[i]);
 		if (child < 0)
-			return syntax(st, ":hierarchy: unknown bone '%s'", t[i]);
+			return skp_syntax(st->err, st->line, ":hierarchy: unknown bone '%s'", t[i]);
 		if (child == 0)
-			return syntax(st, ":hierarchy: the root cannot have a parent");
+			return skp_syntax(st->err, st->line, ":hierarchy: the root cannot have a parent");
 		if (st->has_parent[child])
-			return syntax(st, ":hierarchy: bone '%s' has two parents", t[i]);
+			return skp_syntax(st->err, st->line, ":hierarchy: bone '%s' has two parents", t[i]);
 		st->has_parent[child] = 1;
 		s->bone[child].parent = parent;
 	}
@@ -317,7 +307,7 @@ static skp_status section_line(asf_state *st, char **t, int n)
 	skel *s = st->s;
 	const char *k = t[0];
 	if (st->in_block)
-		return syntax(st, "'%s' inside a begin/end block (missing 'end')", k);
+		return skp_syntax(st->err, st->line, "'%s' inside a begin/end block (missing 'end')", k);
 	if (tok_ieq(k, ":version")) {
 		st->sec = SEC_NONE;
 		return n > 1 ? copy_name(st, s->version, sizeof s->version, t[1]) : SKP_OK;
@@ -354,7 +344,7 @@ static skp_status dispatch(asf_state *st, char **t, int n)
 	case SEC_SKIP: return SKP_OK;
 	case SEC_NONE: break;
 	}
-	return syntax(st, "expected a ':' keyword, found '%s'", t[0]);
+	return skp_syntax(st->err, st->line, "expected a ':' keyword, found '%s'", t[0]);
 }
 
 quat asf_axis_rotation(vec3 a, const uint8_t order[3])
@@ -384,7 +374,7 @@ static skp_status order_bones(asf_state *st)
 			}
 		}
 		if (!progress)
-			return syntax(st, ":hierarchy: bones form a cycle (detached from root)");
+			return skp_syntax(st->err, st->line, ":hierarchy: bones form a cycle (detached from root)");
 	}
 	return SKP_OK;
 }
@@ -393,12 +383,12 @@ static skp_status finish(asf_state *st)
 {
 	skel *s = st->s;
 	if (st->in_block)
-		return syntax(st, "unexpected end of file: missing 'end'");
+		return skp_syntax(st->err, st->line, "unexpected end of file: missing 'end'");
 	if (!st->root_seen)
-		return syntax(st, "no :root section");
+		return skp_syntax(st->err, st->line, "no :root section");
 	for (int i = 1; i < s->count; i++)
 		if (s->bone[i].parent < 0)
-			return syntax(st, "bone '%s' has no parent in :hierarchy", s->bone[i].name);
+			return skp_syntax(st->err, st->line, "bone '%s' has no parent in :hierarchy", s->bone[i].name);
 	skp_status rc = order_bones(st);
 	if (rc)
 		return rc;

@@ -14,12 +14,6 @@ static const char *const uniform_names[U_COUNT] = {
 };
 GLint render_loc[SHADER_COUNT][U_COUNT];
 
-const char *render_view_name(render_view v)
-{
-	static const char *const names[RENDER_VIEW_COUNT] = { "body", "skeleton", "weights" };
-	return (unsigned)v < RENDER_VIEW_COUNT ? names[v] : "?";
-}
-
 /* A distinct colour per bone: hues spread by the golden angle. */
 static vec3 bone_color(int bone)
 {

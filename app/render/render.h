@@ -12,15 +12,6 @@
 #include "render_shaders.h"
 #include "skin.h"
 
-typedef enum render_view {
-	RENDER_VIEW_BODY,        /* the shaded body */
-	RENDER_VIEW_SKELETON,    /* body plus the skeleton drawn over it */
-	RENDER_VIEW_WEIGHTS,     /* body coloured by its bone weights */
-	RENDER_VIEW_COUNT
-} render_view;
-
-const char *render_view_name(render_view v);
-
 #define RENDER_MAX_PANELS 2
 #define RENDER_HUD_LINES 4
 #define RENDER_MAX_TEXT 512     /* glyphs drawn per frame */

@@ -4,21 +4,6 @@
 
 #include "skin_kernels.h"
 
-static const char *const names[SKIN_ALGO_COUNT] = { "lbs", "dqbs", "dqbs-fixed" };
-
-const char *skin_algo_name(skin_algo a)
-{
-	return (unsigned)a < SKIN_ALGO_COUNT ? names[a] : "?";
-}
-
-int skin_algo_parse(const char *name)
-{
-	for (int a = 0; a < SKIN_ALGO_COUNT; a++)
-		if (strcmp(name, names[a]) == 0)
-			return a;
-	return -1;
-}
-
 #ifdef SKP_SIMD_AVX2
 #define LBS skin_lbs_avx2
 #define DQBS skin_dqbs_avx2
@@ -51,6 +36,7 @@ void skin_run(skin_algo algo, const skin_soa *in, const skin_bones *b, int first
 	case SKIN_LBS: LBS(in, b, first, end, out); break;
 	case SKIN_DQBS: DQBS(in, b, first, end, out); break;
 	case SKIN_DQBS_FIXED: DQBS_FIXED(in, b, first, end, out); break;
-	case SKIN_ALGO_COUNT: break;
+	case SKIN_COMPARE: /* not a kernel: the caller skins LBS and DQBS */
+	case SKIN_SHOW_COUNT: break;
 	}
 }

@@ -22,6 +22,7 @@
 #include "mesh.h"
 #include "rigid.h"
 #include "skin_weights.h"
+#include "show_modes.h"
 #include "skp_error.h"
 
 #define SKIN_LANES 8
@@ -29,18 +30,6 @@
 /* Slot of an identity transform after the skeleton's bones: vertices with
  * no influence stay where they were bound. */
 #define SKIN_IDENTITY_BONE SKP_MAX_BONES
-
-typedef enum skin_algo {
-	SKIN_LBS,
-	SKIN_DQBS,
-	SKIN_DQBS_FIXED,
-	SKIN_ALGO_COUNT
-} skin_algo;
-
-/* "lbs", "dqbs", "dqbs-fixed" */
-const char *skin_algo_name(skin_algo a);
-/* -1 when the name is not an algorithm */
-int skin_algo_parse(const char *name);
 
 typedef struct skin_soa {
 	int count;                 /* vertices */

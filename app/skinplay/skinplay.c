@@ -52,18 +52,12 @@ typedef struct timing {
 
 static timing total; /* the whole run, for the summary line */
 
-static const char *basename_of(const char *path)
-{
-	const char *s = strrchr(path, '/');
-	return s ? s + 1 : path;
-}
-
 /* Which kernels each panel runs, and where (GPU when asked and it fits). */
 static void choose_paths(player *p)
 {
 	static const skin_algo one[3] = { SKIN_LBS, SKIN_DQBS, SKIN_DQBS_FIXED };
-	p->panel_count = p->o.algo == PLAY_COMPARE ? 2 : 1;
-	p->algo[0] = p->o.algo == PLAY_COMPARE ? SKIN_LBS : one[p->o.algo];
+	p->panel_count = p->o.algo == SKIN_COMPARE ? 2 : 1;
+	p->algo[0] = p->o.algo == SKIN_COMPARE ? SKIN_LBS : one[p->o.algo];
 	p->algo[1] = SKIN_DQBS;
 	for (int i = 0; i < p->panel_count; i++) {
 		p->gpu[i] = p->o.gpu && render_gpu_fits(&p->r, p->algo[i]);
@@ -164,7 +158,7 @@ static int setup(player *p)
 	}
 	choose_paths(p);
 	sheet_init(&p->contact, p->info.width, p->info.height);
-	snprintf(p->clip, sizeof p->clip, "%s", p->o.image_count ? p->show.player.c.name : basename_of(p->o.amc));
+	snprintf(p->clip, sizeof p->clip, "%s", p->o.image_count ? p->show.player.c.name : cli_basename(p->o.amc));
 	char *dot = strrchr(p->clip, '.');
 	if (dot)
 		*dot = '\0';
@@ -302,7 +296,7 @@ static int restart_clip(player *p, int clip)
 static int apply_input(player *p, render_frame *f, unsigned act)
 {
 	const player_state *s = &p->kiosk.ps;
-	p->o.algo = (play_algo)s->algo;
+	p->o.algo = (skin_algo)s->algo;
 	p->o.view = f->view = (render_view)s->view;
 	p->o.gpu = s->gpu;
 	if (act & (KIOSK_ALGO | KIOSK_GPU))

@@ -17,11 +17,10 @@ static const char usage_text[] =
 	"Without --mesh the generated body is used. Headless, the clip plays once;\n"
 	"on a display it loops until closed.\n";
 
-static const char *const algo_names[] = { "lbs", "dqbs", "dqbs-fixed", "compare" };
-
-const char *play_algo_name(play_algo a)
+static int unknown(const char *opt, const char *v)
 {
-	return algo_names[a];
+	fprintf(stderr, "skinplay: %s: unknown value '%s'\n", opt, v ? v : "");
+	return -1;
 }
 
 static int pick(const char *opt, const char *v, const char *const *names, int n)
@@ -29,8 +28,7 @@ static int pick(const char *opt, const char *v, const char *const *names, int n)
 	for (int i = 0; v && i < n; i++)
 		if (strcmp(v, names[i]) == 0)
 			return i;
-	fprintf(stderr, "skinplay: %s: unknown value '%s'\n", opt, v ? v : "");
-	return -1;
+	return unknown(opt, v);
 }
 
 static int parse_size(const char *v, play_opts *o)
@@ -52,7 +50,6 @@ static int parse_size(const char *v, play_opts *o)
 static int value_opt(play_opts *o, const char *a, const char *v)
 {
 	static const char *const skins[] = { "cpu", "gpu" };
-	static const char *const views[] = { "body", "skeleton", "weights" };
 	static const char *const onoff[] = { "off", "on" };
 	long n;
 	int k;
@@ -70,9 +67,9 @@ static int value_opt(play_opts *o, const char *a, const char *v)
 	else if (!strcmp(a, "--device")) o->device = v;
 	else if (!strcmp(a, "--out")) o->out_dir = v;
 	else if (!strcmp(a, "--sheet")) o->sheet_path = v;
-	else if (!strcmp(a, "--algo")) return (k = pick(a, v, algo_names, 4)) < 0 ? -1 : (o->algo = k, 0);
+	else if (!strcmp(a, "--algo")) return (k = skin_algo_parse(v)) < 0 ? unknown(a, v) : (o->algo = k, 0);
 	else if (!strcmp(a, "--skin")) return (k = pick(a, v, skins, 2)) < 0 ? -1 : (o->gpu = k, 0);
-	else if (!strcmp(a, "--view")) return (k = pick(a, v, views, 3)) < 0 ? -1 : (o->view = k, 0);
+	else if (!strcmp(a, "--view")) return (k = render_view_parse(v)) < 0 ? unknown(a, v) : (o->view = k, 0);
 	else if (!strcmp(a, "--hud-fps")) return (k = pick(a, v, onoff, 2)) < 0 ? -1 : (o->hud_fps = k, 0);
 	else if (!strcmp(a, "--size")) return parse_size(v, o);
 	else if (!strcmp(a, "--frames")) return cli_parse_long(a, v, &o->frames);
@@ -95,7 +92,7 @@ int play_parse(play_opts *o, int argc, char **argv)
 {
 	memset(o, 0, sizeof *o);
 	bind_args_init(&o->bind);
-	o->algo = PLAY_DQBS;
+	o->algo = SKIN_DQBS;
 	o->width = 1280;
 	o->height = 720;
 	o->frames = -1;

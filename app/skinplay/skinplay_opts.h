@@ -5,8 +5,6 @@
 #include "cli_bind_args.h"
 #include "render.h"
 
-typedef enum play_algo { PLAY_LBS, PLAY_DQBS, PLAY_DQBS_FIXED, PLAY_COMPARE } play_algo;
-
 typedef struct play_opts {
 	const char *asf, *amc, *mesh;
 	const char *image[4];    /* --image slots (repeatable): the newest valid plays */
@@ -16,7 +14,7 @@ typedef struct play_opts {
 	const char *input;       /* --input gpio|keyboard|script:FILE|none (skinplay_kiosk.h) */
 	const char *board;       /* --board board/NAME/board.ini */
 	bind_args bind;
-	play_algo algo;
+	skin_algo algo;
 	int gpu;                 /* --skin gpu */
 	const char *platform;    /* NULL or "auto" */
 	const char *device;
@@ -36,6 +34,5 @@ typedef struct play_opts {
 /* Returns 0, 1 after printing help, or -1 after reporting an error. */
 int play_parse(play_opts *o, int argc, char **argv);
 
-const char *play_algo_name(play_algo a);
 
 #endif

@@ -54,7 +54,7 @@ static int parse_algos(metrics_args *a, const char *list)
 		if ((end = strchr(name, ',')))
 			*end++ = '\0';
 		int k = skin_algo_parse(name);
-		if (k < 0) {
+		if (k < 0 || k >= SKIN_ALGO_COUNT) {
 			fprintf(stderr, "skintool metrics: --algo: '%s' is not lbs, dqbs or dqbs-fixed\n", name);
 			return -1;
 		}

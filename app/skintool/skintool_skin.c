@@ -26,7 +26,7 @@ typedef struct skin_args {
 static int parse_algo(const char *name, int *algo)
 {
 	*algo = skin_algo_parse(name);
-	if (*algo < 0) {
+	if (*algo < 0 || *algo >= SKIN_ALGO_COUNT) {
 		fprintf(stderr, "skintool skin: unknown --algo '%s' (lbs, dqbs or dqbs-fixed)\n", name);
 		return -1;
 	}

@@ -7,7 +7,7 @@
  *     MOTION), as strings: the target parses them itself;
  *   - a generated body (the mannequin at the finest detail that fits the
  *     board's SKP_MAX_VERTS) as the bit patterns of its float positions and
- *     normals: the target binds it itself with app/bind.c;
+ *     normals: the target binds it itself with app/bind/bind.c;
  *   - the same pipeline run here on the host, converted to fixed point: the
  *     skin_soa fixed arrays (Q15.16 positions, Q2.30 normals, bones, Q1.15
  *     weights) and, per frame, the bones' fixed dual quaternions.

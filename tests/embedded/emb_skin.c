@@ -12,7 +12,7 @@
  *    checksum must match bit for bit.
  * 2. Target pipeline (EMB_FULL builds, i.e. boards with the float core):
  *    parse the embedded ASF and AMC text, pose with FK, bind the body with
- *    app/bind.c, convert to fixed point and skin, all on the target. FK
+ *    app/bind/bind.c, convert to fixed point and skin, all on the target. FK
  *    uses sinf/cosf, whose last bit differs between libms (glibc on the
  *    host, newlib on the board), so this part is compared against the host
  *    tables and the differences are printed, not required to be zero.
@@ -23,7 +23,7 @@
 
 #include "emb_port.h"
 #include "emb_tables.h"
-#include "skin.h"
+#include "skin_kernels.h" /* the fixed kernel itself: skin_run would link the float ones */
 
 #ifdef EMB_FULL
 #include "skp_format.h"

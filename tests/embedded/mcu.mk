@@ -11,17 +11,19 @@ HOSTCC   ?= cc
 WARN     := -Wall -Wextra -Werror -Wshadow -Wstrict-prototypes -Wvla
 OUT      := $(BUILD)
 
-CLI_SRC   := $(wildcard app/cli_*.c)
-FRONT_SRC := $(wildcard app/skintool*.c app/skinplay*.c) $(CLI_SRC)
-# The renderer needs GLES2 headers and a display; the AVX2 kernels are x86.
-MCU_SKIP  := $(wildcard app/render*.c app/gl_api.c app/*_avx2.c)
-CORE_SRC  := $(filter-out $(FRONT_SRC) $(MCU_SKIP),$(wildcard app/*.c))
+include app/sources.mk
 
-CPPFLAGS    := -Iapp -Iboard/$(BOARD) -MMD -MP
+# The portable core (app/sources.mk) less the renderer, which needs GLES2
+# headers and a display; the board's SIMD is scalar (no x86 kernels).
+MCU_MODULES := $(filter-out render,$(CORE_MODULES))
+CORE_SRC    := $(foreach m,$(MCU_MODULES),$(SRC_$(m)))
+MCU_INC     := $(foreach m,$(MCU_MODULES),-Iapp/$(m))
+
+CPPFLAGS    := -Iboard/$(BOARD) -MMD -MP
 CFLAGS_APP  := -std=c11 $(WARN) $(BOARD_CFLAGS) $(EXTRA_CFLAGS)
 HOST_CFLAGS := -std=c11 $(WARN) -O2 -g $(EXTRA_CFLAGS)
 EMB_DEFS    := $(if $(filter 1,$(MCU_FULL)),-DEMB_FULL)
-EMB_INC     := -Itests/embedded -I$(OUT)/emb
+EMB_INC     := -Itests/embedded -I$(OUT)/emb $(MCU_INC) -Iapp/skin/kernels
 
 CORE_OBJ      := $(CORE_SRC:%.c=$(OUT)/%.o)
 HOST_CORE_OBJ := $(CORE_SRC:%.c=$(OUT)/host/%.o)
@@ -43,12 +45,14 @@ ifneq ($(strip $(shell cat $(FLAGS_STAMP) 2>/dev/null)),$(strip $(FLAGS_NOW)))
   $(shell mkdir -p $(OUT) && echo '$(FLAGS_NOW)' > $(FLAGS_STAMP))
 endif
 
+# each module with its own include path, as on Linux
+$(foreach m,$(MCU_MODULES),$(eval $(SRC_$(m):%.c=$(OUT)/%.o) $(SRC_$(m):%.c=$(OUT)/host/%.o): MOD_INC = $(call mod_inc,$(m))))
 $(OUT)/app/%.o: app/%.c $(FLAGS_STAMP)
 	@mkdir -p $(@D)
-	$(CC) $(CPPFLAGS) $(CFLAGS_APP) -c $< -o $@
+	$(CC) $(CPPFLAGS) $(MOD_INC) $(CFLAGS_APP) -c $< -o $@
 $(OUT)/host/app/%.o: app/%.c $(FLAGS_STAMP)
 	@mkdir -p $(@D)
-	$(HOSTCC) $(CPPFLAGS) $(HOST_CFLAGS) -c $< -o $@
+	$(HOSTCC) $(CPPFLAGS) $(MOD_INC) $(HOST_CFLAGS) -c $< -o $@
 
 $(CORE_LIB): $(CORE_OBJ)
 	rm -f $@ && $(AR) rcs $@ $^
@@ -62,7 +66,7 @@ $(OUT)/assets/demo_motion: assets/demo_motion.c
 $(DEMO_AMC): $(OUT)/assets/demo_motion
 	$< > $@.tmp && mv $@.tmp $@
 $(EMB_GEN): tests/embedded/emb_gen.c $(HOST_CORE_LIB)
-	$(HOSTCC) $(CPPFLAGS) $(HOST_CFLAGS) $< $(HOST_CORE_LIB) -lm -o $@
+	$(HOSTCC) $(CPPFLAGS) $(MCU_INC) $(HOST_CFLAGS) $< $(HOST_CORE_LIB) -lm -o $@
 $(EMB_TABLES): $(EMB_GEN) assets/demo.asf $(DEMO_AMC) $(FLAGS_STAMP)
 	@mkdir -p $(@D)
 	$(EMB_GEN) assets/demo.asf $(DEMO_AMC) $(EMB_FRAMES) $(EMB_STRIDE) $@

@@ -2,15 +2,16 @@
 # Static analysis of app/ and platform/: cppcheck, then clang-tidy (the
 # clang static analyzer and the bugprone checks that are not style).
 # Fails on any finding not listed, with its reason, in tests/lint/*.supp.
-# Usage: lint.sh BOARD "EXTRA CFLAGS (pkg-config of the display libs)"
-board=${1:-host}; extra=$2
+# Usage: lint.sh BOARD "EXTRA CFLAGS (pkg-config, backend defines)" \
+#                "-I FLAGS OF EVERY MODULE (app/sources.mk)" "SOURCES"
+board=${1:-host}; extra=$2; inc=$3; sources=$4
 fail=0
 
 if command -v cppcheck >/dev/null 2>&1; then
 	out=$(cppcheck -q --enable=warning,portability,performance --std=c11 --inline-suppr \
-		--suppressions-list=tests/lint/cppcheck.supp -Iapp -Iboard/"$board" -Iplatform \
+		--suppressions-list=tests/lint/cppcheck.supp $inc -Iboard/"$board" \
 		-DSKP_SIMD_AVX2 --error-exitcode=1 \
-		--template='{file}:{line}: {severity} [{id}] {message}' app platform 2>&1)
+		--template='{file}:{line}: {severity} [{id}] {message}' $sources 2>&1)
 	rc=$?
 	if [ $rc -ne 0 ] || [ -n "$out" ]; then
 		echo "$out"
@@ -32,15 +33,15 @@ if command -v clang-tidy >/dev/null 2>&1; then
 	checks="$checks,-bugprone-implicit-widening-of-multiplication-result,-bugprone-reserved-identifier"
 	checks="$checks,-bugprone-suspicious-string-compare,-bugprone-not-null-terminated-result,-bugprone-branch-clone"
 	log=$(mktemp); trap 'rm -f "$log"' EXIT
-	for f in app/*.c platform/*.c; do
+	for f in $sources; do
 		case $f in
-		app/skintool*|app/skinplay*|app/cli_*|platform/*) std=gnu11 ;;
+		app/skintool/*|app/skinplay/*|app/cli/*|app/analysis/*|platform/*) std=gnu11 ;;
 		*) std=c11 ;;
 		esac
 		simd=""
 		case $f in *_avx2.c) simd="-mavx2 -mfma" ;; esac
 		# shellcheck disable=SC2086
-		clang-tidy -quiet --checks="$checks" "$f" -- -std=$std -Iapp -Iboard/"$board" -Iplatform \
+		clang-tidy -quiet --checks="$checks" "$f" -- -std=$std $inc -Iboard/"$board" \
 			-DSKP_SIMD_AVX2 $simd $extra 2>/dev/null | grep -E '^[^ ]+:[0-9]+:[0-9]+: (warning|error):' >>"$log"
 	done
 	new=$(sort -u "$log" | while IFS= read -r line; do

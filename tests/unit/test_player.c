@@ -35,7 +35,7 @@ static void test_algo_cycles_on_press(void **state)
 					    "input: ALGO -> compare", "input: ALGO -> lbs" };
 	player_state s;
 	char log[96];
-	player_init(&s, PLAYER_LBS, PLAYER_VIEW_BODY, 0, 1);
+	player_init(&s, SKIN_LBS, RENDER_VIEW_BODY, 0, 1);
 	for (int i = 0; i < 4; i++) {
 		assert_int_equal(ev(&s, PLAYER_BTN_ALGO, PLAYER_PRESS, log), PLAYER_ACT_ALGO);
 		assert_string_equal(log, want[i]);
@@ -46,7 +46,7 @@ static void test_algo_cycles_on_press(void **state)
 	/* a long press of ALGO does nothing more */
 	ev(&s, PLAYER_BTN_ALGO, PLAYER_PRESS, log);
 	assert_int_equal(ev(&s, PLAYER_BTN_ALGO, PLAYER_LONG, log), PLAYER_ACT_NONE);
-	assert_int_equal(s.algo, PLAYER_DQBS);
+	assert_int_equal(s.algo, SKIN_DQBS);
 }
 
 static void test_play_short_and_long(void **state)
@@ -54,7 +54,7 @@ static void test_play_short_and_long(void **state)
 	(void)state;
 	player_state s;
 	char log[96];
-	player_init(&s, PLAYER_DQBS, PLAYER_VIEW_BODY, 0, 1);
+	player_init(&s, SKIN_DQBS, RENDER_VIEW_BODY, 0, 1);
 	assert_int_equal(s.playing, 1);
 	/* nothing on press: it may become a long press */
 	assert_int_equal(ev(&s, PLAYER_BTN_PLAY, PLAYER_PRESS, log), PLAYER_ACT_NONE);
@@ -77,14 +77,14 @@ static void test_next_wraps_over_clips(void **state)
 	(void)state;
 	player_state s;
 	char log[96];
-	player_init(&s, PLAYER_DQBS, PLAYER_VIEW_BODY, 0, 3);
+	player_init(&s, SKIN_DQBS, RENDER_VIEW_BODY, 0, 3);
 	assert_int_equal(tap(&s, PLAYER_BTN_NEXT, log), PLAYER_ACT_CLIP);
 	assert_string_equal(log, "input: NEXT -> clip 2/3");
 	tap(&s, PLAYER_BTN_NEXT, log);
 	assert_int_equal(tap(&s, PLAYER_BTN_NEXT, log), PLAYER_ACT_CLIP);
 	assert_string_equal(log, "input: NEXT -> clip 1/3");
 	assert_int_equal(s.clip, 0);
-	player_init(&s, PLAYER_DQBS, PLAYER_VIEW_BODY, 0, 0); /* no clip count: one */
+	player_init(&s, SKIN_DQBS, RENDER_VIEW_BODY, 0, 0); /* no clip count: one */
 	tap(&s, PLAYER_BTN_NEXT, log);
 	assert_string_equal(log, "input: NEXT -> clip 1/1");
 }
@@ -94,7 +94,7 @@ static void test_view_and_gpu(void **state)
 	(void)state;
 	player_state s;
 	char log[96];
-	player_init(&s, PLAYER_DQBS, PLAYER_VIEW_BODY, 0, 1);
+	player_init(&s, SKIN_DQBS, RENDER_VIEW_BODY, 0, 1);
 	assert_int_equal(tap(&s, PLAYER_BTN_VIEW, log), PLAYER_ACT_VIEW);
 	assert_string_equal(log, "input: VIEW -> skeleton");
 	tap(&s, PLAYER_BTN_VIEW, log);
@@ -105,7 +105,7 @@ static void test_view_and_gpu(void **state)
 	assert_int_equal(ev(&s, PLAYER_BTN_VIEW, PLAYER_LONG, log), PLAYER_ACT_GPU);
 	assert_string_equal(log, "input: VIEW long -> gpu skinning");
 	assert_int_equal(ev(&s, PLAYER_BTN_VIEW, PLAYER_RELEASE, log), PLAYER_ACT_NONE);
-	assert_int_equal(s.view, PLAYER_VIEW_BODY);
+	assert_int_equal(s.view, RENDER_VIEW_BODY);
 	ev(&s, PLAYER_BTN_VIEW, PLAYER_PRESS, log);
 	ev(&s, PLAYER_BTN_VIEW, PLAYER_LONG, log);
 	assert_string_equal(log, "input: VIEW long -> cpu skinning");
@@ -119,7 +119,7 @@ static void test_stray_events(void **state)
 	(void)state;
 	player_state s, before;
 	char log[96];
-	player_init(&s, PLAYER_COMPARE, PLAYER_VIEW_WEIGHTS, 1, 2);
+	player_init(&s, SKIN_COMPARE, RENDER_VIEW_WEIGHTS, 1, 2);
 	before = s;
 	for (int b = 0; b < PLAYER_BTN_COUNT; b++) {
 		assert_int_equal(ev(&s, b, PLAYER_RELEASE, log), PLAYER_ACT_NONE);
@@ -151,8 +151,8 @@ static void test_names(void **state)
 	assert_int_equal(player_button_find("menu"), -1);
 	assert_string_equal(player_button_name(PLAYER_BTN_NEXT), "NEXT");
 	assert_string_equal(player_button_name(9), "?");
-	assert_string_equal(player_algo_name(PLAYER_DQBS_FIXED), "dqbs-fixed");
-	assert_string_equal(player_view_name(PLAYER_VIEW_SKELETON), "skeleton");
+	assert_string_equal(skin_algo_name(SKIN_DQBS_FIXED), "dqbs-fixed");
+	assert_string_equal(render_view_name(RENDER_VIEW_SKELETON), "skeleton");
 }
 
 int main(void)

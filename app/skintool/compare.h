@@ -1,0 +1,67 @@
+/* skintool compare, inside: the run's state shared by its measuring part
+ * (compare_measure.c: the scenes, every frame of the clip, the joints
+ * behind the volume) and its output part (compare_output.c: charts, the
+ * worst frames' renders); skintool_compare.c reads the arguments and runs
+ * them in order. Private to app/skintool. */
+#ifndef COMPARE_H
+#define COMPARE_H
+
+#include <stdio.h>
+
+#include "cli_bind_args.h"
+#include "cli_skin.h"
+#include "measure.h"
+#include "report.h"
+
+#define NALGO SKIN_ALGO_COUNT
+#define STORE_MAX 65536         /* frames kept for the charts (longer clips: every k-th) */
+#define REPORT_IMG_W 1200
+#define REPORT_IMG_H 600
+
+typedef struct compare_args {
+	bind_args bind;
+	const char *asf, *amc, *mesh, *out;
+	long renders;
+} compare_args;
+
+/* One frame's figures for one algorithm, as kept for the charts. */
+typedef struct frame_stats {
+	float vol, rmin, rmax;
+	float reg_min[REGION_COUNT], reg_max[REGION_COUNT];
+} frame_stats;
+
+typedef struct compare_run {
+	bound_body body;
+	cli_skin sk;
+	measure_state meas;
+	report rep;
+	int joint[SKP_MAX_VERTS], region[SKP_MAX_VERTS];
+	float pos[3 * SKP_MAX_VERTS], nrm[3 * SKP_MAX_VERTS];
+	float ratio[NALGO][SKP_MAX_VERTS];
+	/* the kept frames */
+	int stride, kept;
+	long frame[STORE_MAX];
+	frame_stats st[NALGO][STORE_MAX];
+	float rel[STORE_MAX];         /* LBS - DQBS at the worst vertex */
+	int rel_vertex[STORE_MAX];
+	float floor_y;
+	FILE *csv;
+	char path[4096];
+} compare_run;
+
+extern const char *const compare_algo_label[NALGO];
+
+/* The measuring part: each returns 0, or -1 after reporting. */
+int compare_measure_scenes(compare_run *c);
+int compare_load_clip(compare_run *c, const compare_args *a);
+int compare_measure_clip(compare_run *c, const compare_args *a);
+/* Which bends carry LBS's worst loss and DQBS's largest deviation. */
+int compare_explain_volume(compare_run *c, const compare_args *a);
+void compare_set_extreme(compare_run *c, report_extreme *e, double value, long frame, int vertex);
+
+/* The output part. */
+void compare_pick_stills(compare_run *c, int want);
+int compare_render_stills(compare_run *c, const compare_args *a);
+int compare_write_charts(compare_run *c, const char *dir);
+
+#endif

@@ -1,0 +1,182 @@
+/* skintool compare's output part (compare.h): the charts of the kept
+ * frames and the LBS | DQBS renders of the worst ones. */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "cli_common.h"
+#include "compare.h"
+#include "report_chart.h"
+#include "report_render.h"
+
+/* ---- charts --------------------------------------------------------- */
+
+static const rgba8 algo_color[NALGO] = { { 214, 69, 65, 255 }, { 38, 110, 190, 255 },
+					 { 46, 160, 90, 255 } };
+
+static chart_series series(int a, const char *label, const float *y, int dashed)
+{
+	chart_series s = { label, y, algo_color[a], a == SKIN_DQBS_FIXED ? 1.5f : 2.0f,
+			   a == SKIN_DQBS_FIXED || dashed };
+	return s;
+}
+
+/* Pulls one field of the kept frames into a plain series. */
+static void column(const compare_run *c, int a, int field, int region, float *out)
+{
+	for (int k = 0; k < c->kept; k++) {
+		const frame_stats *s = &c->st[a][k];
+		out[k] = field == 0 ? s->vol : field == 1 ? s->rmin : field == 2 ? s->rmax
+			 : field == 3 ? s->reg_min[region] : s->reg_max[region];
+	}
+}
+
+static int write_chart(compare_run *c, const char *dir, const char *png, const char *title,
+		       const char *caption, chart *ch)
+{
+	report *r = &c->rep;
+	snprintf(c->path, sizeof c->path, "%s/%s", dir, png);
+	if (chart_write_png(c->path, ch, 1000, 320) < 0)
+		return -1;
+	report_chart *rc = &r->chart[r->chart_count++];
+	snprintf(rc->png, sizeof rc->png, "%s", png);
+	rc->title = title;
+	rc->caption = caption;
+	return 0;
+}
+
+int compare_write_charts(compare_run *c, const char *dir)
+{
+	static float y[2 * NALGO][STORE_MAX];
+	static const char *const titles[3] = { "VOLUME RATIO", "MIN RADIUS RATIO", "MAX RADIUS RATIO" };
+	static const char *const captions[3] = {
+		"Enclosed volume over the volume as bound (1 = kept). LBS loses volume at every bent or twisted joint.",
+		"Smallest ratio over all vertices of the distance to the nearest posed bone over the same distance as bound: where the skin collapses (contact with another limb lowers it for every algorithm alike).",
+		"Largest ratio: where the skin swells (DQBS bulges a little at bends instead of collapsing).",
+	};
+	static char region_title[REGION_COUNT][64], region_png[REGION_COUNT][32];
+	chart ch;
+	for (int f = 0; f < 3; f++) {
+		memset(&ch, 0, sizeof ch);
+		ch.title = titles[f];
+		ch.x_label = "FRAME";
+		ch.x = c->frame;
+		ch.n = c->kept;
+		ch.ref_y = 1.0f;
+		for (int a = 0; a < NALGO; a++) {
+			column(c, a, f, 0, y[a]);
+			ch.series[ch.series_count++] = series(a, compare_algo_label[a], y[a], 0);
+		}
+		static const char *const pngs[3] = { "volume.png", "radius_min.png", "radius_max.png" };
+		if (write_chart(c, dir, pngs[f], titles[f], captions[f], &ch) < 0)
+			return -1;
+	}
+	for (int g = 0; g < REGION_COUNT; g++) {
+		if (!c->rep.region_verts[g])
+			continue;
+		memset(&ch, 0, sizeof ch);
+		snprintf(region_title[g], sizeof region_title[g], "%s: MIN AND MAX RADIUS RATIO",
+			 report_region_name(g));
+		snprintf(region_png[g], sizeof region_png[g], "region_%s.png", report_region_name(g));
+		ch.title = region_title[g];
+		ch.x_label = "FRAME";
+		ch.x = c->frame;
+		ch.n = c->kept;
+		ch.ref_y = 1.0f;
+		static const char *const mins[NALGO] = { "LBS MIN", "DQBS MIN", "FIXED MIN" };
+		for (int a = 0; a < NALGO; a += 1) {
+			if (a == SKIN_DQBS_FIXED)
+				continue; /* within 1e-4 of DQBS: two lines would hide each other */
+			column(c, a, 3, g, y[2 * a]);
+			column(c, a, 4, g, y[2 * a + 1]);
+			ch.series[ch.series_count++] = series(a, mins[a], y[2 * a], 0);
+		}
+		for (int a = 0; a < SKIN_DQBS_FIXED; a++) {
+			chart_series s = series(a, a ? "DQBS MAX" : "LBS MAX", y[2 * a + 1], 1);
+			s.width = 1.5f;
+			ch.series[ch.series_count++] = s;
+		}
+		if (write_chart(c, dir, region_png[g], region_title[g],
+				"Solid: the smallest radius ratio of the region's vertices; dashed: the largest.", &ch) < 0)
+			return -1;
+	}
+	return 0;
+}
+
+/* ---- the worst frames ----------------------------------------------- */
+
+/* The kept frames with the most negative LBS - DQBS, at least sep frames
+ * apart, worst first. */
+void compare_pick_stills(compare_run *c, int want)
+{
+	report *r = &c->rep;
+	long sep = r->frames / 16 > 60 ? 60 : r->frames / 16 < 1 ? 1 : r->frames / 16;
+	r->still_count = 0;
+	while (r->still_count < want) {
+		int best = -1;
+		for (int k = 0; k < c->kept; k++) {
+			if (!(c->rel[k] < 0.0f) || (best >= 0 && !(c->rel[k] < c->rel[best])))
+				continue;
+			int near = 0;
+			for (int i = 0; i < r->still_count; i++)
+				near |= labs(c->frame[k] - r->still[i].frame) < sep;
+			if (!near)
+				best = k;
+		}
+		if (best < 0)
+			break;
+		report_still *s = &r->still[r->still_count++];
+		memset(s, 0, sizeof *s);
+		s->frame = c->frame[best];
+		compare_set_extreme(c, &s->rel, c->rel[best], s->frame, c->rel_vertex[best]);
+		s->vertex = c->rel_vertex[best];
+	}
+}
+
+int compare_render_stills(compare_run *c, const compare_args *a)
+{
+	static report_view view;
+	static amc_frame f;
+	report *r = &c->rep;
+	char hud0[96], hud1[96];
+	if (r->still_count == 0)
+		return 0;
+	if (report_view_open(&view, &c->sk, &c->body.mesh, c->floor_y, REPORT_IMG_W, REPORT_IMG_H) < 0) {
+		r->render_note = "no headless display could be opened (surfaceless EGL, OSMesa)";
+		return 0;
+	}
+	int rc = 0;
+	for (int i = 0; i < r->still_count && rc == 0; i++) {
+		report_still *s = &r->still[i];
+		if (cli_read_frame(a->amc, &c->body.skel, s->frame, &f) < 0) {
+			rc = -1;
+			break;
+		}
+		cli_skin_frame(&c->sk, f.value);
+		/* the two ratios at the marked vertex, for the caption */
+		measure_pose(&c->meas, &c->sk.pose);
+		for (int k = 0; k < 2; k++) {
+			cli_skin_run(&c->sk, (skin_algo)k, c->pos, c->nrm);
+			measure_skinned(&c->meas, c->pos, c->ratio[k]);
+		}
+		s->lbs_ratio = c->ratio[SKIN_LBS][s->vertex];
+		s->dqbs_ratio = c->ratio[SKIN_DQBS][s->vertex];
+		vec3 joint = c->sk.pose.head[s->rel.joint >= 0 ? s->rel.joint : 0];
+		snprintf(hud0, sizeof hud0, "%s  FRAME %ld", r->clip, s->frame);
+		snprintf(hud1, sizeof hud1, "RING: %s HEAD (%s)",
+			 s->rel.joint >= 0 ? c->body.skel.bone[s->rel.joint].name : "?",
+			 report_region_name(s->rel.region));
+		snprintf(s->full_png, sizeof s->full_png, "worst_%d.png", i + 1);
+		snprintf(s->close_png, sizeof s->close_png, "worst_%d_closeup.png", i + 1);
+		snprintf(c->path, sizeof c->path, "%s/%s", a->out, s->full_png);
+		rc = report_view_compare(&view, &c->sk, joint, 0, hud0, hud1, c->path);
+		snprintf(c->path, sizeof c->path, "%s/%s", a->out, s->close_png);
+		if (rc == 0)
+			rc = report_view_compare(&view, &c->sk, joint, 1, hud0, hud1, c->path);
+		s->rendered = rc == 0;
+	}
+	report_view_close(&view);
+	return rc;
+}
+
