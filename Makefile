@@ -97,7 +97,7 @@ DEMO_AMC := $(OUT)/assets/demo.amc
 CMOCKA_CFLAGS = $(shell $(PKG_CONFIG) --cflags cmocka 2>/dev/null)
 CMOCKA_LIBS   = $(shell $(PKG_CONFIG) --libs cmocka 2>/dev/null || echo -lcmocka)
 
-.PHONY: all test run size install clean help check-core check-layers
+.PHONY: all test run size install clean help check-core check-layers check-lean
 all: $(SKINTOOL) $(SKINPLAY) $(DEMO_AMC)
 
 $(OUT)/assets/demo_motion: assets/demo_motion.c
@@ -158,8 +158,9 @@ $(CORE_LIB) $(CLI_LIB) $(ANALYSIS_LIB) $(PLAT_LIB):
 	@mkdir -p $(@D)
 	rm -f $@ && $(AR) rcs $@ $^
 
+# the link map feeds `make size` (static RAM per module)
 $(SKINPLAY): $(OBJ_skinplay) $(CLI_LIB) $(PLAT_LIB) $(CORE_LIB)
-	$(CC) $(LDFLAGS) -o $@ $^ $(LDLIBS)
+	$(CC) $(LDFLAGS) -Wl,-Map=$@.map -o $@ $^ $(LDLIBS)
 $(SKINTOOL): $(OBJ_skintool) $(CLI_LIB) $(ANALYSIS_LIB) $(PLAT_LIB) $(CORE_LIB)
 	$(CC) $(LDFLAGS) -o $@ $^ $(LDLIBS)
 
@@ -179,8 +180,17 @@ check-layers:
 	@sh tests/check_layers.sh "$(CC) -Iboard/$(BOARD) $(CFLAGS_CORE)" \
 	  "$(foreach m,$(APP_MODULES),$(m)=$(DEPS_$(m)))" "$(DEPS_platform)" "$(PORT_HEADERS)" "$(PLATFORM_DIRS)"
 
+# skinplay, the device program, links none of the tool's code: no symbol
+# the analysis library or the report defines may be in it.
+REPORT_OBJ := $(filter $(OUT)/app/skintool/report/%,$(OBJ_skintool))
+check-lean: $(SKINPLAY) $(ANALYSIS_LIB) $(REPORT_OBJ)
+	@$(NM) --defined-only $(ANALYSIS_LIB) $(REPORT_OBJ) | awk '$$2 ~ /^[TDBR]$$/ { print $$3 }' | sort -u > $(OUT)/tool-symbols.txt
+	@leaked=$$($(NM) --defined-only $(SKINPLAY) | awk '{ print $$3 }' | grep -xFf $(OUT)/tool-symbols.txt | tr '\n' ' '); \
+	if [ -n "$$leaked" ]; then echo "check-lean: skinplay links tool-only code: $$leaked"; exit 1; fi; \
+	echo "check-lean: skinplay links none of the $$(wc -l < $(OUT)/tool-symbols.txt) symbols of the analysis and report code"
+
 test: deps
-	@$(MAKE) --no-print-directory all $(UNIT_BIN) check-core check-layers
+	@$(MAKE) --no-print-directory all $(UNIT_BIN) check-core check-layers check-lean
 	@$(TEST_WRAP) sh tests/run_tests.sh $(OUT) $(UNIT_BIN)
 
 # On a console or desktop: the demo on the display. Without one: headless,
@@ -197,8 +207,12 @@ run: deps
 	  $(SKINPLAY) --asf $(DEMO_ASF) --amc $(DEMO_AMC) --platform $$plat --algo compare; \
 	fi
 
+# Code and static RAM of skinplay, the RAM per module and the largest
+# buffers (tests/size_report.sh reads the link map and the symbols).
 size: $(SKINPLAY)
-	@size $(SKINPLAY) | awk 'NR==2 { printf "skinplay (%s): code %d bytes (text), static RAM %d bytes (.data %d + .bss %d)\n", "$(BOARD)", $$1, $$2+$$3, $$2, $$3 }'
+	@sh tests/size_report.sh $(SKINPLAY) "$(BOARD)" "$(SIZE)" "$(NM)" \
+	  "$(foreach m,$(APP_MODULES),$(foreach f,$(SRC_$(m)),$(notdir $(f:.c=.o))=$(m))) \
+	   $(foreach f,$(PLAT_SRC),$(notdir $(f:.c=.o))=$(patsubst platform/%/,platform/%,$(dir $(f))))"
 
 # Installed layout. The package (platform/debian/deb.mk) installs with
 # PREFIX=/usr and Debian's unit and udev directories.
@@ -208,6 +222,8 @@ MANDIR     := $(PREFIX)/share/man/man1
 UNITDIR    ?= /etc/systemd/system
 UDEVDIR    ?= /etc/udev/rules.d
 STRIP      ?= strip
+SIZE       ?= size
+NM         ?= nm
 # The board's programs run on this machine (board.mk sets an emulator for a
 # cross build): the demo image and the man pages are made by them.
 RUN_DIR    := $(OUT)/run

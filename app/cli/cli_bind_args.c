@@ -5,6 +5,7 @@
 
 #include "cli_common.h"
 #include "cli_mesh_io.h"
+#include "cli_scratch.h"
 #include "cli_weights.h"
 #include "clock.h"
 #include "mannequin.h"
@@ -110,7 +111,7 @@ static int fit_mesh(const char *obj, bound_body *body)
 /* generated: the body is the generated one, where balancing is measured */
 static int auto_weights(const bind_args *a, int generated, const char *obj, bound_body *body)
 {
-	static bind_balance_work work;
+	bind_balance_work *work = &cli_scratch_area()->balance;
 	skp_error err;
 	const mesh *m = &body->mesh;
 	uint64_t t0 = clock_now_ns();
@@ -120,7 +121,7 @@ static int auto_weights(const bind_args *a, int generated, const char *obj, boun
 	if (body->balanced)
 		rc = bind_balance(&body->skel, &body->pose, m->pos, m->vert_count,
 				  (const uint32_t (*)[3])m->tri, m->tri_count, &body->weights,
-				  &work, &body->balance, &err);
+				  work, &body->balance, &err);
 	body->bind_ns = clock_now_ns() - t0;
 	if (rc != SKP_OK) {
 		fprintf(stderr, "%s: bind: %s\n", obj, err.msg);
@@ -134,13 +135,13 @@ static int auto_weights(const bind_args *a, int generated, const char *obj, boun
  * also the bind pose. */
 static int generate_body(const bind_args *a, const char *asf, bound_body *body)
 {
-	static manq_work work;
+	manq_work *work = &cli_scratch_area()->manq;
 	skp_error err;
 	if (a->pose_path || a->fit || a->group || a->weights_path) {
 		fprintf(stderr, "%s: --bind-pose, --fit, --group and --weights need a mesh\n", asf);
 		return -1;
 	}
-	if (manq_build(&body->skel, 0, &work, &body->mesh, &err) != SKP_OK) {
+	if (manq_build(&body->skel, 0, work, &body->mesh, &err) != SKP_OK) {
 		fprintf(stderr, "%s: generated body: %s\n", asf, err.msg);
 		return -1;
 	}

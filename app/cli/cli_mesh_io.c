@@ -5,11 +5,12 @@
 #include <string.h>
 
 #include "cli_common.h"
+#include "cli_scratch.h"
 #include "file_reader.h"
 
 const obj_work *cli_load_obj(const char *path, const char *group, mesh *out)
 {
-	static obj_work work;
+	obj_work *work = &cli_scratch_area()->obj;
 	static file_reader fr;
 	static text_lines tl;
 	obj_options opt = { group, 0, 0 };
@@ -21,13 +22,13 @@ const obj_work *cli_load_obj(const char *path, const char *group, mesh *out)
 		return NULL;
 	}
 	text_lines_init(&tl, file_reader_as_reader(&fr));
-	skp_status st = obj_parse(out, &work, &tl, &opt, &err);
+	skp_status st = obj_parse(out, work, &tl, &opt, &err);
 	file_reader_close(&fr);
 	if (st != SKP_OK) {
 		cli_error(path, &err);
 		return NULL;
 	}
-	return &work;
+	return work;
 }
 
 static void write_body(FILE *f, const mesh *m, const char *what)

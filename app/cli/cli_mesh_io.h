@@ -8,8 +8,8 @@
 
 /* Loads an OBJ, keeping only the faces of group when it is not NULL.
  * Returns the parser's work area (vertex mapping in ->source, counts), or
- * NULL after reporting the error. The work area is static: the next call
- * overwrites it. */
+ * NULL after reporting the error. The work area is the start-up scratch
+ * (cli_scratch.h): valid until the next call or the next binding step. */
 const obj_work *cli_load_obj(const char *path, const char *group, mesh *out);
 
 /* Writes a first comment "# WHAT: N vertices, M triangles" (what NULL:

@@ -261,7 +261,7 @@ void show_close(show_source *s)
 	s->active = -1;
 }
 
-void show_report_memory(void)
+void show_print_memory(void)
 {
 	char line[256], hwm[64] = "?", rss[64] = "?";
 	FILE *f = fopen("/proc/self/status", "r");

@@ -77,6 +77,6 @@ void show_close(show_source *s);
 
 /* Prints the process's peak and current resident memory (VmHWM, VmRSS from
  * /proc/self/status) on stderr, for skinplay --report-memory. */
-void show_report_memory(void);
+void show_print_memory(void);
 
 #endif

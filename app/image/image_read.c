@@ -3,6 +3,7 @@
 #include <string.h>
 
 #include "crc32.h"
+#include "image_section.h"
 
 static const char *const state_names[] = {
 	"good", "I/O error", "short read", "CRC mismatch", "block of another image",
@@ -72,14 +73,6 @@ skp_block_state skp_image_read_block(skp_image *im, uint32_t block, int kind, un
 	return check_block(im, block, kind, item, buf);
 }
 
-static skp_status block_fail(skp_error *err, skp_status code, uint32_t block, const char *fmt,
-			     const char *what, const char *why)
-{
-	skp_fail(err, code, 0, fmt, what, why);
-	if (err)
-		err->block = (long)block;
-	return code;
-}
 
 /* Header checks that need no other block, in the order a reader must make
  * them: what it is, whether it is intact, which version, whether it fits. */
@@ -89,15 +82,15 @@ static skp_status check_header(const skp_image *im, const uint8_t *p, int n, skp
 	uint32_t bs = im->dev->block_size;
 	int header_ok = crc32_compute(p, SKP_IMAGE_HEADER_SIZE - 4) == h->crc;
 	if (memcmp(p, SKP_IMAGE_MAGIC, 8))
-		return block_fail(err, SKP_ERR_CORRUPT, 0, "%s%s", "not a skinplay image ",
+		return image_block_fail(err, SKP_ERR_CORRUPT, 0, "%s%s", "not a skinplay image ",
 				  "(no SKPIMAGE magic in block 0)");
 	if (header_ok && h->block_size != bs)
 		return skp_fail(err, SKP_ERR_RANGE, 0, "image block size %lu, storage opened with %lu",
 				(unsigned long)h->block_size, (unsigned long)bs);
 	if ((uint32_t)n < bs)
-		return block_fail(err, SKP_ERR_CORRUPT, 0, "%s%s", "header block: ", "short read");
+		return image_block_fail(err, SKP_ERR_CORRUPT, 0, "%s%s", "header block: ", "short read");
 	if (!skp_block_crc_ok(im->buf, bs))
-		return block_fail(err, SKP_ERR_CORRUPT, 0, "%s%s", "header block: ", "CRC mismatch");
+		return image_block_fail(err, SKP_ERR_CORRUPT, 0, "%s%s", "header block: ", "CRC mismatch");
 	if (h->version != SKP_IMAGE_VERSION)
 		return skp_fail(err, SKP_ERR_CORRUPT, 0, "image format version %u, this build reads version %d",
 				(unsigned)h->version, SKP_IMAGE_VERSION);
@@ -105,7 +98,7 @@ static skp_status check_header(const skp_image *im, const uint8_t *p, int n, skp
 		return skp_fail(err, SKP_ERR_CORRUPT, 0, "header size %u, expected %d", (unsigned)h->header_size,
 				SKP_IMAGE_HEADER_SIZE);
 	if (!header_ok)
-		return block_fail(err, SKP_ERR_CORRUPT, 0, "%s%s", "header ", "CRC mismatch");
+		return image_block_fail(err, SKP_ERR_CORRUPT, 0, "%s%s", "header ", "CRC mismatch");
 	return SKP_OK;
 }
 
@@ -141,123 +134,21 @@ static skp_status check_fit(const skp_image *im, skp_error *err)
 	return SKP_OK;
 }
 
-static void sec_open(skp_image *im, const skp_image_section *sec, uint8_t kind, uint16_t item)
-{
-	im->s_block = sec->first;
-	im->s_end = sec->first + sec->count;
-	im->s_left = sec->bytes;
-	im->s_pos = im->hdr.block_size - SKP_IMAGE_BLOCK_EXTRA; /* nothing buffered */
-	im->s_kind = kind;
-	im->s_item = item;
-}
-
-static const char *const kind_names[] = {
-	"", "header", "skeleton", "bind", "clip directory", "clip quantisation", "clip frames"
-};
-
-/* n bytes of the open section, across its blocks. */
-static skp_status sec_get(skp_image *im, void *out, uint32_t n, skp_error *err)
-{
-	uint8_t *o = out;
-	uint32_t payload = im->hdr.block_size - SKP_IMAGE_BLOCK_EXTRA;
-	const char *what = kind_names[im->s_kind];
-	if (n > im->s_left)
-		return block_fail(err, SKP_ERR_CORRUPT, im->s_block, "%s section ends early%s", what, "");
-	while (n > 0) {
-		if (im->s_pos == payload) {
-			if (im->s_block >= im->s_end)
-				return block_fail(err, SKP_ERR_CORRUPT, im->s_block, "%s section ends early%s", what, "");
-			skp_block_state st = skp_image_read_block(im, im->s_block, im->s_kind, im->s_item, im->buf);
-			if (st != SKP_BLOCK_OK)
-				return block_fail(err, st == SKP_BLOCK_IO ? SKP_ERR_IO : SKP_ERR_CORRUPT, im->s_block,
-						  "%s section: %s", what, skp_block_state_name(st));
-			im->s_block++;
-			im->s_pos = 0;
-		}
-		uint32_t k = payload - im->s_pos < n ? payload - im->s_pos : n;
-		memcpy(o, im->buf + SKP_IMAGE_BLOCK_HDR + im->s_pos, k);
-		im->s_pos += k;
-		im->s_left -= k;
-		o += k;
-		n -= k;
-	}
-	return SKP_OK;
-}
-
-/* The block the stream's last bytes came from, for messages. */
-static long sec_block(const skp_image *im)
-{
-	return im->s_pos == 0 ? (long)im->s_block : (long)im->s_block - 1;
-}
-
-static skp_status sec_bad(skp_image *im, skp_error *err, const char *what)
-{
-	skp_fail(err, SKP_ERR_CORRUPT, 0, "%s section: %s", kind_names[im->s_kind], what);
-	if (err)
-		err->block = sec_block(im);
-	return SKP_ERR_CORRUPT;
-}
-
-static skp_status get_u8(skp_image *im, uint8_t *v, skp_error *err)
-{
-	return sec_get(im, v, 1, err);
-}
-
-static skp_status get_u16(skp_image *im, uint16_t *v, skp_error *err)
-{
-	uint8_t b[2] = { 0, 0 }; /* decoded even when the read failed */
-	skp_status rc = sec_get(im, b, 2, err);
-	*v = le_get16(b);
-	return rc;
-}
-
-static skp_status get_u32(skp_image *im, uint32_t *v, skp_error *err)
-{
-	uint8_t b[4] = { 0, 0, 0, 0 }; /* decoded even when the read failed */
-	skp_status rc = sec_get(im, b, 4, err);
-	*v = le_get32(b);
-	return rc;
-}
-
-static skp_status get_floats(skp_image *im, float *v, int n, skp_error *err)
-{
-	skp_status rc = SKP_OK;
-	for (int i = 0; i < n && !rc; i++) {
-		uint32_t u;
-		rc = get_u32(im, &u, err);
-		memcpy(&v[i], &u, 4);
-	}
-	return rc;
-}
-
-static skp_status get_str(skp_image *im, char *s, skp_error *err)
-{
-	uint8_t n;
-	skp_status rc = get_u8(im, &n, err);
-	if (rc)
-		return rc;
-	if (n >= SKP_MAX_NAME)
-		return sec_bad(im, err, "name longer than SKP_MAX_NAME");
-	rc = sec_get(im, s, n, err);
-	s[n] = '\0';
-	return rc;
-}
-
 static skp_status get_clip(skp_image *im, skp_image_clip *c, skp_error *err)
 {
 	uint32_t first;
-	skp_status rc = get_str(im, c->name, err);
-	if (!rc) rc = get_floats(im, &c->fps, 1, err);
-	if (!rc) rc = get_u32(im, &c->frame_count, err);
-	if (!rc) rc = get_u32(im, &first, err);
-	if (!rc) rc = get_u16(im, &c->dofs, err);
-	if (!rc) rc = get_u16(im, &c->frames_per_block, err);
-	if (!rc) rc = get_u32(im, &c->quant_first, err);
-	if (!rc) rc = get_u32(im, &c->quant_blocks, err);
-	if (!rc) rc = get_u32(im, &c->frames_first, err);
-	if (!rc) rc = get_u32(im, &c->frame_blocks, err);
-	if (!rc) rc = get_floats(im, &c->max_rot_err, 1, err);
-	if (!rc) rc = get_floats(im, &c->max_trans_err, 1, err);
+	skp_status rc = sec_str(im, c->name, err);
+	if (!rc) rc = sec_floats(im, &c->fps, 1, err);
+	if (!rc) rc = sec_u32(im, &c->frame_count, err);
+	if (!rc) rc = sec_u32(im, &first, err);
+	if (!rc) rc = sec_u16(im, &c->dofs, err);
+	if (!rc) rc = sec_u16(im, &c->frames_per_block, err);
+	if (!rc) rc = sec_u32(im, &c->quant_first, err);
+	if (!rc) rc = sec_u32(im, &c->quant_blocks, err);
+	if (!rc) rc = sec_u32(im, &c->frames_first, err);
+	if (!rc) rc = sec_u32(im, &c->frame_blocks, err);
+	if (!rc) rc = sec_floats(im, &c->max_rot_err, 1, err);
+	if (!rc) rc = sec_floats(im, &c->max_trans_err, 1, err);
 	if (rc)
 		return rc;
 	c->first_number = (int32_t)first;
@@ -275,7 +166,7 @@ static skp_status load_directory(skp_image *im, skp_error *err)
 {
 	uint16_t n;
 	sec_open(im, &im->hdr.sec[SKP_SEC_DIRECTORY], SKP_KIND_DIRECTORY, 0);
-	skp_status rc = get_u16(im, &n, err);
+	skp_status rc = sec_u16(im, &n, err);
 	if (rc)
 		return rc;
 	if (n != im->hdr.clips)
@@ -299,9 +190,9 @@ skp_status skp_image_open(skp_image *im, const skp_blockdev *dev, skp_error *err
 	if (n == SKP_BD_ERANGE)
 		n = 0; /* empty storage */
 	if (n < 0)
-		return block_fail(err, SKP_ERR_IO, 0, "%s%s", "header: ", "I/O error");
+		return image_block_fail(err, SKP_ERR_IO, 0, "%s%s", "header: ", "I/O error");
 	if ((uint32_t)n < SKP_IMAGE_BLOCK_HDR + SKP_IMAGE_HEADER_SIZE)
-		return block_fail(err, SKP_ERR_CORRUPT, 0, "%s%s", "header: ", "short read (empty or truncated image)");
+		return image_block_fail(err, SKP_ERR_CORRUPT, 0, "%s%s", "header: ", "short read (empty or truncated image)");
 	const uint8_t *p = im->buf + SKP_IMAGE_BLOCK_HDR;
 	skp_image_header_get(p, &im->hdr);
 	skp_status rc = check_header(im, p, n, err);
@@ -310,7 +201,7 @@ skp_status skp_image_open(skp_image *im, const skp_blockdev *dev, skp_error *err
 	im->tag = skp_image_tag(im->hdr.sequence);
 	skp_block_state st = check_block(im, 0, SKP_KIND_HEADER, 0, im->buf);
 	if (st != SKP_BLOCK_OK)
-		return block_fail(err, SKP_ERR_CORRUPT, 0, "%s%s", "header block: ", skp_block_state_name(st));
+		return image_block_fail(err, SKP_ERR_CORRUPT, 0, "%s%s", "header block: ", skp_block_state_name(st));
 	rc = check_fit(im, err);
 	return rc ? rc : load_directory(im, err);
 }
@@ -321,187 +212,4 @@ int skp_image_find_clip(const skp_image *im, const char *name)
 		if (strcmp(im->clip[i].name, name) == 0)
 			return i;
 	return -1;
-}
-
-static skp_status check_bone(skp_image *im, const skel *s, int i, int *dof, skp_error *err)
-{
-	const skel_bone *b = &s->bone[i];
-	if (i == 0 ? b->parent != -1 : (b->parent < 0 || b->parent >= s->count))
-		return sec_bad(im, err, "bone parent out of range");
-	if (b->channel_count > SKEL_MAX_CHANNELS || b->dof_offset != *dof)
-		return sec_bad(im, err, "bone channels do not add up");
-	for (int c = 0; c < b->channel_count; c++)
-		if (b->channel[c] > SKEL_L)
-			return sec_bad(im, err, "unknown channel");
-	for (int a = 0; a < 3; a++)
-		if (b->axis_order[a] > 2)
-			return sec_bad(im, err, "unknown rotation axis");
-	*dof += b->channel_count;
-	return SKP_OK;
-}
-
-static skp_status get_bone(skp_image *im, skel_bone *b, skp_error *err)
-{
-	/* zeroed: the bone is filled below even when a read failed */
-	uint32_t id = 0;
-	uint16_t parent = 0;
-	float rot[4] = { 0.0f, 0.0f, 0.0f, 0.0f };
-	skp_status rc = get_str(im, b->name, err);
-	if (!rc) rc = get_u32(im, &id, err);
-	if (!rc) rc = get_u16(im, &parent, err);
-	if (!rc) rc = get_floats(im, &b->direction.x, 3, err);
-	if (!rc) rc = get_floats(im, &b->length, 1, err);
-	if (!rc) rc = get_floats(im, &b->axis_angle.x, 3, err);
-	if (!rc) rc = sec_get(im, b->axis_order, 3, err);
-	if (!rc) rc = get_u8(im, &b->channel_count, err);
-	if (rc)
-		return rc;
-	if (b->channel_count > SKEL_MAX_CHANNELS)
-		return sec_bad(im, err, "more than 7 channels on a bone");
-	rc = sec_get(im, b->channel, b->channel_count, err);
-	if (!rc) rc = get_u8(im, &b->has_limits, err);
-	for (int i = 0; i < b->channel_count && !rc; i++)
-		rc = get_floats(im, b->limit[i], 2, err);
-	if (!rc) rc = get_u16(im, &b->dof_offset, err);
-	if (!rc) rc = get_floats(im, rot, 4, err);
-	b->id = (long)(int32_t)id;
-	b->parent = (int16_t)parent;
-	b->axis_rot.w = rot[0];
-	b->axis_rot.x = rot[1];
-	b->axis_rot.y = rot[2];
-	b->axis_rot.z = rot[3];
-	return rc;
-}
-
-/* Parents before children in eval_order, every bone once. */
-static skp_status check_order(skp_image *im, const skel *s, skp_error *err)
-{
-	uint8_t placed[SKP_MAX_BONES] = { 0 };
-	for (int i = 0; i < s->count; i++) {
-		int b = s->eval_order[i];
-		if (b >= s->count || placed[b] || (b != 0 && !placed[s->bone[b].parent]) || (i == 0) != (b == 0))
-			return sec_bad(im, err, "bone order is not parents first");
-		placed[b] = 1;
-	}
-	return SKP_OK;
-}
-
-skp_status skp_image_load_skel(skp_image *im, skel *s, skp_error *err)
-{
-	uint16_t count, dofs;
-	memset(s, 0, sizeof *s);
-	sec_open(im, &im->hdr.sec[SKP_SEC_SKELETON], SKP_KIND_SKELETON, 0);
-	skp_status rc = get_str(im, s->name, err);
-	if (!rc) rc = get_u8(im, (uint8_t *)s->version, err);
-	if (!rc) {
-		uint8_t n = (uint8_t)s->version[0];
-		if (n >= sizeof s->version)
-			return sec_bad(im, err, "version longer than 15 bytes");
-		rc = sec_get(im, s->version, n, err);
-		s->version[n] = '\0';
-	}
-	if (!rc) rc = get_floats(im, &s->length_scale, 1, err);
-	if (!rc) rc = get_floats(im, &s->mass_scale, 1, err);
-	if (!rc) rc = get_u8(im, &s->angle_in_degrees, err);
-	if (!rc) rc = get_floats(im, &s->root_position.x, 3, err);
-	if (!rc) rc = get_u16(im, &count, err);
-	if (!rc) rc = get_u16(im, &dofs, err);
-	if (rc)
-		return rc;
-	if (count < 1 || count > SKP_MAX_BONES || count != im->hdr.bones || dofs != im->hdr.dofs)
-		return sec_bad(im, err, "bone or dof count differs from the header's");
-	s->count = count;
-	s->dof_count = dofs;
-	rc = sec_get(im, s->eval_order, count, err);
-	for (int i = 0; i < count && !rc; i++)
-		rc = get_bone(im, &s->bone[i], err);
-	int dof = 0;
-	for (int i = 0; i < count && !rc; i++)
-		rc = check_bone(im, s, i, &dof, err);
-	if (!rc && dof != s->dof_count)
-		return sec_bad(im, err, "dof count differs from the bones' channels");
-	return rc ? rc : check_order(im, s, err);
-}
-
-static skp_status get_influences(skp_image *im, const skel *s, skin_weights *w, int v, skp_error *err)
-{
-	uint8_t rec[1 + 4 * SKP_MAX_INFLUENCES];
-	skp_status rc = sec_get(im, rec, sizeof rec, err);
-	if (rc)
-		return rc;
-	int n = rec[0];
-	uint32_t sum = 0;
-	if (n < 1 || n > SKP_MAX_INFLUENCES)
-		return sec_bad(im, err, "influence count not 1..4");
-	w->count[v] = (uint8_t)n;
-	for (int i = 0; i < SKP_MAX_INFLUENCES; i++) {
-		uint16_t bone = le_get16(rec + 1 + 2 * i), q = le_get16(rec + 1 + 2 * SKP_MAX_INFLUENCES + 2 * i);
-		if (i < n && bone >= s->count)
-			return sec_bad(im, err, "influence on a bone the skeleton does not have");
-		w->bone[v][i] = i < n ? bone : 0;
-		w->weight[v][i] = i < n ? (float)q / (float)SKP_IMAGE_QMAX : 0.0f;
-		sum += i < n ? q : 0;
-	}
-	return sum == SKP_IMAGE_QMAX ? SKP_OK : sec_bad(im, err, "weights do not sum to 65535");
-}
-
-static skp_status get_mesh(skp_image *im, mesh *m, skp_error *err)
-{
-	skp_status rc = SKP_OK;
-	for (int v = 0; v < m->vert_count && !rc; v++)
-		rc = get_floats(im, &m->pos[v].x, 3, err);
-	for (int v = 0; v < m->vert_count && !rc; v++)
-		rc = get_floats(im, &m->normal[v].x, 3, err);
-	for (int t = 0; t < m->tri_count && !rc; t++) {
-		for (int k = 0; k < 3 && !rc; k++)
-			rc = get_u32(im, &m->tri[t][k], err);
-		if (!rc && (m->tri[t][0] >= (uint32_t)m->vert_count || m->tri[t][1] >= (uint32_t)m->vert_count ||
-			    m->tri[t][2] >= (uint32_t)m->vert_count))
-			return sec_bad(im, err, "triangle index beyond the vertices");
-	}
-	return rc;
-}
-
-skp_status skp_image_load_bind(skp_image *im, const skel *s, mesh *m, skin_weights *w,
-			       float *bind_values, long *bind_number, skp_error *err)
-{
-	uint32_t verts, tris, number;
-	uint8_t posed;
-	sec_open(im, &im->hdr.sec[SKP_SEC_BIND], SKP_KIND_BIND, 0);
-	skp_status rc = get_u32(im, &verts, err);
-	if (!rc) rc = get_u32(im, &tris, err);
-	if (!rc) rc = get_u8(im, &posed, err);
-	if (!rc) rc = get_u32(im, &number, err);
-	if (rc)
-		return rc;
-	if (verts != im->hdr.verts || tris != im->hdr.tris || verts > SKP_MAX_VERTS || tris > SKP_MAX_TRIS ||
-	    posed > 1)
-		return sec_bad(im, err, "vertex or triangle count differs from the header's");
-	memset(bind_values, 0, sizeof(float) * SKP_MAX_DOF);
-	*bind_number = posed ? (long)(int32_t)number : -1;
-	if (posed && (rc = get_floats(im, bind_values, s->dof_count, err)) != SKP_OK)
-		return rc;
-	m->vert_count = (int)verts;
-	m->tri_count = (int)tris;
-	w->vert_count = (int)verts;
-	rc = get_mesh(im, m, err);
-	for (int v = 0; v < m->vert_count && !rc; v++)
-		rc = get_influences(im, s, w, v, err);
-	return rc;
-}
-
-skp_status skp_image_load_quant(skp_image *im, int clip, float *qmin, float *qstep, skp_error *err)
-{
-	const skp_image_clip *c = &im->clip[clip];
-	skp_image_section sec = { c->quant_first, c->quant_blocks, 8u * c->dofs };
-	sec_open(im, &sec, SKP_KIND_QUANT, (uint16_t)clip);
-	skp_status rc = SKP_OK;
-	for (int i = 0; i < c->dofs && !rc; i++) {
-		rc = get_floats(im, &qmin[i], 1, err);
-		if (!rc)
-			rc = get_floats(im, &qstep[i], 1, err);
-		if (!rc && !(qstep[i] >= 0))
-			return sec_bad(im, err, "negative quantisation step");
-	}
-	return rc;
 }

@@ -5,6 +5,10 @@
 #include "ini.h"
 #include "text_tokens.h"
 
+#define STR_(x) #x
+#define STR(x) STR_(x)
+#define DISPLAY_MAX_TEXT STR(SKP_DISPLAY_MAX_W) "x" STR(SKP_DISPLAY_MAX_H)
+
 typedef enum { SEC_NONE, SEC_DISPLAY, SEC_INPUT, SEC_BUTTON, SEC_STORAGE, SEC_LIMITS } section_kind;
 
 /* Per-button timing given in the file; -1 inherits [input]'s. */
@@ -67,9 +71,9 @@ static skp_status parse_size(board_config *c, const ini_entry *e, skp_error *err
 		return bad(err, e, "WxH");
 	memcpy(buf, e->value, n);
 	buf[n] = '\0';
-	if (tok_parse_long(buf, &w) != 0 || tok_parse_long(x + 1, &h) != 0 || w < 16 || h < 16 || w > 3840 ||
-	    h > 2160)
-		return bad(err, e, "WxH between 16x16 and 3840x2160");
+	if (tok_parse_long(buf, &w) != 0 || tok_parse_long(x + 1, &h) != 0 || w < 16 || h < 16 ||
+	    w > SKP_DISPLAY_MAX_W || h > SKP_DISPLAY_MAX_H)
+		return bad(err, e, "WxH between 16x16 and the board's " DISPLAY_MAX_TEXT);
 	c->width = (int)w;
 	c->height = (int)h;
 	return SKP_OK;

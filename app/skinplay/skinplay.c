@@ -37,7 +37,7 @@ typedef struct player {
 	int gpu[RENDER_MAX_PANELS];
 	float pos[RENDER_MAX_PANELS][3 * SKP_MAX_VERTS];
 	float nrm[RENDER_MAX_PANELS][3 * SKP_MAX_VERTS];
-	uint8_t rgba[3840 * 2160 * 4]; /* one frame read back for --out */
+	uint8_t rgba[SKP_DISPLAY_MAX_W * SKP_DISPLAY_MAX_H * 4]; /* one frame read back for --out */
 	char clip[64];
 	sheet contact;
 	kiosk kiosk;       /* --board, --input, signals, systemd */
@@ -162,6 +162,11 @@ static int setup(player *p)
 	char *dot = strrchr(p->clip, '.');
 	if (dot)
 		*dot = '\0';
+	if (p->o.out_dir && (p->info.width > SKP_DISPLAY_MAX_W || p->info.height > SKP_DISPLAY_MAX_H)) {
+		fprintf(stderr, "skinplay: --out reads frames back into %dx%d at most (board limit); %s shows %dx%d\n",
+			SKP_DISPLAY_MAX_W, SKP_DISPLAY_MAX_H, p->info.name, p->info.width, p->info.height);
+		return -1;
+	}
 	if (p->o.out_dir && mkdir(p->o.out_dir, 0755) != 0 && errno != EEXIST) {
 		fprintf(stderr, "skinplay: %s: %s\n", p->o.out_dir, strerror(errno));
 		return -1;
@@ -381,7 +386,7 @@ int main(int argc, char **argv)
 	cli_motion_close(&p.motion);
 	show_close(&p.show);
 	if (p.o.report_memory)
-		show_report_memory();
+		show_print_memory();
 	if (p.disp) {
 		render_shutdown(&p.r);
 		p.disp->shutdown();

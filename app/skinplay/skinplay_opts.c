@@ -37,9 +37,9 @@ static int parse_size(const char *v, play_opts *o)
 	long w = v ? strtol(v, &x, 10) : 0, h = 0;
 	if (v && *x == 'x')
 		h = strtol(x + 1, &x, 10);
-	if (!v || *x || w < 16 || h < 16 || w > 3840 || h > 2160) {
-		fprintf(stderr, "skinplay: --size expects WxH between 16x16 and 3840x2160, got '%s'\n",
-			v ? v : "");
+	if (!v || *x || w < 16 || h < 16 || w > SKP_DISPLAY_MAX_W || h > SKP_DISPLAY_MAX_H) {
+		fprintf(stderr, "skinplay: --size expects WxH between 16x16 and %dx%d (board limit), got '%s'\n",
+			SKP_DISPLAY_MAX_W, SKP_DISPLAY_MAX_H, v ? v : "");
 		return -1;
 	}
 	o->width = (int)w;

@@ -8,8 +8,8 @@
 void sheet_init(sheet *s, int frame_w, int frame_h)
 {
 	s->scale = 1;
-	while ((frame_w / s->scale) * SHEET_COLUMNS > 2560 ||
-	       (frame_h / s->scale) * (SHEET_MAX_CELLS / SHEET_COLUMNS) > 1440)
+	while ((frame_w / s->scale) * SHEET_COLUMNS > SHEET_MAX_W ||
+	       (frame_h / s->scale) * (SHEET_MAX_CELLS / SHEET_COLUMNS) > SHEET_MAX_H)
 		s->scale++;
 	s->cell_w = frame_w / s->scale;
 	s->cell_h = frame_h / s->scale;

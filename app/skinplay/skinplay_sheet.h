@@ -4,9 +4,14 @@
 
 #include <stdint.h>
 
+#include "board_limits.h"
+
 #define SHEET_COLUMNS 4
 #define SHEET_MAX_CELLS 16
-#define SHEET_MAX_BYTES (2560 * 1440 * 4)
+/* two thirds of the board's largest frame each way (host: 2560x1440) */
+#define SHEET_MAX_W (SKP_DISPLAY_MAX_W * 2 / 3)
+#define SHEET_MAX_H (SKP_DISPLAY_MAX_H * 2 / 3)
+#define SHEET_MAX_BYTES (SHEET_MAX_W * SHEET_MAX_H * 4)
 
 typedef struct sheet {
 	int cell_w, cell_h, scale;

@@ -13,6 +13,12 @@
 #define SKP_MAX_TRIS    131072  /* mesh triangles after triangulation */
 #define SKP_MAX_INFLUENCES   4  /* bones per vertex */
 
+/* The largest frame skinplay renders headless or reads back for --out
+ * (its buffer is W * H * 4 bytes of static RAM) and a board config may ask
+ * for; a screen's own mode may be larger. */
+#define SKP_DISPLAY_MAX_W 3840
+#define SKP_DISPLAY_MAX_H 2160
+
 /* Each bone has at most 7 dof (rx ry rz tx ty tz l); the root has 6. */
 #define SKP_MAX_DOF (7 * SKP_MAX_BONES)
 

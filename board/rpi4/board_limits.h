@@ -1,5 +1,7 @@
-/* Compile-time limits of the Raspberry Pi 4 kiosk: the host's, which the Pi's
- * 1-8 GiB hold easily, plus the kiosk's config limits. */
+/* Compile-time limits of the Raspberry Pi 4 kiosk, fitted to it: skinplay's
+ * static RAM is about 24 MB here (`make BOARD=rpi4 size`), against 32 MB
+ * budgeted, so that even a 1 GiB Pi keeps most of its memory for the GPU
+ * and the page cache. */
 #ifndef BOARD_LIMITS_H
 #define BOARD_LIMITS_H
 
@@ -9,9 +11,14 @@
 #define SKP_MAX_TOKENS      32  /* tokens on one line */
 #define SKP_READ_CHUNK    4096  /* bytes a text reader pulls per callback */
 
-#define SKP_MAX_VERTS    65536  /* mesh vertices (GLES 2.0: 16-bit indices) */
-#define SKP_MAX_TRIS    131072  /* mesh triangles after triangulation */
+#define SKP_MAX_VERTS    32768  /* mesh vertices: 2.5x the generated body (11,702), */
+#define SKP_MAX_TRIS     65536  /* 2.4x the MakeHuman body (13,380); about 380 B each */
 #define SKP_MAX_INFLUENCES   4  /* bones per vertex */
+
+/* The largest frame rendered headless or read back for --out (W * H * 4
+ * bytes); the screen's own mode on kms may be larger. */
+#define SKP_DISPLAY_MAX_W 1920
+#define SKP_DISPLAY_MAX_H 1080
 
 /* Each bone has at most 7 dof (rx ry rz tx ty tz l); the root has 6. */
 #define SKP_MAX_DOF (7 * SKP_MAX_BONES)

@@ -1,0 +1,22 @@
+/* Start-up scratch for the bound body. The OBJ parser, the generated body
+ * and the weight balancing each need megabytes of work space (obj_work,
+ * manq_work, bind_balance_work, all sized by the board's vertex limit), one
+ * after another and never two at once (bind_args_load), so they share one
+ * static area instead of holding three. Only the pointer a step was given
+ * is valid, and only until the next step starts. */
+#ifndef CLI_SCRATCH_H
+#define CLI_SCRATCH_H
+
+#include "bind_balance.h"
+#include "mannequin.h"
+#include "obj.h"
+
+typedef union cli_scratch {
+	obj_work obj;
+	manq_work manq;
+	bind_balance_work balance;
+} cli_scratch;
+
+cli_scratch *cli_scratch_area(void);
+
+#endif

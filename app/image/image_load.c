@@ -1,0 +1,190 @@
+/* Loading an opened image's sections: the skeleton, the bound body (mesh
+ * and weights) and a clip's quantisation, each checked as it is read. */
+#include "image_read.h"
+
+#include <string.h>
+
+#include "image_section.h"
+
+static skp_status check_bone(skp_image *im, const skel *s, int i, int *dof, skp_error *err)
+{
+	const skel_bone *b = &s->bone[i];
+	if (i == 0 ? b->parent != -1 : (b->parent < 0 || b->parent >= s->count))
+		return sec_bad(im, err, "bone parent out of range");
+	if (b->channel_count > SKEL_MAX_CHANNELS || b->dof_offset != *dof)
+		return sec_bad(im, err, "bone channels do not add up");
+	for (int c = 0; c < b->channel_count; c++)
+		if (b->channel[c] > SKEL_L)
+			return sec_bad(im, err, "unknown channel");
+	for (int a = 0; a < 3; a++)
+		if (b->axis_order[a] > 2)
+			return sec_bad(im, err, "unknown rotation axis");
+	*dof += b->channel_count;
+	return SKP_OK;
+}
+
+static skp_status get_bone(skp_image *im, skel_bone *b, skp_error *err)
+{
+	/* zeroed: the bone is filled below even when a read failed */
+	uint32_t id = 0;
+	uint16_t parent = 0;
+	float rot[4] = { 0.0f, 0.0f, 0.0f, 0.0f };
+	skp_status rc = sec_str(im, b->name, err);
+	if (!rc) rc = sec_u32(im, &id, err);
+	if (!rc) rc = sec_u16(im, &parent, err);
+	if (!rc) rc = sec_floats(im, &b->direction.x, 3, err);
+	if (!rc) rc = sec_floats(im, &b->length, 1, err);
+	if (!rc) rc = sec_floats(im, &b->axis_angle.x, 3, err);
+	if (!rc) rc = sec_get(im, b->axis_order, 3, err);
+	if (!rc) rc = sec_u8(im, &b->channel_count, err);
+	if (rc)
+		return rc;
+	if (b->channel_count > SKEL_MAX_CHANNELS)
+		return sec_bad(im, err, "more than 7 channels on a bone");
+	rc = sec_get(im, b->channel, b->channel_count, err);
+	if (!rc) rc = sec_u8(im, &b->has_limits, err);
+	for (int i = 0; i < b->channel_count && !rc; i++)
+		rc = sec_floats(im, b->limit[i], 2, err);
+	if (!rc) rc = sec_u16(im, &b->dof_offset, err);
+	if (!rc) rc = sec_floats(im, rot, 4, err);
+	b->id = (long)(int32_t)id;
+	b->parent = (int16_t)parent;
+	b->axis_rot.w = rot[0];
+	b->axis_rot.x = rot[1];
+	b->axis_rot.y = rot[2];
+	b->axis_rot.z = rot[3];
+	return rc;
+}
+
+/* Parents before children in eval_order, every bone once. */
+static skp_status check_order(skp_image *im, const skel *s, skp_error *err)
+{
+	uint8_t placed[SKP_MAX_BONES] = { 0 };
+	for (int i = 0; i < s->count; i++) {
+		int b = s->eval_order[i];
+		if (b >= s->count || placed[b] || (b != 0 && !placed[s->bone[b].parent]) || (i == 0) != (b == 0))
+			return sec_bad(im, err, "bone order is not parents first");
+		placed[b] = 1;
+	}
+	return SKP_OK;
+}
+
+skp_status skp_image_load_skel(skp_image *im, skel *s, skp_error *err)
+{
+	uint16_t count, dofs;
+	memset(s, 0, sizeof *s);
+	sec_open(im, &im->hdr.sec[SKP_SEC_SKELETON], SKP_KIND_SKELETON, 0);
+	skp_status rc = sec_str(im, s->name, err);
+	if (!rc) rc = sec_u8(im, (uint8_t *)s->version, err);
+	if (!rc) {
+		uint8_t n = (uint8_t)s->version[0];
+		if (n >= sizeof s->version)
+			return sec_bad(im, err, "version longer than 15 bytes");
+		rc = sec_get(im, s->version, n, err);
+		s->version[n] = '\0';
+	}
+	if (!rc) rc = sec_floats(im, &s->length_scale, 1, err);
+	if (!rc) rc = sec_floats(im, &s->mass_scale, 1, err);
+	if (!rc) rc = sec_u8(im, &s->angle_in_degrees, err);
+	if (!rc) rc = sec_floats(im, &s->root_position.x, 3, err);
+	if (!rc) rc = sec_u16(im, &count, err);
+	if (!rc) rc = sec_u16(im, &dofs, err);
+	if (rc)
+		return rc;
+	if (count < 1 || count > SKP_MAX_BONES || count != im->hdr.bones || dofs != im->hdr.dofs)
+		return sec_bad(im, err, "bone or dof count differs from the header's");
+	s->count = count;
+	s->dof_count = dofs;
+	rc = sec_get(im, s->eval_order, count, err);
+	for (int i = 0; i < count && !rc; i++)
+		rc = get_bone(im, &s->bone[i], err);
+	int dof = 0;
+	for (int i = 0; i < count && !rc; i++)
+		rc = check_bone(im, s, i, &dof, err);
+	if (!rc && dof != s->dof_count)
+		return sec_bad(im, err, "dof count differs from the bones' channels");
+	return rc ? rc : check_order(im, s, err);
+}
+
+static skp_status get_influences(skp_image *im, const skel *s, skin_weights *w, int v, skp_error *err)
+{
+	uint8_t rec[1 + 4 * SKP_MAX_INFLUENCES];
+	skp_status rc = sec_get(im, rec, sizeof rec, err);
+	if (rc)
+		return rc;
+	int n = rec[0];
+	uint32_t sum = 0;
+	if (n < 1 || n > SKP_MAX_INFLUENCES)
+		return sec_bad(im, err, "influence count not 1..4");
+	w->count[v] = (uint8_t)n;
+	for (int i = 0; i < SKP_MAX_INFLUENCES; i++) {
+		uint16_t bone = le_get16(rec + 1 + 2 * i), q = le_get16(rec + 1 + 2 * SKP_MAX_INFLUENCES + 2 * i);
+		if (i < n && bone >= s->count)
+			return sec_bad(im, err, "influence on a bone the skeleton does not have");
+		w->bone[v][i] = i < n ? bone : 0;
+		w->weight[v][i] = i < n ? (float)q / (float)SKP_IMAGE_QMAX : 0.0f;
+		sum += i < n ? q : 0;
+	}
+	return sum == SKP_IMAGE_QMAX ? SKP_OK : sec_bad(im, err, "weights do not sum to 65535");
+}
+
+static skp_status get_mesh(skp_image *im, mesh *m, skp_error *err)
+{
+	skp_status rc = SKP_OK;
+	for (int v = 0; v < m->vert_count && !rc; v++)
+		rc = sec_floats(im, &m->pos[v].x, 3, err);
+	for (int v = 0; v < m->vert_count && !rc; v++)
+		rc = sec_floats(im, &m->normal[v].x, 3, err);
+	for (int t = 0; t < m->tri_count && !rc; t++) {
+		for (int k = 0; k < 3 && !rc; k++)
+			rc = sec_u32(im, &m->tri[t][k], err);
+		if (!rc && (m->tri[t][0] >= (uint32_t)m->vert_count || m->tri[t][1] >= (uint32_t)m->vert_count ||
+			    m->tri[t][2] >= (uint32_t)m->vert_count))
+			return sec_bad(im, err, "triangle index beyond the vertices");
+	}
+	return rc;
+}
+
+skp_status skp_image_load_bind(skp_image *im, const skel *s, mesh *m, skin_weights *w,
+			       float *bind_values, long *bind_number, skp_error *err)
+{
+	uint32_t verts, tris, number;
+	uint8_t posed;
+	sec_open(im, &im->hdr.sec[SKP_SEC_BIND], SKP_KIND_BIND, 0);
+	skp_status rc = sec_u32(im, &verts, err);
+	if (!rc) rc = sec_u32(im, &tris, err);
+	if (!rc) rc = sec_u8(im, &posed, err);
+	if (!rc) rc = sec_u32(im, &number, err);
+	if (rc)
+		return rc;
+	if (verts != im->hdr.verts || tris != im->hdr.tris || verts > SKP_MAX_VERTS || tris > SKP_MAX_TRIS ||
+	    posed > 1)
+		return sec_bad(im, err, "vertex or triangle count differs from the header's");
+	memset(bind_values, 0, sizeof(float) * SKP_MAX_DOF);
+	*bind_number = posed ? (long)(int32_t)number : -1;
+	if (posed && (rc = sec_floats(im, bind_values, s->dof_count, err)) != SKP_OK)
+		return rc;
+	m->vert_count = (int)verts;
+	m->tri_count = (int)tris;
+	w->vert_count = (int)verts;
+	rc = get_mesh(im, m, err);
+	for (int v = 0; v < m->vert_count && !rc; v++)
+		rc = get_influences(im, s, w, v, err);
+	return rc;
+}
+
+skp_status skp_image_load_quant(skp_image *im, int clip, float *qmin, float *qstep, skp_error *err)
+{
+	const skp_image_clip *c = &im->clip[clip];
+	skp_image_section sec = { c->quant_first, c->quant_blocks, 8u * c->dofs };
+	sec_open(im, &sec, SKP_KIND_QUANT, (uint16_t)clip);
+	skp_status rc = SKP_OK;
+	for (int i = 0; i < c->dofs && !rc; i++) {
+		rc = sec_floats(im, &qmin[i], 1, err);
+		if (!rc)
+			rc = sec_floats(im, &qstep[i], 1, err);
+		if (!rc && !(qstep[i] >= 0))
+			return sec_bad(im, err, "negative quantisation step");
+	}
+	return rc;
+}
