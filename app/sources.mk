@@ -17,6 +17,20 @@
 #           |
 #     mesh -> motion -> math -> base
 
+# What each module owns (README "Architecture" has the whole map):
+#   base      errors, readers, tokens, lines, CRC-32, INI, algorithm/view names
+#   math      vec3, quat, rigid, dual quaternions, mat4, fixed point
+#   motion    skeleton, ASF, streaming AMC, forward kinematics
+#   mesh      meshes, normals, OBJ, the generated body
+#   skin      weights, SoA vertices, bone transforms, skin_run; kernels/
+#   bind      automatic and balanced weights, fitting, the weights CSV
+#   image     the flash image: format, block device port, reader, writer, player
+#   render    the GLES2 renderer, camera, font, shaders, GL entry points
+#   kiosk     player state machine, debounce, board config, input port
+#   analysis  tool-only measures: volume, radius, overlap, scenes
+#   cli       shared by both programs: bound body, skin run, show, errors, --version
+#   skinplay  the device program; skintool: the host tool (+ report/)
+
 # The portable core, bottom up: no malloc, no stdio (make check-core).
 CORE_MODULES  := base math motion mesh skin bind image render kiosk
 DEPS_base     :=

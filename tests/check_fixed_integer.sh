@@ -1,14 +1,14 @@
 #!/bin/sh
-# Proves app/fixed.c is integer-only: compiles it with the FPU/SIMD registers
+# Proves app/math/fixed.c is integer-only: compiles it with the FPU/SIMD registers
 # disabled (GCC then rejects any float or double use on x86-64 and AArch64)
 # and checks the object for libm or soft-float helper calls.
-# Usage: check_fixed_integer.sh CC [flags...] [file.c]   (default app/fixed.c)
+# Usage: check_fixed_integer.sh CC [flags...] [file.c]   (default app/math/fixed.c)
 if [ $# -lt 1 ]; then
 	echo "usage: $0 CC [flags...] [file.c]" >&2
 	exit 2
 fi
 cc=$1; shift
-src=app/fixed.c
+src=app/math/fixed.c
 flags=""
 for a in "$@"; do
 	case $a in

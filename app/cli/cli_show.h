@@ -1,5 +1,5 @@
 /* The show source for the front ends: animation played from packed flash
- * images (app/image_format.h) instead of ASF/AMC text.
+ * images (app/image/image_format.h) instead of ASF/AMC text.
  *
  * Given one or more image slots (skinplay --image PATH, repeatable), it
  * plays the newest valid one: slots are tried by decreasing header

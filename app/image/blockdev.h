@@ -1,8 +1,8 @@
 /* Block storage through callbacks, in the spirit of littlefs's lfs_config:
  * the core reads and writes whole fixed-size blocks and never sees a file,
- * so the same image reader runs on a file (platform/storage_file.c), a raw
+ * so the same image reader runs on a file (platform/storage/storage_file.c), a raw
  * flash partition, memory-mapped flash or a fault-injecting test wrapper
- * (platform/storage_faulty.c). */
+ * (platform/storage/storage_faulty.c). */
 #ifndef BLOCKDEV_H
 #define BLOCKDEV_H
 

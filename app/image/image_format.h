@@ -1,7 +1,7 @@
 /* The skinplay flash image (.skn), format version 1: a skeleton, a bound
  * body and motion clips packed once by `skintool pack` and played from
- * CRC-checked fixed-size blocks with fixed memory (app/image_read.h,
- * app/image_play.h).
+ * CRC-checked fixed-size blocks with fixed memory (app/image/image_read.h,
+ * app/image/image_play.h).
  *
  * All integers are little-endian; floats are IEEE-754 binary32 stored as
  * their little-endian bit pattern; a "str" is a u8 length then that many
@@ -20,7 +20,7 @@
  *     9       1     0
  *     10      2     item: the clip's index for kinds 5 and 6, else 0
  *     12      B-16  payload; bytes not used are 0
- *     B-4     4     CRC-32 (app/crc32.h) of bytes 0..B-5
+ *     B-4     4     CRC-32 (app/base/crc32.h) of bytes 0..B-5
  *
  * Sections of kind 2..5 are byte streams cut into (B-16)-byte payloads over
  * consecutive blocks. Layout, in block order:
@@ -54,7 +54,7 @@
  *              u32 bytes (0 for clips: not a byte stream)
  *     100  4   header CRC: CRC-32 of header bytes 0..99
  *
- * SKELETON (kind 2): everything app/skel.h's skel holds, so that it is
+ * SKELETON (kind 2): everything app/motion/skel.h's skel holds, so that it is
  * rebuilt exactly (no ASF parsing on the device):
  *
  *     str name, str version, f32 length_scale, f32 mass_scale,

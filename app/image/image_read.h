@@ -1,8 +1,8 @@
-/* Reads a flash image (app/image_format.h) from a skp_blockdev with fixed
+/* Reads a flash image (app/image/image_format.h) from a skp_blockdev with fixed
  * memory: the header and the clip directory at open, then the skeleton and
  * the bound body into the caller's structs. Every block read is checked
  * (CRC, tag, index, kind); errors name the block. Playback of the clips is
- * app/image_play.h. */
+ * app/image/image_play.h. */
 #ifndef IMAGE_READ_H
 #define IMAGE_READ_H
 

@@ -1,4 +1,4 @@
-/* Writes a flash image (app/image_format.h) block by block through a
+/* Writes a flash image (app/image/image_format.h) block by block through a
  * skp_blockdev's write callback, with fixed memory: clips are streamed
  * twice by the caller, first into an skp_clip_range (the per-dof range the
  * quantisation needs), then frame by frame into the image. Block 0 (the

@@ -2,7 +2,7 @@
  *               [--mesh MESH.obj [--group G] [--fit] [--bind-pose P.amc[:F]] [--weights W.csv] [--balance on|off]]
  *               [--fps F] [--sequence N] [--block-size B] -o show.skn
  * Binds the body (the generated one without --mesh) and packs it with the
- * clips into a flash image (app/image_format.h). Each clip is read twice
+ * clips into a flash image (app/image/image_format.h). Each clip is read twice
  * (its range, then its frames), so memory does not grow with its length.
  * The image is written to OUT.tmp, synced and renamed: a pack cut short
  * never leaves a half image under the final name. */

@@ -16,7 +16,7 @@
 /* Each bone has at most 7 dof (rx ry rz tx ty tz l); the root has 6. */
 #define SKP_MAX_DOF (7 * SKP_MAX_BONES)
 
-/* Packed flash images (app/image_format.h): same block size as the host
+/* Packed flash images (app/image/image_format.h): same block size as the host
  * (an image written there reads here), fewer blocks in RAM and clips. */
 #define SKP_IMAGE_BLOCK_SIZE  4096
 #define SKP_IMAGE_RING_BLOCKS    4

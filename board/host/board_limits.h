@@ -22,7 +22,7 @@
 /* Each bone has at most 7 dof (rx ry rz tx ty tz l); the root has 6. */
 #define SKP_MAX_DOF (7 * SKP_MAX_BONES)
 
-/* Packed flash images (app/image_format.h): the largest block the board
+/* Packed flash images (app/image/image_format.h): the largest block the board
  * reads, the blocks kept in RAM ahead of the play head, and the clips one
  * image may hold. Playback needs RING * BLOCK bytes whatever the clip's length. */
 #define SKP_IMAGE_BLOCK_SIZE  4096

@@ -15,7 +15,7 @@ BOARD_CFLAGS  := -O2 -g -mcpu=cortex-a72
 # no X11 and no OSMesa, so neither library is needed on the Pi.
 DISPLAYS      := kms surfaceless
 INPUTS        := gpio keyboard script
-# No AVX2 on ARM: NEON float kernels (app/skin_neon.c), or SIMD=scalar.
+# No AVX2 on ARM: NEON float kernels (app/skin/kernels/skin_neon.c), or SIMD=scalar.
 SIMD          ?= neon
 # Debian packages `make deps` installs (board/deps.mk), building on the Pi.
 LIB_PKGS      := libcmocka-dev libegl-dev libgles-dev libgbm-dev libdrm-dev libgpiod-dev libpng-dev

@@ -12,7 +12,7 @@
 #define SKP_READ_CHUNK    4096  /* bytes a text reader pulls per callback */
 
 #define SKP_MAX_VERTS    32768  /* mesh vertices: 2.5x the generated body (11,702), */
-#define SKP_MAX_TRIS     65536  /* 2.4x the MakeHuman body (13,380); about 380 B each */
+#define SKP_MAX_TRIS     65536  /* 2.4x the MakeHuman body (13,380); 396 B each */
 #define SKP_MAX_INFLUENCES   4  /* bones per vertex */
 
 /* The largest frame rendered headless or read back for --out (W * H * 4
@@ -23,13 +23,13 @@
 /* Each bone has at most 7 dof (rx ry rz tx ty tz l); the root has 6. */
 #define SKP_MAX_DOF (7 * SKP_MAX_BONES)
 
-/* Packed flash images (app/image_format.h): see board/host/board_limits.h.
+/* Packed flash images (app/image/image_format.h): see board/host/board_limits.h.
  * SD cards read 4 KiB pages well. */
 #define SKP_IMAGE_BLOCK_SIZE  4096
 #define SKP_IMAGE_RING_BLOCKS    4
 #define SKP_IMAGE_MAX_CLIPS     64
 
-/* board.ini (app/board_config.h): path length; image slots (A, B, the demo). */
+/* board.ini (app/kiosk/board_config.h): path length; image slots (A, B, the demo). */
 #define SKP_MAX_PATH  256
 #define SKP_MAX_SLOTS   3
 

@@ -1,6 +1,6 @@
 /* Display backends: each one brings up an OpenGL ES 2 capable context with
  * a width x height framebuffer bound, and hands out the GL entry points
- * (see app/gl_api.h: skinplay links no GL library itself).
+ * (see app/render/gl_api.h: skinplay links no GL library itself).
  *
  * Backends are singletons with static state: one may be initialised at a
  * time, and shutdown() must come before another init(). */

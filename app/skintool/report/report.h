@@ -1,6 +1,6 @@
 /* The LBS vs DQBS comparison report of skintool compare: what the command
- * measures (cli_report.c: joint regions; cli_report_joints.c: which bends
- * carry a volume change) and the page that shows it (cli_report_html.c).
+ * measures (report.c: joint regions; report_joints.c: which bends
+ * carry a volume change) and the page that shows it (report_html.c).
  * Front-end code: it writes files. */
 #ifndef REPORT_H
 #define REPORT_H
