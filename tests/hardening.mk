@@ -75,6 +75,6 @@ soak: all
 
 # Static analysis (cppcheck and clang-tidy are Debian packages: cppcheck,
 # clang-tidy). Suppressions, each with its reason: tests/lint/*.supp.
-lint:
-	@sh tests/lint/lint.sh $(BOARD) "$(PLAT_CFLAGS) $(BACKEND_DEFS)" "$(sort $(TEST_INC))" \
+lint: $(VERSION_H)
+	@sh tests/lint/lint.sh $(BOARD) "$(PLAT_CFLAGS) $(BACKEND_DEFS)" "$(sort $(TEST_INC)) -I$(OUT)/gen" \
 	  "$(foreach m,$(APP_MODULES),$(SRC_$(m))) $(PLAT_SRC)"

@@ -169,8 +169,8 @@ static double norm3(const double v[3])
  * clavicle would otherwise take the forearm's share to the clavicle). */
 static void reshare(skin_weights *sw, int v, const uint8_t *sub, int joint, int parent, float t0, float t1)
 {
-	uint16_t bone[SKP_MAX_INFLUENCES + 1];
-	float weight[SKP_MAX_INFLUENCES + 1];
+	uint16_t bone[SKP_MAX_INFLUENCES + 1] = { 0 };
+	float weight[SKP_MAX_INFLUENCES + 1] = { 0 };
 	int count = sw->count[v], gainer = t1 > t0 ? joint : parent;
 	float keep_in = t1 < t0 ? t1 / t0 : 1.0f;
 	float keep_out = t1 > t0 ? (1.0f - t1) / (1.0f - t0) : 1.0f;

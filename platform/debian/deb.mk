@@ -43,6 +43,7 @@ deb-tree:
 	  [ -n "$$depends" ] || { echo "deb: dpkg-shlibdeps found no dependencies"; exit 1; }; \
 	  size=$$(du -sk --exclude=DEBIAN $(DEB_STAGE) | cut -f1); \
 	  sed -e 's|@VERSION@|$(VERSION)|' -e 's|@ARCH@|$(DEB_ARCH)|' -e 's|@MAINTAINER@|$(DEB_MAINTAINER)|' \
+	      -e '$(if $(filter osmesa,$(DISPLAYS)),,/^Recommends: libosmesa6/d)' \
 	      -e "s|@SIZE@|$$size|" -e "s|@DEPENDS@|$$depends|" platform/debian/control.in > $(DEB_STAGE)/DEBIAN/control
 	@cd $(DEB_STAGE) && find . -type f ! -path './DEBIAN/*' -printf '%P\0' | sort -z | xargs -0 md5sum > DEBIAN/md5sums
 	@dpkg-deb --root-owner-group -Zxz --build $(DEB_STAGE) $(SKP_DEB_FILE).tmp >/dev/null

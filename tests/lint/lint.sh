@@ -10,7 +10,7 @@ fail=0
 if command -v cppcheck >/dev/null 2>&1; then
 	out=$(cppcheck -q --enable=warning,portability,performance --std=c11 --inline-suppr \
 		--suppressions-list=tests/lint/cppcheck.supp $inc -Iboard/"$board" \
-		-DSKP_SIMD_AVX2 --error-exitcode=1 \
+		-DSKP_SIMD_AVX2 $(printf '%s\n' $extra | grep '^-D' | tr '\n' ' ') --error-exitcode=1 \
 		--template='{file}:{line}: {severity} [{id}] {message}' $sources 2>&1)
 	rc=$?
 	if [ $rc -ne 0 ] || [ -n "$out" ]; then
