@@ -6,15 +6,31 @@
 #include "cli_common.h"
 #include "fk.h"
 
+/* n bytes of the file from offset at into buf; how many came. */
+static long read_at(storage_file *sf, uint64_t at, uint8_t *buf, long n)
+{
+	skp_reader rd = storage_file_reader(sf);
+	sf->pos = at;
+	long got = 0, k;
+	while (got < n && (k = rd.read(rd.ctx, buf + got, (size_t)(n - got))) > 0)
+		got += k;
+	return got;
+}
+
 int show_storage_open(storage_file *sf, const char *path)
 {
-	static uint8_t head[SKP_IMAGE_BLOCK_HDR + 16];
+	static uint8_t head[SKP_IMAGE_BLOCK_HDR + 16], tail[SKP_IMAGE_TAIL];
 	int rc = storage_file_open(sf, path, SKP_IMAGE_DEFAULT_BLOCK);
 	if (rc < 0)
 		return rc;
-	skp_reader rd = storage_file_reader(sf);
-	long n = rd.read(rd.ctx, head, sizeof head);
-	uint32_t bs = n > 0 ? skp_image_block_size_hint(head, (uint32_t)n) : 0;
+	/* the header copy at the end (version 2) is checked by its CRC: it
+	 * wins over block 0's field, which may be the damaged byte */
+	uint32_t bs = 0;
+	if (sf->size >= sizeof tail && read_at(sf, sf->size - sizeof tail, tail, sizeof tail) == (long)sizeof tail)
+		bs = skp_image_block_size_hint_tail(tail, sizeof tail);
+	long n = bs ? 0 : read_at(sf, 0, head, sizeof head);
+	if (n > 0)
+		bs = skp_image_block_size_hint(head, (uint32_t)n);
 	if (bs)
 		storage_file_set_block_size(sf, bs);
 	return 0;
@@ -42,39 +58,21 @@ void show_image_close(show_image *s)
 	s->path = NULL;
 }
 
-/* What each block of a valid image must be: kind and item. */
-static void expected(const skp_image *im, uint32_t b, int *kind, unsigned *item)
-{
-	static const int sec_kind[] = { SKP_KIND_SKELETON, SKP_KIND_BIND, SKP_KIND_DIRECTORY };
-	*item = 0;
-	*kind = b == 0 ? SKP_KIND_HEADER : 0;
-	for (int i = 0; i < 3; i++)
-		if (b >= im->hdr.sec[i].first && b < im->hdr.sec[i].first + im->hdr.sec[i].count)
-			*kind = sec_kind[i];
-	for (int c = 0; c < im->clip_count; c++) {
-		const skp_image_clip *cl = &im->clip[c];
-		if (b >= cl->quant_first && b < cl->quant_first + cl->quant_blocks)
-			*kind = SKP_KIND_QUANT, *item = (unsigned)c;
-		if (b >= cl->frames_first && b < cl->frames_first + cl->frame_blocks)
-			*kind = SKP_KIND_FRAMES, *item = (unsigned)c;
-	}
-}
-
-long show_image_verify(show_image *s, void (*bad)(void *ctx, uint32_t block, skp_block_state st),
-		       void *ctx)
+long show_image_verify(show_image *s, void (*bad)(void *ctx, uint32_t block, const skp_block_report *r),
+		       void *ctx, long *beyond)
 {
 	static uint8_t buf[SKP_IMAGE_BLOCK_SIZE];
+	skp_block_report r;
 	long count = 0;
+	*beyond = 0;
 	for (uint32_t b = 0; b < s->im.hdr.block_count; b++) {
-		int kind;
-		unsigned item;
-		expected(&s->im, b, &kind, &item);
-		skp_block_state st = skp_image_read_block(&s->im, b, kind, item, buf);
-		if (st != SKP_BLOCK_OK) {
-			count++;
-			if (bad)
-				bad(ctx, b, st);
-		}
+		skp_image_survey(&s->im, b, &r, buf);
+		if (r.state == SKP_BLOCK_OK)
+			continue;
+		count++;
+		*beyond += !r.repairable;
+		if (bad)
+			bad(ctx, b, &r);
 	}
 	return count;
 }
@@ -144,12 +142,15 @@ int show_open(show_source *s, const char *const *paths, int n, bound_body *body)
 			refuse(img->path, &err);
 			continue;
 		}
-		/* one slot plays whatever survives; of several, an intact one wins */
-		long bad = n > 1 ? show_image_verify(img, NULL, NULL) : 0;
-		if (bad == 0)
+		/* one slot plays whatever survives; of several, one with no block
+		 * beyond repair wins */
+		long beyond = 0;
+		if (n > 1)
+			show_image_verify(img, NULL, NULL, &beyond);
+		if (beyond == 0)
 			s->active = order[i];
 		else {
-			fprintf(stderr, "image: %s has %ld bad blocks: trying an older slot\n", img->path, bad);
+			fprintf(stderr, "image: %s has %ld blocks beyond repair: trying an older slot\n", img->path, beyond);
 			if (damaged < 0)
 				damaged = order[i];
 		}

@@ -15,6 +15,7 @@
 
 #include "cli_bind_args.h"
 #include "image_play.h"
+#include "image_survey.h"
 #include "storage_file.h"
 
 #define SHOW_MAX_SLOTS   4
@@ -36,10 +37,12 @@ int show_storage_open(storage_file *sf, const char *path);
 int show_image_open(show_image *s, const char *path, skp_error *err);
 void show_image_close(show_image *s);
 
-/* Checks every block of an opened image (CRC, tag, index, kind); calls bad
- * (when non-NULL) for each bad one. Returns the count of bad blocks. */
-long show_image_verify(show_image *s, void (*bad)(void *ctx, uint32_t block, skp_block_state st),
-		       void *ctx);
+/* Checks every block of an opened image (CRC, tag, index, kind; parity
+ * against its group; the header copy against the header); calls bad (when
+ * non-NULL) for each bad one. Returns the count of bad blocks, *beyond
+ * those that cannot be rebuilt. */
+long show_image_verify(show_image *s, void (*bad)(void *ctx, uint32_t block, const skp_block_report *r),
+		       void *ctx, long *beyond);
 
 typedef struct show_source {
 	show_image slot[SHOW_MAX_SLOTS];
