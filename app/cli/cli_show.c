@@ -77,21 +77,6 @@ long show_image_verify(show_image *s, void (*bad)(void *ctx, uint32_t block, con
 	return count;
 }
 
-/* Skeleton, bind pose, mesh and weights of the slot into body. */
-static int load_body(show_image *img, bound_body *body, skp_error *err)
-{
-	static float values[SKP_MAX_DOF];
-	long number;
-	if (skp_image_load_skel(&img->im, &body->skel, err) != SKP_OK ||
-	    skp_image_load_bind(&img->im, &body->skel, &body->mesh, &body->weights, values, &number, err) != SKP_OK)
-		return -1;
-	fk_pose(&body->skel, number < 0 ? NULL : values, &body->pose);
-	body->pose_frame = number;
-	body->fitted = 0;
-	body->automatic = 0;
-	return 0;
-}
-
 static void refuse(const char *path, const skp_error *err)
 {
 	if (err->block >= 0)
@@ -106,6 +91,8 @@ static int by_sequence(show_source *s, const char *const *paths, int n, int orde
 	int k = 0;
 	skp_error err;
 	for (int i = 0; i < n && i < SHOW_MAX_SLOTS; i++) {
+		s->slot[i].im.on_rebuild = show_log_rebuild;
+		s->slot[i].im.on_rebuild_ctx = &s->slot[i];
 		if (show_image_open(&s->slot[i], paths[i], &err) < 0) {
 			refuse(paths[i], &err);
 			continue;
@@ -127,6 +114,8 @@ static void close_others(show_source *s, int keep)
 			show_image_close(&s->slot[i]);
 }
 
+static void accept_clips(show_source *s, show_image *img);
+
 int show_open(show_source *s, const char *const *paths, int n, bound_body *body)
 {
 	int order[SHOW_MAX_SLOTS], damaged = -1;
@@ -138,7 +127,7 @@ int show_open(show_source *s, const char *const *paths, int n, bound_body *body)
 	int k = by_sequence(s, paths, n, order);
 	for (int i = 0; i < k && s->active < 0; i++) {
 		show_image *img = &s->slot[order[i]];
-		if (load_body(img, body, &err) < 0) {
+		if (show_accept_body(img, body, &err) < 0) {
 			refuse(img->path, &err);
 			continue;
 		}
@@ -155,7 +144,7 @@ int show_open(show_source *s, const char *const *paths, int n, bound_body *body)
 				damaged = order[i];
 		}
 	}
-	if (s->active < 0 && damaged >= 0 && load_body(&s->slot[damaged], body, &err) == 0)
+	if (s->active < 0 && damaged >= 0 && show_accept_body(&s->slot[damaged], body, &err) == 0)
 		s->active = damaged;
 	if (s->active < 0) {
 		fprintf(stderr, "image: no valid image among %d slot%s\n", n, n > 1 ? "s" : "");
@@ -166,7 +155,40 @@ int show_open(show_source *s, const char *const *paths, int n, bound_body *body)
 	show_image *img = &s->slot[s->active];
 	fprintf(stderr, "image: playing %s (sequence %llu, %d clip%s)\n", img->path,
 		(unsigned long long)img->im.hdr.sequence, img->im.clip_count, img->im.clip_count == 1 ? "" : "s");
+	accept_clips(s, img);
 	return 0;
+}
+
+/* Every clip checked before anything plays; one that cannot play is
+ * skipped with a line saying why. */
+static void accept_clips(show_source *s, show_image *img)
+{
+	skp_error err;
+	for (int c = 0; c < img->im.clip_count; c++) {
+		s->playable[c] = show_accept_clip(img, c, &err) == 0;
+		if (s->playable[c])
+			continue;
+		if (err.block >= 0)
+			fprintf(stderr, "image: clip %s skipped: block %ld: %s\n", img->im.clip[c].name, err.block, err.msg);
+		else
+			fprintf(stderr, "image: clip %s skipped: %s\n", img->im.clip[c].name, err.msg);
+	}
+}
+
+int show_next_playable(const show_source *s, int from)
+{
+	int n = show_clip_count(s);
+	for (int k = 0; k < n; k++) {
+		int c = ((from % n) + n + k) % n;
+		if (s->playable[c])
+			return c;
+	}
+	return -1;
+}
+
+unsigned long show_rebuilt(const show_source *s)
+{
+	return s->active < 0 ? 0 : s->slot[s->active].im.rebuilt;
 }
 
 int show_clip_count(const show_source *s)
@@ -188,9 +210,17 @@ int show_select_clip(show_source *s, const char *name, long start)
 {
 	show_image *img = &s->slot[s->active];
 	skp_error err;
-	int c = name ? skp_image_find_clip(&img->im, name) : 0;
+	int c = name ? skp_image_find_clip(&img->im, name) : show_next_playable(s, 0);
+	if (!name && c < 0) {
+		fprintf(stderr, "%s: no clip can play\n", img->path);
+		return -1;
+	}
 	if (c < 0 || c >= img->im.clip_count) {
 		fprintf(stderr, "%s: no clip '%s' (%d clips)\n", img->path, name ? name : "", img->im.clip_count);
+		return -1;
+	}
+	if (!s->playable[c]) {
+		fprintf(stderr, "%s: clip %s cannot play (see above)\n", img->path, img->im.clip[c].name);
 		return -1;
 	}
 	if (skp_player_open(&s->player, &img->im, c, &err) != SKP_OK) {
@@ -208,17 +238,8 @@ int show_select_clip(show_source *s, const char *name, long start)
 	}
 	s->clip = c;
 	s->have_last = 0;
-	return 0;
-}
-
-/* Whether block was logged already; remembers it when not. */
-static int logged_before(show_source *s, long block)
-{
-	for (int i = 0; i < s->logged_count; i++)
-		if (s->logged[i] == block)
-			return 1;
-	if (s->logged_count < SHOW_MAX_LOGGED)
-		s->logged[s->logged_count++] = block;
+	s->pass_lost = 0;
+	s->pass_rebuilt = img->im.rebuilt;
 	return 0;
 }
 
@@ -235,6 +256,7 @@ int show_next_frame(show_source *s, amc_frame *f)
 	if (r != SKP_PLAYER_LOST)
 		return r;
 	s->lost_frames++;
+	s->pass_lost++;
 	/* nothing good yet (the clip starts in a bad block): hold the ASF rest
 	 * pose (every value 0), never undecoded values */
 	if (!s->have_last) {
@@ -242,7 +264,7 @@ int show_next_frame(show_source *s, amc_frame *f)
 		s->last.number = (long)s->player.c.first_number + (long)s->player.next - 1;
 		s->have_last = 1;
 	}
-	if (!logged_before(s, err.block))
+	if (show_log_once(&s->slot[s->active], err.block))
 		fprintf(stderr, "image: block %ld bad (%s), holding frame %ld\n", err.block, err.msg, s->last.number);
 	memcpy(f->value, s->last.value, sizeof(float) * (size_t)s->player.c.dofs);
 	f->number = s->last.number;
@@ -250,8 +272,21 @@ int show_next_frame(show_source *s, amc_frame *f)
 	return 1;
 }
 
+/* One line for a pass over the clip that lost or rebuilt anything: what a
+ * dying card costs stays visible in the journal without a line per frame. */
+static void pass_summary(show_source *s)
+{
+	unsigned long rebuilt = s->slot[s->active].im.rebuilt - s->pass_rebuilt;
+	if (s->pass_lost || rebuilt)
+		fprintf(stderr, "image: clip %s: %lu frames held over bad blocks, %lu blocks rebuilt this pass\n",
+			s->player.c.name, s->pass_lost, rebuilt);
+	s->pass_lost = 0;
+	s->pass_rebuilt = s->slot[s->active].im.rebuilt;
+}
+
 void show_rewind(show_source *s)
 {
+	pass_summary(s);
 	skp_player_seek(&s->player, 0);
 }
 

@@ -119,6 +119,35 @@ static long scan_raw(storage_file *sf)
 	return bad;
 }
 
+/* What skinplay checks before playing (cli_accept.c), so that info and
+ * skinplay never disagree: 1 when the body is refused (nothing would play),
+ * clips that cannot play are listed. */
+static int accept(show_image *s)
+{
+	static bound_body body;
+	skp_error err;
+	if (show_accept_body(s, &body, &err) < 0) {
+		if (err.block >= 0)
+			printf("accept: refused: block %ld: %s\n", err.block, err.msg);
+		else
+			printf("accept: refused: %s\n", err.msg);
+		return 1;
+	}
+	int playable = 0;
+	for (int c = 0; c < s->im.clip_count; c++) {
+		if (show_accept_clip(s, c, &err) == 0) {
+			playable++;
+			continue;
+		}
+		printf("accept: clip %d %s cannot play: ", c, s->im.clip[c].name);
+		if (err.block >= 0)
+			printf("block %ld: ", err.block);
+		printf("%s\n", err.msg);
+	}
+	printf("accept: skeleton and body good, %d of %d clips can play\n", playable, s->im.clip_count);
+	return 0;
+}
+
 static int refused(show_image *s, const skp_error *err)
 {
 	if (err->block >= 0)
@@ -152,6 +181,7 @@ int cmd_info(int argc, char **argv)
 	}
 	print_header(&s);
 	print_clips(&s);
+	int refused_body = accept(&s);
 	long beyond;
 	long bad = show_image_verify(&s, bad_block, &s, &beyond);
 	if (bad == 0)
@@ -163,5 +193,5 @@ int cmd_info(int argc, char **argv)
 		printf("note: %lu blocks after the image's end (ignored)\n",
 		       (unsigned long)(s.sf.bd.block_count - s.im.hdr.block_count));
 	show_image_close(&s);
-	return bad ? 2 : 0;
+	return bad || refused_body ? 2 : 0;
 }
