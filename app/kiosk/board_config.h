@@ -24,6 +24,11 @@
 #ifndef SKP_MAX_PATH
 #define SKP_MAX_PATH 256     /* device and file paths in a board config */
 #endif
+/* Boards without a display (Cortex-M) read board configs all the same. */
+#ifndef SKP_DISPLAY_MAX_W
+#define SKP_DISPLAY_MAX_W 3840
+#define SKP_DISPLAY_MAX_H 2160
+#endif
 #ifndef SKP_MAX_SLOTS
 #define SKP_MAX_SLOTS 3      /* image slots: A/B update, and the demo as the last resort */
 #endif
