@@ -12,7 +12,7 @@ skp_status skp_vfail(skp_error *err, skp_status code, long line,
 	err->code = code;
 	err->line = line;
 	err->block = -1;
-	skp_vformat(err->msg, sizeof err->msg, fmt, ap);
+	skp_vformat_escaped(err->msg, sizeof err->msg, fmt, ap);
 	return code;
 }
 

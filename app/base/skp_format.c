@@ -5,6 +5,7 @@
 typedef struct out {
 	char *buf;
 	size_t cap, len;
+	int escape;          /* %s: control characters as \xNN */
 } out;
 
 static void put(out *o, char c)
@@ -16,10 +17,20 @@ static void put(out *o, char c)
 
 static void put_str(out *o, const char *s)
 {
+	static const char hex[] = "0123456789abcdef";
 	if (!s)
 		s = "(null)";
-	while (*s)
-		put(o, *s++);
+	for (; *s; s++) {
+		unsigned char c = (unsigned char)*s;
+		if (o->escape && (c < 0x20 || c == 0x7f)) {
+			put(o, '\\');
+			put(o, 'x');
+			put(o, hex[c >> 4]);
+			put(o, hex[c & 15]);
+		} else {
+			put(o, *s);
+		}
+	}
 }
 
 static void put_unsigned(out *o, unsigned long v)
@@ -111,9 +122,9 @@ static void put_double(out *o, double v)
 		put(o, digits[i]);
 }
 
-size_t skp_vformat(char *buf, size_t cap, const char *fmt, va_list ap)
+static size_t format(char *buf, size_t cap, int escape, const char *fmt, va_list ap)
 {
-	out o = { buf, cap, 0 };
+	out o = { buf, cap, 0, escape };
 
 	for (const char *p = fmt; *p; p++) {
 		if (*p != '%') {
@@ -140,6 +151,16 @@ size_t skp_vformat(char *buf, size_t cap, const char *fmt, va_list ap)
 	if (cap)
 		buf[o.len < cap ? o.len : cap - 1] = '\0';
 	return o.len < cap ? o.len : (cap ? cap - 1 : 0);
+}
+
+size_t skp_vformat(char *buf, size_t cap, const char *fmt, va_list ap)
+{
+	return format(buf, cap, 0, fmt, ap);
+}
+
+size_t skp_vformat_escaped(char *buf, size_t cap, const char *fmt, va_list ap)
+{
+	return format(buf, cap, 1, fmt, ap);
 }
 
 size_t skp_format(char *buf, size_t cap, const char *fmt, ...)

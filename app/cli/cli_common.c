@@ -46,6 +46,9 @@ int cli_load_skel(const char *path, skel *out)
 
 int cli_motion_open(cli_motion *m, const char *path, const skel *s)
 {
+	/* a loop reopens the same file: its cut frame is reported once */
+	if (m->path != path)
+		m->warned_cut = 0;
 	m->path = path;
 	if (open_lines(path, &m->file, &m->lines) < 0)
 		return -1;
@@ -60,6 +63,11 @@ int cli_motion_next(cli_motion *m, amc_frame *f)
 	if (r < 0) {
 		cli_error(m->path, &err);
 		return -1;
+	}
+	if (r == 0 && m->stream.cut_frame >= 0 && !m->warned_cut) {
+		fprintf(stderr, "%s:%ld: warning: frame %ld is cut short (the file ends inside it): dropped\n",
+			m->path, m->stream.cut_line, m->stream.cut_frame);
+		m->warned_cut = 1;
 	}
 	return r;
 }

@@ -21,6 +21,7 @@ typedef struct cli_motion {
 	file_reader file;
 	text_lines lines;
 	amc_stream stream;
+	int warned_cut;         /* the cut-short last frame was reported */
 } cli_motion;
 
 int cli_motion_open(cli_motion *m, const char *path, const skel *s);

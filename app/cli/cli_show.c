@@ -6,15 +6,31 @@
 #include "cli_common.h"
 #include "fk.h"
 
+/* n bytes of the file from offset at into buf; how many came. */
+static long read_at(storage_file *sf, uint64_t at, uint8_t *buf, long n)
+{
+	skp_reader rd = storage_file_reader(sf);
+	sf->pos = at;
+	long got = 0, k;
+	while (got < n && (k = rd.read(rd.ctx, buf + got, (size_t)(n - got))) > 0)
+		got += k;
+	return got;
+}
+
 int show_storage_open(storage_file *sf, const char *path)
 {
-	static uint8_t head[SKP_IMAGE_BLOCK_HDR + 16];
+	static uint8_t head[SKP_IMAGE_BLOCK_HDR + 16], tail[SKP_IMAGE_TAIL];
 	int rc = storage_file_open(sf, path, SKP_IMAGE_DEFAULT_BLOCK);
 	if (rc < 0)
 		return rc;
-	skp_reader rd = storage_file_reader(sf);
-	long n = rd.read(rd.ctx, head, sizeof head);
-	uint32_t bs = n > 0 ? skp_image_block_size_hint(head, (uint32_t)n) : 0;
+	/* the header copy at the end (version 2) is checked by its CRC: it
+	 * wins over block 0's field, which may be the damaged byte */
+	uint32_t bs = 0;
+	if (sf->size >= sizeof tail && read_at(sf, sf->size - sizeof tail, tail, sizeof tail) == (long)sizeof tail)
+		bs = skp_image_block_size_hint_tail(tail, sizeof tail);
+	long n = bs ? 0 : read_at(sf, 0, head, sizeof head);
+	if (n > 0)
+		bs = skp_image_block_size_hint(head, (uint32_t)n);
 	if (bs)
 		storage_file_set_block_size(sf, bs);
 	return 0;
@@ -42,56 +58,23 @@ void show_image_close(show_image *s)
 	s->path = NULL;
 }
 
-/* What each block of a valid image must be: kind and item. */
-static void expected(const skp_image *im, uint32_t b, int *kind, unsigned *item)
-{
-	static const int sec_kind[] = { SKP_KIND_SKELETON, SKP_KIND_BIND, SKP_KIND_DIRECTORY };
-	*item = 0;
-	*kind = b == 0 ? SKP_KIND_HEADER : 0;
-	for (int i = 0; i < 3; i++)
-		if (b >= im->hdr.sec[i].first && b < im->hdr.sec[i].first + im->hdr.sec[i].count)
-			*kind = sec_kind[i];
-	for (int c = 0; c < im->clip_count; c++) {
-		const skp_image_clip *cl = &im->clip[c];
-		if (b >= cl->quant_first && b < cl->quant_first + cl->quant_blocks)
-			*kind = SKP_KIND_QUANT, *item = (unsigned)c;
-		if (b >= cl->frames_first && b < cl->frames_first + cl->frame_blocks)
-			*kind = SKP_KIND_FRAMES, *item = (unsigned)c;
-	}
-}
-
-long show_image_verify(show_image *s, void (*bad)(void *ctx, uint32_t block, skp_block_state st),
-		       void *ctx)
+long show_image_verify(show_image *s, void (*bad)(void *ctx, uint32_t block, const skp_block_report *r),
+		       void *ctx, long *beyond)
 {
 	static uint8_t buf[SKP_IMAGE_BLOCK_SIZE];
+	skp_block_report r;
 	long count = 0;
+	*beyond = 0;
 	for (uint32_t b = 0; b < s->im.hdr.block_count; b++) {
-		int kind;
-		unsigned item;
-		expected(&s->im, b, &kind, &item);
-		skp_block_state st = skp_image_read_block(&s->im, b, kind, item, buf);
-		if (st != SKP_BLOCK_OK) {
-			count++;
-			if (bad)
-				bad(ctx, b, st);
-		}
+		skp_image_survey(&s->im, b, &r, buf);
+		if (r.state == SKP_BLOCK_OK)
+			continue;
+		count++;
+		*beyond += !r.repairable;
+		if (bad)
+			bad(ctx, b, &r);
 	}
 	return count;
-}
-
-/* Skeleton, bind pose, mesh and weights of the slot into body. */
-static int load_body(show_image *img, bound_body *body, skp_error *err)
-{
-	static float values[SKP_MAX_DOF];
-	long number;
-	if (skp_image_load_skel(&img->im, &body->skel, err) != SKP_OK ||
-	    skp_image_load_bind(&img->im, &body->skel, &body->mesh, &body->weights, values, &number, err) != SKP_OK)
-		return -1;
-	fk_pose(&body->skel, number < 0 ? NULL : values, &body->pose);
-	body->pose_frame = number;
-	body->fitted = 0;
-	body->automatic = 0;
-	return 0;
 }
 
 static void refuse(const char *path, const skp_error *err)
@@ -108,6 +91,8 @@ static int by_sequence(show_source *s, const char *const *paths, int n, int orde
 	int k = 0;
 	skp_error err;
 	for (int i = 0; i < n && i < SHOW_MAX_SLOTS; i++) {
+		s->slot[i].im.on_rebuild = show_log_rebuild;
+		s->slot[i].im.on_rebuild_ctx = &s->slot[i];
 		if (show_image_open(&s->slot[i], paths[i], &err) < 0) {
 			refuse(paths[i], &err);
 			continue;
@@ -129,6 +114,8 @@ static void close_others(show_source *s, int keep)
 			show_image_close(&s->slot[i]);
 }
 
+static void accept_clips(show_source *s, show_image *img);
+
 int show_open(show_source *s, const char *const *paths, int n, bound_body *body)
 {
 	int order[SHOW_MAX_SLOTS], damaged = -1;
@@ -140,21 +127,24 @@ int show_open(show_source *s, const char *const *paths, int n, bound_body *body)
 	int k = by_sequence(s, paths, n, order);
 	for (int i = 0; i < k && s->active < 0; i++) {
 		show_image *img = &s->slot[order[i]];
-		if (load_body(img, body, &err) < 0) {
+		if (show_accept_body(img, body, &err) < 0) {
 			refuse(img->path, &err);
 			continue;
 		}
-		/* one slot plays whatever survives; of several, an intact one wins */
-		long bad = n > 1 ? show_image_verify(img, NULL, NULL) : 0;
-		if (bad == 0)
+		/* one slot plays whatever survives; of several, one with no block
+		 * beyond repair wins */
+		long beyond = 0;
+		if (n > 1)
+			show_image_verify(img, NULL, NULL, &beyond);
+		if (beyond == 0)
 			s->active = order[i];
 		else {
-			fprintf(stderr, "image: %s has %ld bad blocks: trying an older slot\n", img->path, bad);
+			fprintf(stderr, "image: %s has %ld blocks beyond repair: trying an older slot\n", img->path, beyond);
 			if (damaged < 0)
 				damaged = order[i];
 		}
 	}
-	if (s->active < 0 && damaged >= 0 && load_body(&s->slot[damaged], body, &err) == 0)
+	if (s->active < 0 && damaged >= 0 && show_accept_body(&s->slot[damaged], body, &err) == 0)
 		s->active = damaged;
 	if (s->active < 0) {
 		fprintf(stderr, "image: no valid image among %d slot%s\n", n, n > 1 ? "s" : "");
@@ -165,7 +155,40 @@ int show_open(show_source *s, const char *const *paths, int n, bound_body *body)
 	show_image *img = &s->slot[s->active];
 	fprintf(stderr, "image: playing %s (sequence %llu, %d clip%s)\n", img->path,
 		(unsigned long long)img->im.hdr.sequence, img->im.clip_count, img->im.clip_count == 1 ? "" : "s");
+	accept_clips(s, img);
 	return 0;
+}
+
+/* Every clip checked before anything plays; one that cannot play is
+ * skipped with a line saying why. */
+static void accept_clips(show_source *s, show_image *img)
+{
+	skp_error err;
+	for (int c = 0; c < img->im.clip_count; c++) {
+		s->playable[c] = show_accept_clip(img, c, &err) == 0;
+		if (s->playable[c])
+			continue;
+		if (err.block >= 0)
+			fprintf(stderr, "image: clip %s skipped: block %ld: %s\n", img->im.clip[c].name, err.block, err.msg);
+		else
+			fprintf(stderr, "image: clip %s skipped: %s\n", img->im.clip[c].name, err.msg);
+	}
+}
+
+int show_next_playable(const show_source *s, int from)
+{
+	int n = show_clip_count(s);
+	for (int k = 0; k < n; k++) {
+		int c = ((from % n) + n + k) % n;
+		if (s->playable[c])
+			return c;
+	}
+	return -1;
+}
+
+unsigned long show_rebuilt(const show_source *s)
+{
+	return s->active < 0 ? 0 : s->slot[s->active].im.rebuilt;
 }
 
 int show_clip_count(const show_source *s)
@@ -187,9 +210,17 @@ int show_select_clip(show_source *s, const char *name, long start)
 {
 	show_image *img = &s->slot[s->active];
 	skp_error err;
-	int c = name ? skp_image_find_clip(&img->im, name) : 0;
+	int c = name ? skp_image_find_clip(&img->im, name) : show_next_playable(s, 0);
+	if (!name && c < 0) {
+		fprintf(stderr, "%s: no clip can play\n", img->path);
+		return -1;
+	}
 	if (c < 0 || c >= img->im.clip_count) {
 		fprintf(stderr, "%s: no clip '%s' (%d clips)\n", img->path, name ? name : "", img->im.clip_count);
+		return -1;
+	}
+	if (!s->playable[c]) {
+		fprintf(stderr, "%s: clip %s cannot play (see above)\n", img->path, img->im.clip[c].name);
 		return -1;
 	}
 	if (skp_player_open(&s->player, &img->im, c, &err) != SKP_OK) {
@@ -207,17 +238,8 @@ int show_select_clip(show_source *s, const char *name, long start)
 	}
 	s->clip = c;
 	s->have_last = 0;
-	return 0;
-}
-
-/* Whether block was logged already; remembers it when not. */
-static int logged_before(show_source *s, long block)
-{
-	for (int i = 0; i < s->logged_count; i++)
-		if (s->logged[i] == block)
-			return 1;
-	if (s->logged_count < SHOW_MAX_LOGGED)
-		s->logged[s->logged_count++] = block;
+	s->pass_lost = 0;
+	s->pass_rebuilt = img->im.rebuilt;
 	return 0;
 }
 
@@ -234,6 +256,7 @@ int show_next_frame(show_source *s, amc_frame *f)
 	if (r != SKP_PLAYER_LOST)
 		return r;
 	s->lost_frames++;
+	s->pass_lost++;
 	/* nothing good yet (the clip starts in a bad block): hold the ASF rest
 	 * pose (every value 0), never undecoded values */
 	if (!s->have_last) {
@@ -241,7 +264,7 @@ int show_next_frame(show_source *s, amc_frame *f)
 		s->last.number = (long)s->player.c.first_number + (long)s->player.next - 1;
 		s->have_last = 1;
 	}
-	if (!logged_before(s, err.block))
+	if (show_log_once(&s->slot[s->active], err.block))
 		fprintf(stderr, "image: block %ld bad (%s), holding frame %ld\n", err.block, err.msg, s->last.number);
 	memcpy(f->value, s->last.value, sizeof(float) * (size_t)s->player.c.dofs);
 	f->number = s->last.number;
@@ -249,8 +272,21 @@ int show_next_frame(show_source *s, amc_frame *f)
 	return 1;
 }
 
+/* One line for a pass over the clip that lost or rebuilt anything: what a
+ * dying card costs stays visible in the journal without a line per frame. */
+static void pass_summary(show_source *s)
+{
+	unsigned long rebuilt = s->slot[s->active].im.rebuilt - s->pass_rebuilt;
+	if (s->pass_lost || rebuilt)
+		fprintf(stderr, "image: clip %s: %lu frames held over bad blocks, %lu blocks rebuilt this pass\n",
+			s->player.c.name, s->pass_lost, rebuilt);
+	s->pass_lost = 0;
+	s->pass_rebuilt = s->slot[s->active].im.rebuilt;
+}
+
 void show_rewind(show_source *s)
 {
+	pass_summary(s);
 	skp_player_seek(&s->player, 0);
 }
 

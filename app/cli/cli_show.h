@@ -3,18 +3,24 @@
  *
  * Given one or more image slots (skinplay --image PATH, repeatable), it
  * plays the newest valid one: slots are tried by decreasing header
- * sequence; one whose header, skeleton, bind data or directory is bad is
- * refused with a message, and with more than one slot a slot with any bad
- * clip block yields to an intact older one, so an update cut short by power
- * loss never bricks the display. It fills the bound body as bind_args_load
- * does and hands out amc_frames: a frame lost in a bad block is replaced by
- * the last good frame, and each bad block is logged once as
- * "image: block N bad (CRC mismatch), holding frame F". */
+ * sequence; one that fails acceptance (cli_accept.c: header, skeleton,
+ * bound body, directory; every check made before anything plays) is
+ * refused with a message, and with more than one slot a slot with a block
+ * beyond repair yields to an intact older one, so an update cut short by
+ * power loss never bricks the display. Blocks that fail their check are
+ * rebuilt from parity (version 2), logged once each. A clip whose frames or
+ * quantisation cannot be read is skipped, not the image. It fills the
+ * bound body as bind_args_load does and hands out amc_frames: a frame lost
+ * in a block beyond repair is replaced by the last good frame, each such
+ * block logged once as "image: block N bad (CRC mismatch), holding frame
+ * F", and each pass over a clip that lost or rebuilt anything ends with one
+ * summary line. */
 #ifndef CLI_SHOW_H
 #define CLI_SHOW_H
 
 #include "cli_bind_args.h"
 #include "image_play.h"
+#include "image_survey.h"
 #include "storage_file.h"
 
 #define SHOW_MAX_SLOTS   4
@@ -25,7 +31,21 @@ typedef struct show_image {
 	const char *path;
 	storage_file sf;
 	skp_image im;
+	long logged[SHOW_MAX_LOGGED];   /* blocks logged (rebuilt or lost): once each */
+	int logged_count;
+	unsigned long unlisted;         /* damaged blocks past the table: counted */
 } show_image;
+
+/* Acceptance (cli_accept.c): the skeleton and the bound body into body;
+ * each clip's frames and quantisation. Return 0, or -1 with err filled. */
+int show_accept_body(show_image *img, bound_body *body, skp_error *err);
+int show_accept_clip(show_image *img, int clip, skp_error *err);
+
+/* 1 the first time block is named for img (log it), else 0; bounded. */
+int show_log_once(show_image *img, long block);
+
+/* skp_image's on_rebuild for a show_image: one log line per block. */
+void show_log_rebuild(void *ctx, uint32_t block);
 
 /* Opens an image file as storage with the image's own block size: the
  * header's, or SKP_IMAGE_DEFAULT_BLOCK when block 0 does not say (then the
@@ -36,22 +56,25 @@ int show_storage_open(storage_file *sf, const char *path);
 int show_image_open(show_image *s, const char *path, skp_error *err);
 void show_image_close(show_image *s);
 
-/* Checks every block of an opened image (CRC, tag, index, kind); calls bad
- * (when non-NULL) for each bad one. Returns the count of bad blocks. */
-long show_image_verify(show_image *s, void (*bad)(void *ctx, uint32_t block, skp_block_state st),
-		       void *ctx);
+/* Checks every block of an opened image (CRC, tag, index, kind; parity
+ * against its group; the header copy against the header); calls bad (when
+ * non-NULL) for each bad one. Returns the count of bad blocks, *beyond
+ * those that cannot be rebuilt. */
+long show_image_verify(show_image *s, void (*bad)(void *ctx, uint32_t block, const skp_block_report *r),
+		       void *ctx, long *beyond);
 
 typedef struct show_source {
 	show_image slot[SHOW_MAX_SLOTS];
 	int slot_count;
 	int active;                 /* slot playing */
 	int clip;                   /* clip playing, -1 none */
+	uint8_t playable[SKP_IMAGE_MAX_CLIPS];  /* accepted clips of the active slot */
 	skp_player player;
 	amc_frame last;             /* the last good frame, held over bad blocks */
 	int have_last;
-	long logged[SHOW_MAX_LOGGED];
-	int logged_count;
 	unsigned long lost_frames;  /* frames replaced by a held one */
+	unsigned long pass_lost;    /* ... in this pass over the clip */
+	unsigned long pass_rebuilt; /* im.rebuilt when the pass began */
 } show_source;
 
 /* Opens the newest valid slot of paths[0..n-1] and fills body (skeleton,
@@ -59,6 +82,12 @@ typedef struct show_source {
 int show_open(show_source *s, const char *const *paths, int n, bound_body *body);
 
 int show_clip_count(const show_source *s);
+
+/* The first playable clip at or after from (wrapping round), -1 if none. */
+int show_next_playable(const show_source *s, int from);
+
+/* Blocks rebuilt from parity since the show was opened (the HUD's count). */
+unsigned long show_rebuilt(const show_source *s);
 const skp_image_clip *show_clip(const show_source *s, int i);
 const char *show_path(const show_source *s);
 

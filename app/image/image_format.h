@@ -1,7 +1,9 @@
-/* The skinplay flash image (.skn), format version 1: a skeleton, a bound
+/* The skinplay flash image (.skn), format version 2: a skeleton, a bound
  * body and motion clips packed once by `skintool pack` and played from
  * CRC-checked fixed-size blocks with fixed memory (app/image/image_read.h,
- * app/image/image_play.h).
+ * app/image/image_play.h), with XOR parity that rebuilds any one bad block
+ * per parity group and a second copy of the header. Version 1 (the same
+ * without parity and copy) is still read.
  *
  * All integers are little-endian; floats are IEEE-754 binary32 stored as
  * their little-endian bit pattern; a "str" is a u8 length then that many
@@ -30,11 +32,28 @@
  *     bind             kind 3
  *     per clip         kind 5 (its quantisation), then kind 6 (its frames)
  *     directory        kind 4
+ *     (version 2)      P parity blocks, then the header copy: the last block
+ *
+ * The blocks up to the directory are the D data blocks. PARITY (version 2):
+ * data block b belongs to parity group b mod P, and parity block D + g is
+ * the XOR of every data block of group g, all B bytes of each (frame, CRC
+ * and all; no frame of its own). Any one data block of a group that cannot
+ * be read or fails its check is rebuilt bit-identical from the group's other
+ * blocks and its parity block, and then passes its CRC. Interleaving the
+ * groups means a run of up to P consecutive bad blocks (an erase block of an
+ * SD card, a scratch) is also repaired. Groups hold at most pack --parity G
+ * blocks (P = ceil(D / G)); the default G is 8 (12.5%), larger when the
+ * image is small so that parity and copy stay within 15% where they can.
+ *
+ * HEADER COPY (version 2): block D + P, the last, framed as kind 1 with
+ * item 1; the header is at the end of its payload (bytes B-4-116 .. B-5),
+ * so the last 120 bytes of the image hold it whatever B is: a reader whose
+ * block 0 is bad finds B and the layout there.
  *
  * pack writes block 0 last (and to a temporary file renamed into place), so
  * a write cut short leaves no valid header and the slot is refused.
  *
- * HEADER (payload of block 0, 104 bytes):
+ * HEADER (payload of block 0, 116 bytes; 104 in version 1):
  *
  *     0    8   magic "SKPIMAGE"
  *     8    2   format version (1)
@@ -52,7 +71,11 @@
  *     52   48  sections: skeleton, bind, directory, clips (every kind 5
  *              and 6 block), each u32 first block, u32 block count,
  *              u32 bytes (0 for clips: not a byte stream)
- *     100  4   header CRC: CRC-32 of header bytes 0..99
+ *     100  4   data blocks D                  (version 2; version 1: CRC)
+ *     104  4   parity blocks P (0: none)
+ *     108  4   header copy block (D + P)
+ *     112  4   header CRC: CRC-32 of header bytes 0..111 (version 1: of
+ *              0..99, at 100)
  *
  * SKELETON (kind 2): everything app/motion/skel.h's skel holds, so that it is
  * rebuilt exactly (no ASF parsing on the device):
@@ -97,7 +120,8 @@
  *     error (ASF length units): the largest step / 2 of each kind of dof
  *
  * Compatibility: a reader refuses any other magic or version, a header
- * size or CRC that does not match, and limits beyond its board's. */
+ * size or CRC that does not match, and limits beyond its board's; it reads
+ * version 1 images as they are (no parity, no copy). */
 #ifndef IMAGE_FORMAT_H
 #define IMAGE_FORMAT_H
 
@@ -117,8 +141,10 @@
 #endif
 
 #define SKP_IMAGE_MAGIC        "SKPIMAGE"
-#define SKP_IMAGE_VERSION      1
-#define SKP_IMAGE_HEADER_SIZE  104
+#define SKP_IMAGE_VERSION      2
+#define SKP_IMAGE_HEADER_SIZE  116   /* version 2; version 1: 104 */
+#define SKP_IMAGE_HEADER_V1    104
+#define SKP_IMAGE_DEFAULT_GROUP  8    /* data blocks per parity group */
 #define SKP_IMAGE_BLOCK_HDR    12    /* tag, index, kind, 0, item */
 #define SKP_IMAGE_BLOCK_CRC    4
 #define SKP_IMAGE_BLOCK_EXTRA  (SKP_IMAGE_BLOCK_HDR + SKP_IMAGE_BLOCK_CRC)
@@ -154,6 +180,9 @@ typedef struct skp_image_header {
 	uint64_t sequence;
 	uint32_t bones, dofs, verts, tris, influences, clips;
 	skp_image_section sec[SKP_SEC_COUNT];
+	uint32_t data_blocks;     /* D: block_count for version 1 */
+	uint32_t parity_blocks;   /* P: 0 for version 1 */
+	uint32_t copy_block;      /* the header copy, 0 for none */
 	uint32_t crc;
 } skp_image_header;
 
@@ -207,8 +236,18 @@ static inline uint64_t le_get64(const uint8_t *p)
 	return (uint64_t)le_get32(p) | ((uint64_t)le_get32(p + 4) << 32);
 }
 
-/* Encodes / decodes the 104-byte header (the CRC field included as is). */
+/* Encodes a version 2 header (116 bytes) with its CRC. */
 void skp_image_header_put(uint8_t *p, const skp_image_header *h);
-void skp_image_header_get(const uint8_t *p, skp_image_header *h);
+
+/* Decodes a header of either version from n bytes at p. Returns 1 when it
+ * is one (magic, a known version, its size, its CRC), else 0; h is filled
+ * as far as the bytes go either way (messages use it). */
+int skp_image_header_get(const uint8_t *p, uint32_t n, skp_image_header *h);
+
+/* The parity group of data block b (version 2 with parity). */
+static inline uint32_t skp_image_group(const skp_image_header *h, uint32_t b)
+{
+	return h->parity_blocks ? b % h->parity_blocks : 0;
+}
 
 #endif

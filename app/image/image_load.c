@@ -2,6 +2,7 @@
  * and weights) and a clip's quantisation, each checked as it is read. */
 #include "image_read.h"
 
+#include <math.h>
 #include <string.h>
 
 #include "image_section.h"
@@ -19,6 +20,10 @@ static skp_status check_bone(skp_image *im, const skel *s, int i, int *dof, skp_
 	for (int a = 0; a < 3; a++)
 		if (b->axis_order[a] > 2)
 			return sec_bad(im, err, "unknown rotation axis");
+	float sum = b->direction.x + b->direction.y + b->direction.z + b->length + b->axis_angle.x +
+		    b->axis_angle.y + b->axis_angle.z + b->axis_rot.w + b->axis_rot.x + b->axis_rot.y + b->axis_rot.z;
+	if (!isfinite(sum) || !(b->length >= 0))
+		return sec_bad(im, err, "bone geometry not finite");
 	*dof += b->channel_count;
 	return SKP_OK;
 }
@@ -128,13 +133,26 @@ static skp_status get_influences(skp_image *im, const skel *s, skin_weights *w, 
 	return sum == SKP_IMAGE_QMAX ? SKP_OK : sec_bad(im, err, "weights do not sum to 65535");
 }
 
+/* Within the fixed-point kernel's range (fx_pos: +-32767 units; a normal
+ * near unit length), so that no algorithm can fail on it once playing. */
+static int in_envelope(vec3 p, float limit)
+{
+	return p.x > -limit && p.x < limit && p.y > -limit && p.y < limit && p.z > -limit && p.z < limit;
+}
+
 static skp_status get_mesh(skp_image *im, mesh *m, skp_error *err)
 {
 	skp_status rc = SKP_OK;
-	for (int v = 0; v < m->vert_count && !rc; v++)
+	for (int v = 0; v < m->vert_count && !rc; v++) {
 		rc = sec_floats(im, &m->pos[v].x, 3, err);
-	for (int v = 0; v < m->vert_count && !rc; v++)
+		if (!rc && !in_envelope(m->pos[v], 32767.0f))
+			return sec_bad(im, err, "vertex outside +-32767 units (the fixed-point range)");
+	}
+	for (int v = 0; v < m->vert_count && !rc; v++) {
 		rc = sec_floats(im, &m->normal[v].x, 3, err);
+		if (!rc && !in_envelope(m->normal[v], 1.01f))
+			return sec_bad(im, err, "normal longer than 1");
+	}
 	for (int t = 0; t < m->tri_count && !rc; t++) {
 		for (int k = 0; k < 3 && !rc; k++)
 			rc = sec_u32(im, &m->tri[t][k], err);
@@ -164,6 +182,9 @@ skp_status skp_image_load_bind(skp_image *im, const skel *s, mesh *m, skin_weigh
 	*bind_number = posed ? (long)(int32_t)number : -1;
 	if (posed && (rc = sec_floats(im, bind_values, s->dof_count, err)) != SKP_OK)
 		return rc;
+	for (int i = 0; i < s->dof_count; i++)
+		if (!isfinite(bind_values[i]))
+			return sec_bad(im, err, "bind pose value not finite");
 	m->vert_count = (int)verts;
 	m->tri_count = (int)tris;
 	w->vert_count = (int)verts;
@@ -185,6 +206,9 @@ skp_status skp_image_load_quant(skp_image *im, int clip, float *qmin, float *qst
 			rc = sec_floats(im, &qstep[i], 1, err);
 		if (!rc && !(qstep[i] >= 0))
 			return sec_bad(im, err, "negative quantisation step");
+		/* every decoded value min + q * step, q <= 65535, must be finite */
+		if (!rc && !isfinite(qmin[i] + (float)SKP_IMAGE_QMAX * qstep[i]))
+			return sec_bad(im, err, "quantisation range not finite");
 	}
 	return rc;
 }

@@ -1,8 +1,9 @@
 /* Reads a flash image (app/image/image_format.h) from a skp_blockdev with fixed
  * memory: the header and the clip directory at open, then the skeleton and
  * the bound body into the caller's structs. Every block read is checked
- * (CRC, tag, index, kind); errors name the block. Playback of the clips is
- * app/image/image_play.h. */
+ * (CRC, tag, index, kind); a block that fails is rebuilt from its parity
+ * group when the image has parity (version 2), else the error names it.
+ * Playback of the clips is app/image/image_play.h. */
 #ifndef IMAGE_READ_H
 #define IMAGE_READ_H
 
@@ -34,6 +35,11 @@ int skp_block_crc_ok(const uint8_t *block, uint32_t block_size);
  * it to open storage with the image's own block size. */
 uint32_t skp_image_block_size_hint(const uint8_t *block0, uint32_t n);
 
+/* The same from the last n bytes of the storage (n >= SKP_IMAGE_TAIL):
+ * the header copy of a version 2 image, for when block 0 is bad. */
+#define SKP_IMAGE_TAIL (SKP_IMAGE_HEADER_SIZE + SKP_IMAGE_BLOCK_CRC)
+uint32_t skp_image_block_size_hint_tail(const uint8_t *tail, uint32_t n);
+
 typedef struct skp_image {
 	const skp_blockdev *dev;
 	skp_image_header hdr;
@@ -45,6 +51,13 @@ typedef struct skp_image {
 	uint8_t s_kind;
 	uint16_t s_item;
 	uint8_t buf[SKP_IMAGE_BLOCK_SIZE];
+	uint8_t scratch[SKP_IMAGE_BLOCK_SIZE];   /* a rebuild's group reads */
+	unsigned long rebuilt;                  /* blocks rebuilt from parity since open */
+	int header_from_copy;                   /* block 0 was bad: the copy's header */
+	/* When set (before open), told of every block rebuilt from parity
+	 * (block 0 also when the header came from the copy). */
+	void (*on_rebuild)(void *ctx, uint32_t block);
+	void *on_rebuild_ctx;
 } skp_image;
 
 /* Reads and checks block 0 (magic, version, header CRC, board limits, that
@@ -54,9 +67,28 @@ typedef struct skp_image {
 skp_status skp_image_open(skp_image *im, const skp_blockdev *dev, skp_error *err);
 
 /* Reads block into buf and checks it: its CRC, the image's tag, its index,
- * and when kind > 0 its kind and item. */
+ * and when kind > 0 its kind and item. A block that fails is rebuilt from
+ * its parity group when it can be (then SKP_BLOCK_OK, on_rebuild told);
+ * otherwise the first failure is returned. */
 skp_block_state skp_image_read_block(skp_image *im, uint32_t block, int kind, unsigned item,
 				     uint8_t *buf);
+
+/* The same without the rebuild: what the storage holds. */
+skp_block_state skp_image_check_block(skp_image *im, uint32_t block, int kind, unsigned item,
+				      uint8_t *buf);
+
+/* Only the read (a whole block, no check): parity blocks have no frame. */
+skp_block_state skp_image_read_raw(const skp_image *im, uint32_t block, uint8_t *buf);
+
+/* The frame check of a block already in buf (CRC, tag, index, kind). */
+skp_block_state skp_image_frame_check(const skp_image *im, uint32_t block, int kind, unsigned item,
+				      const uint8_t *buf);
+
+/* Rebuilds data block `block` into buf from its parity group (the other
+ * data blocks of the group and the group's parity block, read through
+ * im->scratch) and checks it. SKP_BLOCK_OK when the result is the block;
+ * else why not (no parity, another bad block in the group). */
+skp_block_state skp_image_rebuild(skp_image *im, uint32_t block, int kind, unsigned item, uint8_t *buf);
 
 /* The skeleton, exactly as packed. */
 skp_status skp_image_load_skel(skp_image *im, skel *s, skp_error *err);

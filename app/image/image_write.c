@@ -4,28 +4,7 @@
 #include <string.h>
 
 #include "crc32.h"
-
-void skp_image_header_put(uint8_t *p, const skp_image_header *h)
-{
-	memcpy(p, SKP_IMAGE_MAGIC, 8);
-	le_put16(p + 8, h->version);
-	le_put16(p + 10, h->header_size);
-	le_put32(p + 12, h->block_size);
-	le_put32(p + 16, h->block_count);
-	le_put64(p + 20, h->sequence);
-	le_put32(p + 28, h->bones);
-	le_put32(p + 32, h->dofs);
-	le_put32(p + 36, h->verts);
-	le_put32(p + 40, h->tris);
-	le_put32(p + 44, h->influences);
-	le_put32(p + 48, h->clips);
-	for (int i = 0; i < SKP_SEC_COUNT; i++) {
-		le_put32(p + 52 + 12 * i, h->sec[i].first);
-		le_put32(p + 56 + 12 * i, h->sec[i].count);
-		le_put32(p + 60 + 12 * i, h->sec[i].bytes);
-	}
-	le_put32(p + 100, h->crc);
-}
+#include "image_parity.h"
 
 void skp_clip_range_init(skp_clip_range *r, const skel *s)
 {
@@ -69,7 +48,7 @@ static skp_status flush_block(skp_image_writer *w, skp_error *err)
 	b[8] = w->kind;
 	b[9] = 0;
 	le_put16(b + 10, w->item);
-	le_put32(b + w->bs - 4, crc32_compute(b, w->bs - 4));
+	skp_block_seal(b, w->bs);
 	if (w->dev->write(w->dev->ctx, index, b) < 0) {
 		skp_fail(err, SKP_ERR_IO, 0, "cannot write block %lu", (unsigned long)index);
 		if (err)
@@ -224,6 +203,7 @@ skp_status skp_image_write_begin(skp_image_writer *w, skp_blockdev *dev, uint64_
 	w->next_block = 1; /* block 0, the header, comes last */
 	w->clip_count = 0;
 	w->clip = NULL;
+	w->parity_group = 0;
 	w->hdr.version = SKP_IMAGE_VERSION;
 	w->hdr.header_size = SKP_IMAGE_HEADER_SIZE;
 	w->hdr.block_size = bs;
@@ -460,15 +440,26 @@ skp_status skp_image_write_end(skp_image_writer *w, skp_error *err)
 		rc = sec_end(w, &h->sec[SKP_SEC_DIRECTORY], err);
 	if (rc)
 		return rc;
-	h->block_count = w->next_block;
-	uint8_t *p = w->block + SKP_IMAGE_BLOCK_HDR;
-	skp_image_header_put(p, h);
-	h->crc = crc32_compute(p, SKP_IMAGE_HEADER_SIZE - 4);
-	le_put32(p + SKP_IMAGE_HEADER_SIZE - 4, h->crc);
-	w->kind = SKP_KIND_HEADER;
-	w->item = 0;
-	w->next_block = 0;
-	rc = flush_block(w, err);
+	/* data, parity over it (block 0 from memory: it is written last), the
+	 * header copy, block 0 */
+	h->data_blocks = w->next_block;
+	h->parity_blocks = w->parity_group < 0 ? 0 : skp_parity_blocks(h->data_blocks, (uint32_t)w->parity_group);
+	h->copy_block = h->data_blocks + h->parity_blocks;
+	h->block_count = h->copy_block + 1;
+	uint8_t *b0 = w->head;
+	memset(b0, 0, w->bs);
+	le_put32(b0, w->tag);
+	b0[8] = SKP_KIND_HEADER;
+	skp_image_header_put(b0 + SKP_IMAGE_BLOCK_HDR, h);
+	skp_block_seal(b0, w->bs);
+	rc = skp_parity_write(w->dev, h, b0, w->block, w->tmp, err);
+	if (rc)
+		return rc;
+	skp_header_copy_frame(w->block, h);
+	if (w->dev->write(w->dev->ctx, h->copy_block, w->block) < 0 || w->dev->write(w->dev->ctx, 0, b0) < 0) {
+		skp_fail(err, SKP_ERR_IO, 0, "cannot write the header");
+		return SKP_ERR_IO;
+	}
 	w->next_block = h->block_count;
-	return rc;
+	return SKP_OK;
 }

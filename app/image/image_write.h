@@ -44,11 +44,14 @@ typedef struct skp_image_writer {
 	float qmin[SKP_MAX_DOF], qstep[SKP_MAX_DOF];
 	int clip_count;
 	skp_image_clip dir[SKP_IMAGE_MAX_CLIPS];
+	int parity_group;         /* data blocks per parity group: 0 default, < 0 none */
 	uint8_t block[SKP_IMAGE_BLOCK_SIZE];
+	uint8_t head[SKP_IMAGE_BLOCK_SIZE], tmp[SKP_IMAGE_BLOCK_SIZE];
 } skp_image_writer;
 
 /* Starts an image on dev (dev->block_size is the image's block size) and
- * writes the skeleton section. */
+ * writes the skeleton section. Set w->parity_group after it to choose the
+ * parity (default 0: groups of 8 or more, see image_format.h). */
 skp_status skp_image_write_begin(skp_image_writer *w, skp_blockdev *dev, uint64_t sequence,
 				 const skel *s, skp_error *err);
 
@@ -63,7 +66,8 @@ skp_status skp_image_clip_begin(skp_image_writer *w, const char *name, float fps
 				const skp_clip_range *range, skp_error *err);
 skp_status skp_image_clip_frame(skp_image_writer *w, const amc_frame *f, skp_error *err);
 
-/* Writes the directory, then the header. */
+/* Writes the directory, the parity blocks (reading the data blocks back:
+ * dev must read as well as write), the header copy, then the header. */
 skp_status skp_image_write_end(skp_image_writer *w, skp_error *err);
 
 #endif

@@ -1,5 +1,6 @@
 #include "amc.h"
 
+#include <float.h>
 #include <math.h>
 #include <string.h>
 
@@ -13,6 +14,7 @@ void amc_open(amc_stream *a, const skel *s, text_lines *tl)
 	a->angle_in_degrees = s->angle_in_degrees;
 	a->pending_number = -1;
 	a->hint = 1;
+	a->cut_frame = a->cut_line = -1;
 }
 
 static int fail(amc_stream *a, skp_error *err, skp_status code, const char *fmt,
@@ -32,9 +34,23 @@ static int find_bone(amc_stream *a, const char *name)
 	return b;
 }
 
+/* One token of digits (a sign allowed): a frame number, or -1 when it
+ * does not fit (then it is an error, not a bone's name). */
 static int is_frame_number(char **t, int n, long *number)
 {
-	return n == 1 && tok_parse_long(t[0], number) == 0;
+	const char *s = t[0] + (t[0][0] == '-' || t[0][0] == '+');
+	if (n != 1 || *s < '0' || *s > '9' || strspn(s, "0123456789") != strlen(s))
+		return 0;
+	return tok_parse_long(t[0], number) == 0 && *number >= -AMC_MAX_FRAME_NUMBER &&
+	       *number <= AMC_MAX_FRAME_NUMBER ? 1 : -1;
+}
+
+static int count_seen(const amc_stream *a)
+{
+	int n = 0;
+	for (int b = 0; b < a->s->count; b++)
+		n += a->seen[b];
+	return n;
 }
 
 static int bone_line(amc_stream *a, amc_frame *f, char **t, int n, skp_error *err)
@@ -61,6 +77,9 @@ static int bone_line(amc_stream *a, amc_frame *f, char **t, int n, skp_error *er
 		int is_angle = bone->channel[i] <= SKEL_RZ;
 		if (is_angle && a->angle_in_degrees)
 			v *= 3.14159265358979323846 / 180.0;
+		/* finite as a double, but the frame holds floats */
+		if (fabs(v) > FLT_MAX)
+			return fail(a, err, SKP_ERR_RANGE, "value '%s' is beyond a float's range", t[i + 1], 0);
 		dst[i] = (float)v;
 	}
 	return 0;
@@ -110,7 +129,12 @@ int amc_next(amc_stream *a, amc_frame *f, skp_error *err)
 		}
 		if (n == 0)
 			continue;
-		if (is_frame_number(t, n, &number)) {
+		int is_number = is_frame_number(t, n, &number);
+		if (is_number < 0)
+			return fail(a, err, SKP_ERR_RANGE, "frame number '%s' out of range (at most %ld)", t[0],
+				    AMC_MAX_FRAME_NUMBER);
+		if (is_number) {
+			a->last_bones = count_seen(a);
 			a->pending_number = number;
 			a->pending_line = a->tl->line_no;
 			if (in_frame)
@@ -126,5 +150,12 @@ int amc_next(amc_stream *a, amc_frame *f, skp_error *err)
 	if (r < 0)
 		return r;
 	a->at_end = 1;
+	/* the file ends inside its last frame (a copy cut short): drop that
+	 * frame rather than play the missing bones at rest; cut_frame says */
+	if (in_frame && a->last_bones > 0 && count_seen(a) < a->last_bones) {
+		a->cut_frame = f->number;
+		a->cut_line = f->line;
+		return 0;
+	}
 	return in_frame;
 }

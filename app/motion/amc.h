@@ -24,12 +24,19 @@ typedef struct amc_stream {
 	int at_end;
 	int hint;                    /* next bone expected: exporters repeat their order */
 	uint8_t seen[SKP_MAX_BONES];
+	int last_bones;              /* bones the previous frame listed */
+	long cut_frame, cut_line;    /* a last frame cut short and dropped, else -1 */
 } amc_stream;
+
+/* Frame numbers an image stores (i32) and the players count with. */
+#define AMC_MAX_FRAME_NUMBER 2147483647L
 
 void amc_open(amc_stream *a, const skel *s, text_lines *tl);
 
 /* Returns 1 with the next frame in *f, 0 after the last frame, or a
- * negative skp_status (err names the line and what was expected). */
+ * negative skp_status (err names the line and what was expected). A last
+ * frame that lists fewer bones than the one before it (the file was cut
+ * short) is dropped: 0, with its number and line in cut_frame, cut_line. */
 int amc_next(amc_stream *a, amc_frame *f, skp_error *err);
 
 #endif

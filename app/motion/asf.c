@@ -204,6 +204,11 @@ static skp_status end_bone(asf_state *st)
 	for (int i = 0; i < st->s->count - 1; i++)
 		if (strcmp(st->s->bone[i].name, b->name) == 0)
 			return skp_syntax(st->err, st->line, "bone name '%s' used twice", b->name);
+	/* a bone with a length points somewhere: a zero direction would put
+	 * its end on its start and turn its children with nothing to turn by */
+	if (b->length > 0 && b->direction.x == 0 && b->direction.y == 0 && b->direction.z == 0)
+		return skp_syntax(st->err, st->line, "bone '%s': 'direction' is 0 0 0 but 'length' is %g",
+				  b->name, (double)b->length);
 	st->in_block = 0;
 	st->bone = NULL;
 	return SKP_OK;

@@ -8,41 +8,10 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
-#include "cli_common.h"
-#include "cli_show.h"
-#include "cli_skin.h"
 #include "cli_version.h"
 #include "clock.h"
-#include "display.h"
 #include "png_writer.h"
-#include "skinplay_kiosk.h"
-#include "skinplay_opts.h"
-#include "skinplay_sheet.h"
-
-typedef struct player {
-	play_opts o;
-	bound_body body;
-	cli_skin skin;
-	cli_motion motion;
-	show_source show;  /* --image: frames from a packed image instead */
-	amc_frame frame;
-	renderer r;
-	gl_api gl;
-	const display_backend *disp;
-	display_info info;
-	int headless;
-	int pending;       /* p->frame was read ahead by --start */
-	int panel_count;
-	skin_algo algo[RENDER_MAX_PANELS];
-	int gpu[RENDER_MAX_PANELS];
-	float pos[RENDER_MAX_PANELS][3 * SKP_MAX_VERTS];
-	float nrm[RENDER_MAX_PANELS][3 * SKP_MAX_VERTS];
-	uint8_t rgba[SKP_DISPLAY_MAX_W * SKP_DISPLAY_MAX_H * 4]; /* one frame read back for --out */
-	char clip[64];
-	sheet contact;
-	kiosk kiosk;       /* --board, --input, signals, systemd */
-	int reload;        /* SIGHUP: start over (main re-executes) */
-} player;
+#include "skinplay.h"
 
 typedef struct timing {
 	uint64_t decode, skin, upload, draw;
@@ -101,43 +70,6 @@ static int open_display(player *p)
 	return 0;
 }
 
-static int open_motion(player *p)
-{
-	if (p->o.image_count)
-		return 0; /* floor_height() opened the clip and read ahead its first frame */
-	if (cli_motion_open(&p->motion, p->o.amc, &p->body.skel) < 0)
-		return -1;
-	if (p->o.start < 0)
-		return 0;
-	/* skip to the start frame (the stream has no index to seek with) and
-	 * keep it for the first next_frame() */
-	int r;
-	while ((r = cli_motion_next(&p->motion, &p->frame)) > 0 && p->frame.number < p->o.start)
-		;
-	if (r == 0)
-		fprintf(stderr, "%s: no frame %ld\n", p->o.amc, p->o.start);
-	p->pending = r > 0;
-	return r <= 0 ? -1 : 0;
-}
-
-/* The lowest point of the body in the clip's first frame: the floor. */
-static float floor_height(player *p)
-{
-	amc_frame *f = &p->frame;
-	if (p->o.image_count) {
-		if (show_select_clip(&p->show, p->o.clip, p->o.start) < 0 || show_next_frame(&p->show, f) <= 0)
-			return NAN;
-		p->pending = 1;
-	} else if (cli_read_frame(p->o.amc, &p->body.skel, p->o.start, f) < 0)
-		return NAN;
-	cli_skin_frame(&p->skin, f->value);
-	cli_skin_run(&p->skin, SKIN_DQBS, p->pos[0], p->nrm[0]);
-	float lo = INFINITY;
-	for (int v = 0; v < p->body.mesh.vert_count; v++)
-		lo = fminf(lo, p->pos[0][3 * v + 1]);
-	return lo;
-}
-
 static int setup(player *p)
 {
 	if (p->o.image_count ? show_open(&p->show, p->o.image, p->o.image_count, &p->body) < 0
@@ -146,7 +78,7 @@ static int setup(player *p)
 	if (cli_skin_init(&p->skin, &p->body.skel, &p->body.pose, &p->body.mesh, &p->body.weights,
 			   p->o.image_count ? show_path(&p->show) : p->o.mesh ? p->o.mesh : "generated body") < 0)
 		return -1;
-	float floor_y = floor_height(p);
+	float floor_y = frames_first(p);
 	if (isnan(floor_y) || open_display(p) < 0)
 		return -1;
 	skp_error err;
@@ -171,7 +103,7 @@ static int setup(player *p)
 		fprintf(stderr, "skinplay: %s: %s\n", p->o.out_dir, strerror(errno));
 		return -1;
 	}
-	return open_motion(p);
+	return frames_open(p);
 }
 
 static void skin_panels(player *p, render_frame *f)
@@ -190,20 +122,27 @@ static void skin_panels(player *p, render_frame *f)
 	f->bones = &p->skin.bones;
 }
 
-static void hud_text(player *p, render_frame *f, double fps, char lines[3][96])
+static void hud_text(player *p, render_frame *f, double fps, char lines[3][128])
 {
 	const char *where = p->gpu[0] ? "GPU" : "CPU";
 	if (p->panel_count > 1)
-		snprintf(lines[0], 96, "COMPARE LBS | DQBS  %s  %s", where, render_view_name(p->o.view));
+		snprintf(lines[0], 128, "COMPARE LBS | DQBS  %s  %s", where, render_view_name(p->o.view));
 	else
-		snprintf(lines[0], 96, "%s  %s  %s", skin_algo_name(p->algo[0]), where, render_view_name(p->o.view));
-	snprintf(lines[1], 96, "%s  FRAME %ld", p->clip, p->frame.number);
+		snprintf(lines[0], 128, "%s  %s  %s", skin_algo_name(p->algo[0]), where, render_view_name(p->o.view));
+	unsigned long rebuilt = p->o.image_count ? show_rebuilt(&p->show) : 0;
+	if (rebuilt)
+		snprintf(lines[1], 128, "%s  FRAME %ld  REBUILT %lu", p->clip, p->frame.number, rebuilt);
+	else
+		snprintf(lines[1], 128, "%s  FRAME %ld", p->clip, p->frame.number);
 	if (p->o.hud_fps)
-		snprintf(lines[2], 96, "%.1f FPS", fps);
+		snprintf(lines[2], 128, "%.1f FPS", fps);
 	f->hud[0] = lines[0];
 	f->hud[1] = lines[1];
 	f->hud[2] = p->o.hud_fps ? lines[2] : NULL;
-	f->hud[3] = NULL;
+	/* a skipped clip, no clip at all: said on screen, not only in the log */
+	f->hud[3] = p->notice_frames > 0 ? p->notice : NULL;
+	if (p->notice_frames > 0)
+		p->notice_frames--;
 }
 
 static int write_png(player *p, long n)
@@ -236,30 +175,9 @@ static void log_second(player *p, timing *t, uint64_t now)
 	t->since = now;
 }
 
-/* The next frame of the clip, looping on a display and whenever --frames
- * asks for more frames than the clip has (`make soak`). 1, 0 at the end, -1. */
-static int next_frame(player *p)
-{
-	if (p->pending) {
-		p->pending = 0;
-		return 1;
-	}
-	int r = p->o.image_count ? show_next_frame(&p->show, &p->frame) : cli_motion_next(&p->motion, &p->frame);
-	if (r != 0 || (p->headless && p->o.frames < 0))
-		return r;
-	if (p->o.image_count) {
-		show_rewind(&p->show);
-		return show_next_frame(&p->show, &p->frame);
-	}
-	cli_motion_close(&p->motion);
-	if (cli_motion_open(&p->motion, p->o.amc, &p->body.skel) < 0)
-		return -1;
-	return cli_motion_next(&p->motion, &p->frame);
-}
-
 static int draw_one(player *p, timing *t, double fps, render_frame *f)
 {
-	char lines[3][96];
+	char lines[3][128];
 	skp_error err;
 	uint64_t t0 = clock_now_ns();
 	skin_panels(p, f);
@@ -281,22 +199,6 @@ static int draw_one(player *p, timing *t, double fps, render_frame *f)
 	return 0;
 }
 
-/* PLAY long, NEXT: back to the first frame of the clip (or of clip i). */
-static int restart_clip(player *p, int clip)
-{
-	p->pending = 0;
-	if (p->o.image_count) {
-		if (clip < 0) {
-			show_rewind(&p->show);
-			return 0;
-		}
-		snprintf(p->clip, sizeof p->clip, "%s", show_clip(&p->show, clip)->name);
-		return show_select_clip(&p->show, p->clip, -1);
-	}
-	cli_motion_close(&p->motion);
-	return cli_motion_open(&p->motion, p->o.amc, &p->body.skel);
-}
-
 /* The buttons' state machine (skinplay_kiosk.h) drives what is shown. */
 static int apply_input(player *p, render_frame *f, unsigned act)
 {
@@ -307,7 +209,7 @@ static int apply_input(player *p, render_frame *f, unsigned act)
 	if (act & (KIOSK_ALGO | KIOSK_GPU))
 		choose_paths(p);
 	if (act & (KIOSK_RESTART | KIOSK_CLIP))
-		return restart_clip(p, act & KIOSK_CLIP ? s->clip : -1);
+		return frames_restart(p, act & KIOSK_CLIP ? s->clip : -1);
 	return 0;
 }
 
@@ -333,7 +235,7 @@ static int play(player *p)
 		uint64_t t0 = clock_now_ns();
 		/* paused: the same frame again (the first one is always read) */
 		if (p->kiosk.ps.playing || shown == 0 || (act & (KIOSK_RESTART | KIOSK_CLIP)))
-			r = next_frame(p);
+			r = frames_next(p);
 		if (r <= 0)
 			break;
 		t.decode += clock_now_ns() - t0;
@@ -382,6 +284,10 @@ int main(int argc, char **argv)
 	rc = setup(&p) == 0 &&
 	     kiosk_start(&p.kiosk, &p.o, p.headless, p.o.image_count ? show_clip_count(&p.show) : 1) == 0 &&
 	     play(&p) == 0 ? 0 : 1;
+	/* headless, the show had nothing to play: the held frame was rendered,
+	 * the status says the show is damaged (a kiosk keeps holding instead) */
+	if (rc == 0 && p.hold)
+		rc = 2;
 	kiosk_shutdown(&p.kiosk);
 	cli_motion_close(&p.motion);
 	show_close(&p.show);

@@ -19,6 +19,7 @@ static const command commands[] = {
 	{ "skin", cmd_skin, "skin SKELETON.asf MOTION.amc MESH.obj --frame N --algo lbs|dqbs|dqbs-fixed [--group G] [--fit] [--bind-pose P.amc[:F]] [--weights IN.csv] [--balance on|off] -o OUT.obj    the mesh deformed for frame N" },
 	{ "pack", cmd_pack, "pack SKELETON.asf MOTION.amc [MOTION2.amc ...] [--mesh MESH.obj [bind options]] [--fps F] [--sequence N] [--block-size B] -o show.skn    flash image for skinplay --image" },
 	{ "info", cmd_info, "info show.skn    header, sections and clips of an image; checks every block (exit 2 when damaged)" },
+	{ "repair", cmd_repair, "repair show.skn    rebuilds an image's bad blocks from its parity and replaces it (exit 2 when beyond repair)" },
 	{ "bench-image", cmd_bench_image, "bench-image show.skn [--amc M.amc]    time to the first frame, bytes per frame" },
 	{ "metrics", cmd_metrics, "metrics SKELETON.asf MOTION.amc MESH.obj [bind options] [--algo LIST] | metrics --scene twist|bend --angle DEG [--algo LIST]    volume and radius ratios per frame as CSV" },
 	{ "compare", cmd_compare, "compare SKELETON.asf MOTION.amc [--mesh MESH.obj [bind options]] -o DIR [--renders N]    LBS vs DQBS report: index.html, metrics.csv, charts, renders of the worst frames" },

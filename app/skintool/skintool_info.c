@@ -1,7 +1,10 @@
 /* skintool info show.skn
- * Prints a flash image's header, sections and clips, then checks every
- * block. Exit status 0 when every block is good, 2 when the image is
- * damaged (each bad block named), 1 when it cannot be read at all. */
+ * Prints a flash image's header, sections, parity and clips, then checks
+ * every block: data blocks by their frame, parity blocks against their
+ * group, the header copy against the header. Each bad block is named with
+ * what it held and whether it can be rebuilt (`skintool repair`). Exit
+ * status 0 when every block is good, 2 when the image is damaged, 1 when it
+ * cannot be read at all. */
 #include <stdio.h>
 #include <string.h>
 
@@ -20,7 +23,7 @@ static void print_header(const show_image *s)
 	printf("  needs       %lu bones, %lu dofs, %lu vertices, %lu triangles, %lu influences, %lu clips\n",
 	       (unsigned long)h->bones, (unsigned long)h->dofs, (unsigned long)h->verts, (unsigned long)h->tris,
 	       (unsigned long)h->influences, (unsigned long)h->clips);
-	printf("  section     header: block 0\n");
+	printf("  section     header: block 0%s\n", s->im.header_from_copy ? " (bad: read from its copy)" : "");
 	for (int i = 0; i < SKP_SEC_COUNT; i++) {
 		const skp_image_section *sec = &h->sec[i];
 		printf("  section     %s: blocks %lu..%lu", names[i], (unsigned long)sec->first,
@@ -29,6 +32,19 @@ static void print_header(const show_image *s)
 			printf(", %lu bytes", (unsigned long)sec->bytes);
 		printf("\n");
 	}
+	if (h->version < 2)
+		printf("  parity      none (format version 1): a bad block cannot be rebuilt; pack again for parity\n");
+	else if (h->parity_blocks == 0)
+		printf("  parity      none (packed with --parity none); header copy: block %lu\n",
+		       (unsigned long)h->copy_block);
+	else
+		printf("  parity      blocks %lu..%lu: %lu groups of up to %lu data blocks (block b in group b mod %lu), "
+		       "%.1f%% more; header copy: block %lu\n",
+		       (unsigned long)h->data_blocks, (unsigned long)(h->data_blocks + h->parity_blocks - 1),
+		       (unsigned long)h->parity_blocks,
+		       (unsigned long)((h->data_blocks + h->parity_blocks - 1) / h->parity_blocks),
+		       (unsigned long)h->parity_blocks, 100.0 * (h->parity_blocks + 1) / h->data_blocks,
+		       (unsigned long)h->copy_block);
 }
 
 static void print_clips(const show_image *s)
@@ -45,22 +61,32 @@ static void print_clips(const show_image *s)
 	}
 }
 
-/* What a bad block held, so the message says what is lost. */
-static void bad_block(void *ctx, uint32_t b, skp_block_state st)
+/* What a bad block held, so the message says what is lost, and whether it
+ * comes back. */
+static void bad_block(void *ctx, uint32_t b, const skp_block_report *r)
 {
 	const show_image *s = ctx;
-	printf("block %lu bad: %s", (unsigned long)b, skp_block_state_name(st));
-	for (int i = 0; i < s->im.clip_count; i++) {
-		const skp_image_clip *c = &s->im.clip[i];
-		if (b >= c->frames_first && b < c->frames_first + c->frame_blocks) {
+	const skp_image_header *h = &s->im.hdr;
+	printf("block %lu bad: %s (%s", (unsigned long)b,
+	       r->role == SKP_ROLE_PARITY && r->state == SKP_BLOCK_CRC ? "does not match its group"
+									: skp_block_state_name(r->state),
+	       skp_block_report_what(r));
+	if (r->role == SKP_ROLE_DATA && (r->kind == SKP_KIND_QUANT || r->kind == SKP_KIND_FRAMES)) {
+		const skp_image_clip *c = &s->im.clip[r->item];
+		printf(" of clip %s", c->name);
+		if (r->kind == SKP_KIND_FRAMES) {
 			long first = (long)(b - c->frames_first) * c->frames_per_block;
 			long last = first + c->frames_per_block - 1;
 			if (last >= (long)c->frame_count)
 				last = (long)c->frame_count - 1;
-			printf(" (clip %s, frames %ld..%ld)", c->name, first + c->first_number, last + c->first_number);
+			printf(", frames %ld..%ld", first + c->first_number, last + c->first_number);
 		}
 	}
-	printf("\n");
+	if (r->role != SKP_ROLE_COPY && h->parity_blocks)
+		printf(", parity group %lu", (unsigned long)r->group);
+	printf("): %s\n", r->repairable ? "repairable"
+		 : h->parity_blocks == 0 ? "beyond repair (no parity)"
+		 : "beyond repair (another block of its group is bad)");
 }
 
 /* The header is not trusted: find the block size under which most blocks
@@ -91,6 +117,35 @@ static long scan_raw(storage_file *sf)
 	printf("verify: %lu blocks of %lu bytes (block size found from their CRCs): %ld bad\n",
 	       (unsigned long)sf->bd.block_count, (unsigned long)best, bad);
 	return bad;
+}
+
+/* What skinplay checks before playing (cli_accept.c), so that info and
+ * skinplay never disagree: 1 when the body is refused (nothing would play),
+ * clips that cannot play are listed. */
+static int accept(show_image *s)
+{
+	static bound_body body;
+	skp_error err;
+	if (show_accept_body(s, &body, &err) < 0) {
+		if (err.block >= 0)
+			printf("accept: refused: block %ld: %s\n", err.block, err.msg);
+		else
+			printf("accept: refused: %s\n", err.msg);
+		return 1;
+	}
+	int playable = 0;
+	for (int c = 0; c < s->im.clip_count; c++) {
+		if (show_accept_clip(s, c, &err) == 0) {
+			playable++;
+			continue;
+		}
+		printf("accept: clip %d %s cannot play: ", c, s->im.clip[c].name);
+		if (err.block >= 0)
+			printf("block %ld: ", err.block);
+		printf("%s\n", err.msg);
+	}
+	printf("accept: skeleton and body good, %d of %d clips can play\n", playable, s->im.clip_count);
+	return 0;
 }
 
 static int refused(show_image *s, const skp_error *err)
@@ -126,11 +181,17 @@ int cmd_info(int argc, char **argv)
 	}
 	print_header(&s);
 	print_clips(&s);
-	long bad = show_image_verify(&s, bad_block, &s);
-	printf("verify: %lu blocks: %s%ld bad\n", (unsigned long)s.im.hdr.block_count, bad ? "" : "all good, ", bad);
+	int refused_body = accept(&s);
+	long beyond;
+	long bad = show_image_verify(&s, bad_block, &s, &beyond);
+	if (bad == 0)
+		printf("verify: %lu blocks: all good, 0 bad\n", (unsigned long)s.im.hdr.block_count);
+	else
+		printf("verify: %lu blocks: %ld bad, %ld repairable (skintool repair %s), %ld beyond repair\n",
+		       (unsigned long)s.im.hdr.block_count, bad, bad - beyond, s.path, beyond);
 	if (s.sf.bd.block_count > s.im.hdr.block_count)
 		printf("note: %lu blocks after the image's end (ignored)\n",
 		       (unsigned long)(s.sf.bd.block_count - s.im.hdr.block_count));
 	show_image_close(&s);
-	return bad ? 2 : 0;
+	return bad || refused_body ? 2 : 0;
 }

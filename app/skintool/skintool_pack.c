@@ -4,8 +4,12 @@
  * Binds the body (the generated one without --mesh) and packs it with the
  * clips into a flash image (app/image/image_format.h). Each clip is read twice
  * (its range, then its frames), so memory does not grow with its length.
- * The image is written to OUT.tmp, synced and renamed: a pack cut short
- * never leaves a half image under the final name. */
+ * The image is written to a temporary in OUT's directory (unnamed where the
+ * file system allows), synced and renamed over OUT, and the directory
+ * synced: a pack cut short, even by kill -9, leaves the previous OUT whole
+ * and no temporary behind; two packs to one OUT each write whole. Parity:
+ * --parity G (data blocks per group, 2 or more) or none; the default is
+ * groups of 8 (image_format.h). */
 #include <errno.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -15,12 +19,12 @@
 
 #include "cli_bind_args.h"
 #include "cli_common.h"
+#include "cli_image_out.h"
 #include "image_write.h"
 #include "skintool_cmds.h"
-#include "storage_file.h"
 
 #define PACK_USAGE "usage: skintool pack SKELETON.asf MOTION.amc [MOTION2.amc ...] [--mesh MESH.obj " \
-	BIND_ARGS_USAGE "] [--fps F] [--sequence N] [--block-size B] -o show.skn\n"
+	BIND_ARGS_USAGE "] [--fps F] [--sequence N] [--block-size B] [--parity G|none] -o show.skn\n"
 
 #define PACK_MAX_AMC SKP_IMAGE_MAX_CLIPS
 
@@ -32,7 +36,23 @@ typedef struct pack_args {
 	double fps;
 	long sequence;
 	long block_size;
+	int parity;               /* data blocks per parity group; 0 default, -1 none */
 } pack_args;
+
+static int parse_parity(pack_args *p, const char *v)
+{
+	long g;
+	if (!strcmp(v, "none")) {
+		p->parity = -1;
+		return 0;
+	}
+	if (cli_parse_long("--parity", v, &g) < 0 || g < 2 || g > 65535) {
+		fprintf(stderr, "skintool pack: --parity expects data blocks per parity group (2..65535) or none, got '%s'\n", v);
+		return -1;
+	}
+	p->parity = (int)g;
+	return 0;
+}
 
 static int pack_value(pack_args *p, const char *opt, const char *v)
 {
@@ -44,6 +64,8 @@ static int pack_value(pack_args *p, const char *opt, const char *v)
 		return cli_parse_long(opt, v, &p->sequence) < 0 || p->sequence < 0 ? -1 : 0;
 	else if (!strcmp(opt, "--block-size"))
 		return cli_parse_long(opt, v, &p->block_size);
+	else if (!strcmp(opt, "--parity"))
+		return parse_parity(p, v);
 	else if (!strcmp(opt, "--fps")) {
 		p->fps = atof(v);
 		if (!(p->fps > 0 && p->fps < 10000))
@@ -156,24 +178,26 @@ static int pack_clip(skp_image_writer *w, const char *path, double fps)
 	return r;
 }
 
-static int write_image(const pack_args *p, const bound_body *body, storage_file *sf, const char *tmp)
+static int write_image(const pack_args *p, const bound_body *body, storage_file *sf)
 {
 	static skp_image_writer w;
 	static amc_frame pose;
 	skp_error err;
 	if (p->bind.pose_path && cli_read_frame(p->bind.pose_path, &body->skel, p->bind.pose_frame, &pose) < 0)
 		return -1;
-	if (skp_image_write_begin(&w, &sf->bd, (uint64_t)p->sequence, &body->skel, &err) != SKP_OK ||
+	skp_status rc = skp_image_write_begin(&w, &sf->bd, (uint64_t)p->sequence, &body->skel, &err);
+	w.parity_group = p->parity;
+	if (rc != SKP_OK ||
 	    skp_image_write_bind(&w, &body->mesh, &body->weights, p->bind.pose_path ? pose.value : NULL,
 				 pose.number, &err) != SKP_OK) {
-		cli_error(tmp, &err);
+		cli_error(p->out, &err);
 		return -1;
 	}
 	for (int i = 0; i < p->amc_count; i++)
 		if (pack_clip(&w, p->amc[i], p->fps) < 0)
 			return -1;
 	if (skp_image_write_end(&w, &err) != SKP_OK) {
-		cli_error(tmp, &err);
+		cli_error(p->out, &err);
 		return -1;
 	}
 	printf("%s: %lu blocks of %lu bytes (%lu bytes), sequence %ld, %d bones, %d vertices, %d triangles\n",
@@ -187,28 +211,14 @@ int cmd_pack(int argc, char **argv)
 {
 	static pack_args p;
 	static bound_body body;
-	static storage_file sf;
-	char tmp[4096];
+	static cli_image_out out;
 	memset(&p, 0, sizeof p);
-	if (pack_parse(&p, argc, argv) < 0 || bind_args_load(&p.bind, p.asf, p.mesh, &body) < 0)
+	if (pack_parse(&p, argc, argv) < 0 || bind_args_load(&p.bind, p.asf, p.mesh, &body) < 0 ||
+	    cli_image_out_open(&out, p.out, (uint32_t)p.block_size) < 0)
 		return 1;
-	snprintf(tmp, sizeof tmp, "%s.tmp", p.out);
-	int rc = storage_file_create(&sf, tmp, (uint32_t)p.block_size);
-	if (rc < 0) {
-		fprintf(stderr, "%s: cannot create: %s\n", tmp, strerror(-rc));
+	if (write_image(&p, &body, &out.sf) < 0) {
+		cli_image_out_abort(&out);
 		return 1;
 	}
-	rc = write_image(&p, &body, &sf, tmp);
-	if (rc == 0 && storage_file_sync(&sf) < 0) {
-		fprintf(stderr, "%s: fsync: %s\n", tmp, strerror(errno));
-		rc = -1;
-	}
-	storage_file_close(&sf);
-	if (rc == 0 && rename(tmp, p.out) != 0) {
-		fprintf(stderr, "%s: cannot rename to %s: %s\n", tmp, p.out, strerror(errno));
-		rc = -1;
-	}
-	if (rc < 0)
-		unlink(tmp);
-	return rc < 0 ? 1 : 0;
+	return cli_image_out_commit(&out) < 0 ? 1 : 0;
 }

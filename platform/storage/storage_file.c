@@ -75,6 +75,11 @@ static int sf_init(storage_file *sf, int fd, uint32_t block_size, int writable)
 	return 0;
 }
 
+int storage_file_use_fd(storage_file *sf, int fd, uint32_t block_size)
+{
+	return sf_init(sf, fd, block_size, 1);
+}
+
 int storage_file_open(storage_file *sf, const char *path, uint32_t block_size)
 {
 	return sf_init(sf, open(path, O_RDONLY | O_CLOEXEC), block_size, 0);

@@ -18,6 +18,10 @@ typedef struct storage_file {
 /* Opens read-only with that block size. Returns 0 or -errno. */
 int storage_file_open(storage_file *sf, const char *path, uint32_t block_size);
 
+/* Block storage over an open read-write fd (an atomic_file's): closing the
+ * storage closes it. Returns 0 or -errno. */
+int storage_file_use_fd(storage_file *sf, int fd, uint32_t block_size);
+
 /* Creates (truncates) a file to write blocks into. Returns 0 or -errno. */
 int storage_file_create(storage_file *sf, const char *path, uint32_t block_size);
 

@@ -2,8 +2,9 @@
  * and decodes within the stated quantisation; skintool info names the
  * block of any flipped byte (every block of a small image, random bytes of
  * a big one) and exits 2; truncated and wrong-version images are refused;
- * skinplay plays through a bad block (logging it once) and, given two
- * slots, plays the newest valid one. */
+ * skinplay rebuilds a bad block from parity (logging it once), holds over
+ * one in an image without parity, and, given two slots, plays the newest
+ * one with no block beyond repair. */
 #include <stdarg.h>
 #include <stddef.h>
 #include <setjmp.h>
@@ -218,22 +219,27 @@ static void test_info_random_bytes_of_big_image(void **state)
 	}
 }
 
-/* Rewrites header fields of an image (block size 512), then its CRCs as a
- * careful forger would: only the version check can refuse it. */
+/* Rewrites the version in both headers of an image (block size 512: block
+ * 0 and the copy at the end), then their CRCs as a careful forger would:
+ * only the version check can refuse it. */
 static void set_version(const char *path, int version)
 {
 	static uint8_t block[512];
 	FILE *f = fopen(path, "r+b");
 	assert_non_null(f);
-	assert_int_equal(fread(block, 1, 512, f), 512);
-	uint8_t *h = block + 12;
-	h[8] = (uint8_t)version;
-	uint32_t crc = crc32_compute(h, 100);
-	memcpy(h + 100, &crc, 4);   /* little-endian host */
-	crc = crc32_compute(block, 508);
-	memcpy(block + 508, &crc, 4);
-	rewind(f);
-	assert_int_equal(fwrite(block, 1, 512, f), 512);
+	assert_int_equal(fseek(f, 0, SEEK_END), 0);
+	long end = ftell(f);
+	const long at[2] = { 0, end - 512 }, header[2] = { 12, 512 - 4 - SKP_IMAGE_HEADER_SIZE };
+	for (int i = 0; i < 2; i++) {
+		assert_int_equal(fseek(f, at[i], SEEK_SET), 0);
+		assert_int_equal(fread(block, 1, 512, f), 512);
+		uint8_t *h = block + header[i];
+		h[8] = (uint8_t)version;
+		le_put32(h + SKP_IMAGE_HEADER_SIZE - 4, crc32_compute(h, SKP_IMAGE_HEADER_SIZE - 4));
+		le_put32(block + 508, crc32_compute(block, 508));
+		assert_int_equal(fseek(f, at[i], SEEK_SET), 0);
+		assert_int_equal(fwrite(block, 1, 512, f), 512);
+	}
 	fclose(f);
 }
 
@@ -261,10 +267,10 @@ static void test_info_refuses_truncated_and_wrong_version(void **state)
 	assert_int_equal(truncate(bad, size - 100), 0);
 	expect_info(bad, 2, "short read");
 	copy(image, bad);
-	set_version(bad, 2);
-	expect_info(bad, 2, "image format version 2, this build reads version 1");
+	set_version(bad, 3);
+	expect_info(bad, 2, "image format version 3, this build reads versions 1 and 2");
 	copy(image, bad);
-	set_version(bad, 1);
+	set_version(bad, 2);
 	expect_info(bad, 0, "all good");
 	expect_info(test_scratch("missing.skn"), 1, "cannot open");
 }
@@ -283,25 +289,38 @@ static int count(const char *text, const char *needle)
 	return n;
 }
 
-static void test_skinplay_holds_over_a_bad_block(void **state)
+/* Frame block k of the image's clip 0, and the image's parity count. */
+static long frame_block(const char *image, int k, long *parity)
 {
-	(void)state;
-	if (!test_data_path("mocap"))
-		skip();
-	char asf[1024], amc[1024], args[2048], needle[128];
-	snprintf(asf, sizeof asf, "%s", test_data_path("mocap/cmu/09.asf"));
-	snprintf(amc, sizeof amc, "%s", test_data_path("mocap/cmu/09_06.amc"));
-	const char *image = test_scratch("walk.skn"), *bad = test_scratch("walk_bad.skn"), *log = test_scratch("play.log");
-	assert_int_equal(test_run("%s pack '%s' '%s' --sequence 10 -o '%s' >/dev/null", test_tool_path("skintool"), asf,
-			     amc, image), 0);
-	/* the image's third frame block: the clip's frames 65..96 */
 	static skp_image im;
 	static storage_file sf;
 	skp_error err;
 	assert_int_equal(show_storage_open(&sf, image), 0);
 	assert_int_equal(skp_image_open(&im, &sf.bd, &err), SKP_OK);
-	long block = (long)im.clip[0].frames_first + 2;
+	long block = (long)im.clip[0].frames_first + k;
+	*parity = (long)im.hdr.parity_blocks;
 	storage_file_close(&sf);
+	return block;
+}
+
+static void test_skinplay_rebuilds_and_holds(void **state)
+{
+	(void)state;
+	if (!test_data_path("mocap"))
+		skip();
+	char asf[1024], amc[1024], args[2048], needle[160];
+	snprintf(asf, sizeof asf, "%s", test_data_path("mocap/cmu/09.asf"));
+	snprintf(amc, sizeof amc, "%s", test_data_path("mocap/cmu/09_06.amc"));
+	const char *image = test_scratch("walk.skn"), *bad = test_scratch("walk_bad.skn"), *log = test_scratch("play.log");
+	const char *bare = test_scratch("walk_bare.skn");
+	assert_int_equal(test_run("%s pack '%s' '%s' --sequence 10 -o '%s' >/dev/null", test_tool_path("skintool"), asf,
+			     amc, image), 0);
+	assert_int_equal(test_run("%s pack '%s' '%s' --sequence 10 --parity none -o '%s' >/dev/null",
+				  test_tool_path("skintool"), asf, amc, bare), 0);
+	/* the image's third frame block: the clip's frames 65..96 */
+	long parity, block = frame_block(image, 2, &parity);
+	assert_true(parity > 0);
+	/* with parity: rebuilt, logged once, nothing held */
 	copy(image, bad);
 	flip_byte(bad, block * 4096 + 1000, 5);
 	snprintf(args, sizeof args, "--image '%s'", bad);
@@ -309,7 +328,20 @@ static void test_skinplay_holds_over_a_bad_block(void **state)
 	char *text = slurp(log);
 	if (st != 0)
 		fail_msg("skinplay exited %d:\n%s", st, text);
-	snprintf(needle, sizeof needle, "image: block %ld bad (CRC mismatch), holding frame 64\n", block);
+	snprintf(needle, sizeof needle, "block %ld rebuilt from parity (clip frames, parity group %ld)\n", block,
+		 block % parity);
+	if (count(text, needle) != 1 || strstr(text, "holding"))
+		fail_msg("expected '%s' once and nothing held in:\n%s", needle, text);
+	assert_non_null(strstr(text, "played 141 frames"));
+	free(text);
+	/* without parity: held over, logged once */
+	long bare_parity, bare_block = frame_block(bare, 2, &bare_parity);
+	assert_int_equal(bare_parity, 0);
+	copy(bare, bad);
+	flip_byte(bad, bare_block * 4096 + 1000, 5);
+	assert_int_equal(play(args, log), 0);
+	text = slurp(log);
+	snprintf(needle, sizeof needle, "image: block %ld bad (CRC mismatch), holding frame 64\n", bare_block);
 	if (count(text, needle) != 1 || count(text, "image: block ") != 1)
 		fail_msg("expected '%s' once in:\n%s", needle, text);
 	assert_non_null(strstr(text, "played 141 frames"));
@@ -326,22 +358,33 @@ static void test_skinplay_holds_over_a_bad_block(void **state)
 	if (!strstr(text, needle))
 		fail_msg("expected '%s' in:\n%s", needle, text);
 	free(text);
-	flip_byte(newer, 100, 0); /* header: the newer slot is refused */
+	/* one bad block is rebuilt: the newer slot still plays */
+	flip_byte(newer, block * 4096 + 7, 1);
 	assert_int_equal(play(args, log), 0);
 	text = slurp(log);
+	if (!strstr(text, needle))
+		fail_msg("expected '%s' (rebuilt) in:\n%s", needle, text);
+	free(text);
+	/* a second one in its group (a bind block) is beyond repair: the body
+	 * cannot load, the intact older slot wins */
+	flip_byte(newer, (block - parity) * 4096 + 7, 1);
+	assert_int_equal(play(args, log), 0);
+	text = slurp(log);
+	char refusal[64];
+	snprintf(refusal, sizeof refusal, "refused: block %ld: bind section: CRC mismatch", block - parity);
 	snprintf(needle, sizeof needle, "image: playing %s (sequence 10", image);
+	if (!strstr(text, needle) || !strstr(text, refusal))
+		fail_msg("expected '%s' after '%s' in:\n%s", needle, refusal, text);
+	free(text);
+	/* both headers of the newer slot damaged: refused */
+	flip_byte(newer, 100, 0);
+	flip_byte(newer, file_size(newer) - 100, 0);
+	assert_int_equal(play(args, log), 0);
+	text = slurp(log);
 	if (!strstr(text, needle) || !strstr(text, "refused: block 0"))
 		fail_msg("expected '%s' and the refusal in:\n%s", needle, text);
 	free(text);
-	flip_byte(newer, 100, 0);
-	flip_byte(newer, block * 4096 + 7, 1); /* a frame block: intact older slot wins */
-	assert_int_equal(play(args, log), 0);
-	text = slurp(log);
-	if (!strstr(text, needle) || !strstr(text, "1 bad blocks: trying an older slot"))
-		fail_msg("expected '%s' after the damaged slot in:\n%s", needle, text);
-	free(text);
-	/* one slot, header damaged: refused with a message, nothing played */
-	flip_byte(newer, 40, 2);
+	/* one slot, both headers damaged: refused with a message, nothing played */
 	snprintf(args, sizeof args, "--image '%s'", newer);
 	assert_int_equal(play(args, log), 1);
 	text = slurp(log);
@@ -357,7 +400,7 @@ int main(void)
 		cmocka_unit_test(test_info_names_every_block),
 		cmocka_unit_test(test_info_random_bytes_of_big_image),
 		cmocka_unit_test(test_info_refuses_truncated_and_wrong_version),
-		cmocka_unit_test(test_skinplay_holds_over_a_bad_block),
+		cmocka_unit_test(test_skinplay_rebuilds_and_holds),
 	};
 	return cmocka_run_group_tests(tests, test_scratch_setup, test_scratch_teardown);
 }

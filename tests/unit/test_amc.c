@@ -61,7 +61,9 @@ static void test_any_order_absent_bones_unwrapped(void **state)
 			  "3\r\n";
 	frames fr;
 	skp_error err;
-	assert_int_equal(stream(amc, &fr, &err), 3);
+	/* frame 3 has no bone at all, after frames that had some: the file was
+	 * cut short there, and the frame is dropped (test_cut_last_frame_dropped) */
+	assert_int_equal(stream(amc, &fr, &err), 2);
 	assert_int_equal(fr.number[0], 1);
 	const float d2r = (float)(M_PI / 180.0);
 	assert_true(fr.value[0][0] == 1.0f && fr.value[0][2] == 3.0f); /* translation unscaled */
@@ -72,9 +74,32 @@ static void test_any_order_absent_bones_unwrapped(void **state)
 	/* frame 2: root and b absent -> zero; a's rx is 1251 degrees */
 	assert_true(fr.value[1][0] == 0.0f && fr.value[1][8] == 0.0f);
 	assert_true(fabsf(fr.value[1][7] - 1251 * d2r) < 1e-5f);
-	/* frame 3 is empty: all zero */
-	for (int i = 0; i < s.dof_count; i++)
-		assert_true(fr.value[2][i] == 0.0f);
+}
+
+/* A file that ends inside its last frame (fewer bones than the frame before
+ * it) drops that frame and says which; a last frame as long as the others,
+ * or the only frame, is kept. */
+static void test_cut_last_frame_dropped(void **state)
+{
+	(void)state;
+	load_skel();
+	frames fr;
+	skp_error err;
+	static text_lines tl;
+	static amc_stream as;
+	static amc_frame f;
+	skp_mem_source src;
+	const char *cut = "1\nroot 1 2 3 4 5 6\na 1 2\nb 3\n2\nroot 1 2 3 4 5 6\na 1 2\nb 3\n3\nroot 1 2 3 4 5 6\n";
+	text_lines_init(&tl, skp_mem_reader(&src, cut, strlen(cut)));
+	amc_open(&as, &s, &tl);
+	int n = 0;
+	while (amc_next(&as, &f, &err) > 0)
+		n++;
+	assert_int_equal(n, 2);
+	assert_int_equal(as.cut_frame, 3);
+	assert_int_equal(as.cut_line, 9);
+	assert_int_equal(stream("1\nroot 1 2 3 4 5 6\na 1 2\n2\nroot 1 2 3 4 5 6\na 1 2\n", &fr, &err), 2);
+	assert_int_equal(stream("1\na 1 2\n", &fr, &err), 1);
 }
 
 static void test_radians_header(void **state)
@@ -104,6 +129,14 @@ static const bad_case bad[] = {
 	{ "1\nb inf\n", 2, "finite number" },
 	{ "1\nb 1\n2\na 3", 4, "expected 2 value(s), found 1" },
 	{ "1\nroot 1 2 3 4 5 6 7 8 9 0 1 2 3 4 5 6 7 8 9 0 1 2 3 4 5 6 7 8 9 0 1 2 3\n", 2, "SKP_MAX_TOKENS" },
+	/* finite as a double, infinite as the float a frame holds */
+	{ "1\nb 1\n2\nb 1e308\n", 4, "value '1e308' is beyond a float's range" },
+	{ "1\nroot 1 2 3e39 4 5 6\n", 2, "beyond a float's range" },
+	/* a frame number too big for the players: not a bone's name */
+	{ "1\nb 1\n99999999999999999999\n", 3, "frame number '99999999999999999999' out of range" },
+	{ "2147483648\n", 1, "out of range (at most 2147483647)" },
+	/* control characters in a quoted token are escaped */
+	{ "1\nc\x1b[31m 1\n", 2, "unknown bone 'c\\x1b[31m'" },
 };
 
 static void test_broken_inputs(void **state)
@@ -184,6 +217,7 @@ int main(void)
 	const struct CMUnitTest tests[] = {
 		cmocka_unit_test(test_any_order_absent_bones_unwrapped),
 		cmocka_unit_test(test_radians_header),
+		cmocka_unit_test(test_cut_last_frame_dropped),
 		cmocka_unit_test(test_broken_inputs),
 		cmocka_unit_test(test_real_clips),
 		cmocka_unit_test(test_stream_state_is_fixed_size),

@@ -95,6 +95,8 @@ static const bad_case bad[] = {
 	{ ":root\n:bonedata\n  name x\n", 3, "expected 'begin'" },
 	{ ":root\n:bonedata\n begin\n  name a\n  length 1.2.3\n", 5, "expected a number, found '1.2.3'" },
 	{ ":root\n:bonedata\n begin\n  name a\n  length -1\n", 5, "not negative" },
+	{ ":root\n:bonedata\n begin\n  name a\n  direction 0 0 0\n  length 2\n end\n", 7,
+	  "'direction' is 0 0 0 but 'length' is 2" },
 	{ ":root\n:bonedata\n begin\n  name a\n  dof rx rx\n", 5, "listed twice" },
 	{ ":root\n:bonedata\n begin\n  name a\n  limits (0 1)\n", 5, "'limits' before 'dof'" },
 	{ ":root\n:bonedata\n begin\n  name a\n  dof rx ry\n  limits (0 1)\n  end\n", 7, "needs 2 more" },

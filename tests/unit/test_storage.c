@@ -36,6 +36,8 @@ static skp_image im;
 static skp_player pl;
 static amc_frame synth[300];
 
+static int write_file(int parity);
+
 /* A one-triangle body on the tiny arm and a 300-frame clip: 24 frame
  * blocks of 512 bytes, written through storage_file. */
 static int setup(void **state)
@@ -64,9 +66,18 @@ static int setup(void **state)
 		if (skp_clip_range_add(&range, &synth[i], &err) != SKP_OK)
 			return -1;
 	}
+	return write_file(-1);
+}
+
+/* The image file, with parity (group size, 0 the default) or without (-1):
+ * the fault tests want to see each fault, the parity test wants it gone. */
+static int write_file(int parity)
+{
+	skp_error err;
 	if (storage_file_create(&sf, path, BS) < 0)
 		return -1;
 	skp_status rc = skp_image_write_begin(&wr, &sf.bd, 42, &s, &err);
+	wr.parity_group = parity;
 	if (!rc) rc = skp_image_write_bind(&wr, &m, &w, NULL, 0, &err);
 	if (!rc) rc = skp_image_clip_begin(&wr, "synth", 120, &range, &err);
 	for (int i = 0; i < 300 && !rc; i++)
@@ -237,9 +248,13 @@ static void test_fault_short_read(void **state)
 	assert_int_equal(play_all(&bad, why), wr.dir[0].frames_per_block);
 	assert_int_equal(bad, target);
 	assert_string_equal(why, "short read");
-	/* a short read of the header refuses the image */
+	/* a short read of the header: the copy at the end stands in; both
+	 * short, the image is refused naming block 0 */
 	skp_error err;
 	assert_int_equal(storage_faulty_short(&fy, 0, BS - 1), 0);
+	assert_int_equal(skp_image_open(&im, &fy.bd, &err), SKP_OK);
+	assert_true(im.header_from_copy);
+	assert_int_equal(storage_faulty_short(&fy, wr.hdr.copy_block, BS - 1), 0);
 	assert_int_equal(skp_image_open(&im, &fy.bd, &err), SKP_ERR_CORRUPT);
 	assert_int_equal(err.block, 0);
 	assert_non_null(strstr(err.msg, "short read"));
@@ -263,10 +278,11 @@ static void test_fault_io_error(void **state)
 	assert_int_equal(bad, last);
 	assert_string_equal(why, "I/O error");
 	/* an I/O error in the skeleton section refuses loading it, naming the block */
+	static skel loaded;
 	skp_error err;
 	assert_int_equal(storage_faulty_eio(&fy, 1), 0);
 	assert_int_equal(skp_image_open(&im, &fy.bd, &err), SKP_OK);
-	assert_int_equal(skp_image_load_skel(&im, &s, &err), SKP_ERR_IO);
+	assert_int_equal(skp_image_load_skel(&im, &loaded, &err), SKP_ERR_IO);
 	assert_int_equal(err.block, 1);
 	storage_file_close(&sf);
 }
@@ -287,6 +303,29 @@ static void test_fault_slow_reads(void **state)
 	storage_file_close(&sf);
 }
 
+/* With parity the same faults lose nothing: each block is rebuilt. */
+static void test_faults_rebuilt_with_parity(void **state)
+{
+	(void)state;
+	long bad;
+	char why[200];
+	assert_int_equal(write_file(4), 0); /* 19 data blocks: 5 groups */
+	open_faulty();
+	uint32_t first = wr.dir[0].frames_first;
+	assert_int_equal(storage_faulty_flip(&fy, first + 5, 8 * 100 + 3), 0);
+	assert_int_equal(storage_faulty_short(&fy, first + 6, 100), 0); /* consecutive: other groups */
+	assert_int_equal(storage_faulty_eio(&fy, first + 7), 0);
+	assert_int_equal(play_all(&bad, why), 0);
+	assert_int_equal(im.rebuilt, 3);
+	/* the header too, through the copy */
+	skp_error err;
+	assert_int_equal(storage_faulty_eio(&fy, 0), 0);
+	assert_int_equal(skp_image_open(&im, &fy.bd, &err), SKP_OK);
+	assert_true(im.header_from_copy);
+	storage_file_close(&sf);
+	assert_int_equal(write_file(-1), 0);
+}
+
 int main(void)
 {
 	const struct CMUnitTest tests[] = {
@@ -297,6 +336,7 @@ int main(void)
 		cmocka_unit_test(test_fault_short_read),
 		cmocka_unit_test(test_fault_io_error),
 		cmocka_unit_test(test_fault_slow_reads),
+		cmocka_unit_test(test_faults_rebuilt_with_parity),
 	};
 	return cmocka_run_group_tests(tests, setup, teardown);
 }

@@ -1,0 +1,66 @@
+/* What skinplay checks before it plays an image, in one place so that
+ * skintool info runs the very same checks: the header and directory (at
+ * open), the skeleton, the bound body (weights, the fixed-point envelope of
+ * positions and normals), and each clip (frames, quantisation) - a clip
+ * that fails is skipped, not the image. And the image's log lines: each
+ * block rebuilt or lost is logged once, the rest counted. */
+#include <stdio.h>
+#include <string.h>
+
+#include "cli_show.h"
+#include "fk.h"
+
+int show_accept_body(show_image *img, bound_body *body, skp_error *err)
+{
+	static float values[SKP_MAX_DOF];
+	long number;
+	if (skp_image_load_skel(&img->im, &body->skel, err) != SKP_OK ||
+	    skp_image_load_bind(&img->im, &body->skel, &body->mesh, &body->weights, values, &number, err) != SKP_OK)
+		return -1;
+	fk_pose(&body->skel, number < 0 ? NULL : values, &body->pose);
+	memcpy(body->pose_value, values, sizeof body->pose_value);
+	body->pose_frame = number;
+	body->fitted = 0;
+	body->automatic = 0;
+	return 0;
+}
+
+int show_accept_clip(show_image *img, int clip, skp_error *err)
+{
+	static float qmin[SKP_MAX_DOF], qstep[SKP_MAX_DOF];
+	skp_error_clear(err);
+	if (img->im.clip[clip].frame_count == 0)
+		return skp_fail(err, SKP_ERR_CORRUPT, 0, "it has no frames"), -1;
+	return skp_image_load_quant(&img->im, clip, qmin, qstep, err) == SKP_OK ? 0 : -1;
+}
+
+int show_log_once(show_image *img, long block)
+{
+	for (int i = 0; i < img->logged_count; i++)
+		if (img->logged[i] == block)
+			return 0;
+	if (img->logged_count < SHOW_MAX_LOGGED) {
+		img->logged[img->logged_count++] = block;
+		return 1;
+	}
+	/* a dying card: past the table, blocks are counted, not listed */
+	if (img->unlisted++ == 0)
+		fprintf(stderr, "image: %s: more than %d damaged blocks: further ones are counted, not listed\n",
+			img->path, SHOW_MAX_LOGGED);
+	return 0;
+}
+
+void show_log_rebuild(void *ctx, uint32_t block)
+{
+	show_image *img = ctx;
+	int kind;
+	unsigned item;
+	skp_block_report r = { .role = SKP_ROLE_DATA };
+	skp_image_block_role(&img->im, block, &kind, &item);
+	r.kind = kind;
+	if (show_log_once(img, (long)block))
+		fprintf(stderr, "image: %s: block %lu rebuilt from parity (%s, parity group %lu)\n", img->path,
+			(unsigned long)block, block == 0 && img->im.header_from_copy ? "header, read from its copy"
+										 : skp_block_report_what(&r),
+			(unsigned long)skp_image_group(&img->im.hdr, block));
+}

@@ -1,0 +1,34 @@
+#include "cli_image_out.h"
+
+#include <stdio.h>
+#include <string.h>
+
+int cli_image_out_open(cli_image_out *o, const char *path, uint32_t block_size)
+{
+	int rc = atomic_file_open(&o->af, path);
+	if (rc == 0 && (rc = storage_file_use_fd(&o->sf, o->af.fd, block_size)) < 0)
+		atomic_file_abort(&o->af);
+	if (rc < 0) {
+		fprintf(stderr, "%s: cannot create: %s\n", path, strerror(-rc));
+		return -1;
+	}
+	return 0;
+}
+
+int cli_image_out_commit(cli_image_out *o)
+{
+	int rc = atomic_file_commit(&o->af);
+	if (rc < 0) {
+		fprintf(stderr, "%s: cannot write: %s\n", o->af.path, strerror(-rc));
+		cli_image_out_abort(o);
+		return -1;
+	}
+	storage_file_close(&o->sf);
+	return 0;
+}
+
+void cli_image_out_abort(cli_image_out *o)
+{
+	atomic_file_abort(&o->af);
+	storage_file_close(&o->sf);
+}

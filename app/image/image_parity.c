@@ -1,0 +1,93 @@
+/* XOR parity over interleaved groups of blocks (image_format.h, version 2):
+ * rebuilding a data block at read time, and computing the parity blocks when
+ * an image is written or repaired. Fixed memory: the caller's block buffers. */
+#include "image_parity.h"
+
+#include <string.h>
+
+#include "image_read.h"
+
+static void xor_into(uint8_t *acc, const uint8_t *b, uint32_t n)
+{
+	for (uint32_t i = 0; i < n; i++)
+		acc[i] ^= b[i];
+}
+
+skp_block_state skp_image_rebuild(skp_image *im, uint32_t block, int kind, unsigned item, uint8_t *buf)
+{
+	const skp_image_header *h = &im->hdr;
+	uint32_t p = h->parity_blocks, bs = h->block_size;
+	if (p == 0 || block >= h->data_blocks)
+		return SKP_BLOCK_CRC;
+	uint32_t g = block % p;
+	skp_block_state st = skp_image_read_raw(im, h->data_blocks + g, buf);
+	for (uint32_t b = g; b < h->data_blocks && st == SKP_BLOCK_OK; b += p) {
+		if (b == block)
+			continue;
+		st = skp_image_read_raw(im, b, im->scratch);
+		xor_into(buf, im->scratch, bs);
+	}
+	return st != SKP_BLOCK_OK ? st : skp_image_frame_check(im, block, kind, item, buf);
+}
+
+uint32_t skp_image_block_size_hint_tail(const uint8_t *tail, uint32_t n)
+{
+	skp_image_header h;
+	if (n < SKP_IMAGE_TAIL ||
+	    !skp_image_header_get(tail + n - SKP_IMAGE_TAIL, SKP_IMAGE_HEADER_SIZE, &h) || h.version < 2)
+		return 0;
+	uint32_t bs = h.block_size;
+	return bs >= SKP_IMAGE_MIN_BLOCK && bs <= SKP_IMAGE_BLOCK_SIZE && bs % 16 == 0 ? bs : 0;
+}
+
+uint32_t skp_parity_blocks(uint32_t data_blocks, uint32_t group)
+{
+	if (data_blocks == 0)
+		return 0;
+	if (group == 0) {
+		/* the default: groups of 8, larger when that is more than 15% */
+		group = SKP_IMAGE_DEFAULT_GROUP;
+		while (group < data_blocks &&
+		       (uint64_t)((data_blocks + group - 1) / group + 1) * 100 > (uint64_t)data_blocks * 15)
+			group++;
+	}
+	return (data_blocks + group - 1) / group;
+}
+
+skp_status skp_parity_write(const skp_blockdev *dev, const skp_image_header *h, const uint8_t *block0,
+			    uint8_t *acc, uint8_t *tmp, skp_error *err)
+{
+	uint32_t bs = h->block_size, p = h->parity_blocks;
+	for (uint32_t g = 0; g < p; g++) {
+		memset(acc, 0, bs);
+		for (uint32_t b = g; b < h->data_blocks; b += p) {
+			const uint8_t *src = b == 0 && block0 ? block0 : tmp;
+			if (src == tmp && dev->read(dev->ctx, b, tmp) != (int)bs) {
+				skp_fail(err, SKP_ERR_IO, 0, "cannot read block %lu back for its parity", (unsigned long)b);
+				if (err)
+					err->block = (long)b;
+				return SKP_ERR_IO;
+			}
+			xor_into(acc, src, bs);
+		}
+		if (dev->write(dev->ctx, h->data_blocks + g, acc) < 0) {
+			skp_fail(err, SKP_ERR_IO, 0, "cannot write parity block %lu", (unsigned long)(h->data_blocks + g));
+			if (err)
+				err->block = (long)(h->data_blocks + g);
+			return SKP_ERR_IO;
+		}
+	}
+	return SKP_OK;
+}
+
+void skp_header_copy_frame(uint8_t *buf, const skp_image_header *h)
+{
+	uint32_t bs = h->block_size;
+	memset(buf, 0, bs);
+	le_put32(buf, skp_image_tag(h->sequence));
+	le_put32(buf + 4, h->copy_block);
+	buf[8] = SKP_KIND_HEADER;
+	le_put16(buf + 10, 1);
+	skp_image_header_put(buf + bs - SKP_IMAGE_BLOCK_CRC - SKP_IMAGE_HEADER_SIZE, h);
+	skp_block_seal(buf, bs);
+}

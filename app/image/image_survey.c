@@ -1,0 +1,98 @@
+#include "image_survey.h"
+
+#include <string.h>
+
+void skp_image_block_role(const skp_image *im, uint32_t b, int *kind, unsigned *item)
+{
+	static const int sec_kind[] = { SKP_KIND_SKELETON, SKP_KIND_BIND, SKP_KIND_DIRECTORY };
+	const skp_image_header *h = &im->hdr;
+	*item = 0;
+	*kind = b == 0 ? SKP_KIND_HEADER : 0;
+	for (int i = 0; i < 3; i++)
+		if (b >= h->sec[i].first && b - h->sec[i].first < h->sec[i].count)
+			*kind = sec_kind[i];
+	for (int c = 0; c < im->clip_count; c++) {
+		const skp_image_clip *cl = &im->clip[c];
+		if (b >= cl->quant_first && b - cl->quant_first < cl->quant_blocks)
+			*kind = SKP_KIND_QUANT, *item = (unsigned)c;
+		if (b >= cl->frames_first && b - cl->frames_first < cl->frame_blocks)
+			*kind = SKP_KIND_FRAMES, *item = (unsigned)c;
+	}
+}
+
+static void survey_data(skp_image *im, uint32_t b, skp_block_report *r, uint8_t *buf)
+{
+	r->role = SKP_ROLE_DATA;
+	skp_image_block_role(im, b, &r->kind, &r->item);
+	r->group = skp_image_group(&im->hdr, b);
+	r->state = skp_image_check_block(im, b, r->kind, r->item, buf);
+	r->repairable = r->state != SKP_BLOCK_OK &&
+			skp_image_rebuild(im, b, r->kind, r->item, buf) == SKP_BLOCK_OK;
+}
+
+/* The parity block XORed with its group's data blocks is all zeros when it
+ * matches them; a bad data block makes the answer unknown. */
+static void survey_parity(skp_image *im, uint32_t b, skp_block_report *r, uint8_t *buf)
+{
+	const skp_image_header *h = &im->hdr;
+	r->role = SKP_ROLE_PARITY;
+	r->group = b - h->data_blocks;
+	r->state = skp_image_read_raw(im, b, buf);
+	int data_good = 1;
+	for (uint32_t d = r->group; d < h->data_blocks; d += h->parity_blocks) {
+		int kind;
+		unsigned item;
+		skp_image_block_role(im, d, &kind, &item);
+		if (skp_image_check_block(im, d, kind, item, im->scratch) != SKP_BLOCK_OK) {
+			data_good = 0;
+			continue;
+		}
+		for (uint32_t i = 0; i < h->block_size; i++)
+			buf[i] ^= im->scratch[i];
+	}
+	r->checked = data_good;
+	if (r->state == SKP_BLOCK_OK && data_good)
+		for (uint32_t i = 0; i < h->block_size; i++)
+			if (buf[i]) {
+				r->state = SKP_BLOCK_CRC;
+				break;
+			}
+	r->repairable = r->state != SKP_BLOCK_OK && data_good;
+}
+
+static void survey_copy(skp_image *im, uint32_t b, skp_block_report *r, uint8_t *buf)
+{
+	r->role = SKP_ROLE_COPY;
+	r->kind = SKP_KIND_HEADER;
+	r->item = 1;
+	r->state = skp_image_check_block(im, b, SKP_KIND_HEADER, 1, buf);
+	uint8_t want[SKP_IMAGE_HEADER_SIZE];
+	skp_image_header_put(want, &im->hdr);
+	if (r->state == SKP_BLOCK_OK && memcmp(buf + im->hdr.block_size - SKP_IMAGE_TAIL, want, sizeof want))
+		r->state = SKP_BLOCK_MISPLACED;
+	r->repairable = r->state != SKP_BLOCK_OK;
+}
+
+void skp_image_survey(skp_image *im, uint32_t b, skp_block_report *r, uint8_t *buf)
+{
+	const skp_image_header *h = &im->hdr;
+	memset(r, 0, sizeof *r);
+	r->checked = 1;
+	if (b < h->data_blocks)
+		survey_data(im, b, r, buf);
+	else if (b < h->data_blocks + h->parity_blocks)
+		survey_parity(im, b, r, buf);
+	else
+		survey_copy(im, b, r, buf);
+}
+
+const char *skp_block_report_what(const skp_block_report *r)
+{
+	static const char *const kinds[] = { "data", "header", "skeleton", "bind", "clip directory",
+					     "clip quantisation", "clip frames" };
+	if (r->role == SKP_ROLE_PARITY)
+		return "parity";
+	if (r->role == SKP_ROLE_COPY)
+		return "header copy";
+	return r->kind >= 0 && r->kind <= SKP_KIND_FRAMES ? kinds[r->kind] : "data";
+}
