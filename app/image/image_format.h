@@ -86,7 +86,8 @@
  *     str name, i32 id, i16 parent (-1 root), f32 direction[3], f32 length,
  *     f32 axis_angle[3], u8 axis_order[3], u8 channel_count,
  *     u8 channel[channel_count] (skel_channel), u8 has_limits,
- *     f32 limit[channel_count][2], u16 dof_offset, f32 axis_rot[4] (w x y z)
+ *     f32 limit[channel_count][2], u16 dof_offset, f32 axis_rot[4] (w x y z),
+ *     f32 offset[3] (version 2; a BVH joint's head off its parent's tip)
  *
  * BIND (kind 3): the body as bound (after --fit), and its bind pose:
  *

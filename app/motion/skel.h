@@ -1,5 +1,6 @@
-/* The skeleton layer: an Acclaim ASF skeleton in fixed arrays. Bone 0 is the
- * root; bones 1..count-1 follow the ASF :bonedata order. */
+/* The skeleton layer: an Acclaim ASF skeleton in fixed arrays, which a BVH
+ * hierarchy maps onto one joint per bone (bvh.h). Bone 0 is the root;
+ * bones 1..count-1 follow the file's order. */
 #ifndef SKEL_H
 #define SKEL_H
 
@@ -21,6 +22,8 @@ typedef struct skel_bone {
 	int parent;                     /* bone index, -1 for the root */
 	vec3 direction;                 /* unit vector in world space at rest */
 	float length;
+	vec3 offset;                    /* head - parent's tip at rest, world space (BVH: a
+	                                 * sibling joint off its parent's segment; ASF: 0) */
 	vec3 axis_angle;                /* `axis a b c` (root: orientation), ASF angle units */
 	uint8_t axis_order[3];          /* rotation axes (0 x,1 y,2 z), first applied first */
 	uint8_t channel[SKEL_MAX_CHANNELS]; /* dof (root: order) as skel_channel */
