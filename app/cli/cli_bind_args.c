@@ -83,6 +83,7 @@ static int load_pose(const bind_args *a, bound_body *body)
 	static amc_frame f;
 
 	body->pose_frame = -1;
+	body->arms_raised = 0;
 	memset(body->pose_value, 0, sizeof body->pose_value);
 	if (!a->pose_path) {
 		fk_pose(&body->skel, NULL, &body->pose);
@@ -131,8 +132,8 @@ static int auto_weights(const bind_args *a, int generated, const char *obj, boun
 	return 0;
 }
 
-/* No mesh given: the generated body around the rest pose, which is then
- * also the bind pose. */
+/* No mesh given: the generated body around the rest pose with the arms
+ * out, which is then also the bind pose. */
 static int generate_body(const bind_args *a, const char *asf, bound_body *body)
 {
 	manq_work *work = &cli_scratch_area()->manq;
@@ -145,7 +146,15 @@ static int generate_body(const bind_args *a, const char *asf, bound_body *body)
 		fprintf(stderr, "%s: generated body: %s\n", asf, err.msg);
 		return -1;
 	}
+	memcpy(body->pose_value, work->pose_value, sizeof body->pose_value);
+	body->pose = work->rest;
+	body->arms_raised = work->arms_raised;
 	return 0;
+}
+
+const float *bound_pose_values(const bound_body *body)
+{
+	return body->pose_frame >= 0 || body->arms_raised ? body->pose_value : NULL;
 }
 
 int bind_args_load(const bind_args *a, const char *asf, const char *obj, bound_body *body)

@@ -43,8 +43,9 @@ int bind_args_parse(bind_args *a, int argc, char **argv, int *i);
 typedef struct bound_body {
 	skel skel;
 	skel_pose pose;             /* the bind pose */
-	long pose_frame;            /* frame bound in, -1 for the ASF rest pose */
+	long pose_frame;            /* frame bound in, -1 for the rest pose or a derived one */
 	float pose_value[SKP_MAX_DOF]; /* its channel values (all 0 for the rest pose) */
+	int arms_raised;            /* > 0: derived from the rest pose by skel_tpose */
 	mesh mesh;                  /* fitted when --fit */
 	int fitted;
 	bind_fit_result fit;
@@ -59,8 +60,12 @@ typedef struct bound_body {
 
 /* Loads skeleton asf, mesh obj (group), the bind pose, fits the mesh when
  * asked, then computes the weights (default bind_params) or reads them.
- * obj NULL: the generated body (skintool mannequin) in the rest pose.
+ * obj NULL: the generated body (skintool mannequin) in the rest pose with
+ * its arms out (skel_tpose.h), which is then the bind pose.
  * Returns 0, or -1 after reporting the error on stderr. */
 int bind_args_load(const bind_args *a, const char *asf, const char *obj, bound_body *body);
+
+/* The bind pose's values, or NULL when it is the rest pose. */
+const float *bound_pose_values(const bound_body *body);
 
 #endif

@@ -91,9 +91,10 @@
  *
  * BIND (kind 3): the body as bound (after --fit), and its bind pose:
  *
- *     u32 vertices V, u32 triangles T, u8 bind pose (0 the ASF rest pose,
- *     1 a frame), i32 its frame number, f32 values[dof count] (only when 1;
- *     as amc_frame.value), f32 position[V][3], f32 normal[V][3],
+ *     u32 vertices V, u32 triangles T, u8 bind pose (0 the rest pose,
+ *     1 a frame or a pose derived from the rest pose: the generated body's
+ *     arms raised), i32 its frame number (-1 when derived), f32 values[dof
+ *     count] (only when 1; as amc_frame.value), f32 position[V][3], f32 normal[V][3],
  *     u32 triangle[T][3], then per vertex u8 influence count (1..4),
  *     u16 bone[4], u16 weight[4]: weight / 65535, the used ones summing to
  *     exactly 65535 (largest remainder), so |error| <= 1/65535 per weight

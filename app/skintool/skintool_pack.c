@@ -194,15 +194,12 @@ static int pack_clip(skp_image_writer *w, const char *path, double fps)
 static int write_image(const pack_args *p, const bound_body *body, storage_file *sf)
 {
 	static skp_image_writer w;
-	static amc_frame pose;
 	skp_error err;
-	if (p->bind.pose_path && cli_read_frame(p->bind.pose_path, &body->skel, p->bind.pose_frame, &pose) < 0)
-		return -1;
 	skp_status rc = skp_image_write_begin(&w, &sf->bd, (uint64_t)p->sequence, &body->skel, &err);
 	w.parity_group = p->parity;
 	if (rc != SKP_OK ||
-	    skp_image_write_bind(&w, &body->mesh, &body->weights, p->bind.pose_path ? pose.value : NULL,
-				 pose.number, &err) != SKP_OK) {
+	    skp_image_write_bind(&w, &body->mesh, &body->weights, bound_pose_values(body),
+				 body->pose_frame, &err) != SKP_OK) {
 		cli_error(p->out, &err);
 		return -1;
 	}
