@@ -60,6 +60,8 @@ static skp_status expect(bvh_state *st, const char *word)
 {
 	skp_status rc;
 	const char *t = next_tok(st, &rc);
+	if (!t && rc == SKP_ERR_SYNTAX)
+		return skp_syntax(st->err, line_of(st), "unexpected end of file: expected '%s'", word);
 	if (!t)
 		return rc;
 	return tok_ieq(t, word) ? SKP_OK : skp_syntax(st->err, line_of(st), "expected '%s', found '%s'", word, t);
@@ -102,8 +104,8 @@ static skp_status read_channels(bvh_state *st, bvh_joint *j)
 	skp_status rc = number(st, "CHANNELS", &n);
 	if (rc)
 		return rc;
-	if (n != 0 && n != 3 && n != 6)
-		return skp_syntax(st->err, line_of(st), "CHANNELS: expected 0, 3 or 6, found %g", n);
+	if (!(n >= 0 && n <= 6 && n == floor(n)))
+		return skp_syntax(st->err, line_of(st), "CHANNELS: expected a count from 0 to 6, found %g", n);
 	j->nch = (uint8_t)n;
 	unsigned seen = 0;
 	for (int i = 0; i < j->nch; i++) {
@@ -175,6 +177,10 @@ static skp_status read_joint(bvh_state *st, int parent, int depth)
 	if (strlen(name) >= SKP_MAX_NAME)
 		return skp_fail(st->err, SKP_ERR_LIMIT, line_of(st), "joint name '%s' longer than %d (board limit SKP_MAX_NAME)",
 				name, SKP_MAX_NAME - 1);
+	for (const char *c = name; *c; c++)
+		if ((unsigned char)*c < 0x20 || *c == 0x7f)
+			return skp_syntax(st->err, line_of(st), "joint name '%s': expected letters, digits or "
+					  "punctuation, found a control character", name);
 	if (skel_find(st->s, name) >= 0 && st->count > 0)
 		return skp_syntax(st->err, line_of(st), "joint name '%s' used twice", name);
 	int i = st->count++;

@@ -10,7 +10,7 @@
  *     (skel_bone.offset), so siblings may branch anywhere;
  *   - rotation channels, listed in any order, are applied as BVH applies
  *     them (Z X Y: the matrix Rz Rx Ry, Y first), in degrees;
- *   - position channels (the root's, or any joint's: 3 or 6 channels) give
+ *   - position channels (the root's, or any joint's: up to 6 channels) give
  *     the joint's position relative to its parent in place of its OFFSET,
  *     as Blender reads them;
  *   - the root OFFSET is skel.root_position.
