@@ -80,7 +80,7 @@ static skp_status number(bvh_state *st, const char *what, double *v)
 
 static skp_status read_vec3(bvh_state *st, vec3 *v)
 {
-	double x, y, z;
+	double x = 0, y = 0, z = 0;
 	skp_status rc = number(st, "OFFSET", &x);
 	if (!rc) rc = number(st, "OFFSET", &y);
 	if (!rc) rc = number(st, "OFFSET", &z);
@@ -196,7 +196,7 @@ static skp_status read_joint(bvh_state *st, int parent, int depth)
 
 static skp_status read_motion_header(bvh_state *st)
 {
-	double frames, dt;
+	double frames = 0, dt = 0;
 	skp_status rc = expect(st, "MOTION");
 	if (!rc) rc = expect(st, "Frames:");
 	if (!rc) rc = number(st, "Frames:", &frames);
@@ -209,6 +209,8 @@ static skp_status read_motion_header(bvh_state *st)
 		rc = skp_syntax(st->err, line_of(st), "Frame Time: expected seconds per frame, found %g", dt);
 	if (!rc && st->itok != st->ntok)
 		rc = skp_syntax(st->err, line_of(st), "unexpected '%s' after Frame Time", st->tok[st->itok]);
+	if (rc)
+		return rc;
 	st->lay->frames = (long)frames;
 	st->lay->frame_time = dt;
 	return rc;
