@@ -37,8 +37,8 @@ typedef struct skel_bone {
 typedef struct skel {
 	char name[SKP_MAX_NAME];
 	char version[16];
-	float length_scale;             /* :units length (recorded, not applied) */
-	float mass_scale;               /* :units mass */
+	float length_scale;             /* :units length L: applied, lengths read are divided by L */
+	float mass_scale;               /* :units mass (recorded: nothing uses masses) */
 	uint8_t angle_in_degrees;       /* :units angle deg (1) or rad (0) */
 	vec3 root_position;             /* :root position */
 	int count;                      /* bones including the root */
@@ -49,6 +49,10 @@ typedef struct skel {
 
 /* Index of the bone with that name ("root" is 0), or -1. */
 int skel_find(const skel *s, const char *name);
+
+/* 1 / :units length: what a length read from the ASF or its AMC is
+ * multiplied by (CMU's 0.45 turns its units into inches). */
+double skel_length_factor(const skel *s);
 
 /* Converts an angle in the skeleton's ASF units to radians. */
 float skel_angle_to_rad(const skel *s, float value);

@@ -69,7 +69,8 @@ void convert_write_asf(FILE *f, const skel *s)
 {
 	const skel_bone *r = &s->bone[0];
 	fprintf(f, "# Acclaim skeleton written by skintool convert\n:version 1.10\n:name %s\n", s->name);
-	fprintf(f, ":units\n  mass 1.0\n  length 1.0\n  angle deg\n");
+	/* lengths were divided by the source's :units length as they were read */
+	fprintf(f, ":units\n  mass %.9g\n  length 1.0\n  angle deg\n", (double)s->mass_scale);
 	fprintf(f, ":root\n");
 	write_channels(f, "order", r, 1);
 	fprintf(f, "   axis %c%c%c\n", 'X' + r->axis_order[0], 'X' + r->axis_order[1], 'X' + r->axis_order[2]);
