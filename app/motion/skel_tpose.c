@@ -80,15 +80,16 @@ static int tpose_step(tpose_solve *t)
 	return 1;
 }
 
-static void raise_arm(tpose_solve *t)
+float skel_aim(const skel *s, int bone, vec3 target, float *values, skel_pose *work)
 {
-	const skel_bone *b = &t->s->bone[t->bone];
-	t->n = 0;
+	tpose_solve t = { s, bone, vec3_normalize(target), values, work, 0, { 0 } };
+	const skel_bone *b = &s->bone[bone];
 	for (int i = 0; i < b->channel_count; i++)
 		if (b->channel[i] <= SKEL_RZ)
-			t->dof[t->n++] = b->dof_offset + i;
-	for (int k = 0; t->n > 0 && k < TPOSE_ITERATIONS && tpose_step(t); k++)
+			t.dof[t.n++] = b->dof_offset + i;
+	for (int k = 0; t.n > 0 && k < TPOSE_ITERATIONS && tpose_step(&t); k++)
 		;
+	return vec3_dot(bone_dir(&t), t.target);
 }
 
 /* Straight out sideways, on the side of the spine the bone starts on. */
@@ -116,8 +117,7 @@ int skel_tpose(const skel *s, float *values, skel_pose *work)
 		float len = vec3_length(axis);
 		if (moved[b] || !roles.arm[b] || !(len > 1e-6f * roles.H) || axis.y / len > -0.5f)
 			continue;
-		tpose_solve t = { s, b, outward(s, &roles, work, b), values, work, 0, { 0 } };
-		raise_arm(&t);
+		skel_aim(s, b, outward(s, &roles, work, b), values, work);
 		moved[b] = 1;
 		raised++;
 	}

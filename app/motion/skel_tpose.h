@@ -15,4 +15,9 @@
  * how many arms it raised: 0 leaves every value 0, the rest pose. */
 int skel_tpose(const skel *s, float *values, skel_pose *work);
 
+/* Turns bone by its own rotation channels (changing only those values)
+ * until it points along target, as near as its channels allow; work
+ * holds the resulting pose. Returns the cosine of the angle left. */
+float skel_aim(const skel *s, int bone, vec3 target, float *values, skel_pose *work);
+
 #endif
