@@ -39,6 +39,7 @@ fuzz-build: $(FUZZ_BIN)
 # Seeds: the repository's own inputs (good and broken) and the regressions.
 FUZZ_SEEDS_asf := tests/data assets tests/data/bad
 FUZZ_SEEDS_amc := tests/data tests/data/bad
+FUZZ_SEEDS_bvh := tests/fuzz/seeds/bvh
 FUZZ_SEEDS_obj := tests/fuzz/seeds/obj
 FUZZ_SEEDS_ini := board/host board/rpi4
 FUZZ_SEEDS_board_config := board/host board/rpi4

@@ -17,9 +17,13 @@ int show_accept_body(show_image *img, bound_body *body, skp_error *err)
 	if (skp_image_load_skel(&img->im, &body->skel, err) != SKP_OK ||
 	    skp_image_load_bind(&img->im, &body->skel, &body->mesh, &body->weights, values, &number, err) != SKP_OK)
 		return -1;
-	fk_pose(&body->skel, number < 0 ? NULL : values, &body->pose);
+	/* values are all 0 for the rest pose; a derived bind pose has number -1 */
+	fk_pose(&body->skel, values, &body->pose);
 	memcpy(body->pose_value, values, sizeof body->pose_value);
 	body->pose_frame = number;
+	body->arms_raised = 0;
+	for (int i = 0; i < body->skel.dof_count; i++)
+		body->arms_raised |= values[i] != 0.0f;
 	body->fitted = 0;
 	body->automatic = 0;
 	return 0;

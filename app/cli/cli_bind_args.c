@@ -5,6 +5,8 @@
 
 #include "cli_common.h"
 #include "cli_mesh_io.h"
+#include "cli_mesh_pick.h"
+#include "cli_mesh_place.h"
 #include "cli_scratch.h"
 #include "cli_weights.h"
 #include "clock.h"
@@ -28,7 +30,8 @@ static int split_pose(bind_args *a, const char *spec)
 		return -1;
 	}
 	memcpy(a->pose_buf, spec, n + 1);
-	a->pose_path = a->pose_buf;
+	a->rest_pose = strcmp(spec, "rest") == 0;
+	a->pose_path = a->rest_pose ? NULL : a->pose_buf;
 	a->pose_frame = -1;
 	char *colon = strrchr(a->pose_buf, ':');
 	if (!colon || colon == a->pose_buf || !colon[1])
@@ -43,8 +46,9 @@ static int split_pose(bind_args *a, const char *spec)
 int bind_args_parse(bind_args *a, int argc, char **argv, int *i)
 {
 	const char *opt = argv[*i], *val;
-	if (strcmp(opt, "--fit") == 0) {
-		a->fit = 1;
+	if (strcmp(opt, "--fit") == 0 || strcmp(opt, "--no-fit") == 0) {
+		a->fit = opt[2] == 'f';
+		a->no_fit = !a->fit;
 		return 1;
 	}
 	if (strcmp(opt, "--balance") == 0) {
@@ -83,6 +87,8 @@ static int load_pose(const bind_args *a, bound_body *body)
 	static amc_frame f;
 
 	body->pose_frame = -1;
+	body->arms_raised = 0;
+	memset(&body->guess, 0, sizeof body->guess);
 	memset(body->pose_value, 0, sizeof body->pose_value);
 	if (!a->pose_path) {
 		fk_pose(&body->skel, NULL, &body->pose);
@@ -93,18 +99,6 @@ static int load_pose(const bind_args *a, bound_body *body)
 	memcpy(body->pose_value, f.value, sizeof body->pose_value);
 	fk_pose(&body->skel, f.value, &body->pose);
 	body->pose_frame = f.number;
-	return 0;
-}
-
-static int fit_mesh(const char *obj, bound_body *body)
-{
-	skp_error err;
-	mesh *m = &body->mesh;
-	if (bind_fit(m->pos, m->vert_count, &body->skel, &body->pose, &body->fit, &err) != SKP_OK) {
-		fprintf(stderr, "%s: --fit: %s\n", obj, err.msg);
-		return -1;
-	}
-	body->fitted = 1;
 	return 0;
 }
 
@@ -131,8 +125,8 @@ static int auto_weights(const bind_args *a, int generated, const char *obj, boun
 	return 0;
 }
 
-/* No mesh given: the generated body around the rest pose, which is then
- * also the bind pose. */
+/* No mesh given: the generated body around the rest pose with the arms
+ * out, which is then also the bind pose. */
 static int generate_body(const bind_args *a, const char *asf, bound_body *body)
 {
 	manq_work *work = &cli_scratch_area()->manq;
@@ -145,7 +139,15 @@ static int generate_body(const bind_args *a, const char *asf, bound_body *body)
 		fprintf(stderr, "%s: generated body: %s\n", asf, err.msg);
 		return -1;
 	}
+	memcpy(body->pose_value, work->pose_value, sizeof body->pose_value);
+	body->pose = work->rest;
+	body->arms_raised = work->arms_raised;
 	return 0;
+}
+
+const float *bound_pose_values(const bound_body *body)
+{
+	return body->pose_frame >= 0 || body->arms_raised || body->guess.turned ? body->pose_value : NULL;
 }
 
 int bind_args_load(const bind_args *a, const char *asf, const char *obj, bound_body *body)
@@ -156,14 +158,14 @@ int bind_args_load(const bind_args *a, const char *asf, const char *obj, bound_b
 		return -1;
 	if (!obj)
 		return generate_body(a, asf, body) < 0 ? -1 : auto_weights(a, 1, asf, body);
-	if (!cli_load_obj(obj, a->group, &body->mesh))
+	if (cli_pick_mesh(obj, a->group, &body->mesh) < 0)
 		return -1;
 	if (body->mesh.vert_count == 0) {
 		fprintf(stderr, "%s: no vertices%s%s\n", obj, a->group ? " in group " : "",
 			a->group ? a->group : "");
 		return -1;
 	}
-	if (a->fit && fit_mesh(obj, body) < 0)
+	if (cli_place_mesh(a, obj, body) < 0)
 		return -1;
 	if (a->weights_path)
 		return cli_load_weights(a->weights_path, &body->skel, body->mesh.vert_count,

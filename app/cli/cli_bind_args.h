@@ -1,9 +1,12 @@
 /* The binding options shared by the skintool commands that need a bound
  * body (bind, skin, metrics, pack):
- *   --group G               keep only the faces of OBJ group/object G
- *   --fit                   scale and move the mesh onto the skeleton (bind_fit.h)
+ *   --group G               keep only the faces of OBJ group/object G (default:
+ *                           cli_mesh_pick.h)
+ *   --fit, --no-fit         scale and move the mesh onto the skeleton (bind_fit.h);
+ *                           default: when their sizes disagree (cli_mesh_place.h)
  *   --bind-pose P.amc[:F]   bind in frame F of P (the number written in the
- *                           file; default its first frame), not the ASF rest pose
+ *                           file; default its first frame), or `rest` for the
+ *                           rest pose; default: the mesh's own (cli_mesh_place.h)
  *   --weights W.csv         read the weights instead of computing them (bind.h)
  *   --balance on|off        volume balancing of computed weights (bind_balance.h);
  *                           default on for the generated body (also as the OBJ
@@ -18,14 +21,16 @@
 #include "bind.h"
 #include "bind_balance.h"
 #include "bind_fit.h"
+#include "bind_pose_guess.h"
 #include "mesh.h"
 
-#define BIND_ARGS_USAGE "[--group G] [--fit] [--bind-pose P.amc[:F]] [--weights IN.csv] [--balance on|off]"
+#define BIND_ARGS_USAGE "[--group G] [--fit|--no-fit] [--bind-pose P.amc[:F]|rest] [--weights IN.csv] [--balance on|off]"
 
 typedef struct bind_args {
 	const char *group;          /* NULL: every face */
-	int fit;
-	const char *pose_path;      /* NULL: ASF rest pose */
+	int fit, no_fit;
+	int rest_pose;              /* --bind-pose rest */
+	const char *pose_path;      /* NULL: the rest pose, or the mesh's own */
 	long pose_frame;            /* -1: the file's first frame */
 	const char *weights_path;   /* NULL: automatic weights */
 	int balance;                /* -1 default, 0 off, 1 on (bind_balance) */
@@ -43,8 +48,10 @@ int bind_args_parse(bind_args *a, int argc, char **argv, int *i);
 typedef struct bound_body {
 	skel skel;
 	skel_pose pose;             /* the bind pose */
-	long pose_frame;            /* frame bound in, -1 for the ASF rest pose */
+	long pose_frame;            /* frame bound in, -1 for the rest pose or a derived one */
 	float pose_value[SKP_MAX_DOF]; /* its channel values (all 0 for the rest pose) */
+	int arms_raised;            /* > 0: derived from the rest pose by skel_tpose */
+	bind_guess_result guess;    /* .turned > 0: the mesh's own pose (bind_pose_guess.h) */
 	mesh mesh;                  /* fitted when --fit */
 	int fitted;
 	bind_fit_result fit;
@@ -59,8 +66,12 @@ typedef struct bound_body {
 
 /* Loads skeleton asf, mesh obj (group), the bind pose, fits the mesh when
  * asked, then computes the weights (default bind_params) or reads them.
- * obj NULL: the generated body (skintool mannequin) in the rest pose.
+ * obj NULL: the generated body (skintool mannequin) in the rest pose with
+ * its arms out (skel_tpose.h), which is then the bind pose.
  * Returns 0, or -1 after reporting the error on stderr. */
 int bind_args_load(const bind_args *a, const char *asf, const char *obj, bound_body *body);
+
+/* The bind pose's values, or NULL when it is the rest pose. */
+const float *bound_pose_values(const bound_body *body);
 
 #endif

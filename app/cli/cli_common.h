@@ -4,6 +4,7 @@
 #define CLI_COMMON_H
 
 #include "amc.h"
+#include "bvh.h"
 #include "file_reader.h"
 #include "skel.h"
 #include "skp_error.h"
@@ -12,16 +13,22 @@
 /* Prints "FILE:LINE: message" (or "FILE: message" without a line). */
 void cli_error(const char *path, const skp_error *err);
 
-/* Loads an ASF; on failure reports and returns -1. */
+/* Loads a skeleton: an ASF, or the HIERARCHY of a BVH (by the name's
+ * .bvh); on failure reports and returns -1 (cli_motion.c). */
 int cli_load_skel(const char *path, skel *out);
 
-/* An AMC opened for streaming against s. */
+/* Motion opened for streaming against s: an AMC, or a BVH whose
+ * HIERARCHY must be s's. */
 typedef struct cli_motion {
 	const char *path;
 	file_reader file;
 	text_lines lines;
+	int is_bvh;
 	amc_stream stream;
-	int warned_cut;         /* the cut-short last frame was reported */
+	bvh_stream bvh;
+	bvh_layout layout;
+	skel bvh_skel;          /* the BVH's own, checked against s */
+	int warned_cut;         /* the cut-short end was reported */
 } cli_motion;
 
 int cli_motion_open(cli_motion *m, const char *path, const skel *s);
@@ -41,6 +48,13 @@ const char *cli_option_value(const char *cmd, const char *opt, int argc, char **
 /* Puts arg into the first of the n slots still NULL; -1 after reporting
  * "CMD: unexpected argument" when every slot is taken. */
 int cli_take_positional(const char *cmd, const char **const *slots, int n, const char *arg);
+
+/* A BVH carries its skeleton: "MOTION.bvh" stands for "SKELETON.asf
+ * MOTION.amc". Given the positional slots as a command filled them, in
+ * order (skeleton, motion, and the slot after the motion or NULL), puts
+ * the BVH in both the skeleton's and the motion's place and moves what the
+ * user gave next into the slot after. */
+void cli_bvh_slots(const char **skeleton, const char **motion, const char **next);
 
 /* The file name of path without its folders. */
 const char *cli_basename(const char *path);

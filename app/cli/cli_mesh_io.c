@@ -8,7 +8,7 @@
 #include "cli_scratch.h"
 #include "file_reader.h"
 
-const obj_work *cli_load_obj(const char *path, const char *group, mesh *out)
+const obj_work *cli_load_obj(const char *path, const char *group, mesh *out, int *group_missing)
 {
 	obj_work *work = &cli_scratch_area()->obj;
 	static file_reader fr;
@@ -16,6 +16,8 @@ const obj_work *cli_load_obj(const char *path, const char *group, mesh *out)
 	obj_options opt = { group, 0, 0 };
 	skp_error err;
 
+	if (group_missing)
+		*group_missing = 0;
 	int rc = file_reader_open(&fr, path);
 	if (rc < 0) {
 		fprintf(stderr, "%s: cannot open: %s\n", path, strerror(-rc));
@@ -26,6 +28,8 @@ const obj_work *cli_load_obj(const char *path, const char *group, mesh *out)
 	file_reader_close(&fr);
 	if (st != SKP_OK) {
 		cli_error(path, &err);
+		if (group_missing)
+			*group_missing = group && st == SKP_ERR_RANGE && work->kept_faces == 0 && err.line == 0;
 		return NULL;
 	}
 	return work;

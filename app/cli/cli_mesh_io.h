@@ -7,10 +7,11 @@
 #include "obj.h"
 
 /* Loads an OBJ, keeping only the faces of group when it is not NULL.
- * Returns the parser's work area (vertex mapping in ->source, counts), or
- * NULL after reporting the error. The work area is the start-up scratch
+ * Returns the parser's work area (vertex mapping in ->source, counts,
+ * groups), or NULL after reporting the error (*group_missing, when not
+ * NULL, then says whether it was that the group has no faces). The work area is the start-up scratch
  * (cli_scratch.h): valid until the next call or the next binding step. */
-const obj_work *cli_load_obj(const char *path, const char *group, mesh *out);
+const obj_work *cli_load_obj(const char *path, const char *group, mesh *out, int *group_missing);
 
 /* Writes a first comment "# WHAT: N vertices, M triangles" (what NULL:
  * "skinplay mesh"), v (9 significant digits), vn and `f a//a b//b c//c`

@@ -8,6 +8,7 @@
 #define CLI_SCRATCH_H
 
 #include "bind_balance.h"
+#include "bind_pose_guess.h"
 #include "mannequin.h"
 #include "obj.h"
 
@@ -15,6 +16,7 @@ typedef union cli_scratch {
 	obj_work obj;
 	manq_work manq;
 	bind_balance_work balance;
+	bind_guess_work guess;
 } cli_scratch;
 
 cli_scratch *cli_scratch_area(void);

@@ -86,13 +86,15 @@
  *     str name, i32 id, i16 parent (-1 root), f32 direction[3], f32 length,
  *     f32 axis_angle[3], u8 axis_order[3], u8 channel_count,
  *     u8 channel[channel_count] (skel_channel), u8 has_limits,
- *     f32 limit[channel_count][2], u16 dof_offset, f32 axis_rot[4] (w x y z)
+ *     f32 limit[channel_count][2], u16 dof_offset, f32 axis_rot[4] (w x y z),
+ *     f32 offset[3] (version 2; a BVH joint's head off its parent's tip)
  *
  * BIND (kind 3): the body as bound (after --fit), and its bind pose:
  *
- *     u32 vertices V, u32 triangles T, u8 bind pose (0 the ASF rest pose,
- *     1 a frame), i32 its frame number, f32 values[dof count] (only when 1;
- *     as amc_frame.value), f32 position[V][3], f32 normal[V][3],
+ *     u32 vertices V, u32 triangles T, u8 bind pose (0 the rest pose,
+ *     1 a frame or a pose derived from the rest pose: the generated body's
+ *     arms raised), i32 its frame number (-1 when derived), f32 values[dof
+ *     count] (only when 1; as amc_frame.value), f32 position[V][3], f32 normal[V][3],
  *     u32 triangle[T][3], then per vertex u8 influence count (1..4),
  *     u16 bone[4], u16 weight[4]: weight / 65535, the used ones summing to
  *     exactly 65535 (largest remainder), so |error| <= 1/65535 per weight

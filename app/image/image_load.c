@@ -20,7 +20,8 @@ static skp_status check_bone(skp_image *im, const skel *s, int i, int *dof, skp_
 	for (int a = 0; a < 3; a++)
 		if (b->axis_order[a] > 2)
 			return sec_bad(im, err, "unknown rotation axis");
-	float sum = b->direction.x + b->direction.y + b->direction.z + b->length + b->axis_angle.x +
+	float sum = b->direction.x + b->direction.y + b->direction.z + b->offset.x + b->offset.y + b->offset.z +
+		    b->length + b->axis_angle.x +
 		    b->axis_angle.y + b->axis_angle.z + b->axis_rot.w + b->axis_rot.x + b->axis_rot.y + b->axis_rot.z;
 	if (!isfinite(sum) || !(b->length >= 0))
 		return sec_bad(im, err, "bone geometry not finite");
@@ -52,6 +53,9 @@ static skp_status get_bone(skp_image *im, skel_bone *b, skp_error *err)
 		rc = sec_floats(im, b->limit[i], 2, err);
 	if (!rc) rc = sec_u16(im, &b->dof_offset, err);
 	if (!rc) rc = sec_floats(im, rot, 4, err);
+	b->offset = vec3_make(0.0f, 0.0f, 0.0f); /* version 1 has none */
+	if (!rc && im->hdr.version >= 2)
+		rc = sec_floats(im, &b->offset.x, 3, err);
 	b->id = (long)(int32_t)id;
 	b->parent = (int16_t)parent;
 	b->axis_rot.w = rot[0];

@@ -95,7 +95,8 @@ skp_status skp_image_load_skel(skp_image *im, skel *s, skp_error *err);
 
 /* The bound mesh (normals included), its weights, and the bind pose as one
  * frame of values (bind_values[SKP_MAX_DOF]; *bind_number -1 and all zero
- * for the ASF rest pose). s is the image's skeleton. */
+ * for the rest pose, -1 and not all zero for a derived pose). s is the
+ * image's skeleton. */
 skp_status skp_image_load_bind(skp_image *im, const skel *s, mesh *m, skin_weights *w,
 			       float *bind_values, long *bind_number, skp_error *err);
 

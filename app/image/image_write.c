@@ -163,7 +163,9 @@ static skp_status put_bone(skp_image_writer *w, const skel_bone *b, skp_error *e
 	for (int i = 0; i < b->channel_count && !rc; i++)
 		rc = put_floats(w, b->limit[i], 2, err);
 	if (!rc) rc = put_u16(w, b->dof_offset, err);
-	return rc ? rc : put_floats(w, rot, 4, err);
+	if (!rc) rc = put_floats(w, rot, 4, err);
+	float off[3] = { b->offset.x, b->offset.y, b->offset.z };
+	return rc ? rc : put_floats(w, off, 3, err);
 }
 
 static skp_status put_skel(skp_image_writer *w, const skel *s, skp_error *err)

@@ -280,7 +280,7 @@ skp_status manq_build(const skel *s, int detail, manq_work *w, mesh *out, skp_er
 	if (detail < MANQ_MIN_DETAIL || detail > MANQ_MAX_DETAIL)
 		return skp_fail(err, SKP_ERR_RANGE, 0, "detail %d is outside %d..%d",
 				detail, MANQ_MIN_DETAIL, MANQ_MAX_DETAIL);
-	fk_pose(s, NULL, &w->rest);
+	w->arms_raised = skel_tpose(s, w->pose_value, &w->rest);
 	skp_status rc = manq_body_from_skel(s, &w->rest, &w->body, err);
 	if (rc)
 		return rc;

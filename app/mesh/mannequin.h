@@ -1,4 +1,5 @@
-/* A generated "mannequin" body around any ASF skeleton in its rest pose:
+/* A generated "mannequin" body around any skeleton, in its rest pose with
+ * the arms out (skel_tpose.h):
  * one implicit field (a smooth union of tapered, partly squashed capsules:
  * torso, neck, head, one per limb bone) polygonised with marching
  * tetrahedra. The result is closed, 2-manifold and outward oriented by
@@ -12,6 +13,7 @@
 #include "fk.h"
 #include "mesh.h"
 #include "skel.h"
+#include "skel_tpose.h"
 #include "skp_error.h"
 
 #define MANQ_MAX_PARTS      (SKP_MAX_BONES + 3)  /* bones + torso, neck, head */
@@ -44,7 +46,9 @@ typedef struct manq_body {
 
 /* Working memory of manq_build (about 2 MB: callers keep it static). */
 typedef struct manq_work {
-	skel_pose rest;
+	float pose_value[SKP_MAX_DOF];  /* the pose built around (skel_tpose): the bind pose */
+	int arms_raised;                /* 0: pose_value is all 0, the rest pose */
+	skel_pose rest;                 /* that pose */
 	manq_body body;
 	float slice[2][MANQ_MAX_SIDE * MANQ_MAX_SIDE];
 	uint32_t edge_key[MANQ_HASH_SIZE];   /* 0 empty, else 1 + grid edge id */
@@ -52,7 +56,8 @@ typedef struct manq_work {
 	uint16_t near[MANQ_MAX_PARTS];       /* parts close to the current row */
 } manq_work;
 
-/* Builds the body in the skeleton's units around its rest pose. detail is
+/* Builds the body in the skeleton's units around its rest pose, with any
+ * hanging arms raised (w->pose_value, w->arms_raised). detail is
  * the number of grid cells across the largest extent (0: the default).
  * Fails on a skeleton without extent, a detail out of range or a body
  * over the board's vertex/triangle limits. */

@@ -1,25 +1,19 @@
-/* Mannequin parts from a skeleton. Bone names differ between exporters
- * (endorphin's "RightHipJoint" is the thigh, CMU's "rhipjoint" the pelvis),
- * so roles come from the rest pose only: the bone with the highest tip is
- * the head and its ancestors the spine; every other branch off the spine is
- * a leg when it reaches the floor, an arm otherwise. Limb thickness follows
+/* Mannequin parts from a skeleton, by the bones' roles in the pose the body
+ * is built around (skel_roles.h). Limb thickness follows
  * the distance to the branch's far end, as a fraction of the body height H:
  * fingertips and toes are thin, shoulders and thighs thick. */
 #include <math.h>
 #include <string.h>
 
 #include "mannequin.h"
+#include "skel_roles.h"
 
 typedef struct body_ctx {
 	const skel *s;
 	const skel_pose *p;
 	manq_body *out;
-	float ymin, ymax, H;
+	skel_roles r;
 	float shoulder_y;
-	int head_bone;
-	vec3 up, side, depth;
-	uint8_t spine[SKP_MAX_BONES];   /* the head bone and its ancestors */
-	uint8_t leg[SKP_MAX_BONES];     /* non-spine bone in a leg branch */
 	float reach[SKP_MAX_BONES];     /* longest path from the tip to a leaf tip */
 } body_ctx;
 
@@ -51,24 +45,6 @@ static float bone_len(const body_ctx *c, int b)
 	return vec3_length(vec3_sub(c->p->tip[b], c->p->head[b]));
 }
 
-/* H scales every radius: the height, or for a skeleton lying flat in its
- * rest pose half its largest extent, so that it still gets a body. */
-static void find_extent(body_ctx *c)
-{
-	vec3 lo = c->p->tip[0], hi = lo;
-	for (int b = 1; b < c->s->count; b++) {
-		vec3 e[2] = { c->p->head[b], c->p->tip[b] };
-		for (int i = 0; i < 2; i++) {
-			lo = vec3_make(fminf(lo.x, e[i].x), fminf(lo.y, e[i].y), fminf(lo.z, e[i].z));
-			hi = vec3_make(fmaxf(hi.x, e[i].x), fmaxf(hi.y, e[i].y), fmaxf(hi.z, e[i].z));
-		}
-	}
-	c->ymin = lo.y;
-	c->ymax = hi.y;
-	vec3 ext = vec3_sub(hi, lo);
-	c->H = fmaxf(ext.y, 0.5f * fmaxf(ext.x, fmaxf(ext.y, ext.z)));
-}
-
 /* Children come after their parents in eval_order: walk it backwards. */
 static void find_reach(body_ctx *c)
 {
@@ -82,64 +58,16 @@ static void find_reach(body_ctx *c)
 	}
 }
 
-static void find_spine(body_ctx *c)
+/* The shoulders are the highest arm joint, kept below the head. */
+static void find_shoulders(body_ctx *c)
 {
-	c->head_bone = 1;
-	for (int b = 2; b < c->s->count; b++)
-		if (c->p->tip[b].y > c->p->tip[c->head_bone].y)
-			c->head_bone = b;
-	memset(c->spine, 0, sizeof c->spine);
-	for (int b = c->head_bone; b > 0; b = c->s->bone[b].parent)
-		c->spine[b] = 1;
-}
-
-static int branch_start(const body_ctx *c, int b)
-{
-	while (c->s->bone[b].parent > 0 && !c->spine[c->s->bone[b].parent])
-		b = c->s->bone[b].parent;
-	return b;
-}
-
-/* A branch is a leg when one of its joints is in the lowest quarter. The
- * shoulders are the highest arm joint, kept below the head. */
-static void find_limbs(body_ctx *c)
-{
-	float low[SKP_MAX_BONES];
-	for (int b = 0; b < c->s->count; b++)
-		low[b] = INFINITY;
-	for (int b = 1; b < c->s->count; b++) {
-		int st = branch_start(c, b);
-		low[st] = fminf(low[st], fminf(c->p->head[b].y, c->p->tip[b].y));
-	}
 	float arm_top = -INFINITY;
-	for (int b = 1; b < c->s->count; b++) {
-		if (c->spine[b])
-			continue;
-		c->leg[b] = low[branch_start(c, b)] < c->ymin + 0.25f * c->H;
-		if (!c->leg[b])
+	for (int b = 1; b < c->s->count; b++)
+		if (c->r.arm[b])
 			arm_top = fmaxf(arm_top, fmaxf(c->p->head[b].y, c->p->tip[b].y));
-	}
-	c->shoulder_y = fminf(arm_top, c->ymax - 0.12f * c->H);
+	c->shoulder_y = fminf(arm_top, c->r.ymax - 0.12f * c->r.H);
 	if (arm_top == -INFINITY)
-		c->shoulder_y = c->ymax - 0.18f * c->H;
-}
-
-/* The body faces along its thinnest horizontal axis. */
-static void find_axes(body_ctx *c)
-{
-	float sx = 0.0f, sz = 0.0f, mx = 0.0f, mz = 0.0f;
-	int n = c->s->count;
-	for (int b = 0; b < n; b++) {
-		mx += c->p->tip[b].x / (float)n;
-		mz += c->p->tip[b].z / (float)n;
-	}
-	for (int b = 0; b < n; b++) {
-		sx += (c->p->tip[b].x - mx) * (c->p->tip[b].x - mx);
-		sz += (c->p->tip[b].z - mz) * (c->p->tip[b].z - mz);
-	}
-	c->up = vec3_make(0.0f, 1.0f, 0.0f);
-	c->depth = sz <= sx ? vec3_make(0.0f, 0.0f, 1.0f) : vec3_make(1.0f, 0.0f, 0.0f);
-	c->side = sz <= sx ? vec3_make(1.0f, 0.0f, 0.0f) : vec3_make(0.0f, 0.0f, 1.0f);
+		c->shoulder_y = c->r.ymax - 0.18f * c->r.H;
 }
 
 static manq_part *add_part(body_ctx *c, vec3 a, vec3 b, float ra, float rb)
@@ -150,10 +78,10 @@ static manq_part *add_part(body_ctx *c, vec3 a, vec3 b, float ra, float rb)
 	q->b = b;
 	q->len = vec3_length(vec3_sub(b, a));
 	q->axis = q->len > 0.0f ? vec3_scale(vec3_sub(b, a), 1.0f / q->len) : q->axis;
-	q->ra = ra * c->H;
-	q->rb = rb * c->H;
+	q->ra = ra * c->r.H;
+	q->rb = rb * c->r.H;
 	q->cap_scale = 1.0f;
-	q->flat = c->up;
+	q->flat = c->r.up;
 	q->flat_scale = 1.0f;
 	return q;
 }
@@ -163,7 +91,7 @@ static manq_part *add_part(body_ctx *c, vec3 a, vec3 b, float ra, float rb)
 static vec3 spine_at(const body_ctx *c, float y)
 {
 	int chain[SKP_MAX_BONES], n = 0;
-	for (int b = c->head_bone; b > 0; b = c->s->bone[b].parent)
+	for (int b = c->r.head_bone; b > 0; b = c->s->bone[b].parent)
 		chain[n++] = b;
 	vec3 prev = c->p->tip[0];
 	if (prev.y >= y)
@@ -182,16 +110,16 @@ static vec3 spine_at(const body_ctx *c, float y)
 /* Wider than deep, with flat ends at the crotch and below the shoulders. */
 static void add_trunk(body_ctx *c)
 {
-	float H = c->H;
+	float H = c->r.H;
 	vec3 chest = spine_at(c, c->shoulder_y - 0.07f * H);
-	vec3 pelvis = spine_at(c, fminf(fmaxf(c->p->tip[0].y, c->ymin + 0.4f * H), chest.y));
+	vec3 pelvis = spine_at(c, fminf(fmaxf(c->p->tip[0].y, c->r.ymin + 0.4f * H), chest.y));
 	manq_part *t = add_part(c, pelvis, chest, 0.095f, 0.10f);
 	t->cap_scale = 0.10f / 0.07f;
-	t->flat = c->depth;
+	t->flat = c->r.depth;
 	t->flat_scale = 1.5f;
 
 	const skel_pose *p = c->p;
-	vec3 skull = p->head[c->head_bone];
+	vec3 skull = p->head[c->r.head_bone];
 	add_part(c, chest, skull.y > chest.y ? skull : chest, 0.032f, 0.028f);
 }
 
@@ -199,15 +127,15 @@ static void add_trunk(body_ctx *c)
 static void add_head(body_ctx *c)
 {
 	const skel_pose *p = c->p;
-	float H = c->H, r = 0.054f;
-	vec3 top = p->tip[c->head_bone];
-	vec3 u = vec3_normalize(vec3_sub(top, p->head[c->head_bone]));
+	float H = c->r.H, r = 0.054f;
+	vec3 top = p->tip[c->r.head_bone];
+	vec3 u = vec3_normalize(vec3_sub(top, p->head[c->r.head_bone]));
 	if (u.y < 0.5f)
-		u = c->up;
+		u = c->r.up;
 	vec3 a = vec3_madd(top, u, -r * H);
 	vec3 b = vec3_madd(top, u, -(0.125f - r) * H);
 	manq_part *h = add_part(c, b, a, r, r);
-	h->flat = c->side;
+	h->flat = c->r.side;
 	h->flat_scale = 0.054f / 0.044f;
 }
 
@@ -215,14 +143,14 @@ static void add_head(body_ctx *c)
  * the T-posed mocap skeletons). */
 static void add_limb(body_ctx *c, int b)
 {
-	float e0 = (bone_len(c, b) + c->reach[b]) / c->H, e1 = c->reach[b] / c->H;
-	const profile_pt *pr = c->leg[b] ? leg_profile : arm_profile;
-	int n = c->leg[b] ? (int)(sizeof leg_profile / sizeof leg_profile[0])
+	float e0 = (bone_len(c, b) + c->reach[b]) / c->r.H, e1 = c->reach[b] / c->r.H;
+	const profile_pt *pr = c->r.leg[b] ? leg_profile : arm_profile;
+	int n = c->r.leg[b] ? (int)(sizeof leg_profile / sizeof leg_profile[0])
 			  : (int)(sizeof arm_profile / sizeof arm_profile[0]);
 	manq_part *q = add_part(c, c->p->head[b], c->p->tip[b], profile(pr, n, e0), profile(pr, n, e1));
-	if (c->leg[b] && e0 <= 0.13f)
+	if (c->r.leg[b] && e0 <= 0.13f)
 		q->flat_scale = 1.25f;
-	else if (!c->leg[b] && e0 <= 0.09f)
+	else if (!c->r.leg[b] && e0 <= 0.09f)
 		q->flat_scale = 1.6f;
 }
 
@@ -271,22 +199,20 @@ skp_status manq_body_from_skel(const skel *s, const skel_pose *rest, manq_body *
 		if (!finite3(rest->head[b]) || !finite3(rest->tip[b]))
 			return skp_fail(err, SKP_ERR_RANGE, 0, "bone '%s' has no finite rest position",
 					s->bone[b].name);
-	find_extent(&c);
-	if (!(c.H > 0.0f))
+	skel_find_roles(s, rest, &c.r);
+	if (!(c.r.H > 0.0f))
 		return skp_fail(err, SKP_ERR_RANGE, 0, "the skeleton has no extent in its rest pose");
 	/* squared distances must not overflow a float */
-	if (!(c.H < 1e15f))
-		return skp_fail(err, SKP_ERR_RANGE, 0, "the skeleton is %g units tall: too large", (double)c.H);
+	if (!(c.r.H < 1e15f))
+		return skp_fail(err, SKP_ERR_RANGE, 0, "the skeleton is %g units tall: too large", (double)c.r.H);
 	find_reach(&c);
-	find_spine(&c);
-	find_limbs(&c);
-	find_axes(&c);
-	out->height = c.H;
-	out->blend = 0.02f * c.H;
+	find_shoulders(&c);
+	out->height = c.r.H;
+	out->blend = 0.02f * c.r.H;
 	add_trunk(&c);
 	add_head(&c);
 	for (int b = 1; b < s->count; b++)
-		if (!c.spine[b])
+		if (!c.r.spine[b])
 			add_limb(&c, b);
 	find_bounds(out);
 	return SKP_OK;

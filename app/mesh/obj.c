@@ -203,6 +203,8 @@ static skp_status face_line(obj_state *st, char **t, int n)
 			return rc;
 	}
 	w->file_faces++;
+	if (w->current_group >= 0)
+		w->group[w->current_group].faces++;
 	if (!face_kept(st))
 		return SKP_OK;
 	w->kept_faces++;
@@ -222,10 +224,34 @@ static int names_match(const obj_state *st, char **t, int n)
 	return 0;
 }
 
+/* The table of names for listing: the first name of a `g` or `o` line
+ * (names too long for the table are cut). */
+static void note_group(obj_work *w, const char *name)
+{
+	for (int i = 0; i < w->group_count; i++)
+		if (strncmp(w->group[i].name, name, SKP_MAX_NAME - 1) == 0) {
+			w->current_group = i;
+			return;
+		}
+	if (w->group_count == OBJ_MAX_GROUPS) {
+		w->group_overflow = 1;
+		w->current_group = -1;
+		return;
+	}
+	obj_group *g = &w->group[w->group_count];
+	size_t len = strlen(name);
+	len = len < SKP_MAX_NAME - 1 ? len : SKP_MAX_NAME - 1;
+	memcpy(g->name, name, len);
+	g->name[len] = '\0';
+	g->faces = 0;
+	w->current_group = w->group_count++;
+}
+
 /* `g a b`: the next faces belong to every group listed; a bare `g` is the
  * default group. `o` starts an object, whose faces are in its name. */
 static skp_status group_line(obj_state *st, char **t, int n)
 {
+	note_group(st->w, n > 1 ? t[1] : "default");
 	if (!st->group)
 		return SKP_OK;
 	if (t[0][0] == 'o') {
@@ -345,6 +371,9 @@ static void init_state(obj_state *st, mesh *out, obj_work *w, const obj_options 
 	w->file_verts = w->file_normals = w->file_texcoords = 0;
 	w->file_faces = w->kept_faces = 0;
 	w->normals_from_file = 1;
+	w->group_count = 0;
+	w->group_overflow = 0;
+	w->current_group = -1;
 	out->vert_count = out->tri_count = 0;
 }
 

@@ -21,6 +21,8 @@
  * the file (not only the kept part) must fit these. */
 #define OBJ_MAX_FILE_VERTS   (2 * SKP_MAX_VERTS)  /* `v` lines in one file */
 #define OBJ_MAX_FILE_NORMALS (2 * SKP_MAX_VERTS)  /* `vn` lines in one file */
+/* Groups and objects (`g`, `o`) whose names and face counts are listed. */
+#define OBJ_MAX_GROUPS       256
 /* A corner takes at least two bytes of a line ("1 "). */
 #define OBJ_MAX_CORNERS      (SKP_MAX_LINE / 2)
 
@@ -35,6 +37,12 @@ typedef struct obj_corner {
 	int32_t vn;         /* 0-based file normal, -1 when absent */
 } obj_corner;
 
+/* A `g` or `o` name and the faces that follow it (until the next one). */
+typedef struct obj_group {
+	char name[SKP_MAX_NAME];
+	long faces;
+} obj_group;
+
 /* Working memory of obj_parse (several MB: callers keep it static). After
  * a successful parse, source and the counts describe the import. */
 typedef struct obj_work {
@@ -48,6 +56,10 @@ typedef struct obj_work {
 	long file_verts, file_normals, file_texcoords;
 	long file_faces, kept_faces;
 	int normals_from_file;              /* 1: every kept corner had a vn */
+	obj_group group[OBJ_MAX_GROUPS];    /* in the file's order, with or without a filter */
+	int group_count;
+	int group_overflow;                 /* more names than OBJ_MAX_GROUPS (not listed) */
+	int current_group;                  /* index of the faces' group, -1 none */
 } obj_work;
 
 /* Parses the OBJ text from tl (initialised by the caller) into out.

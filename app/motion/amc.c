@@ -12,6 +12,7 @@ void amc_open(amc_stream *a, const skel *s, text_lines *tl)
 	a->s = s;
 	a->tl = tl;
 	a->angle_in_degrees = s->angle_in_degrees;
+	a->length_factor = skel_length_factor(s);
 	a->pending_number = -1;
 	a->hint = 1;
 	a->cut_frame = a->cut_line = -1;
@@ -77,6 +78,8 @@ static int bone_line(amc_stream *a, amc_frame *f, char **t, int n, skp_error *er
 		int is_angle = bone->channel[i] <= SKEL_RZ;
 		if (is_angle && a->angle_in_degrees)
 			v *= 3.14159265358979323846 / 180.0;
+		else if (!is_angle)
+			v *= a->length_factor;
 		/* finite as a double, but the frame holds floats */
 		if (fabs(v) > FLT_MAX)
 			return fail(a, err, SKP_ERR_RANGE, "value '%s' is beyond a float's range", t[i + 1], 0);

@@ -19,6 +19,7 @@ typedef struct amc_stream {
 	const skel *s;
 	text_lines *tl;
 	int angle_in_degrees;        /* :DEGREES / :RADIANS, else the ASF's unit */
+	double length_factor;        /* translations and `l` in the ASF's :units length */
 	long pending_number;         /* number line read ahead, or -1 */
 	long pending_line;
 	int at_end;

@@ -135,7 +135,10 @@ static skp_status units_line(asf_state *st, char **t, int n)
 	if (tok_ieq(t[0], "length") || tok_ieq(t[0], "mass")) {
 		skp_status rc = expect_values(st, t, n, 1);
 		float *dst = tok_ieq(t[0], "length") ? &s->length_scale : &s->mass_scale;
-		return rc ? rc : parse_float(st, t[0], t[1], dst);
+		if (!rc) rc = parse_float(st, t[0], t[1], dst);
+		if (!rc && !(*dst > 1e-30f && *dst < 1e30f))
+			rc = skp_syntax(st->err, st->line, "'%s': expected a positive scale, found '%s'", t[0], t[1]);
+		return rc;
 	}
 	return SKP_OK; /* other units (time, ...) are recorded by nobody */
 }
@@ -384,6 +387,23 @@ static skp_status order_bones(asf_state *st)
 	return SKP_OK;
 }
 
+/* Lengths in the file's units divided by :units length: the root position,
+ * bone lengths and the limits of translation and `l` channels (the AMC's
+ * values get the same factor as they are read). */
+static void apply_length_unit(skel *s)
+{
+	double k = skel_length_factor(s);
+	s->root_position = vec3_scale(s->root_position, (float)k);
+	for (int i = 0; i < s->count; i++) {
+		skel_bone *b = &s->bone[i];
+		b->length = (float)(b->length * k);
+		for (int c = 0; c < b->channel_count; c++)
+			if (b->channel[c] >= SKEL_TX)
+				for (int e = 0; e < 2; e++)
+					b->limit[c][e] = (float)(b->limit[c][e] * k);
+	}
+}
+
 static skp_status finish(asf_state *st)
 {
 	skel *s = st->s;
@@ -398,6 +418,7 @@ static skp_status finish(asf_state *st)
 	if (rc)
 		return rc;
 	int dof = 0;
+	apply_length_unit(s);
 	for (int i = 0; i < s->count; i++) {
 		skel_bone *b = &s->bone[i];
 		b->dof_offset = (uint16_t)dof;

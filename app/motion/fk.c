@@ -49,6 +49,8 @@ static void pose_bone(const skel *s, int i, const float *values, skel_pose *out)
 	quat g = quat_normalize(quat_mul(gp, conjugate_by(b->axis_rot, m)));
 	/* a joint translation lives in the bone's local (axis) frame at rest */
 	vec3 head = out->tip[b->parent];
+	if (b->offset.x != 0.0f || b->offset.y != 0.0f || b->offset.z != 0.0f)
+		head = vec3_add(head, quat_rotate(gp, b->offset));
 	if (trans.x != 0.0f || trans.y != 0.0f || trans.z != 0.0f)
 		head = vec3_add(head, quat_rotate(quat_mul(gp, b->axis_rot), trans));
 	out->rot[i] = g;

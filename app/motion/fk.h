@@ -1,7 +1,7 @@
 /* Forward kinematics of an Acclaim skeleton (column vectors):
  *   C = rotation of the bone's axis line, M = the frame's rotations in dof
  *   order (first applied first), G = G_parent * C * M * C^-1,
- *   tip = tip_parent + length * G * direction.
+ *   head = tip_parent + G_parent * offset, tip = head + length * G * direction.
  * Root: position + (TX TY TZ), rotation C_root * R * C_root^-1 with R from
  * the RX RY RZ channels in the `order` sequence. */
 #ifndef FK_H

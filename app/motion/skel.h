@@ -1,5 +1,6 @@
-/* The skeleton layer: an Acclaim ASF skeleton in fixed arrays. Bone 0 is the
- * root; bones 1..count-1 follow the ASF :bonedata order. */
+/* The skeleton layer: an Acclaim ASF skeleton in fixed arrays, which a BVH
+ * hierarchy maps onto one joint per bone (bvh.h). Bone 0 is the root;
+ * bones 1..count-1 follow the file's order. */
 #ifndef SKEL_H
 #define SKEL_H
 
@@ -21,6 +22,8 @@ typedef struct skel_bone {
 	int parent;                     /* bone index, -1 for the root */
 	vec3 direction;                 /* unit vector in world space at rest */
 	float length;
+	vec3 offset;                    /* head - parent's tip at rest, world space (BVH: a
+	                                 * sibling joint off its parent's segment; ASF: 0) */
 	vec3 axis_angle;                /* `axis a b c` (root: orientation), ASF angle units */
 	uint8_t axis_order[3];          /* rotation axes (0 x,1 y,2 z), first applied first */
 	uint8_t channel[SKEL_MAX_CHANNELS]; /* dof (root: order) as skel_channel */
@@ -34,8 +37,8 @@ typedef struct skel_bone {
 typedef struct skel {
 	char name[SKP_MAX_NAME];
 	char version[16];
-	float length_scale;             /* :units length (recorded, not applied) */
-	float mass_scale;               /* :units mass */
+	float length_scale;             /* :units length L: applied, lengths read are divided by L */
+	float mass_scale;               /* :units mass (recorded: nothing uses masses) */
 	uint8_t angle_in_degrees;       /* :units angle deg (1) or rad (0) */
 	vec3 root_position;             /* :root position */
 	int count;                      /* bones including the root */
@@ -46,6 +49,10 @@ typedef struct skel {
 
 /* Index of the bone with that name ("root" is 0), or -1. */
 int skel_find(const skel *s, const char *name);
+
+/* 1 / :units length: what a length read from the ASF or its AMC is
+ * multiplied by (CMU's 0.45 turns its units into inches). */
+double skel_length_factor(const skel *s);
 
 /* Converts an angle in the skeleton's ASF units to radians. */
 float skel_angle_to_rad(const skel *s, float value);

@@ -66,7 +66,7 @@ int kiosk_setup(kiosk *k, play_opts *o, int argc, char **argv)
 		for (int i = 0; i < k->board.slot_count && o->image_count < 4; i++)
 			o->image[o->image_count++] = k->board.slot[i];
 		if (!o->image_count) {
-			fprintf(stderr, "skinplay: give --asf and --amc, --image, or [storage] slots in %s\n", o->board);
+			fprintf(stderr, "skinplay: give --asf and --amc, --bvh, --image, or [storage] slots in %s\n", o->board);
 			return -1;
 		}
 	}

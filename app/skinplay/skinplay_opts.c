@@ -7,7 +7,8 @@
 #include "cli_common.h"
 
 static const char usage_text[] =
-	"usage: skinplay [--image show.skn [--image slot2.skn] [--clip NAME] | --asf A.asf --amc M.amc [--mesh M.obj]\n"
+	"usage: skinplay [--image show.skn [--image slot2.skn] [--clip NAME] | --asf A.asf --amc M.amc | --bvh M.bvh\n"
+	"                [--mesh M.obj]\n"
 	"                [--group G] [--fit] [--bind-pose P.amc[:F]] [--weights W.csv] [--balance on|off]]\n"
 	"                [--algo lbs|dqbs|dqbs-fixed|compare] [--skin cpu|gpu]\n"
 	"                [--platform auto|surfaceless|osmesa|kms|x11] [--device DEV] [--rotation 0|90|180|270]\n"
@@ -55,6 +56,7 @@ static int value_opt(play_opts *o, const char *a, const char *v)
 	int k;
 	if (!strcmp(a, "--asf")) o->asf = v;
 	else if (!strcmp(a, "--amc")) o->amc = v;
+	else if (!strcmp(a, "--bvh")) o->bvh = v;
 	else if (!strcmp(a, "--mesh")) o->mesh = v;
 	else if (!strcmp(a, "--image")) {
 		if (o->image_count >= 4)
@@ -128,15 +130,22 @@ int play_parse(play_opts *o, int argc, char **argv)
 		fprintf(stderr, "skinplay: --sheet collects the frames --out writes: give --out too\n");
 		return -1;
 	}
+	/* a BVH is the skeleton and the motion in one file */
+	if (o->bvh && (o->asf || o->amc)) {
+		fprintf(stderr, "skinplay: --bvh carries its skeleton: give it without --asf and --amc\n");
+		return -1;
+	}
+	if (o->bvh)
+		o->asf = o->amc = o->bvh;
 	if (o->image_count && (o->asf || o->amc || o->mesh || o->bind.group || o->bind.fit || o->bind.pose_path ||
 			       o->bind.weights_path || o->bind.balance >= 0)) {
 		fprintf(stderr, "skinplay: --image carries the skeleton, the bound body and the clips: "
-			"give it without --asf, --amc, --mesh and the bind options\n");
+			"give it without --asf, --amc, --bvh, --mesh and the bind options\n");
 		return -1;
 	}
 	/* with --board the show may come from its [storage] slots (skinplay_kiosk.c) */
 	if (!o->image_count && !o->board && (!o->asf || !o->amc)) {
-		fprintf(stderr, "skinplay: give --asf and --amc\n%s", usage_text);
+		fprintf(stderr, "skinplay: give --asf and --amc, or --bvh\n%s", usage_text);
 		return -1;
 	}
 	return 0;

@@ -7,6 +7,7 @@
 
 typedef struct play_opts {
 	const char *asf, *amc, *mesh;
+	const char *bvh;                /* skeleton and motion in one: sets asf and amc */
 	const char *image[4];    /* --image slots (repeatable): the newest valid plays */
 	int image_count;
 	const char *clip;        /* --clip NAME of an image (default its first) */

@@ -12,7 +12,8 @@ typedef struct command {
 } command;
 
 static const command commands[] = {
-	{ "fk", cmd_fk, "fk SKELETON.asf MOTION.amc [--frame N]    joint positions and rotations as CSV" },
+	{ "fk", cmd_fk, "fk SKELETON.asf MOTION.amc [--frame N] | fk MOTION.bvh [--frame N]    joint positions and rotations as CSV" },
+	{ "convert", cmd_convert, "convert SKELETON.asf MOTION.amc -o OUT.bvh [--fps F] | convert IN.bvh -o OUT.asf    ASF/AMC to BVH and back (OUT.asf also writes OUT.amc)" },
 	{ "bench", cmd_bench, "bench [--verts N] [--threads T]    skinning speed against the memory-bandwidth bound" },
 	{ "bind", cmd_bind, "bind SKELETON.asf MESH.obj [--group G] [--fit] [--bind-pose P.amc[:F]] [--weights IN.csv] [--balance on|off] [--report] -o W.csv    skin weights as CSV (report on stderr)" },
 	{ "mannequin", cmd_mannequin, "mannequin SKELETON.asf -o BODY.obj [--detail N]    closed body mesh around the rest pose" },

@@ -15,8 +15,14 @@
 
 static void report_pose(FILE *to, const bind_args *a, const bound_body *b)
 {
-	if (b->pose_frame < 0)
-		fprintf(to, "bind pose: ASF rest pose\n");
+	if (b->guess.turned)
+		fprintf(to, "bind pose: the mesh's own, found from its shape (%d limb%s turned)\n", b->guess.turned,
+			b->guess.turned == 1 ? "" : "s");
+	else if (b->arms_raised)
+		fprintf(to, "bind pose: the rest pose with %d hanging arm%s raised to point sideways\n",
+			b->arms_raised, b->arms_raised == 1 ? "" : "s");
+	else if (b->pose_frame < 0)
+		fprintf(to, "bind pose: rest pose\n");
 	else
 		fprintf(to, "bind pose: %s frame %ld\n", a->pose_path, b->pose_frame);
 	if (b->fitted)

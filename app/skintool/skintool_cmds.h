@@ -3,6 +3,7 @@
 #define SKINTOOL_CMDS_H
 
 int cmd_fk(int argc, char **argv);
+int cmd_convert(int argc, char **argv);
 int cmd_bench(int argc, char **argv);
 int cmd_bind(int argc, char **argv);
 int cmd_mannequin(int argc, char **argv);

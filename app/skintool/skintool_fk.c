@@ -42,8 +42,9 @@ int cmd_fk(int argc, char **argv)
 			return 1;
 		}
 	}
+	cli_bvh_slots(&asf, &amc, NULL);
 	if (!asf || !amc) {
-		fprintf(stderr, "usage: skintool fk SKELETON.asf MOTION.amc [--frame N]\n");
+		fprintf(stderr, "usage: skintool fk SKELETON.asf MOTION.amc [--frame N] | fk MOTION.bvh [--frame N]\n");
 		return 1;
 	}
 	if (cli_load_skel(asf, &s) < 0 || cli_motion_open(&m, amc, &s) < 0)

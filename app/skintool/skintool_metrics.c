@@ -106,8 +106,9 @@ static int parse_one(metrics_args *a, int argc, char **argv, int *i)
 	return cli_take_positional("skintool metrics", slots, 3, opt);
 }
 
-static int check_args(const metrics_args *a)
+static int check_args(metrics_args *a)
 {
+	cli_bvh_slots(&a->asf, &a->amc, &a->obj);
 	int clip = a->asf || a->amc || a->obj;
 	if (a->scene >= 0 && (clip || !a->have_angle)) {
 		fprintf(stderr, "skintool metrics: --scene takes --angle DEG and no files\n");

@@ -78,7 +78,7 @@ static int pack_value(pack_args *p, const char *opt, const char *v)
 static int pack_parse(pack_args *p, int argc, char **argv)
 {
 	bind_args_init(&p->bind);
-	p->fps = 120.0;
+	p->fps = 0.0;   /* not given: the BVH's rate, else 120 */
 	p->sequence = (long)time(NULL);
 	p->block_size = SKP_IMAGE_DEFAULT_BLOCK;
 	for (int i = 0; i < argc; i++) {
@@ -104,6 +104,12 @@ static int pack_parse(pack_args *p, int argc, char **argv)
 			return -1;
 		}
 	}
+	/* MOTION.bvh [MOTION2.bvh ...]: the first file is the skeleton too */
+	if (p->asf && bvh_is_path(p->asf) && p->amc_count < PACK_MAX_AMC) {
+		memmove(p->amc + 1, p->amc, sizeof p->amc[0] * (size_t)p->amc_count);
+		p->amc[0] = p->asf;
+		p->amc_count++;
+	}
 	if (!p->asf || !p->amc_count || !p->out) {
 		fputs(PACK_USAGE, stderr);
 		return -1;
@@ -121,7 +127,9 @@ static void clip_name(const char *path, char *out, size_t cap)
 		*dot = '\0';
 }
 
-static int clip_range(const char *path, const skel *s, skp_clip_range *range)
+/* Pass 1 over a clip; *rate: the BVH's own frame rate (1 / Frame Time), or
+ * 0 for an AMC, which carries none. */
+static int clip_range(const char *path, const skel *s, skp_clip_range *range, double *rate)
 {
 	static cli_motion m;
 	static amc_frame f;
@@ -130,6 +138,7 @@ static int clip_range(const char *path, const skel *s, skp_clip_range *range)
 	skp_clip_range_init(range, s);
 	if (cli_motion_open(&m, path, s) < 0)
 		return -1;
+	*rate = m.is_bvh ? 1.0 / m.layout.frame_time : 0.0;
 	while ((r = cli_motion_next(&m, &f)) > 0) {
 		if (skp_clip_range_add(range, &f, &err) != SKP_OK) {
 			cli_error(path, &err);
@@ -153,9 +162,13 @@ static int pack_clip(skp_image_writer *w, const char *path, double fps)
 	char name[SKP_MAX_NAME + 16];
 	skp_error err;
 	int r;
-	if (clip_range(path, w->s, &range) < 0)
+	double rate;
+	if (clip_range(path, w->s, &range, &rate) < 0)
 		return -1;
 	clip_name(path, name, sizeof name);
+	/* --fps wins; else a BVH's own rate; else 120 Hz, the CMU rate */
+	if (fps <= 0)
+		fps = rate > 0 ? rate : 120.0;
 	if (skp_image_clip_begin(w, name, (float)fps, &range, &err) != SKP_OK) {
 		cli_error(path, &err);
 		return -1;
@@ -181,15 +194,12 @@ static int pack_clip(skp_image_writer *w, const char *path, double fps)
 static int write_image(const pack_args *p, const bound_body *body, storage_file *sf)
 {
 	static skp_image_writer w;
-	static amc_frame pose;
 	skp_error err;
-	if (p->bind.pose_path && cli_read_frame(p->bind.pose_path, &body->skel, p->bind.pose_frame, &pose) < 0)
-		return -1;
 	skp_status rc = skp_image_write_begin(&w, &sf->bd, (uint64_t)p->sequence, &body->skel, &err);
 	w.parity_group = p->parity;
 	if (rc != SKP_OK ||
-	    skp_image_write_bind(&w, &body->mesh, &body->weights, p->bind.pose_path ? pose.value : NULL,
-				 pose.number, &err) != SKP_OK) {
+	    skp_image_write_bind(&w, &body->mesh, &body->weights, bound_pose_values(body),
+				 body->pose_frame, &err) != SKP_OK) {
 		cli_error(p->out, &err);
 		return -1;
 	}

@@ -63,6 +63,7 @@ static int parse_args(skin_args *a, int argc, char **argv)
 	for (int i = 0; i < argc; i++)
 		if (parse_one(a, argc, argv, &i) < 0)
 			return -1;
+	cli_bvh_slots(&a->asf, &a->amc, &a->obj);
 	if (!a->asf || !a->amc || !a->obj || !a->out || !a->have_frame || a->algo < 0) {
 		fputs(SKIN_USAGE, stderr);
 		return -1;

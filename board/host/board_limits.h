@@ -5,7 +5,7 @@
 
 #define SKP_MAX_BONES      128  /* bones including the root */
 #define SKP_MAX_NAME        48  /* bone / skeleton name, with NUL */
-#define SKP_MAX_LINE      1024  /* longest text line of ASF/AMC/OBJ, bytes */
+#define SKP_MAX_LINE     16384  /* longest text line of ASF/AMC/BVH/OBJ, bytes: a BVH frame is one line */
 #define SKP_MAX_TOKENS      32  /* tokens on one line */
 #define SKP_READ_CHUNK    4096  /* bytes a text reader pulls per callback */
 

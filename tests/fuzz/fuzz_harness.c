@@ -8,12 +8,14 @@
 #include "amc.h"
 #include "asf.h"
 #include "board_config.h"
+#include "bvh.h"
 #include "crc32.h"
 #include "fk.h"
 #include "image_play.h"
 #include "image_read.h"
 #include "ini.h"
 #include "obj.h"
+#include "skel_tpose.h"
 #include "skp_reader.h"
 #include "text_lines.h"
 
@@ -59,6 +61,27 @@ int fuzz_amc(const uint8_t *data, size_t size)
 	amc_open(&as, &sk, &tl);
 	while (amc_next(&as, &frame, &err) == 1)
 		fk_pose(&sk, frame.value, &pose);
+	return 0;
+}
+
+/* The hierarchy, every frame through FK, and the arms-out bind pose the
+ * generated body would use on that skeleton. */
+int fuzz_bvh(const uint8_t *data, size_t size)
+{
+	static skel bs;
+	static bvh_layout lay;
+	static bvh_stream st;
+	static amc_frame frame;
+	static skel_pose pose;
+	static float tpose[SKP_MAX_DOF];
+	skp_mem_source src;
+	text_lines_init(&tl, skp_mem_reader(&src, data, size));
+	if (bvh_parse(&bs, &lay, &tl, &err) != SKP_OK)
+		return 0;
+	skel_tpose(&bs, tpose, &pose);
+	bvh_open(&st, &bs, &lay, &tl);
+	while (bvh_next(&st, &frame, &err) == 1)
+		fk_pose(&bs, frame.value, &pose);
 	return 0;
 }
 
@@ -150,6 +173,7 @@ int fuzz_image(const uint8_t *data, size_t size)
 const fuzz_target fuzz_targets[] = {
 	{ "asf", fuzz_asf },
 	{ "amc", fuzz_amc },
+	{ "bvh", fuzz_bvh },
 	{ "obj", fuzz_obj },
 	{ "ini", fuzz_ini },
 	{ "board_config", fuzz_board_config },

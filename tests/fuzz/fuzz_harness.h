@@ -17,6 +17,7 @@ typedef struct fuzz_target {
 
 int fuzz_asf(const uint8_t *data, size_t size);
 int fuzz_amc(const uint8_t *data, size_t size);
+int fuzz_bvh(const uint8_t *data, size_t size);
 int fuzz_obj(const uint8_t *data, size_t size);
 int fuzz_ini(const uint8_t *data, size_t size);
 int fuzz_board_config(const uint8_t *data, size_t size);

@@ -32,6 +32,7 @@ typedef struct {
 typedef struct {
 	int n;
 	int deg;
+	double per_unit;    /* 1 / :units length: Acclaim lengths are divided by it */
 	double pos[3];
 	rbone b[RMAX];
 } rskel;
@@ -109,6 +110,7 @@ static void load_asf(const char *path, rskel *s)
 	rbone *b = NULL;
 	memset(s, 0, sizeof *s);
 	s->deg = 1;
+	s->per_unit = 1;
 	s->n = 1;
 	strcpy(s->b[0].name, "root");
 	s->b[0].parent = -1;
@@ -127,6 +129,8 @@ static void load_asf(const char *path, rskel *s)
 		}
 		if (!strcmp(sec, ":units") && !strcmp(w[0], "angle"))
 			s->deg = strcmp(w[1], "rad") != 0;
+		if (!strcmp(sec, ":units") && !strcmp(w[0], "length"))
+			s->per_unit = 1.0 / atof(w[1]);
 		if (!strcmp(sec, ":root")) {
 			if (!strcasecmp(w[0], "order")) {
 				s->b[0].nch = n - 1;
@@ -194,12 +198,12 @@ static void pose_bone(const rskel *s, const double v[RMAX][7], int i, rpose *p)
 		if (b->ch[k] < 3)
 			m = mat_mul(rot(b->ch[k], v[i][k] * unit), m);
 		else if (b->ch[k] < 6)
-			t[b->ch[k] - 3] = v[i][k];
+			t[b->ch[k] - 3] = v[i][k] * s->per_unit;
 	}
 	if (i == 0) {
 		p->g[0] = mat_mul(mat_mul(b->c, m), mat_t(b->c));
 		for (int k = 0; k < 3; k++)
-			p->tip[0][k] = s->pos[k] + t[k];
+			p->tip[0][k] = s->pos[k] * s->per_unit + t[k];
 	} else {
 		pose_bone(s, v, b->parent, p);
 		p->g[i] = mat_mul(p->g[b->parent], mat_mul(mat_mul(b->c, m), mat_t(b->c)));
@@ -207,7 +211,7 @@ static void pose_bone(const rskel *s, const double v[RMAX][7], int i, rpose *p)
 			double d = 0;
 			for (int k = 0; k < 3; k++)
 				d += p->g[i].m[r][k] * b->dir[k];
-			p->tip[i][r] = p->tip[b->parent][r] + b->len * d;
+			p->tip[i][r] = p->tip[b->parent][r] + b->len * s->per_unit * d;
 		}
 	}
 	p->done[i] = 1;

@@ -41,3 +41,26 @@ long test_stream_amc(const char *text, size_t len, const skel *s, skp_error *err
 	}
 	return r < 0 ? r : n;
 }
+
+long test_stream_bvh(const char *text, size_t len, skel *s, skp_error *err,
+		     void (*fn)(const amc_frame *f, void *ctx), void *ctx)
+{
+	static text_lines tl;
+	static bvh_layout lay;
+	static bvh_stream b;
+	static amc_frame f;
+	skp_mem_source src;
+	text_lines_init(&tl, skp_mem_reader(&src, text, len));
+	skp_status rc = bvh_parse(s, &lay, &tl, err);
+	if (rc)
+		return -(long)rc;
+	bvh_open(&b, s, &lay, &tl);
+	long n = 0;
+	int r;
+	while ((r = bvh_next(&b, &f, err)) > 0) {
+		if (fn)
+			fn(&f, ctx);
+		n++;
+	}
+	return r < 0 ? r : n;
+}

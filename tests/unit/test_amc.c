@@ -202,14 +202,35 @@ static void test_real_clips(void **state)
 	}
 }
 
+/* :units length 0.5: the root's translations read in the same unit as
+ * the bone lengths, both divided by 0.5. */
+static void test_length_unit_applies_to_translations(void **state)
+{
+	(void)state;
+	const char *scaled = ":units\n length 0.5\n angle deg\n:root\n order TX TY TZ RX RY RZ\n position 0 1 0\n"
+			     ":bonedata\n begin\n name a\n direction 0 1 0\n length 1\n dof l\n end\n"
+			     ":hierarchy\n begin\n root a\n end\n";
+	skp_error err;
+	assert_int_equal(test_parse_asf(scaled, strlen(scaled), &s, &err), SKP_OK);
+	assert_true(fabsf(s.root_position.y - 2.0f) < 1e-6f);
+	assert_true(fabsf(s.bone[1].length - 2.0f) < 1e-6f);
+	frames fr;
+	memset(&fr, 0, sizeof fr);
+	const char *amc = ":DEGREES\n1\nroot 1 2 3 0 0 0\na 0.25\n";
+	assert_int_equal(test_stream_amc(amc, strlen(amc), &s, &err, keep, &fr), 1);
+	assert_true(fabsf(fr.value[0][0] - 2.0f) < 1e-6f && fabsf(fr.value[0][2] - 6.0f) < 1e-6f);
+	assert_true(fabsf(fr.value[0][6] - 0.5f) < 1e-6f);   /* l */
+	assert_true(fabsf(fr.value[0][3]) < 1e-9f);          /* angles untouched */
+}
+
 static void test_stream_state_is_fixed_size(void **state)
 {
 	(void)state;
 	/* The whole streaming state is two fixed structs: no per-frame growth.
-	 * 1 KiB lines, a 4 KiB read chunk and one frame of values. */
+	 * One line (SKP_MAX_LINE), a 4 KiB read chunk and one frame of values. */
 	size_t bytes = sizeof(amc_stream) + sizeof(text_lines) + sizeof(amc_frame);
 	print_message("AMC streaming state: %zu bytes, whatever the clip length\n", bytes);
-	assert_true(bytes < 16 * 1024);
+	assert_true(bytes < SKP_MAX_LINE + 12 * 1024);
 }
 
 int main(void)
@@ -217,6 +238,7 @@ int main(void)
 	const struct CMUnitTest tests[] = {
 		cmocka_unit_test(test_any_order_absent_bones_unwrapped),
 		cmocka_unit_test(test_radians_header),
+		cmocka_unit_test(test_length_unit_applies_to_translations),
 		cmocka_unit_test(test_cut_last_frame_dropped),
 		cmocka_unit_test(test_broken_inputs),
 		cmocka_unit_test(test_real_clips),

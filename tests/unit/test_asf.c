@@ -50,17 +50,19 @@ static void test_unusual_but_valid(void **state)
 	assert_memory_equal(r->channel, want, 6);
 	assert_int_equal(r->axis_order[0], 2);
 	assert_int_equal(r->axis_order[2], 0);
-	assert_true(s.root_position.z == 3.0f);
+	/* :units length 0.01 applied: lengths read are divided by it */
+	assert_true(fabsf(s.root_position.z - 300.0f) < 1e-3f);
 	const skel_bone *a = &s.bone[1];
 	assert_string_equal(a->name, "a");
 	assert_int_equal(a->id, 7);
 	assert_true(fabsf(a->direction.y - 1.0f) < 1e-7f); /* normalised */
+	assert_true(fabsf(a->length - 300.0f) < 1e-3f);
 	assert_int_equal(a->channel_count, 3);
 	assert_int_equal(a->channel[0], SKEL_TZ);
 	assert_int_equal(a->channel[1], SKEL_L);
 	assert_int_equal(a->axis_order[0], 1);
 	assert_true(isinf(a->limit[0][0]) && a->limit[0][0] < 0);
-	assert_true(a->limit[1][1] == 1.5f);
+	assert_true(fabsf(a->limit[1][1] - 150.0f) < 1e-3f); /* l limits: a length, in the length unit */
 	assert_true(a->limit[2][0] < 0 && a->limit[2][0] > -1e-10f);
 	assert_int_equal(a->dof_offset, 6);
 	assert_int_equal(s.bone[2].channel_count, 0);
@@ -92,6 +94,8 @@ static const bad_case bad[] = {
 	{ ":root\n  spin 1\n", 2, "unknown keyword 'spin'" },
 	{ ":root\n  axis XXY\n", 2, "permutation of XYZ" },
 	{ ":units\n  angle grad\n", 2, "expected deg or rad" },
+	{ ":units\n  length 0\n", 2, "'length': expected a positive scale, found '0'" },
+	{ ":units\n  mass -1\n", 2, "'mass': expected a positive scale, found '-1'" },
 	{ ":root\n:bonedata\n  name x\n", 3, "expected 'begin'" },
 	{ ":root\n:bonedata\n begin\n  name a\n  length 1.2.3\n", 5, "expected a number, found '1.2.3'" },
 	{ ":root\n:bonedata\n begin\n  name a\n  length -1\n", 5, "not negative" },

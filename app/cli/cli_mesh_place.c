@@ -1,0 +1,90 @@
+#include "cli_mesh_place.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "cli_mesh_io.h"
+#include "cli_scratch.h"
+#include "skel_tpose.h"
+
+/* Sizes within 3% and places within 3% of the height are left alone. */
+#define PLACE_TOLERANCE 0.03f
+
+static int fit_mesh(const char *obj, bound_body *body)
+{
+	skp_error err;
+	mesh *m = &body->mesh;
+	if (bind_fit(m->pos, m->vert_count, &body->skel, &body->pose, &body->fit, &err) != SKP_OK) {
+		fprintf(stderr, "%s: fit: %s\n", obj, err.msg);
+		return -1;
+	}
+	body->fitted = 1;
+	return 0;
+}
+
+static int auto_fit(const char *obj, bound_body *body)
+{
+	static vec3 as_given[SKP_MAX_VERTS];
+	mesh *m = &body->mesh;
+	skp_error err;
+	memcpy(as_given, m->pos, sizeof m->pos[0] * (size_t)m->vert_count);
+	const bind_fit_result *f = &body->fit;
+	/* a flat skeleton or mesh has nothing to fit to: keep the mesh */
+	if (bind_fit(m->pos, m->vert_count, &body->skel, &body->pose, &body->fit, &err) != SKP_OK ||
+	    (fabsf(f->scale - 1.0f) <= PLACE_TOLERANCE &&
+	     vec3_length(f->offset) <= PLACE_TOLERANCE * f->skel_height)) {
+		memcpy(m->pos, as_given, sizeof m->pos[0] * (size_t)m->vert_count);
+		return 0;
+	}
+	body->fitted = 1;
+	fprintf(stderr, "%s: the mesh is %.4g units tall, the skeleton %.4g: fitted (scale %.4g, then moved by "
+		"%.4g %.4g %.4g); --no-fit keeps it as it is\n", obj, (double)f->mesh_height,
+		(double)f->skel_height, (double)f->scale, (double)f->offset.x, (double)f->offset.y,
+		(double)f->offset.z);
+	return 0;
+}
+
+static void say_guess(const char *obj, const bound_body *body, const bind_guess_result *g)
+{
+	fprintf(stderr, "%s: bound in the mesh's own pose:", obj);
+	for (int i = 0, n = 0; i < g->arm_count; i++) {
+		const bind_guess_arm *a = &g->arm[i];
+		if (a->to_deg != a->from_deg)
+			fprintf(stderr, "%s '%s' from %.0f to %.0f degrees of elevation", n++ ? "," : "",
+				body->skel.bone[a->bone].name, (double)a->from_deg, (double)a->to_deg);
+		if (a->lower_turn_deg != 0.0f)
+			fprintf(stderr, "%s '%s' turned %.0f degrees", n++ ? "," : "",
+				body->skel.bone[a->lower].name, (double)a->lower_turn_deg);
+	}
+	fprintf(stderr, " (--bind-pose FILE:F or --bind-pose rest chooses)\n");
+}
+
+static void set_pose(bound_body *body, const float *values)
+{
+	memcpy(body->pose_value, values, sizeof body->pose_value);
+	fk_pose(&body->skel, body->pose_value, &body->pose);
+}
+
+int cli_place_mesh(const bind_args *a, const char *obj, bound_body *body)
+{
+	int generated = cli_obj_is_generated(obj);
+	if (a->fit ? fit_mesh(obj, body) < 0 : !a->no_fit && !generated && auto_fit(obj, body) < 0)
+		return -1;
+	if (a->pose_path || a->rest_pose)
+		return 0;
+	static float values[SKP_MAX_DOF];
+	bind_guess_work *w = &cli_scratch_area()->guess;
+	if (generated) {
+		body->arms_raised = skel_tpose(&body->skel, values, &w->pose);
+		set_pose(body, values);
+		return 0;
+	}
+	memcpy(values, body->pose_value, sizeof values);
+	bind_guess_pose(&body->skel, &body->mesh, values, w, &body->guess);
+	if (body->guess.turned) {
+		set_pose(body, values);
+		say_guess(obj, body, &body->guess);
+	}
+	return 0;
+}

@@ -1,0 +1,41 @@
+#include "cli_text_out.h"
+
+#include <errno.h>
+#include <string.h>
+#include <unistd.h>
+
+int cli_text_out_open(cli_text_out *o, const char *path)
+{
+	int rc = atomic_file_open(&o->af, path);
+	o->f = NULL;
+	if (rc == 0 && !(o->f = fdopen(o->af.fd, "w"))) {
+		rc = -errno;
+		close(o->af.fd);
+		atomic_file_abort(&o->af);
+	}
+	if (rc < 0) {
+		fprintf(stderr, "%s: cannot create: %s\n", path, strerror(-rc));
+		return -1;
+	}
+	return 0;
+}
+
+int cli_text_out_commit(cli_text_out *o)
+{
+	int rc = fflush(o->f) == 0 && !ferror(o->f) ? 0 : -(errno ? errno : EIO);
+	if (rc == 0)
+		rc = atomic_file_commit(&o->af);
+	if (rc < 0) {
+		fprintf(stderr, "%s: cannot write: %s\n", o->af.path, strerror(-rc));
+		cli_text_out_abort(o);
+		return -1;
+	}
+	fclose(o->f);
+	return 0;
+}
+
+void cli_text_out_abort(cli_text_out *o)
+{
+	atomic_file_abort(&o->af);
+	fclose(o->f);
+}

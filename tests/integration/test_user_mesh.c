@@ -1,0 +1,231 @@
+/* A user's own mesh with no flags, through the real command line: the
+ * MakeHuman base mesh (an A-pose in decimetres, with 138 groups of helper
+ * geometry) binds to the CMU skeleton like the hand-flagged command
+ * (--group body --fit --bind-pose tests/data/makehuman_apose.amc); a
+ * wrong --group lists the groups; --no-fit and --bind-pose rest keep what
+ * they say; a file without a body group keeps its largest closed part. */
+#include <stdarg.h>
+#include <stddef.h>
+#include <setjmp.h>
+#include <stdint.h>
+#include <cmocka.h>
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "test_paths.h"
+#include "test_run.h"
+
+#define MH_VERTS 13380
+#define MAX_BONES 64
+
+/* Dense weights: w[vertex][bone], bones by name in first-seen order. */
+typedef struct dense {
+	char bone[MAX_BONES][64];
+	int bones;
+	float w[MH_VERTS][MAX_BONES];
+} dense;
+
+static dense auto_w, hand_w;
+
+static int bone_index(dense *d, const char *name)
+{
+	for (int i = 0; i < d->bones; i++)
+		if (!strcmp(d->bone[i], name))
+			return i;
+	assert_true(d->bones < MAX_BONES);
+	snprintf(d->bone[d->bones], sizeof d->bone[0], "%s", name);
+	return d->bones++;
+}
+
+static void load_dense(const char *path, dense *d)
+{
+	FILE *f = fopen(path, "r");
+	assert_non_null(f);
+	memset(d, 0, sizeof *d);
+	char line[256], name[64];
+	assert_non_null(fgets(line, sizeof line, f));
+	while (fgets(line, sizeof line, f)) {
+		long v;
+		float w;
+		assert_int_equal(sscanf(line, "%ld,%63[^,],%f", &v, name, &w), 3);
+		assert_true(v >= 0 && v < MH_VERTS);
+		d->w[v][bone_index(d, name)] = w;
+	}
+	fclose(f);
+}
+
+static int dominant(const dense *d, long v)
+{
+	int best = 0;
+	for (int b = 1; b < d->bones; b++)
+		if (d->w[v][b] > d->w[v][best])
+			best = b;
+	return best;
+}
+
+static float weight_of(const dense *d, long v, const char *name)
+{
+	for (int b = 0; b < d->bones; b++)
+		if (!strcmp(d->bone[b], name))
+			return d->w[v][b];
+	return 0.0f;
+}
+
+static int is_extremity(const char *bone)
+{
+	static const char *const part[] = { "wrist", "hand", "finger", "thumb", "foot", "toes" };
+	for (size_t i = 0; i < sizeof part / sizeof part[0]; i++)
+		if (strstr(bone, part[i]))
+			return 1;
+	return 0;
+}
+
+static char *run_bind(const char *extra, const char *csv)
+{
+	const char *err = test_scratch("bind.err");
+	int st = test_run("%s bind %s %s %s -o %s 2>%s", test_tool_path("skintool"),
+			  test_data_path("mocap/cmu/02.asf"), test_data_path("mesh/makehuman/base.obj"),
+			  extra, csv, err);
+	char *text = test_read_file(err, NULL);
+	assert_non_null(text);
+	if (st != 0)
+		fail_msg("skintool bind %s: exit %d\n%s", extra, st, text);
+	return text;
+}
+
+/* The tolerance: over the torso, head and limbs (the vertices the
+ * hand-flagged run gives to a bone that is not a hand's or a foot's: the
+ * hand-made pose also turns thumbs and toes, which no guess from the
+ * silhouette can), at least 90% keep their dominant bone and the mean
+ * weight change (half the L1 distance) stays within 0.10. */
+static void test_makehuman_without_flags(void **state)
+{
+	(void)state;
+	if (!test_data_path("mesh/makehuman/base.obj"))
+		skip();
+	char *notes = run_bind("", test_scratch("auto.csv"));
+	const char *want[] = { "using group 'body' (13380 vertices); left out 138 other groups",
+			       "the mesh is 16.66 units tall", "fitted (scale", "--no-fit keeps it",
+			       "bound in the mesh's own pose", "'lhumerus' from 0 to -", "'rhumerus' from 0 to -" };
+	for (size_t i = 0; i < sizeof want / sizeof want[0]; i++)
+		if (!strstr(notes, want[i]))
+			fail_msg("the notes lack '%s':\n%s", want[i], notes);
+	/* the upper arms end near the hand-made pose's 64 degrees below */
+	float elev = 0.0f;
+	assert_int_equal(sscanf(strstr(notes, "'lhumerus' from 0 to ") + 21, "%f", &elev), 1);
+	assert_true(elev < -54.0f && elev > -74.0f);
+	free(notes);
+	free(run_bind("--group body --fit --bind-pose tests/data/makehuman_apose.amc", test_scratch("hand.csv")));
+	load_dense(test_scratch("auto.csv"), &auto_w);
+	load_dense(test_scratch("hand.csv"), &hand_w);
+	long n = 0, same = 0;
+	double change = 0;
+	for (long v = 0; v < MH_VERTS; v++) {
+		const char *dom = hand_w.bone[dominant(&hand_w, v)];
+		if (is_extremity(dom))
+			continue;
+		n++;
+		same += !strcmp(auto_w.bone[dominant(&auto_w, v)], dom);
+		double d = 0;
+		for (int b = 0; b < hand_w.bones; b++)
+			d += fabs(hand_w.w[v][b] - weight_of(&auto_w, v, hand_w.bone[b]));
+		for (int b = 0; b < auto_w.bones; b++)
+			if (weight_of(&hand_w, v, auto_w.bone[b]) == 0.0f)
+				d += auto_w.w[v][b];
+		change += d / 2;
+	}
+	print_message("MakeHuman without flags against the hand-flagged run: %ld body vertices, %.1f%% keep "
+		      "their dominant bone, mean weight change %.3f\n", n, 100.0 * (double)same / (double)n,
+		      change / (double)n);
+	assert_true(n > 7000);
+	assert_true((double)same >= 0.90 * (double)n);
+	assert_true(change / (double)n <= 0.10);
+}
+
+static void test_flags_keep_what_they_say(void **state)
+{
+	(void)state;
+	if (!test_data_path("mesh/makehuman/base.obj"))
+		skip();
+	char *notes = run_bind("--no-fit --bind-pose rest", test_scratch("plain.csv"));
+	assert_null(strstr(notes, "fitted"));
+	assert_null(strstr(notes, "own pose"));
+	assert_non_null(strstr(notes, "using group 'body'"));
+	free(notes);
+	notes = run_bind("--group body", test_scratch("group.csv"));
+	assert_null(strstr(notes, "left out"));
+	free(notes);
+	/* a wrong group name: the error, then the groups there are */
+	const char *err = test_scratch("nosuch.err");
+	assert_int_equal(test_run("%s bind %s %s --group nosuch -o %s 2>%s", test_tool_path("skintool"),
+				  test_data_path("mocap/cmu/02.asf"), test_data_path("mesh/makehuman/base.obj"),
+				  test_scratch("x.csv"), err), 1);
+	char *text = test_read_file(err, NULL);
+	assert_non_null(strstr(text, "no faces in group 'nosuch'"));
+	assert_non_null(strstr(text, "its groups: body (13378 faces), helper-"));
+	free(text);
+}
+
+/* No group named body: the largest closed part, not the bigger open one. */
+static void test_largest_closed_part(void **state)
+{
+	(void)state;
+	const char *obj = test_scratch("parts.obj"), *asf = test_scratch("parts.asf");
+	FILE *f = fopen(asf, "w");
+	assert_non_null(f);
+	fputs(":root\n position 0 0 0\n:bonedata\n begin\n name a\n direction 0 1 0\n length 2\n"
+	      " axis 0 0 0 XYZ\n dof rx\n end\n:hierarchy\n begin\n root a\n end\n", f);
+	fclose(f);
+	f = fopen(obj, "w");
+	assert_non_null(f);
+	/* a closed tetrahedron, a bigger open fan, a small closed tetrahedron */
+	fputs("v 0 0 0\nv 1 0 0\nv 0 2 0\nv 0 0 1\n"
+	      "f 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n"
+	      "v 5 0 0\nv 6 0 0\nv 6 1 0\nv 5 1 0\nv 5.5 2 0\nv 5 3 0\n"
+	      "f 5 6 7\nf 5 7 8\nf 8 7 9\nf 8 9 10\n"
+	      "v 9 0 0\nv 9.1 0 0\nv 9 0.1 0\nv 9 0 0.1\n"
+	      "f 11 13 12\nf 11 12 14\nf 11 14 13\nf 12 13 14\n", f);
+	fclose(f);
+	const char *err = test_scratch("parts.err"), *csv = test_scratch("parts.csv");
+	assert_int_equal(test_run("%s bind %s %s --no-fit --bind-pose rest -o %s 2>%s", test_tool_path("skintool"),
+				  asf, obj, csv, err), 0);
+	char *text = test_read_file(err, NULL);
+	if (!strstr(text, "using its largest closed connected part (4 vertices); left out 2 other parts (10 vertices)"))
+		fail_msg("notes: %s", text);
+	free(text);
+	assert_int_equal(test_run("test $(grep -c '^[0-9]' %s) -ge 4 && ! grep -q '^4,' %s", csv, csv), 0);
+}
+
+static void test_skinplay_plays_the_mesh_as_given(void **state)
+{
+	(void)state;
+	if (!test_data_path("mesh/makehuman/base.obj"))
+		skip();
+	char asf[4096];
+	snprintf(asf, sizeof asf, "%s", test_data_path("mocap/cmu/02.asf"));
+	const char *out = test_scratch("mh_frames");
+	assert_int_equal(test_run("%s --asf %s --amc %s --mesh %s --platform surfaceless --size 160x120 --frames 1 "
+				  "--out %s > /dev/null 2>&1", test_tool_path("skinplay"), asf,
+				  test_data_path("mocap/cmu/02_01.amc"), test_data_path("mesh/makehuman/base.obj"), out),
+			 0);
+	char png[4200];
+	snprintf(png, sizeof png, "%s/frame_000001.png", out);
+	size_t size = 0;
+	char *data = test_read_file(png, &size);
+	assert_non_null(data);
+	free(data);
+}
+
+int main(void)
+{
+	const struct CMUnitTest tests[] = {
+		cmocka_unit_test(test_makehuman_without_flags),
+		cmocka_unit_test(test_flags_keep_what_they_say),
+		cmocka_unit_test(test_largest_closed_part),
+		cmocka_unit_test(test_skinplay_plays_the_mesh_as_given),
+	};
+	return cmocka_run_group_tests(tests, test_scratch_setup, test_scratch_teardown);
+}
