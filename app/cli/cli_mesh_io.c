@@ -1,6 +1,5 @@
 #include "cli_mesh_io.h"
 
-#include <errno.h>
 #include <stdio.h>
 #include <string.h>
 
