@@ -36,6 +36,9 @@ int cli_motion_open(cli_motion *m, const char *path, const skel *s);
 int cli_motion_next(cli_motion *m, amc_frame *f);
 void cli_motion_close(cli_motion *m);
 
+/* Streams the whole file: its frame count, or -1 (reported). */
+long cli_motion_count(const char *path, const skel *s);
+
 /* Reads frame number (as written in the file; < 0: the first frame) of the
  * AMC at path into f. Returns 0, or -1 after reporting the error (naming
  * the frames the file has when number is not one of them). */

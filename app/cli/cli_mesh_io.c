@@ -1,11 +1,11 @@
 #include "cli_mesh_io.h"
 
-#include <errno.h>
 #include <stdio.h>
 #include <string.h>
 
 #include "cli_common.h"
 #include "cli_scratch.h"
+#include "cli_text_out.h"
 #include "file_reader.h"
 
 const obj_work *cli_load_obj(const char *path, const char *group, mesh *out, int *group_missing)
@@ -50,18 +50,11 @@ static void write_body(FILE *f, const mesh *m, const char *what)
 
 int mesh_write_obj(const char *path, const mesh *m, const char *what)
 {
-	FILE *f = fopen(path, "w");
-	if (!f) {
-		fprintf(stderr, "%s: cannot create: %s\n", path, strerror(errno));
+	static cli_text_out out;
+	if (cli_text_out_open(&out, path) < 0)
 		return -1;
-	}
-	write_body(f, m, what ? what : "skinplay mesh");
-	int bad = ferror(f);
-	if (fclose(f) != 0 || bad) {
-		fprintf(stderr, "%s: write error\n", path);
-		return -1;
-	}
-	return 0;
+	write_body(out.f, m, what ? what : "skinplay mesh");
+	return cli_text_out_commit(&out);
 }
 
 int cli_obj_is_generated(const char *path)

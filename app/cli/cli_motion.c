@@ -107,6 +107,20 @@ void cli_motion_close(cli_motion *m)
 	file_reader_close(&m->file);
 }
 
+long cli_motion_count(const char *path, const skel *s)
+{
+	static cli_motion m;
+	static amc_frame f;
+	if (cli_motion_open(&m, path, s) < 0)
+		return -1;
+	long n = 0;
+	int r;
+	while ((r = cli_motion_next(&m, &f)) > 0)
+		n++;
+	cli_motion_close(&m);
+	return r < 0 ? -1 : n;
+}
+
 int cli_parse_long(const char *opt, const char *text, long *out)
 {
 	if (!text || tok_parse_long(text, out) != 0) {

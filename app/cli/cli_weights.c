@@ -5,6 +5,7 @@
 #include <string.h>
 
 #include "cli_common.h"
+#include "cli_text_out.h"
 #include "file_reader.h"
 #include "weights_csv.h"
 
@@ -22,21 +23,17 @@ static int write_rows(FILE *f, const skel *s, const skin_weights *w)
 
 int cli_write_weights(const char *path, const skel *s, const skin_weights *w)
 {
-	int to_stdout = strcmp(path, "-") == 0;
-	FILE *f = to_stdout ? stdout : fopen(path, "w");
-	if (!f) {
-		fprintf(stderr, "%s: cannot create: %s\n", path, strerror(errno));
-		return -1;
+	static cli_text_out out;
+	if (strcmp(path, "-") == 0) {
+		int rc = write_rows(stdout, s, w) < 0 || fflush(stdout) != 0 ? -1 : 0;
+		if (rc < 0)
+			fprintf(stderr, "-: write failed: %s\n", strerror(errno));
+		return rc;
 	}
-	int rc = write_rows(f, s, w);
-	if (fflush(f) != 0)
-		rc = -1;
-	int saved = errno;
-	if (!to_stdout && fclose(f) != 0)
-		rc = -1;
-	if (rc < 0)
-		fprintf(stderr, "%s: write failed: %s\n", path, strerror(saved ? saved : errno));
-	return rc;
+	if (cli_text_out_open(&out, path) < 0)
+		return -1;
+	write_rows(out.f, s, w);
+	return cli_text_out_commit(&out);
 }
 
 int cli_load_weights(const char *path, const skel *s, int vert_count, skin_weights *out)

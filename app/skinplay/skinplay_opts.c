@@ -9,7 +9,7 @@
 static const char usage_text[] =
 	"usage: skinplay [--image show.skn [--image slot2.skn] [--clip NAME] | --asf A.asf --amc M.amc | --bvh M.bvh\n"
 	"                [--mesh M.obj]\n"
-	"                [--group G] [--fit] [--bind-pose P.amc[:F]] [--weights W.csv] [--balance on|off]]\n"
+	"                [--group G] [--fit|--no-fit] [--bind-pose P.amc[:F]|rest] [--weights W.csv] [--balance on|off]]\n"
 	"                [--algo lbs|dqbs|dqbs-fixed|compare] [--skin cpu|gpu]\n"
 	"                [--platform auto|surfaceless|osmesa|kms|x11] [--device DEV] [--rotation 0|90|180|270]\n"
 	"                [--size WxH] [--frames N] [--start FRAME] [--out DIR [--every K] [--sheet F.png]]\n"
@@ -137,7 +137,8 @@ int play_parse(play_opts *o, int argc, char **argv)
 	}
 	if (o->bvh)
 		o->asf = o->amc = o->bvh;
-	if (o->image_count && (o->asf || o->amc || o->mesh || o->bind.group || o->bind.fit || o->bind.pose_path ||
+	if (o->image_count && (o->asf || o->amc || o->mesh || o->bind.group || o->bind.fit || o->bind.no_fit ||
+			       o->bind.rest_pose || o->bind.pose_path ||
 			       o->bind.weights_path || o->bind.balance >= 0)) {
 		fprintf(stderr, "skinplay: --image carries the skeleton, the bound body and the clips: "
 			"give it without --asf, --amc, --bvh, --mesh and the bind options\n");

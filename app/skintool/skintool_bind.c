@@ -1,4 +1,4 @@
-/* skintool bind SKELETON.asf MESH.obj [--group G] [--fit] [--bind-pose P.amc[:F]]
+/* skintool bind SKELETON.asf MESH.obj [--group G] [--fit|--no-fit] [--bind-pose P.amc[:F]|rest]
  *               [--weights IN.csv] [--balance on|off] [--report] -o weights.csv
  * Binds the mesh to the skeleton (automatic weights, bind.h, balanced by
  * bind_balance.h with --balance on (the default for the generated body), or the given CSV after validation) and writes the weights CSV (-o - for stdout). The

@@ -14,5 +14,6 @@ int cmd_pack(int argc, char **argv);
 int cmd_info(int argc, char **argv);
 int cmd_repair(int argc, char **argv);
 int cmd_bench_image(int argc, char **argv);
+int cmd_bench_parse(int argc, char **argv);
 
 #endif

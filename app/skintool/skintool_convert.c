@@ -61,25 +61,11 @@ static int parse(convert_args *a, int argc, char **argv)
 	return 0;
 }
 
-static long count_frames(const char *path, const skel *s)
-{
-	static cli_motion m;
-	static amc_frame f;
-	if (cli_motion_open(&m, path, s) < 0)
-		return -1;
-	long n = 0;
-	int r;
-	while ((r = cli_motion_next(&m, &f)) > 0)
-		n++;
-	cli_motion_close(&m);
-	return r < 0 ? -1 : n;
-}
-
 static int to_bvh(const convert_args *a, const skel *s)
 {
 	static cli_motion m;
 	static cli_text_out out;
-	long frames = count_frames(a->motion_path, s);
+	long frames = cli_motion_count(a->motion_path, s);
 	if (frames < 0 || cli_motion_open(&m, a->motion_path, s) < 0)
 		return -1;
 	double fps = a->fps > 0 ? a->fps : m.is_bvh && m.layout.frame_time > 0 ? 1.0 / m.layout.frame_time

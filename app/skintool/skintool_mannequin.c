@@ -67,6 +67,10 @@ int cmd_mannequin(int argc, char **argv)
 	}
 	if (mesh_write_obj(a.out, &body, TOOL_GENERATED_BODY) < 0)
 		return 1;
-	printf("%s: %d vertices, %d triangles\n", a.out, body.vert_count, body.tri_count);
+	printf("%s: %d vertices, %d triangles", a.out, body.vert_count, body.tri_count);
+	if (work.arms_raised)
+		printf(", around the rest pose with %d hanging arm%s raised sideways (the pose it binds in)",
+		       work.arms_raised, work.arms_raised == 1 ? "" : "s");
+	printf("\n");
 	return 0;
 }

@@ -1,5 +1,5 @@
 /* skintool pack SKELETON.asf MOTION.amc [MOTION2.amc ...]
- *               [--mesh MESH.obj [--group G] [--fit] [--bind-pose P.amc[:F]] [--weights W.csv] [--balance on|off]]
+ *               [--mesh MESH.obj [--group G] [--fit|--no-fit] [--bind-pose P.amc[:F]|rest] [--weights W.csv] [--balance on|off]]
  *               [--fps F] [--sequence N] [--block-size B] -o show.skn
  * Binds the body (the generated one without --mesh) and packs it with the
  * clips into a flash image (app/image/image_format.h). Each clip is read twice

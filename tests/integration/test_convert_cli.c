@@ -78,6 +78,23 @@ static double compare_rows(const fk_rows *a, const fk_rows *b, int root_renamed)
 	return worst;
 }
 
+/* `fk` on the source, on it converted once and converted back: returns
+ * the source's rows; e gets the largest distances of the other two. */
+static long against_source(const char *src, const char *once, const char *back, int root_renamed, double e[2])
+{
+	fk_rows a, b, c;
+	fk_rows_of(src, &a);
+	fk_rows_of(once, &b);
+	fk_rows_of(back, &c);
+	e[0] = compare_rows(&a, &b, root_renamed);
+	e[1] = compare_rows(&a, &c, root_renamed);
+	long n = a.n;
+	free(a.row);
+	free(b.row);
+	free(c.row);
+	return n;
+}
+
 static void test_every_clip_converts_to_bvh_and_back(void **state)
 {
 	(void)state;
@@ -90,48 +107,43 @@ static void test_every_clip_converts_to_bvh_and_back(void **state)
 		const char *bvh = test_scratch("clip.bvh"), *back = test_scratch("back.asf");
 		assert_int_equal(test_run("%s convert %s %s -o %s > /dev/null", test_tool_path("skintool"), asf, amc, bvh), 0);
 		assert_int_equal(test_run("%s convert %s -o %s > /dev/null", test_tool_path("skintool"), bvh, back), 0);
-		fk_rows src, conv, twice;
+		char back_args[8192];
+		double e[2];
 		snprintf(args, sizeof args, "%s %s", asf, amc);
-		fk_rows_of(args, &src);
-		fk_rows_of(bvh, &conv);
-		snprintf(args, sizeof args, "%s %s", back, test_scratch("back.amc"));
-		fk_rows_of(args, &twice);
-		assert_int_equal(src.n, test_clips[c].frames * (src.n / test_clips[c].frames));
-		double e1 = compare_rows(&src, &conv, 0), e2 = compare_rows(&src, &twice, 0);
+		snprintf(back_args, sizeof back_args, "%s %s", back, test_scratch("back.amc"));
+		long rows = against_source(args, bvh, back_args, 0, e);
+		assert_int_equal(rows % test_clips[c].frames, 0);
 		print_message("%-40s %6ld rows: to BVH %.2g, and back to ASF/AMC %.2g of the height\n",
-			      test_clips[c].amc, src.n, e1, e2);
-		assert_true(e1 <= TOLERANCE && e2 <= TOLERANCE);
-		free(src.row);
-		free(conv.row);
-		free(twice.row);
+			      test_clips[c].amc, rows, e[0], e[1]);
+		assert_true(e[0] <= TOLERANCE && e[1] <= TOLERANCE);
 	}
+}
+
+/* The CMU conversion's path (test_data_path's buffer is reused), or 0. */
+static int shared_bvh(char path[4096])
+{
+	const char *p = test_data_path("mocap/cmu_bvh/131_01.bvh");
+	if (p)
+		snprintf(path, 4096, "%s", p);
+	return p != NULL;
 }
 
 /* BVH -> ASF/AMC -> BVH on the CMU conversion. */
 static void test_bvh_converts_to_asf_and_back(void **state)
 {
 	(void)state;
-	const char *bvh = test_data_path("mocap/cmu_bvh/131_01.bvh");
-	if (!bvh)
-		skip();
 	char src_path[4096], args[8192];
-	snprintf(src_path, sizeof src_path, "%s", bvh);
+	if (!shared_bvh(src_path))
+		skip();
 	const char *asf = test_scratch("from_bvh.asf"), *again = test_scratch("again.bvh");
 	assert_int_equal(test_run("%s convert %s -o %s > /dev/null", test_tool_path("skintool"), src_path, asf), 0);
 	assert_int_equal(test_run("%s convert %s %s -o %s > /dev/null", test_tool_path("skintool"), asf,
 				  test_scratch("from_bvh.amc"), again), 0);
-	fk_rows src, conv, twice;
-	fk_rows_of(src_path, &src);
+	double e[2];
 	snprintf(args, sizeof args, "%s %s", asf, test_scratch("from_bvh.amc"));
-	fk_rows_of(args, &conv);
-	fk_rows_of(again, &twice);
-	assert_int_equal(src.n, 994 * 31);
-	double e1 = compare_rows(&src, &conv, 1), e2 = compare_rows(&src, &twice, 1);
-	print_message("131_01.bvh: to ASF/AMC %.2g, and back to BVH %.2g of the height\n", e1, e2);
-	assert_true(e1 <= TOLERANCE && e2 <= TOLERANCE);
-	free(src.row);
-	free(conv.row);
-	free(twice.row);
+	assert_int_equal(against_source(src_path, args, again, 1, e), 994 * 31);
+	print_message("131_01.bvh: to ASF/AMC %.2g, and back to BVH %.2g of the height\n", e[0], e[1]);
+	assert_true(e[0] <= TOLERANCE && e[1] <= TOLERANCE);
 }
 
 /* A joint branching off the middle of its parent's segment (c, beside b)
@@ -288,11 +300,9 @@ static void row_position(rbvh *b, int i, double out[3])
 static void test_bvh_fk_matches_an_independent_reading(void **state)
 {
 	(void)state;
-	const char *path = test_data_path("mocap/cmu_bvh/131_01.bvh");
-	if (!path)
-		skip();
 	char src[4096];
-	snprintf(src, sizeof src, "%s", path);
+	if (!shared_bvh(src))
+		skip();
 	fk_rows got;
 	fk_rows_of(src, &got);
 	static rbvh b;
@@ -324,11 +334,9 @@ static void test_bvh_fk_matches_an_independent_reading(void **state)
 static void test_bvh_packs_and_plays(void **state)
 {
 	(void)state;
-	const char *path = test_data_path("mocap/cmu_bvh/131_01.bvh");
-	if (!path)
-		skip();
 	char src[4096];
-	snprintf(src, sizeof src, "%s", path);
+	if (!shared_bvh(src))
+		skip();
 	const char *skn = test_scratch("bvh.skn"), *out = test_scratch("bvh_frames");
 	assert_int_equal(test_run("%s pack %s --block-size 4096 -o %s > /dev/null", test_tool_path("skintool"), src, skn), 0);
 	assert_int_equal(test_run("%s info %s | grep -q '131_01.*994 frames.*120'", test_tool_path("skintool"), skn), 0);
