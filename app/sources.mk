@@ -20,10 +20,10 @@
 # What each module owns (README "Architecture" has the whole map):
 #   base      errors, readers, tokens, lines, CRC-32, INI, algorithm/view names
 #   math      vec3, quat, rigid, dual quaternions, mat4, fixed point
-#   motion    skeleton, ASF, streaming AMC, forward kinematics
+#   motion    skeleton, ASF, streaming AMC and BVH, forward kinematics, roles, T-pose
 #   mesh      meshes, normals, OBJ, the generated body
 #   skin      weights, SoA vertices, bone transforms, skin_run; kernels/
-#   bind      automatic and balanced weights, fitting, the weights CSV
+#   bind      automatic and balanced weights, fitting, pose guessing, the weights CSV
 #   image     the flash image: format, block device port, reader, writer, player
 #   render    the GLES2 renderer, camera, font, shaders, GL entry points
 #   kiosk     player state machine, debounce, board config, input port
