@@ -74,8 +74,8 @@ static void torso_centre(const vec3 *pos, int n, float scale, float dy, float ro
 		slice_centre(pos, n, &all, cx, cz);
 }
 
-skp_status bind_fit(vec3 *pos, int n, const skel *s, const skel_pose *pose,
-		    bind_fit_result *out, skp_error *err)
+skp_status bind_fit_measure(const vec3 *pos, int n, const skel *s, const skel_pose *pose,
+			    bind_fit_result *out, skp_error *err)
 {
 	if (n <= 0)
 		return skp_fail(err, SKP_ERR_RANGE, 0, "cannot fit an empty mesh");
@@ -93,14 +93,28 @@ skp_status bind_fit(vec3 *pos, int n, const skel *s, const skel_pose *pose,
 	vec3 root = pose->head[0];
 	float cx, cz;
 	torso_centre(pos, n, scale, dy, root.y, skel_h, &cx, &cz);
-	vec3 offset = vec3_make(root.x - cx * scale, dy, root.z - cz * scale);
+	out->scale = scale;
+	out->offset = vec3_make(root.x - cx * scale, dy, root.z - cz * scale);
+	out->skel_height = skel_h;
+	out->mesh_height = mesh_h;
+	return SKP_OK;
+}
+
+void bind_fit_apply(vec3 *pos, int n, const bind_fit_result *fit)
+{
 	for (int v = 0; v < n; v++)
-		pos[v] = vec3_add(vec3_scale(pos[v], scale), offset);
-	if (out) {
-		out->scale = scale;
-		out->offset = offset;
-		out->skel_height = skel_h;
-		out->mesh_height = mesh_h;
-	}
+		pos[v] = vec3_add(vec3_scale(pos[v], fit->scale), fit->offset);
+}
+
+skp_status bind_fit(vec3 *pos, int n, const skel *s, const skel_pose *pose,
+		    bind_fit_result *out, skp_error *err)
+{
+	bind_fit_result fit;
+	skp_status rc = bind_fit_measure(pos, n, s, pose, &fit, err);
+	if (rc)
+		return rc;
+	bind_fit_apply(pos, n, &fit);
+	if (out)
+		*out = fit;
 	return SKP_OK;
 }

@@ -31,6 +31,12 @@ float bind_fit_skel_height(const skel *s, const skel_pose *pose, float *min_y);
 skp_status bind_fit(vec3 *pos, int n, const skel *s, const skel_pose *pose,
 		    bind_fit_result *out, skp_error *err);
 
+/* bind_fit in two steps: what it would do (pos untouched; out required),
+ * then doing it. */
+skp_status bind_fit_measure(const vec3 *pos, int n, const skel *s, const skel_pose *pose,
+			    bind_fit_result *out, skp_error *err);
+void bind_fit_apply(vec3 *pos, int n, const bind_fit_result *fit);
+
 /* Half-thickness and half-width of that slice, fractions of the height. */
 #define BIND_FIT_SLICE 0.03f
 #define BIND_FIT_TORSO 0.10f

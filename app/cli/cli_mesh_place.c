@@ -25,18 +25,15 @@ static int fit_mesh(const char *obj, bound_body *body)
 
 static int auto_fit(const char *obj, bound_body *body)
 {
-	static vec3 as_given[SKP_MAX_VERTS];
 	mesh *m = &body->mesh;
 	skp_error err;
-	memcpy(as_given, m->pos, sizeof m->pos[0] * (size_t)m->vert_count);
 	const bind_fit_result *f = &body->fit;
 	/* a flat skeleton or mesh has nothing to fit to: keep the mesh */
-	if (bind_fit(m->pos, m->vert_count, &body->skel, &body->pose, &body->fit, &err) != SKP_OK ||
+	if (bind_fit_measure(m->pos, m->vert_count, &body->skel, &body->pose, &body->fit, &err) != SKP_OK ||
 	    (fabsf(f->scale - 1.0f) <= PLACE_TOLERANCE &&
-	     vec3_length(f->offset) <= PLACE_TOLERANCE * f->skel_height)) {
-		memcpy(m->pos, as_given, sizeof m->pos[0] * (size_t)m->vert_count);
+	     vec3_length(f->offset) <= PLACE_TOLERANCE * f->skel_height))
 		return 0;
-	}
+	bind_fit_apply(m->pos, m->vert_count, f);
 	body->fitted = 1;
 	fprintf(stderr, "%s: the mesh is %.4g units tall, the skeleton %.4g: fitted (scale %.4g, then moved by "
 		"%.4g %.4g %.4g); --no-fit keeps it as it is\n", obj, (double)f->mesh_height,
