@@ -25,16 +25,6 @@ static float bone_len(const skel_pose *p, int b)
 	return vec3_length(vec3_sub(p->tip[b], p->head[b]));
 }
 
-/* Longest path from b's tip down to a leaf's tip. */
-static float reach(const skel *s, const skel_pose *p, int b)
-{
-	float best = 0.0f;
-	for (int c = 1; c < s->count; c++)
-		if (s->bone[c].parent == b)
-			best = fmaxf(best, bone_len(p, c) + reach(s, p, c));
-	return best;
-}
-
 /* The limb's upper bone: along its longest reach, the first bone about as
  * long as the longest (a collar bone is shorter, a forearm comes after);
  * *lower gets the bone after it on that path, or -1. */
@@ -50,8 +40,8 @@ static int upper_bone(const guess_ctx *c, int start, int *lower)
 		int next = -1;
 		float best = -1.0f;
 		for (int k = 1; k < s->count; k++)
-			if (s->bone[k].parent == b && bone_len(p, k) + reach(s, p, k) > best) {
-				best = bone_len(p, k) + reach(s, p, k);
+			if (s->bone[k].parent == b && bone_len(p, k) + c->roles.reach[k] > best) {
+				best = bone_len(p, k) + c->roles.reach[k];
 				next = k;
 			}
 		b = next;
@@ -101,7 +91,7 @@ static int mesh_elevation(const guess_ctx *c, int leg, int u, float *deg)
 {
 	const skel_pose *p = &c->w->pose;
 	vec3 joint = p->head[u];
-	float sgn = side_of(c, u), len = bone_len(p, u) + reach(c->s, p, u);
+	float sgn = side_of(c, u), len = bone_len(p, u) + c->roles.reach[u];
 	float *e = c->w->elevation;
 	int n = 0;
 	for (int v = 0; v < c->m->vert_count && n < GUESS_MAX_SAMPLES; v++) {
@@ -123,7 +113,7 @@ static int mesh_lower_dir(const guess_ctx *c, int leg, int u, int l, vec3 *dir)
 {
 	const skel_pose *p = &c->w->pose;
 	vec3 joint = p->head[l], along = vec3_normalize(vec3_sub(p->tip[u], p->head[u]));
-	float sgn = side_of(c, u), len = bone_len(p, l) + reach(c->s, p, l);
+	float sgn = side_of(c, u), len = bone_len(p, l) + c->roles.reach[l];
 	vec3 sum = vec3_make(0.0f, 0.0f, 0.0f);
 	int n = 0;
 	for (int v = 0; v < c->m->vert_count; v++) {

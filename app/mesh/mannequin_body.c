@@ -14,7 +14,6 @@ typedef struct body_ctx {
 	manq_body *out;
 	skel_roles r;
 	float shoulder_y;
-	float reach[SKP_MAX_BONES];     /* longest path from the tip to a leaf tip */
 } body_ctx;
 
 typedef struct profile_pt {
@@ -43,19 +42,6 @@ static float profile(const profile_pt *pt, int n, float e)
 static float bone_len(const body_ctx *c, int b)
 {
 	return vec3_length(vec3_sub(c->p->tip[b], c->p->head[b]));
-}
-
-/* Children come after their parents in eval_order: walk it backwards. */
-static void find_reach(body_ctx *c)
-{
-	const skel *s = c->s;
-	memset(c->reach, 0, sizeof c->reach);
-	for (int k = s->count - 1; k >= 1; k--) {
-		int b = s->eval_order[k], par = s->bone[b].parent;
-		float r = bone_len(c, b) + c->reach[b];
-		if (par > 0 && r > c->reach[par])
-			c->reach[par] = r;
-	}
 }
 
 /* The shoulders are the highest arm joint, kept below the head. */
@@ -143,7 +129,7 @@ static void add_head(body_ctx *c)
  * the T-posed mocap skeletons). */
 static void add_limb(body_ctx *c, int b)
 {
-	float e0 = (bone_len(c, b) + c->reach[b]) / c->r.H, e1 = c->reach[b] / c->r.H;
+	float e0 = (bone_len(c, b) + c->r.reach[b]) / c->r.H, e1 = c->r.reach[b] / c->r.H;
 	const profile_pt *pr = c->r.leg[b] ? leg_profile : arm_profile;
 	int n = c->r.leg[b] ? (int)(sizeof leg_profile / sizeof leg_profile[0])
 			  : (int)(sizeof arm_profile / sizeof arm_profile[0]);
@@ -205,7 +191,6 @@ skp_status manq_body_from_skel(const skel *s, const skel_pose *rest, manq_body *
 	/* squared distances must not overflow a float */
 	if (!(c.r.H < 1e15f))
 		return skp_fail(err, SKP_ERR_RANGE, 0, "the skeleton is %g units tall: too large", (double)c.r.H);
-	find_reach(&c);
 	find_shoulders(&c);
 	out->height = c.r.H;
 	out->blend = 0.02f * c.r.H;

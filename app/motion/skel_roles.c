@@ -60,6 +60,17 @@ static void find_limbs(const skel *s, const skel_pose *p, skel_roles *r)
 	}
 }
 
+/* Children come after their parents in eval_order: walk it backwards. */
+static void find_reach(const skel *s, const skel_pose *p, skel_roles *r)
+{
+	for (int k = s->count - 1; k >= 1; k--) {
+		int b = s->eval_order[k], par = s->bone[b].parent;
+		float len = vec3_length(vec3_sub(p->tip[b], p->head[b])) + r->reach[b];
+		if (par > 0 && len > r->reach[par])
+			r->reach[par] = len;
+	}
+}
+
 static void find_axes(const skel *s, const skel_pose *p, skel_roles *r)
 {
 	float sx = 0.0f, sz = 0.0f, mx = 0.0f, mz = 0.0f;
@@ -83,5 +94,6 @@ void skel_find_roles(const skel *s, const skel_pose *p, skel_roles *out)
 	find_extent(s, p, out);
 	find_spine(s, p, out);
 	find_limbs(s, p, out);
+	find_reach(s, p, out);
 	find_axes(s, p, out);
 }

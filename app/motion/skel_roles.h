@@ -20,6 +20,7 @@ typedef struct skel_roles {
 	uint8_t spine[SKP_MAX_BONES];   /* the head bone and its ancestors */
 	uint8_t leg[SKP_MAX_BONES];     /* non-spine bone in a leg branch */
 	uint8_t arm[SKP_MAX_BONES];     /* non-spine bone in an arm branch */
+	float reach[SKP_MAX_BONES];     /* longest path from the bone's tip to a leaf's tip (root: 0) */
 } skel_roles;
 
 /* Needs a skeleton of at least two bones with finite joints. */
