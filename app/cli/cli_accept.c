@@ -22,8 +22,6 @@ int show_accept_body(show_image *img, bound_body *body, skp_error *err)
 	memcpy(body->pose_value, values, sizeof body->pose_value);
 	body->pose_frame = number;
 	body->arms_raised = 0;
-	for (int i = 0; i < body->skel.dof_count; i++)
-		body->arms_raised |= values[i] != 0.0f;
 	body->fitted = 0;
 	body->automatic = 0;
 	return 0;

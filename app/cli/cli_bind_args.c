@@ -147,7 +147,13 @@ static int generate_body(const bind_args *a, const char *asf, bound_body *body)
 
 const float *bound_pose_values(const bound_body *body)
 {
-	return body->pose_frame >= 0 || body->arms_raised || body->guess.turned ? body->pose_value : NULL;
+	if (body->pose_frame >= 0)
+		return body->pose_value;
+	/* a derived pose (arms raised, the mesh's own) differs from the rest's zeros */
+	for (int i = 0; i < body->skel.dof_count; i++)
+		if (body->pose_value[i] != 0.0f)
+			return body->pose_value;
+	return NULL;
 }
 
 int bind_args_load(const bind_args *a, const char *asf, const char *obj, bound_body *body)
