@@ -134,10 +134,10 @@ static skp_status read_end_site(bvh_state *st, bvh_joint *j)
 	return rc;
 }
 
-static skp_status read_joint(bvh_state *st, int parent, int depth);
+static skp_status read_joint(bvh_state *st, int parent);
 
 /* The body of joint i, after its name: { OFFSET ... CHANNELS ... children } */
-static skp_status read_body(bvh_state *st, int i, int depth)
+static skp_status read_body(bvh_state *st, int i)
 {
 	skp_status rc = expect(st, "{");
 	int has_offset = 0;
@@ -154,7 +154,7 @@ static skp_status read_body(bvh_state *st, int i, int depth)
 		} else if (tok_ieq(t, "CHANNELS")) {
 			rc = read_channels(st, &st->j[i]);
 		} else if (tok_ieq(t, "JOINT")) {
-			rc = read_joint(st, i, depth + 1);
+			rc = read_joint(st, i);
 		} else if (tok_ieq(t, "End")) {
 			rc = read_end_site(st, &st->j[i]);
 		} else {
@@ -165,7 +165,7 @@ static skp_status read_body(bvh_state *st, int i, int depth)
 	return rc;
 }
 
-static skp_status read_joint(bvh_state *st, int parent, int depth)
+static skp_status read_joint(bvh_state *st, int parent)
 {
 	skp_status rc;
 	const char *name = next_tok(st, &rc);
@@ -191,7 +191,7 @@ static skp_status read_joint(bvh_state *st, int parent, int depth)
 	strcpy(st->s->bone[i].name, name);
 	if (parent >= 0 && st->j[parent].first_child < 0)
 		st->j[parent].first_child = i;
-	return read_body(st, i, depth);
+	return read_body(st, i);
 }
 
 static skp_status read_motion_header(bvh_state *st)
@@ -296,7 +296,7 @@ skp_status bvh_parse(skel *s, bvh_layout *layout, text_lines *tl, skp_error *err
 	strcpy(s->version, "bvh");
 	skp_status rc = expect(&st, "HIERARCHY");
 	if (!rc) rc = expect(&st, "ROOT");
-	if (!rc) rc = read_joint(&st, -1, 0);
+	if (!rc) rc = read_joint(&st, -1);
 	if (!rc) rc = read_motion_header(&st);
 	if (rc)
 		return rc;
