@@ -17,6 +17,7 @@
 #include <strings.h>
 
 #include "test_clips.h"
+#include "test_dref.h"
 #include "test_paths.h"
 #include "test_run.h"
 
@@ -195,7 +196,8 @@ typedef struct rjoint {
 typedef struct rbvh {
 	int n;
 	rjoint j[RJ];
-	double m[RJ][3][3], pos[RJ][3];
+	dmat3 m[RJ];
+	double pos[RJ][3];
 } rbvh;
 
 static void rbvh_read(FILE *f, rbvh *b)
@@ -233,22 +235,12 @@ static void rbvh_read(FILE *f, rbvh *b)
 	}
 }
 
-static void rot_mul(double m[3][3], int axis, double deg)
+static void mat_apply(const dmat3 *m, const double v[3], double out[3])
 {
-	double c = cos(deg * M_PI / 180), s = sin(deg * M_PI / 180), r[3][3] = { { 1, 0, 0 }, { 0, 1, 0 }, { 0, 0, 1 } };
-	int i = (axis + 1) % 3, k = (axis + 2) % 3;
-	r[i][i] = c; r[i][k] = -s; r[k][i] = s; r[k][k] = c;
-	double o[3][3];
-	for (int a = 0; a < 3; a++)
-		for (int b = 0; b < 3; b++)
-			o[a][b] = m[a][0] * r[0][b] + m[a][1] * r[1][b] + m[a][2] * r[2][b];
-	memcpy(m, o, sizeof o);
-}
-
-static void mat_apply(double m[3][3], const double v[3], double out[3])
-{
-	for (int a = 0; a < 3; a++)
-		out[a] = m[a][0] * v[0] + m[a][1] * v[1] + m[a][2] * v[2];
+	dvec r = dmat_apply(m->m, dv(v[0], v[1], v[2]));
+	out[0] = r.x;
+	out[1] = r.y;
+	out[2] = r.z;
 }
 
 /* One frame: joint world matrices and positions (parents come first). */
@@ -256,26 +248,25 @@ static void rbvh_pose(FILE *f, rbvh *b)
 {
 	for (int i = 0; i < b->n; i++) {
 		rjoint *j = &b->j[i];
-		double local[3] = { j->off[0], j->off[1], j->off[2] }, m[3][3] = { { 1, 0, 0 }, { 0, 1, 0 }, { 0, 0, 1 } };
-		if (j->parent >= 0)
-			memcpy(m, b->m[j->parent], sizeof m);
+		double local[3] = { j->off[0], j->off[1], j->off[2] };
+		dmat3 m = j->parent >= 0 ? b->m[j->parent] : dmat3_rot(0, 0);
 		for (int c = 0; c < j->nch; c++) {
 			double v;
 			assert_int_equal(fscanf(f, "%lf", &v), 1);
 			if (j->ch[c] < 3)
 				local[j->ch[c]] = v;
 			else
-				rot_mul(m, j->ch[c] - 3, v);
+				m = dmat3_mul(m, dmat3_rot(j->ch[c] - 3, v * M_PI / 180));
 		}
 		if (j->parent < 0) {
 			memcpy(b->pos[i], local, sizeof local);
 		} else {
 			double d[3];
-			mat_apply(b->m[j->parent], local, d);
+			mat_apply(&b->m[j->parent], local, d);
 			for (int a = 0; a < 3; a++)
 				b->pos[i][a] = b->pos[j->parent][a] + d[a];
 		}
-		memcpy(b->m[i], m, sizeof m);
+		b->m[i] = m;
 	}
 }
 
@@ -291,7 +282,7 @@ static void row_position(rbvh *b, int i, double out[3])
 	} else {
 		double d[3] = { 0, 0, 0 };
 		if (j->has_end)
-			mat_apply(b->m[i], j->end, d);
+			mat_apply(&b->m[i], j->end, d);
 		for (int a = 0; a < 3; a++)
 			out[a] = b->pos[i][a] + d[a];
 	}

@@ -15,11 +15,12 @@
 #include <strings.h>
 
 #include "test_clips.h"
+#include "test_dref.h"
 #include "test_paths.h"
 
 #define RMAX 160
 
-typedef struct { double m[3][3]; } mat;
+typedef dmat3 mat;
 
 typedef struct {
 	char name[64];
@@ -37,41 +38,13 @@ typedef struct {
 	rbone b[RMAX];
 } rskel;
 
-static mat mat_mul(mat a, mat b)
-{
-	mat r;
-	for (int i = 0; i < 3; i++)
-		for (int j = 0; j < 3; j++)
-			r.m[i][j] = a.m[i][0] * b.m[0][j] + a.m[i][1] * b.m[1][j] + a.m[i][2] * b.m[2][j];
-	return r;
-}
-
-static mat mat_t(mat a)
-{
-	mat r;
-	for (int i = 0; i < 3; i++)
-		for (int j = 0; j < 3; j++)
-			r.m[i][j] = a.m[j][i];
-	return r;
-}
-
-static mat rot(int axis, double rad)
-{
-	mat r = { { { 1, 0, 0 }, { 0, 1, 0 }, { 0, 0, 1 } } };
-	double c = cos(rad), s = sin(rad);
-	int i = (axis + 1) % 3, j = (axis + 2) % 3;
-	r.m[i][i] = c; r.m[i][j] = -s;
-	r.m[j][i] = s; r.m[j][j] = c;
-	return r;
-}
-
 /* first letter applied first: C = R3 * R2 * R1 */
 static mat axis_mat(const double a[3], const char *order, double unit)
 {
-	mat r = rot(0, 0);
+	mat r = dmat3_rot(0, 0);
 	for (int k = 0; k < 3; k++) {
 		int ax = (order[k] | 0x20) - 'x';
-		r = mat_mul(rot(ax, a[ax] * unit), r);
+		r = dmat3_mul(dmat3_rot(ax, a[ax] * unit), r);
 	}
 	return r;
 }
@@ -147,7 +120,7 @@ static void load_asf(const char *path, rskel *s)
 			if (!strcmp(w[0], "begin")) {
 				b = &s->b[s->n++];
 				memset(b, 0, sizeof *b);
-				b->c = rot(0, 0);
+				b->c = dmat3_rot(0, 0);
 			} else if (!strcmp(w[0], "name"))
 				snprintf(b->name, sizeof b->name, "%s", w[1]);
 			else if (!strcmp(w[0], "direction"))
@@ -192,21 +165,21 @@ static void pose_bone(const rskel *s, const double v[RMAX][7], int i, rpose *p)
 		return;
 	const rbone *b = &s->b[i];
 	double unit = s->deg ? M_PI / 180 : 1;
-	mat m = rot(0, 0);
+	mat m = dmat3_rot(0, 0);
 	double t[3] = { 0, 0, 0 };
 	for (int k = 0; k < b->nch; k++) {
 		if (b->ch[k] < 3)
-			m = mat_mul(rot(b->ch[k], v[i][k] * unit), m);
+			m = dmat3_mul(dmat3_rot(b->ch[k], v[i][k] * unit), m);
 		else if (b->ch[k] < 6)
 			t[b->ch[k] - 3] = v[i][k] * s->per_unit;
 	}
 	if (i == 0) {
-		p->g[0] = mat_mul(mat_mul(b->c, m), mat_t(b->c));
+		p->g[0] = dmat3_mul(dmat3_mul(b->c, m), dmat3_transpose(b->c));
 		for (int k = 0; k < 3; k++)
 			p->tip[0][k] = s->pos[k] * s->per_unit + t[k];
 	} else {
 		pose_bone(s, v, b->parent, p);
-		p->g[i] = mat_mul(p->g[b->parent], mat_mul(mat_mul(b->c, m), mat_t(b->c)));
+		p->g[i] = dmat3_mul(p->g[b->parent], dmat3_mul(dmat3_mul(b->c, m), dmat3_transpose(b->c)));
 		for (int r = 0; r < 3; r++) {
 			double d = 0;
 			for (int k = 0; k < 3; k++)

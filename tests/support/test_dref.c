@@ -19,6 +19,34 @@ dvec dmat_apply(const double m[3][3], dvec v)
 		  m[1][0] * v.x + m[1][1] * v.y + m[1][2] * v.z,
 		  m[2][0] * v.x + m[2][1] * v.y + m[2][2] * v.z);
 }
+dmat3 dmat3_mul(dmat3 a, dmat3 b)
+{
+	dmat3 r;
+	for (int i = 0; i < 3; i++)
+		for (int j = 0; j < 3; j++)
+			r.m[i][j] = a.m[i][0] * b.m[0][j] + a.m[i][1] * b.m[1][j] + a.m[i][2] * b.m[2][j];
+	return r;
+}
+
+dmat3 dmat3_transpose(dmat3 a)
+{
+	dmat3 r;
+	for (int i = 0; i < 3; i++)
+		for (int j = 0; j < 3; j++)
+			r.m[i][j] = a.m[j][i];
+	return r;
+}
+
+dmat3 dmat3_rot(int axis, double rad)
+{
+	dmat3 r = { { { 1, 0, 0 }, { 0, 1, 0 }, { 0, 0, 1 } } };
+	double c = cos(rad), s = sin(rad);
+	int i = (axis + 1) % 3, j = (axis + 2) % 3;
+	r.m[i][i] = c; r.m[i][j] = -s;
+	r.m[j][i] = s; r.m[j][j] = c;
+	return r;
+}
+
 dvec drigid_apply(const drigid *a, dvec p)
 {
 	dvec r = dmat_apply(a->r, p);

@@ -9,6 +9,14 @@ typedef struct dvec { double x, y, z; } dvec;
 /* Double rigid transform p' = R p + t. */
 typedef struct drigid { double r[3][3]; dvec t; } drigid;
 
+/* A 3x3 matrix by value (column vectors: m * v), for reference FK. */
+typedef struct dmat3 { double m[3][3]; } dmat3;
+
+dmat3 dmat3_mul(dmat3 a, dmat3 b);
+dmat3 dmat3_transpose(dmat3 a);
+/* Right-handed rotation by rad about axis 0 x, 1 y, 2 z. */
+dmat3 dmat3_rot(int axis, double rad);
+
 /* Largest error seen per slot (each test file gives its slots meanings). */
 #define TEST_ERR_SLOTS 8
 extern double test_max_err[TEST_ERR_SLOTS];

@@ -18,6 +18,7 @@
 #include <string.h>
 
 #include "fk.h"
+#include "test_dref.h"
 #include "test_parse.h"
 #include "test_paths.h"
 
@@ -26,26 +27,12 @@
 static skel s;
 static skel_pose pose;
 
-typedef struct { double m[3][3]; } mat;
-
-static mat mat_mul(mat a, mat b)
-{
-	mat r;
-	for (int i = 0; i < 3; i++)
-		for (int j = 0; j < 3; j++)
-			r.m[i][j] = a.m[i][0] * b.m[0][j] + a.m[i][1] * b.m[1][j] + a.m[i][2] * b.m[2][j];
-	return r;
-}
+typedef dmat3 mat;
 
 /* axis 'X', 'Y' or 'Z', degrees */
 static mat rot(char axis, double deg)
 {
-	mat r = { { { 1, 0, 0 }, { 0, 1, 0 }, { 0, 0, 1 } } };
-	double c = cos(deg * PI / 180), sn = sin(deg * PI / 180);
-	int i = (axis - 'X' + 1) % 3, j = (axis - 'X' + 2) % 3;
-	r.m[i][i] = c; r.m[i][j] = -sn;
-	r.m[j][i] = sn; r.m[j][j] = c;
-	return r;
+	return dmat3_rot(axis - 'X', deg * PI / 180);
 }
 
 static void apply(mat m, const double v[3], double out[3])
@@ -105,8 +92,8 @@ static void test_channel_orders_match_the_bvh_rules(void **state)
 	assert_int_equal(s.dof_count, 9);
 	fk_pose(&s, fr.value[0], &pose);
 
-	mat w0 = mat_mul(mat_mul(rot('Z', 30), rot('X', -20)), rot('Y', 45));
-	mat w1 = mat_mul(w0, mat_mul(mat_mul(rot('Y', 10), rot('Z', 70)), rot('X', -35)));
+	mat w0 = dmat3_mul(dmat3_mul(rot('Z', 30), rot('X', -20)), rot('Y', 45));
+	mat w1 = dmat3_mul(w0, dmat3_mul(dmat3_mul(rot('Y', 10), rot('Z', 70)), rot('X', -35)));
 	double p0[3] = { 1, 2, 3 }, off[3] = { 0, 2, 0 }, end[3] = { 1, 0, 0 }, d[3];
 	assert_near(pose.tip[0], p0, "root");
 	double p1[3] = { p0[0], p0[1], p0[2] };
@@ -146,10 +133,10 @@ static void test_siblings_and_joint_positions(void **state)
 		const char *l = f ? "10 20 30 40 -50 60 2 0.5 -1 15 25 35" : "0 0 0 0 0 0 1 0 0 0 0 0";
 		for (int i = 0; i < 12; i++)
 			in[i] = strtod(l, (char **)&l);
-		mat wr = mat_mul(mat_mul(rot('X', in[0]), rot('Y', in[1])), rot('Z', in[2]));
-		mat wa = mat_mul(wr, rot('Z', in[3]));
-		mat wb = mat_mul(wa, mat_mul(rot('X', in[4]), rot('Y', in[5])));
-		mat wc = mat_mul(wa, mat_mul(mat_mul(rot('X', in[9]), rot('Y', in[10])), rot('Z', in[11])));
+		mat wr = dmat3_mul(dmat3_mul(rot('X', in[0]), rot('Y', in[1])), rot('Z', in[2]));
+		mat wa = dmat3_mul(wr, rot('Z', in[3]));
+		mat wb = dmat3_mul(wa, dmat3_mul(rot('X', in[4]), rot('Y', in[5])));
+		mat wc = dmat3_mul(wa, dmat3_mul(dmat3_mul(rot('X', in[9]), rot('Y', in[10])), rot('Z', in[11])));
 		double pr[3] = { 5, 0, 0 }, d[3], y1[3] = { 0, 1, 0 }, z1[3] = { 0, 0, 1 };
 		double pa[3] = { pr[0], pr[1], pr[2] };
 		apply(wr, y1, d);
