@@ -11,6 +11,7 @@
 #include "rig_align.h"
 #include "rig_map_file.h"
 #include "rig_pose.h"
+#include "rig_proportions.h"
 #include "rig_weights.h"
 
 /* Everything here is tens of MB with the host's limits: static. */
@@ -138,6 +139,20 @@ static int align_mesh(const char *path, bound_body *body)
 	return 0;
 }
 
+static void fit_proportions(const char *path, bound_body *body)
+{
+	rig_proportions pr;
+	rig_fit_proportions(&body->skel, body->pose_value, &body->pose, &scene, &map, &pr);
+	fprintf(stderr, "%s: skeleton given the mesh's proportions: mesh scaled by %.4g more to match the legs",
+		path, (double)pr.mesh_scale);
+	if (pr.scaled)
+		fprintf(stderr, ", %d stretches of bones by %.3g to %.3g", pr.scaled, (double)pr.min_ratio,
+			(double)pr.max_ratio);
+	if (pr.hip_bones)
+		fprintf(stderr, ", %d hip bones moved to the mesh's hips", pr.hip_bones);
+	fprintf(stderr, "\n");
+}
+
 static void pose_skeleton(const bind_args *a, const char *path, bound_body *body)
 {
 	static rig_pose_result res;
@@ -196,8 +211,11 @@ int rig_load_mesh(const bind_args *a, const char *path, bound_body *body)
 		return -1;
 	if (!scene.joint_count || (map.limbs < 2 && !a->joint_map))
 		return bind_unrigged(a, path, body);
-	if (!a->no_fit && align_mesh(path, body) < 0)
-		return -1;
+	if (!a->no_fit) {
+		if (align_mesh(path, body) < 0)
+			return -1;
+		fit_proportions(path, body);
+	}
 	pose_skeleton(a, path, body);
 	if (a->weights_mesh)
 		return mesh_weights(path, body);

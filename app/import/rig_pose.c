@@ -23,12 +23,12 @@ static void aim_one(const skel *s, const rig_scene *r, const rig_map *m, rig_sid
 	int ja = rig_map_part_joint(m, r, side, from), jb = rig_map_part_joint(m, r, side, to);
 	if (bone < 0 || ja < 0 || jb < 0 || out->aim_count == RIG_POSE_MAX_AIMS)
 		return;
-	vec3 target = vec3_sub(r->joint[jb].head, r->joint[ja].head);
-	if (vec3_length(target) <= 0.0f)
-		return;
 	fk_pose(s, values, pose);
+	/* at the mesh's next joint from where the bone starts now: a clavicle
+	 * starting elsewhere than the mesh's still puts the shoulder on it */
+	vec3 target = vec3_sub(r->joint[jb].head, pose->head[bone]);
 	vec3 before = vec3_sub(pose->tip[bone], pose->head[bone]);
-	if (vec3_length(before) <= 0.0f)
+	if (vec3_length(target) <= 0.0f || vec3_length(before) <= 0.0f)
 		return;
 	float cos_left = skel_aim(s, bone, vec3_normalize(target), values, pose);
 	rig_pose_aim *a = &out->aim[out->aim_count++];
