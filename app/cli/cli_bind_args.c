@@ -186,6 +186,7 @@ int bind_args_load(const bind_args *a, const char *asf, const char *obj, bound_b
 {
 	body->fitted = 0;
 	body->automatic = 0;
+	body->rigged = 0;
 	if (cli_load_skel(asf, &body->skel) < 0 || load_pose(a, body) < 0)
 		return -1;
 	if (!obj)

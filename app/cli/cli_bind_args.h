@@ -62,6 +62,8 @@ typedef struct bound_body {
 	bind_rig rig;
 	skin_weights weights;
 	int automatic;              /* 1: computed (info, bind_ns valid), 0: --weights */
+	int rigged;                 /* the mesh has weights of its own that map onto the
+				     * skeleton (the importer): --weights mesh can use them */
 	bind_info info;
 	bind_balance_info balance;  /* valid when automatic and balanced */
 	int balanced;

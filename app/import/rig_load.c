@@ -69,6 +69,14 @@ static void say_unmapped(const char *path, const char *skel_name)
 
 static void say_map(const char *path, const bound_body *body, int with_file)
 {
+	if (!map.mapped) {
+		fprintf(stderr, "%s: none of its %d joints is named as the built-in maps know (Rigify/Blender metarig, "
+			"Mixamo, MakeHuman default, Unreal, Daz, CMU):", path, scene.joint_count);
+		for (int j = 0; j < scene.joint_count && j < 24; j++)
+			fprintf(stderr, " %s", scene.joint[j].name);
+		fprintf(stderr, "%s\n", scene.joint_count > 24 ? " ..." : "");
+		return;
+	}
 	fprintf(stderr, "%s: %d of %d joints mapped onto the skeleton (names: %s%s):", path, map.mapped,
 		scene.joint_count, rig_family_name(map.family), with_file ? ", and the joint map" : "");
 	for (int j = 0; j < scene.joint_count; j++)
@@ -191,10 +199,15 @@ static int mesh_weights(const char *path, bound_body *body)
 /* No skin, or joints that do not map: bound as an OBJ of one's own. */
 static int bind_unrigged(const bind_args *a, const char *path, bound_body *body)
 {
+	if (a->weights_mesh && !scene.joint_count) {
+		fprintf(stderr, "%s: --weights mesh: the mesh has no skin (no joints, no weights); without --weights "
+			"skintool computes them\n", path);
+		return -1;
+	}
 	if (a->weights_mesh) {
-		fprintf(stderr, "%s: --weights mesh: %s; name the joints in a map file (--joint-map FILE, lines "
-			"MESH_JOINT = SKELETON_BONE) or leave the weights to skintool\n", path,
-			scene.joint_count ? "its arms and legs did not map onto the skeleton" : "the mesh has no skin");
+		fprintf(stderr, "%s: --weights mesh: its arms and legs did not map onto the skeleton; name its joints "
+			"in a map file (--joint-map FILE, lines MESH_JOINT = SKELETON_BONE; README \"Rigged meshes\") "
+			"or leave out --weights to have skintool compute them\n", path);
 		return -1;
 	}
 	if (scene.joint_count)
@@ -211,6 +224,7 @@ int rig_load_mesh(const bind_args *a, const char *path, bound_body *body)
 		return -1;
 	if (!scene.joint_count || (map.limbs < 2 && !a->joint_map))
 		return bind_unrigged(a, path, body);
+	body->rigged = 1;
 	if (!a->no_fit) {
 		if (align_mesh(path, body) < 0)
 			return -1;
