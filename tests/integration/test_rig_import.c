@@ -48,15 +48,24 @@ static int contains(const char *path, const char *text)
 	return found;
 }
 
+/* Imports the shared glb into scene; 0 when the shared data is absent. */
+static int import_glb(char *glb, size_t n)
+{
+	if (!data(GLB, glb, n))
+		return 0;
+	skp_error err;
+	scene.mesh = &glb_mesh;
+	assert_int_equal(rig_import(glb, NULL, &scene, &err), SKP_OK);
+	return 1;
+}
+
 static void test_glb_imports(void **state)
 {
 	(void)state;
 	char glb[4096];
-	if (!data(GLB, glb, sizeof glb))
-		skip();
 	skp_error err;
-	scene.mesh = &glb_mesh;
-	assert_int_equal(rig_import(glb, NULL, &scene, &err), SKP_OK);
+	if (!import_glb(glb, sizeof glb))
+		skip();
 	/* 1,226 file vertices, split at UV seams: welded back to 904 */
 	assert_int_equal(glb_mesh.vert_count, 904);
 	assert_int_equal(scene.welded, 322);
@@ -121,11 +130,8 @@ static void test_glb_maps(void **state)
 {
 	(void)state;
 	char glb[4096];
-	if (!data(GLB, glb, sizeof glb))
+	if (!import_glb(glb, sizeof glb))
 		skip();
-	skp_error err;
-	scene.mesh = &glb_mesh;
-	assert_int_equal(rig_import(glb, NULL, &scene, &err), SKP_OK);
 	static const want_map cmu[] = {
 		{ "spine", "root" }, { "spine.003", "thorax" }, { "spine.005", "head" },
 		{ "shoulder.L", "lclavicle" }, { "upper_arm.L", "lhumerus" }, { "forearm.R", "rradius" },
