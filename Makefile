@@ -60,6 +60,11 @@ LDLIBS   := -lm -pthread $(PLAT_LIBS)
 $(foreach m,$(APP_MODULES),$(eval OBJ_$(m) := $(SRC_$(m):%.c=$$(OUT)/%.o)))
 $(foreach m,$(CORE_MODULES),$(eval $(OBJ_$(m)): MOD_FLAGS = $(call mod_inc,$(m)) $$(CFLAGS_CORE)))
 $(foreach m,$(HOST_MODULES),$(eval $(OBJ_$(m)): MOD_FLAGS = $(call mod_inc,$(m)) $$(CFLAGS_HOST)))
+# libassimp: only the importer compiles against it and only skintool (and
+# the tests) link it.
+IMPORT_CFLAGS := $(shell $(PKG_CONFIG) --cflags $(PC_import) 2>/dev/null)
+IMPORT_LIBS   := $(shell $(PKG_CONFIG) --libs $(PC_import) 2>/dev/null)
+$(OBJ_import): MOD_FLAGS += $(IMPORT_CFLAGS)
 
 PLAT_SRC := platform/display/display.c platform/display/display_common.c \
             $(if $(filter-out osmesa,$(DISPLAYS)),platform/display/display_egl.c) \
@@ -75,10 +80,11 @@ FIXED_OBJ := $(FIXED_SRC:%.c=$(OUT)/%.o) $(if $(filter avx2,$(SIMD)),$(OUT)/app/
 APP_OBJ  := $(foreach m,$(APP_MODULES),$(OBJ_$(m)))
 
 # Libraries per layer: skinplay links core + cli + platform; skintool adds
-# analysis and its report code.
+# the importer, analysis and its report code.
 CORE_LIB     := $(OUT)/libskp_core.a
 CLI_LIB      := $(OUT)/libskp_cli.a
 ANALYSIS_LIB := $(OUT)/libskp_analysis.a
+IMPORT_LIB   := $(OUT)/libskp_import.a
 PLAT_LIB     := $(OUT)/libskp_platform.a
 SKINTOOL     := $(OUT)/skintool
 SKINPLAY     := $(OUT)/skinplay
@@ -153,21 +159,22 @@ $(OUT)/tests/support/%.o: tests/support/%.c
 $(CORE_LIB): $(CORE_OBJ)
 $(CLI_LIB): $(OBJ_cli)
 $(ANALYSIS_LIB): $(OBJ_analysis)
+$(IMPORT_LIB): $(OBJ_import)
 $(PLAT_LIB): $(PLAT_OBJ)
-$(CORE_LIB) $(CLI_LIB) $(ANALYSIS_LIB) $(PLAT_LIB):
+$(CORE_LIB) $(CLI_LIB) $(ANALYSIS_LIB) $(IMPORT_LIB) $(PLAT_LIB):
 	@mkdir -p $(@D)
 	rm -f $@ && $(AR) rcs $@ $^
 
 # the link map feeds `make size` (static RAM per module)
 $(SKINPLAY): $(OBJ_skinplay) $(CLI_LIB) $(PLAT_LIB) $(CORE_LIB)
 	$(CC) $(LDFLAGS) -Wl,-Map=$@.map -o $@ $^ $(LDLIBS)
-$(SKINTOOL): $(OBJ_skintool) $(CLI_LIB) $(ANALYSIS_LIB) $(PLAT_LIB) $(CORE_LIB)
-	$(CC) $(LDFLAGS) -o $@ $^ $(LDLIBS)
+$(SKINTOOL): $(OBJ_skintool) $(IMPORT_LIB) $(CLI_LIB) $(ANALYSIS_LIB) $(PLAT_LIB) $(CORE_LIB)
+	$(CC) $(LDFLAGS) -o $@ $^ $(IMPORT_LIBS) $(LDLIBS)
 
 # Test programs link every library.
-$(OUT)/tests/%: $(OUT)/tests/obj/%.o $(TESTLIB_OBJ) $(CLI_LIB) $(ANALYSIS_LIB) $(PLAT_LIB) $(CORE_LIB)
+$(OUT)/tests/%: $(OUT)/tests/obj/%.o $(TESTLIB_OBJ) $(IMPORT_LIB) $(CLI_LIB) $(ANALYSIS_LIB) $(PLAT_LIB) $(CORE_LIB)
 	@mkdir -p $(@D)
-	$(CC) $(LDFLAGS) -o $@ $^ $(CMOCKA_LIBS) $(LDLIBS)
+	$(CC) $(LDFLAGS) -o $@ $^ $(CMOCKA_LIBS) $(IMPORT_LIBS) $(LDLIBS)
 
 # The core must not allocate or do stdio (the runtime is fixed-memory), the
 # fixed-point path has no floating point, and no module includes above its
@@ -183,11 +190,12 @@ check-layers:
 # skinplay, the device program, links none of the tool's code: no symbol
 # the analysis library or the report defines may be in it.
 REPORT_OBJ := $(filter $(OUT)/app/skintool/report/%,$(OBJ_skintool))
-check-lean: $(SKINPLAY) $(ANALYSIS_LIB) $(REPORT_OBJ)
-	@$(NM) --defined-only $(ANALYSIS_LIB) $(REPORT_OBJ) | awk '$$2 ~ /^[TDBR]$$/ { print $$3 }' | sort -u > $(OUT)/tool-symbols.txt
+check-lean: $(SKINPLAY) $(ANALYSIS_LIB) $(IMPORT_LIB) $(REPORT_OBJ)
+	@$(NM) --defined-only $(ANALYSIS_LIB) $(IMPORT_LIB) $(REPORT_OBJ) | awk '$$2 ~ /^[TDBR]$$/ { print $$3 }' | sort -u > $(OUT)/tool-symbols.txt
 	@leaked=$$($(NM) --defined-only $(SKINPLAY) | awk '{ print $$3 }' | grep -xFf $(OUT)/tool-symbols.txt | tr '\n' ' '); \
 	if [ -n "$$leaked" ]; then echo "check-lean: skinplay links tool-only code: $$leaked"; exit 1; fi; \
-	echo "check-lean: skinplay links none of the $$(wc -l < $(OUT)/tool-symbols.txt) symbols of the analysis and report code"
+	echo "check-lean: skinplay links none of the $$(wc -l < $(OUT)/tool-symbols.txt) symbols of the importer, analysis and report code"; \
+	if $(NM) -D --undefined-only $(SKINPLAY) | grep -q ' ai[A-Z]'; then echo "check-lean: skinplay links libassimp"; exit 1; fi
 
 test: deps
 	@$(MAKE) --no-print-directory all $(UNIT_BIN) check-core check-layers check-lean

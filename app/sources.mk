@@ -6,8 +6,10 @@
 # beside it) does not compile.
 #
 #   skinplay   skintool (+ report/)            the programs: argv, stdio, main()
-#        \      /     \
-#          cli        analysis                 shared by both / tool-only measures
+#        \      /  |   \
+#          |   import  analysis                tool-only: rigged meshes (libassimp), measures
+#          |   /
+#          cli                                 shared by both
 #           |
 #   platform/{display,input,storage,sys}       Linux backends (base + port headers)
 #           |
@@ -28,6 +30,7 @@
 #   render    the GLES2 renderer, camera, font, shaders, GL entry points
 #   kiosk     player state machine, debounce, board config, input port
 #   analysis  tool-only measures: volume, radius, overlap, scenes
+#   import    tool-only: rigged glTF/FBX/COLLADA meshes through libassimp, joint maps
 #   cli       shared by both programs: bound body, skin run, show, errors, --version
 #   skinplay  the device program; skintool: the host tool (+ report/)
 
@@ -46,9 +49,10 @@ DEPS_kiosk    := base
 # both programs share (loading, binding, showing, --version), the programs.
 DEPS_analysis := skin mesh motion math base
 DEPS_cli      := $(CORE_MODULES) platform
+DEPS_import   := cli $(CORE_MODULES) platform
 DEPS_skinplay := cli $(CORE_MODULES) platform
-DEPS_skintool := cli analysis $(CORE_MODULES) platform
-HOST_MODULES  := analysis cli skinplay skintool
+DEPS_skintool := import cli analysis $(CORE_MODULES) platform
+HOST_MODULES  := analysis cli import skinplay skintool
 APP_MODULES   := $(CORE_MODULES) $(HOST_MODULES)
 
 # A module's private folders: on its own include path, nobody else's.
@@ -74,6 +78,8 @@ PC_input_gpio          := libgpiod
 PC_input_keyboard      :=
 PC_input_script        :=
 PC_platform            := libpng
+# The host tool's importer (app/import): the Open Asset Import Library.
+PC_import              := assimp
 # What platform code may include from app/: base, and the modules of the
 # port headers it implements (image: blockdev.h; kiosk: the button port,
 # input_port.h; render: the GL entry points, gl_api.h).

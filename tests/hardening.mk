@@ -17,11 +17,11 @@ FUZZ_BIN     := $(addprefix $(FUZZ_OUT)/fuzz_,$(FUZZ_NAMES))
 # only (no SIMD defines), no GL.
 FUZZ_MODULES := $(filter-out render,$(CORE_MODULES))
 FUZZ_CORE    := $(foreach m,$(FUZZ_MODULES),$(filter-out app/skin/kernels/%,$(SRC_$(m)))) \
-                $(KERNELS_scalar:%=app/skin/kernels/%.c)
+                $(KERNELS_scalar:%=app/skin/kernels/%.c) app/import/rig_map_file.c
 FUZZ_SAN     := -fsanitize=address,undefined -fno-sanitize-recover=undefined
 FUZZ_CFLAGS  := -std=c11 -g -O1 -Wall -Wextra -Werror -Wno-unused-command-line-argument \
                 -fsanitize=fuzzer-no-link $(FUZZ_SAN) $(sort $(foreach m,$(FUZZ_MODULES),$(call mod_inc,$(m)))) \
-                -Iboard/$(BOARD) -Itests/fuzz -MMD -MP
+                -Iapp/import -Iboard/$(BOARD) -Itests/fuzz -MMD -MP
 
 $(FUZZ_OUT)/%.o: %.c
 	@mkdir -p $(@D)
@@ -44,6 +44,7 @@ FUZZ_SEEDS_obj := tests/fuzz/seeds/obj
 FUZZ_SEEDS_ini := board/host board/rpi4
 FUZZ_SEEDS_board_config := board/host board/rpi4
 FUZZ_SEEDS_image := tests/fuzz/seeds/image
+FUZZ_SEEDS_joint_map := tests/fuzz/seeds/joint_map
 
 # Each target runs SECONDS on a corpus kept in the build directory. A crash
 # leaves its input in $(FUZZ_OUT)/crash/<target>/: fix the parser, copy the

@@ -2,6 +2,7 @@
 
 #include <stdio.h>
 #include <string.h>
+#include <strings.h>
 
 #include "cli_common.h"
 #include "cli_mesh_io.h"
@@ -70,7 +71,14 @@ int bind_args_parse(bind_args *a, int argc, char **argv, int *i)
 	if (strcmp(opt, "--weights") == 0) {
 		if (!(val = cli_option_value("skintool", opt, argc, argv, i)))
 			return -1;
-		a->weights_path = val;
+		a->weights_mesh = strcmp(val, "mesh") == 0;
+		a->weights_path = a->weights_mesh ? NULL : val;
+		return 1;
+	}
+	if (strcmp(opt, "--joint-map") == 0) {
+		if (!(val = cli_option_value("skintool", opt, argc, argv, i)))
+			return -1;
+		a->joint_map = val;
 		return 1;
 	}
 	if (strcmp(opt, "--bind-pose") == 0) {
@@ -102,8 +110,26 @@ static int load_pose(const bind_args *a, bound_body *body)
 	return 0;
 }
 
+static bind_mesh_importer mesh_importer;
+
+void bind_args_set_importer(bind_mesh_importer importer)
+{
+	mesh_importer = importer;
+}
+
+int bind_args_is_interchange(const char *path)
+{
+	static const char *const ext[] = { ".gltf", ".glb", ".fbx", ".dae", ".3ds", ".blend", ".x3d", ".ply",
+					   ".stl", ".x", ".ms3d", ".b3d", ".mdl", ".md5mesh", ".smd", ".ogex" };
+	const char *dot = strrchr(path, '.');
+	for (size_t i = 0; dot && i < sizeof ext / sizeof ext[0]; i++)
+		if (strcasecmp(dot, ext[i]) == 0)
+			return 1;
+	return 0;
+}
+
 /* generated: the body is the generated one, where balancing is measured */
-static int auto_weights(const bind_args *a, int generated, const char *obj, bound_body *body)
+int bind_args_auto_weights(const bind_args *a, int generated, const char *obj, bound_body *body)
 {
 	bind_balance_work *work = &cli_scratch_area()->balance;
 	skp_error err;
@@ -131,8 +157,8 @@ static int generate_body(const bind_args *a, const char *asf, bound_body *body)
 {
 	manq_work *work = &cli_scratch_area()->manq;
 	skp_error err;
-	if (a->pose_path || a->fit || a->group || a->weights_path) {
-		fprintf(stderr, "%s: --bind-pose, --fit, --group and --weights need a mesh\n", asf);
+	if (a->pose_path || a->fit || a->group || a->weights_path || a->weights_mesh || a->joint_map) {
+		fprintf(stderr, "%s: --bind-pose, --fit, --group, --weights and --joint-map need a mesh\n", asf);
 		return -1;
 	}
 	if (manq_build(&body->skel, 0, work, &body->mesh, &err) != SKP_OK) {
@@ -160,10 +186,23 @@ int bind_args_load(const bind_args *a, const char *asf, const char *obj, bound_b
 {
 	body->fitted = 0;
 	body->automatic = 0;
+	body->rigged = 0;
 	if (cli_load_skel(asf, &body->skel) < 0 || load_pose(a, body) < 0)
 		return -1;
 	if (!obj)
-		return generate_body(a, asf, body) < 0 ? -1 : auto_weights(a, 1, asf, body);
+		return generate_body(a, asf, body) < 0 ? -1 : bind_args_auto_weights(a, 1, asf, body);
+	if (bind_args_is_interchange(obj)) {
+		if (mesh_importer)
+			return mesh_importer(a, obj, body);
+		fprintf(stderr, "%s: this program reads OBJ meshes and packed images: pack the rigged mesh into an "
+			"image first (skintool pack SKELETON MOTION --mesh %s -o SHOW.skn), then play that\n", obj, obj);
+		return -1;
+	}
+	if (a->weights_mesh || a->joint_map) {
+		fprintf(stderr, "%s: an OBJ has no joints or weights of its own: --weights mesh and --joint-map need "
+			"a rigged mesh (glTF 2.0, FBX, COLLADA)\n", obj);
+		return -1;
+	}
 	if (cli_pick_mesh(obj, a->group, &body->mesh) < 0)
 		return -1;
 	if (body->mesh.vert_count == 0) {
@@ -176,5 +215,5 @@ int bind_args_load(const bind_args *a, const char *asf, const char *obj, bound_b
 	if (a->weights_path)
 		return cli_load_weights(a->weights_path, &body->skel, body->mesh.vert_count,
 					 &body->weights);
-	return auto_weights(a, cli_obj_is_generated(obj), obj, body);
+	return bind_args_auto_weights(a, cli_obj_is_generated(obj), obj, body);
 }

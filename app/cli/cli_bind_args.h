@@ -7,7 +7,9 @@
  *   --bind-pose P.amc[:F]   bind in frame F of P (the number written in the
  *                           file; default its first frame), or `rest` for the
  *                           rest pose; default: the mesh's own (cli_mesh_place.h)
- *   --weights W.csv         read the weights instead of computing them (bind.h)
+ *   --weights W.csv         read the weights instead of computing them (bind.h);
+ *   --weights mesh          a rigged mesh's own (glTF, FBX, COLLADA: the importer)
+ *   --joint-map FILE        a rigged mesh's joints -> skeleton bones (rig_map_file.h)
  *   --balance on|off        volume balancing of computed weights (bind_balance.h);
  *                           default on for the generated body (also as the OBJ
  *                           `skintool mannequin` writes), off for a mesh of
@@ -24,7 +26,7 @@
 #include "bind_pose_guess.h"
 #include "mesh.h"
 
-#define BIND_ARGS_USAGE "[--group G] [--fit|--no-fit] [--bind-pose P.amc[:F]|rest] [--weights IN.csv] [--balance on|off]"
+#define BIND_ARGS_USAGE "[--group G] [--fit|--no-fit] [--bind-pose P.amc[:F]|rest] [--weights IN.csv|mesh] [--joint-map FILE] [--balance on|off]"
 
 typedef struct bind_args {
 	const char *group;          /* NULL: every face */
@@ -33,6 +35,8 @@ typedef struct bind_args {
 	const char *pose_path;      /* NULL: the rest pose, or the mesh's own */
 	long pose_frame;            /* -1: the file's first frame */
 	const char *weights_path;   /* NULL: automatic weights */
+	int weights_mesh;           /* --weights mesh: a rigged mesh's own */
+	const char *joint_map;      /* --joint-map FILE */
 	int balance;                /* -1 default, 0 off, 1 on (bind_balance) */
 	char pose_buf[1024];        /* pose_path without its :F */
 } bind_args;
@@ -58,6 +62,8 @@ typedef struct bound_body {
 	bind_rig rig;
 	skin_weights weights;
 	int automatic;              /* 1: computed (info, bind_ns valid), 0: --weights */
+	int rigged;                 /* the mesh has weights of its own that map onto the
+				     * skeleton (the importer): --weights mesh can use them */
 	bind_info info;
 	bind_balance_info balance;  /* valid when automatic and balanced */
 	int balanced;
@@ -70,6 +76,23 @@ typedef struct bound_body {
  * its arms out (skel_tpose.h), which is then the bind pose.
  * Returns 0, or -1 after reporting the error on stderr. */
 int bind_args_load(const bind_args *a, const char *asf, const char *obj, bound_body *body);
+
+/* Meshes other than OBJ (glTF, FBX, COLLADA) go to this loader, which
+ * skintool sets (its importer links the asset library; skinplay reads OBJ
+ * and packed images only). It fills body->mesh, the bind pose and the
+ * weights (bind_args_auto_weights for computed ones) as bind_args_load
+ * does for an OBJ; body->skel and the requested pose are loaded before.
+ * Returns 0, or -1 after reporting the error. */
+typedef int (*bind_mesh_importer)(const bind_args *a, const char *path, bound_body *body);
+void bind_args_set_importer(bind_mesh_importer importer);
+
+/* 1 when path names a mesh the importer reads rather than an OBJ. */
+int bind_args_is_interchange(const char *path);
+
+/* The paper's weights (balanced when asked, or by default for the
+ * generated body) on body->mesh in body->pose. Returns 0, or -1 after
+ * reporting the error. */
+int bind_args_auto_weights(const bind_args *a, int generated, const char *name, bound_body *body);
 
 /* The bind pose's values, or NULL when it is the rest pose. */
 const float *bound_pose_values(const bound_body *body);

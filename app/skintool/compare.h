@@ -22,6 +22,7 @@ typedef struct compare_args {
 	bind_args bind;
 	const char *asf, *amc, *mesh, *out;
 	long renders;
+	const char *csv_name;       /* in out: "metrics.csv" */
 } compare_args;
 
 /* One frame's figures for one algorithm, as kept for the charts. */
@@ -50,6 +51,12 @@ typedef struct compare_run {
 } compare_run;
 
 extern const char *const compare_algo_label[NALGO];
+
+/* A rigged mesh's own weights and computed ones side by side: the clip
+ * measured again with the other weights (--weights mesh or not) into
+ * DIR/metrics_OTHER.csv, its summary beside the main one on the page.
+ * Returns 0 (also when the mesh has no weights of its own), or -1. */
+int compare_other_weights(compare_run *main_run, const compare_args *a);
 
 /* The measuring part: each returns 0, or -1 after reporting. */
 int compare_measure_scenes(compare_run *c);

@@ -243,7 +243,7 @@ static long count_frames(const compare_args *a, const skel *s)
 
 static int open_csv(compare_run *c, const compare_args *a)
 {
-	snprintf(c->path, sizeof c->path, "%s/metrics.csv", a->out);
+	snprintf(c->path, sizeof c->path, "%s/%s", a->out, a->csv_name ? a->csv_name : "metrics.csv");
 	if (!(c->csv = fopen(c->path, "w"))) {
 		fprintf(stderr, "%s: %s\n", c->path, strerror(errno));
 		return -1;
@@ -266,7 +266,8 @@ int compare_load_clip(compare_run *c, const compare_args *a)
 	r->skel = &c->body.skel;
 	r->mesh_name = what;
 	r->balanced = c->body.balanced;
-	r->weights = !c->body.automatic ? "read from the weights file" :
+	r->weights = a->bind.weights_mesh ? "the mesh's own (its skin, mapped onto the skeleton)" :
+		     !c->body.automatic ? "read from the weights file" :
 		     c->body.balanced ? "automatic, volume-balanced" : "automatic (the paper's rule alone)";
 	r->vert_count = c->body.mesh.vert_count;
 	r->tri_count = c->body.mesh.tri_count;
@@ -355,3 +356,23 @@ int compare_explain_volume(compare_run *c, const compare_args *a)
 	return 0;
 }
 
+
+int compare_other_weights(compare_run *main_run, const compare_args *a)
+{
+	static compare_run other;
+	static compare_args oa;
+	if (!main_run->body.rigged || a->bind.weights_path)
+		return 0;
+	oa = *a;
+	oa.bind.weights_mesh = !a->bind.weights_mesh;
+	oa.csv_name = oa.bind.weights_mesh ? "metrics_weights_mesh.csv" : "metrics_weights_computed.csv";
+	fprintf(stderr, "%s: the clip again with the %s weights, for the side-by-side table\n", a->mesh,
+		oa.bind.weights_mesh ? "mesh's own" : "computed");
+	memset(&other.rep, 0, sizeof other.rep);
+	if (compare_load_clip(&other, &oa) < 0 || compare_measure_clip(&other, &oa) < 0)
+		return -1;
+	main_run->rep.other_weights = other.rep.weights;
+	main_run->rep.other_csv = oa.csv_name;
+	main_run->rep.other_algo = other.rep.algo;
+	return 0;
+}

@@ -105,7 +105,8 @@ int cmd_compare(int argc, char **argv)
 	c.rep.asf = a.asf;
 	c.rep.amc = a.amc;
 	c.rep.clip = clip;
-	if (compare_measure_scenes(&c) < 0 || compare_load_clip(&c, &a) < 0 || compare_measure_clip(&c, &a) < 0)
+	if (compare_measure_scenes(&c) < 0 || compare_load_clip(&c, &a) < 0 || compare_measure_clip(&c, &a) < 0 ||
+	    compare_other_weights(&c, &a) < 0)
 		return 1;
 	uint64_t t1 = clock_now_ns();
 	compare_pick_stills(&c, (int)a.renders);

@@ -18,7 +18,7 @@ INPUTS        := gpio keyboard script
 # No AVX2 on ARM: NEON float kernels (app/skin/kernels/skin_neon.c), or SIMD=scalar.
 SIMD          ?= neon
 # Debian packages `make deps` installs (board/deps.mk), building on the Pi.
-LIB_PKGS      := libcmocka-dev libegl-dev libgles-dev libgbm-dev libdrm-dev libgpiod-dev libpng-dev
+LIB_PKGS      := libcmocka-dev libegl-dev libgles-dev libgbm-dev libdrm-dev libgpiod-dev libpng-dev libassimp-dev
 DEB_PKGS      := gcc libc6-dev make pkg-config $(LIB_PKGS) dpkg-dev help2man lintian
 
 # Cross build from another architecture (Debian 12 x86-64): the compiler,
@@ -36,7 +36,7 @@ export QEMU_LD_PREFIX := /usr/aarch64-linux-gnu
 # the demo image and the man pages are made by the arm64 programs
 TARGET_RUN    := qemu-aarch64-static
 RPI4_QEMU_SKIP := test_render test_display test_kiosk test_image_cli test_compare_report test_image_repair \
-                  test_convert_cli test_user_mesh
+                  test_convert_cli test_user_mesh test_rig_import
 TEST_WRAP     := sh tests/cross_run.sh aarch64 "$(RPI4_QEMU_SKIP)" --
 endif
 endif

@@ -15,6 +15,7 @@
 #include "image_read.h"
 #include "ini.h"
 #include "obj.h"
+#include "rig_map_file.h"
 #include "skel_tpose.h"
 #include "skp_reader.h"
 #include "text_lines.h"
@@ -170,6 +171,17 @@ int fuzz_image(const uint8_t *data, size_t size)
 	return 0;
 }
 
+/* the joint map parser of the host tool's importer (app/import) */
+int fuzz_joint_map(const uint8_t *data, size_t size)
+{
+	static rig_map_file map;
+	if (rig_map_file_parse((const char *)data, size, &map, &err) == SKP_OK)
+		for (int i = 0; i < map.count; i++)
+			if (!map.entry[i].joint[0] || !map.entry[i].bone[0])
+				__builtin_trap();
+	return 0;
+}
+
 const fuzz_target fuzz_targets[] = {
 	{ "asf", fuzz_asf },
 	{ "amc", fuzz_amc },
@@ -178,5 +190,6 @@ const fuzz_target fuzz_targets[] = {
 	{ "ini", fuzz_ini },
 	{ "board_config", fuzz_board_config },
 	{ "image", fuzz_image },
+	{ "joint_map", fuzz_joint_map },
 	{ NULL, NULL },
 };

@@ -35,7 +35,7 @@ if command -v clang-tidy >/dev/null 2>&1; then
 	log=$(mktemp); trap 'rm -f "$log"' EXIT
 	for f in $sources; do
 		case $f in
-		app/skintool/*|app/skinplay/*|app/cli/*|app/analysis/*|platform/*) std=gnu11 ;;
+		app/skintool/*|app/skinplay/*|app/cli/*|app/analysis/*|app/import/*|platform/*) std=gnu11 ;;
 		*) std=c11 ;;
 		esac
 		simd=""

@@ -112,6 +112,10 @@ typedef struct report_chart {
 typedef struct report {
 	const char *asf, *amc, *mesh_name, *clip;
 	const char *weights;        /* how the weights came about, for the page */
+	/* a rigged mesh: the clip measured with its other weights too
+	 * (compare_other_weights), NULL when not */
+	const char *other_weights, *other_csv;
+	const report_algo *other_algo;
 	int balanced;               /* weights volume-balanced (bind_balance.h) */
 	const skel *skel;
 	int vert_count, tri_count, measured;

@@ -178,6 +178,37 @@ static void summary_table(FILE *f, const report *r)
 	      "LBS and DQBS at the same vertex.</p>\n", f);
 }
 
+static void weights_row(FILE *f, const char *algo, const char *weights, const report_algo *s)
+{
+	fprintf(f, "<tr><td>%s</td><td>", algo);
+	put_escaped(f, weights);
+	fprintf(f, "</td><td>%.2f%%<small>frame %ld</small></td><td>%.2f%%<small>frame %ld</small></td>"
+		"<td>%.4f<small>frame %ld</small></td><td>%.4f<small>frame %ld</small></td></tr>\n",
+		loss_pct(s), s->vol_min.frame, s->vol_max.value > 1.0 ? 100.0 * (s->vol_max.value - 1.0) : 0.0,
+		s->vol_max.frame, s->rad_min.value, s->rad_min.frame, s->rad_max.value, s->rad_max.frame);
+}
+
+/* A rigged mesh: its own weights and computed ones, algorithm by algorithm. */
+static void weights_table(FILE *f, const report *r)
+{
+	if (!r->other_algo)
+		return;
+	fputs("<h2>The mesh's own weights next to computed ones</h2>\n<table id=\"weights\">\n<tr><th>algorithm"
+	      "</th><th>weights</th><th>worst volume loss</th><th>largest volume gain</th><th>worst collapse<br>"
+	      "(min radius ratio)</th><th>largest swelling<br>(max radius ratio)</th></tr>\n", f);
+	for (int a = 0; a < SKIN_ALGO_COUNT; a++) {
+		weights_row(f, algo_label[a], r->weights, &r->algo[a]);
+		weights_row(f, algo_label[a], r->other_weights, &r->other_algo[a]);
+	}
+	fputs("</table>\n<p class=\"meta\">The same clip skinned with the artist's weights from the mesh file and "
+	      "with the weights skintool computes (the paper's rule), on the same skeleton in the same bind "
+	      "pose; the other run's frames are in <a href=\"", f);
+	put_escaped(f, r->other_csv);
+	fputs("\">", f);
+	put_escaped(f, r->other_csv);
+	fputs("</a>, in the columns of metrics.csv.</p>\n", f);
+}
+
 static void joint_row(FILE *f, const report *r, const report_joint *j)
 {
 	static const char *const axis[3] = { "rx", "ry", "rz" };
@@ -411,6 +442,7 @@ int report_write_html(const report *r, const char *dir)
 	fputs("<h2>Summary</h2>\n", f);
 	verdicts(f, r);
 	summary_table(f, r);
+	weights_table(f, r);
 	joints_section(f, r);
 	stills(f, r);
 	region_table(f, r);

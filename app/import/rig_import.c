@@ -1,0 +1,217 @@
+#include "rig_scene.h"
+
+#include <stddef.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include <assimp/cimport.h>
+#include <assimp/postprocess.h>
+#include <assimp/scene.h>
+
+#include "mesh_normals.h"
+#include "rig_weld.h"
+
+int rig_find_joint(const rig_scene *r, const char *name)
+{
+	for (int j = 0; j < r->joint_count; j++)
+		if (strcmp(r->joint[j].name, name) == 0)
+			return j;
+	return -1;
+}
+
+static void copy_name(char *dst, const struct aiString *s)
+{
+	size_t n = s->length < RIG_NAME - 1 ? s->length : RIG_NAME - 1;
+	memcpy(dst, s->data, n);
+	dst[n] = '\0';
+}
+
+static vec3 transform_point(const struct aiMatrix4x4 *m, vec3 p)
+{
+	return vec3_make(m->a1 * p.x + m->a2 * p.y + m->a3 * p.z + m->a4,
+			 m->b1 * p.x + m->b2 * p.y + m->b3 * p.z + m->b4,
+			 m->c1 * p.x + m->c2 * p.y + m->c3 * p.z + m->c4);
+}
+
+typedef struct import_walk {
+	const struct aiScene *scene;
+	const char *group;
+	rig_scene *out;
+	skp_error *err;
+	int group_found;
+} import_walk;
+
+static skp_status add_joint(import_walk *w, const struct aiBone *b, const struct aiMatrix4x4 *node_m,
+			    int *index)
+{
+	rig_scene *r = w->out;
+	char name[RIG_NAME];
+	copy_name(name, &b->mName);
+	int j = rig_find_joint(r, name);
+	if (j < 0) {
+		if (r->joint_count >= RIG_MAX_JOINTS)
+			return skp_fail(w->err, SKP_ERR_LIMIT, 0, "more than %d joints", RIG_MAX_JOINTS);
+		j = r->joint_count++;
+		rig_joint *jt = &r->joint[j];
+		memset(jt, 0, sizeof *jt);
+		memcpy(jt->name, name, sizeof name);
+		jt->parent = -1;
+		/* the offset matrix takes mesh space to the joint's space at bind */
+		struct aiMatrix4x4 bind = b->mOffsetMatrix;
+		aiMatrix4Inverse(&bind);
+		jt->head = transform_point(node_m, transform_point(&bind, vec3_make(0.0f, 0.0f, 0.0f)));
+	}
+	*index = j;
+	return SKP_OK;
+}
+
+static void add_influence(rig_scene *r, int v, int joint, float weight)
+{
+	int n = r->infl_count[v];
+	for (int k = 0; k < n; k++)
+		if (r->infl_joint[v][k] == joint) {
+			r->infl_weight[v][k] += weight;
+			return;
+		}
+	if (n == RIG_MAX_INFLUENCES) {
+		r->dropped_influences++;
+		return;
+	}
+	r->infl_joint[v][n] = (uint16_t)joint;
+	r->infl_weight[v][n] = weight;
+	r->infl_count[v] = (uint8_t)(n + 1);
+}
+
+static skp_status add_bones(import_walk *w, const struct aiMesh *am, const struct aiMatrix4x4 *node_m,
+			    int base)
+{
+	for (unsigned b = 0; b < am->mNumBones; b++) {
+		const struct aiBone *bone = am->mBones[b];
+		int j = -1;
+		skp_status rc = add_joint(w, bone, node_m, &j);
+		if (rc != SKP_OK)
+			return rc;
+		for (unsigned k = 0; k < bone->mNumWeights; k++) {
+			const struct aiVertexWeight *vw = &bone->mWeights[k];
+			if (vw->mVertexId >= am->mNumVertices || !(vw->mWeight > 0.0f))
+				continue;
+			add_influence(w->out, base + (int)vw->mVertexId, j, vw->mWeight);
+			w->out->joint[j].weighted++;
+		}
+	}
+	return SKP_OK;
+}
+
+static skp_status add_mesh(import_walk *w, const struct aiMesh *am, const struct aiMatrix4x4 *node_m)
+{
+	mesh *m = w->out->mesh;
+	int base = m->vert_count;
+	if ((long)base + am->mNumVertices > SKP_MAX_VERTS)
+		return skp_fail(w->err, SKP_ERR_LIMIT, 0, "more than %d vertices", SKP_MAX_VERTS);
+	for (unsigned v = 0; v < am->mNumVertices; v++) {
+		const struct aiVector3D *p = &am->mVertices[v];
+		m->pos[base + (int)v] = transform_point(node_m, vec3_make(p->x, p->y, p->z));
+		w->out->infl_count[base + (int)v] = 0;
+	}
+	m->vert_count = base + (int)am->mNumVertices;
+	for (unsigned f = 0; f < am->mNumFaces; f++) {
+		const struct aiFace *face = &am->mFaces[f];
+		if (face->mNumIndices != 3)
+			continue;       /* points and lines: nothing to skin */
+		if (m->tri_count >= SKP_MAX_TRIS)
+			return skp_fail(w->err, SKP_ERR_LIMIT, 0, "more than %d triangles", SKP_MAX_TRIS);
+		for (int k = 0; k < 3; k++)
+			m->tri[m->tri_count][k] = (uint32_t)base + face->mIndices[k];
+		m->tri_count++;
+	}
+	return add_bones(w, am, node_m, base);
+}
+
+static int wanted(const import_walk *w, const struct aiNode *node, const struct aiMesh *am)
+{
+	if (!w->group)
+		return 1;
+	return strcmp(am->mName.data, w->group) == 0 || strcmp(node->mName.data, w->group) == 0;
+}
+
+static void note_part(rig_scene *r, const struct aiNode *node, const struct aiMesh *am, int used)
+{
+	if (r->part_count >= RIG_MAX_PARTS)
+		return;
+	copy_name(r->part[r->part_count], am->mName.length ? &am->mName : &node->mName);
+	r->part_used[r->part_count] = used;
+	r->part_skinned[r->part_count] = am->mNumBones > 0;
+	r->part_count++;
+}
+
+static skp_status walk_node(import_walk *w, const struct aiNode *node, const struct aiMatrix4x4 *parent_m)
+{
+	struct aiMatrix4x4 m = *parent_m;
+	aiMultiplyMatrix4(&m, &node->mTransformation);
+	for (unsigned k = 0; k < node->mNumMeshes; k++) {
+		const struct aiMesh *am = w->scene->mMeshes[node->mMeshes[k]];
+		int use = (am->mPrimitiveTypes & aiPrimitiveType_TRIANGLE) && wanted(w, node, am);
+		note_part(w->out, node, am, use);
+		if (!use)
+			continue;
+		w->group_found = 1;
+		skp_status rc = add_mesh(w, am, &m);
+		if (rc != SKP_OK)
+			return rc;
+	}
+	for (unsigned c = 0; c < node->mNumChildren; c++) {
+		skp_status rc = walk_node(w, node->mChildren[c], &m);
+		if (rc != SKP_OK)
+			return rc;
+	}
+	return SKP_OK;
+}
+
+/* The joint hierarchy is the node tree's, skipping nodes that are not
+ * joints (an armature's own node, a mesh node). */
+static void link_parents(const struct aiNode *node, int joint_above, rig_scene *r)
+{
+	int j = rig_find_joint(r, node->mName.data);
+	if (j >= 0 && r->joint[j].parent < 0 && joint_above != j)
+		r->joint[j].parent = joint_above;
+	for (unsigned c = 0; c < node->mNumChildren; c++)
+		link_parents(node->mChildren[c], j >= 0 ? j : joint_above, r);
+}
+
+static skp_status group_missing(const rig_scene *r, const char *group, skp_error *err)
+{
+	char list[160] = "";
+	size_t used = 0;
+	for (int p = 0; p < r->part_count && used + RIG_NAME + 4 < sizeof list; p++)
+		used += (size_t)snprintf(list + used, sizeof list - used, "%s'%s'", p ? ", " : "", r->part[p]);
+	return skp_fail(err, SKP_ERR_RANGE, 0, "no mesh named '%s'; there are: %s", group, list);
+}
+
+skp_status rig_import(const char *path, const char *group, rig_scene *out, skp_error *err)
+{
+	mesh *m = out->mesh;
+	memset(out, 0, offsetof(rig_scene, infl_count));
+	out->mesh = m;
+	m->vert_count = m->tri_count = 0;
+	const struct aiScene *scene = aiImportFile(path, aiProcess_Triangulate | aiProcess_JoinIdenticalVertices |
+						    aiProcess_SortByPType);
+	if (!scene || !scene->mRootNode)
+		return skp_fail(err, SKP_ERR_SYNTAX, 0, "%s", aiGetErrorString());
+	import_walk w = { scene, group, out, err, 0 };
+	struct aiMatrix4x4 id;
+	aiIdentityMatrix4(&id);
+	skp_status rc = walk_node(&w, scene->mRootNode, &id);
+	if (rc == SKP_OK)
+		link_parents(scene->mRootNode, -1, out);
+	aiReleaseImport(scene);
+	if (rc != SKP_OK)
+		return rc;
+	if (group && !w.group_found)
+		return group_missing(out, group, err);
+	if (m->tri_count == 0)
+		return skp_fail(err, SKP_ERR_SYNTAX, 0, "no triangles in the file");
+	rig_weld(out);
+	mesh_compute_normals(m);
+	return SKP_OK;
+}

@@ -1,0 +1,237 @@
+#include "rig_load.h"
+
+#include <stdio.h>
+#include <string.h>
+#include <strings.h>
+
+#include "cli_mesh_place.h"
+#include "cli_common.h"
+#include "clock.h"
+#include "mesh_normals.h"
+#include "rig_align.h"
+#include "rig_map_file.h"
+#include "rig_pose.h"
+#include "rig_proportions.h"
+#include "rig_weights.h"
+
+/* Everything here is tens of MB with the host's limits: static. */
+static rig_scene scene;
+static rig_map map;
+static rig_map_file map_file;
+
+static int import_scene(const bind_args *a, const char *path, bound_body *body)
+{
+	skp_error err;
+	scene.mesh = &body->mesh;
+	uint64_t t0 = clock_now_ns();
+	if (rig_import(path, a->group, &scene, &err) != SKP_OK) {
+		const char *dot = strrchr(path, '.');
+		fprintf(stderr, "%s: %s\n", path, err.msg);
+		if (!a->group)
+			fprintf(stderr, "%s: skintool reads rigged meshes as glTF 2.0 (.gltf, .glb), FBX (binary or ASCII "
+				"6.1-7.x) and COLLADA (.dae); %s\n", path, dot && strcasecmp(dot, ".fbx") == 0
+				? "if this FBX does not load, export the character as glTF 2.0 (.glb) instead "
+				  "(Blender: File > Export > glTF 2.0)" : "an OBJ works without a rig");
+		return -1;
+	}
+	fprintf(stderr, "%s: %d vertices, %d triangles, %d joints (imported in %.1f ms", path,
+		body->mesh.vert_count, body->mesh.tri_count, scene.joint_count,
+		(double)(clock_now_ns() - t0) / 1e6);
+	if (scene.welded)
+		fprintf(stderr, "; %d split vertices welded", scene.welded);
+	fprintf(stderr, ")\n");
+	for (int p = 0; p < scene.part_count; p++)
+		if (!scene.part_used[p])
+			fprintf(stderr, "%s: mesh '%s' left out (--group chooses)\n", path, scene.part[p]);
+	return 0;
+}
+
+static void say_unmapped(const char *path, const char *skel_name)
+{
+	int shown = 0, count = 0;
+	for (int j = 0; j < scene.joint_count; j++)
+		count += map.bone[j] < 0;
+	if (!count)
+		return;
+	fprintf(stderr, "%s: %d joints unmapped, moving with their nearest mapped parent:", path, count);
+	for (int j = 0; j < scene.joint_count; j++) {
+		if (map.bone[j] >= 0)
+			continue;
+		if (shown++ == 12) {
+			fprintf(stderr, " ...");
+			break;
+		}
+		fprintf(stderr, " %s->%s", scene.joint[j].name,
+			map.via[j] >= 0 ? scene.joint[map.via[j]].name : skel_name);
+	}
+	fprintf(stderr, "\n");
+}
+
+static void say_map(const char *path, const bound_body *body, int with_file)
+{
+	if (!map.mapped) {
+		fprintf(stderr, "%s: none of its %d joints is named as the built-in maps know (Rigify/Blender metarig, "
+			"Mixamo, MakeHuman default, Unreal, Daz, CMU):", path, scene.joint_count);
+		for (int j = 0; j < scene.joint_count && j < 24; j++)
+			fprintf(stderr, " %s", scene.joint[j].name);
+		fprintf(stderr, "%s\n", scene.joint_count > 24 ? " ..." : "");
+		return;
+	}
+	fprintf(stderr, "%s: %d of %d joints mapped onto the skeleton (names: %s%s):", path, map.mapped,
+		scene.joint_count, rig_family_name(map.family), with_file ? ", and the joint map" : "");
+	for (int j = 0; j < scene.joint_count; j++)
+		if (map.bone[j] >= 0)
+			fprintf(stderr, " %s=%s", scene.joint[j].name, body->skel.bone[map.bone[j]].name);
+	fprintf(stderr, "\n");
+	say_unmapped(path, body->skel.bone[0].name);
+}
+
+static int load_map(const bind_args *a, const char *path, bound_body *body)
+{
+	skp_error err;
+	if (a->joint_map && rig_map_file_read(a->joint_map, &map_file, &err) != SKP_OK) {
+		cli_error(a->joint_map, &err);
+		return -1;
+	}
+	if (rig_map_joints(&scene, &body->skel, &body->pose, a->joint_map ? &map_file : NULL, &map, &err) != SKP_OK) {
+		if (err.line > 0)
+			cli_error(a->joint_map, &err);
+		else
+			fprintf(stderr, "%s: %s\n", path, err.msg);
+		return -1;
+	}
+	say_map(path, body, a->joint_map != NULL);
+	return 0;
+}
+
+/* Joints whose place does not depend on how the arms and legs are posed. */
+static int alignment_pairs(const bound_body *body, vec3 *from, vec3 *to)
+{
+	static const rig_slot fixed[] = { RIG_HEAD, RIG_CLAVICLE, RIG_UPPER_ARM, RIG_THIGH, RIG_SHIN, RIG_FOOT };
+	int n = 0;
+	if (map.hips >= 0 && map.bone[map.hips] >= 0) {
+		from[n] = scene.joint[map.hips].head;
+		to[n++] = body->pose.head[map.bone[map.hips]];
+	}
+	for (int side = RIG_CENTRE; side <= RIG_RIGHT; side++)
+		for (size_t k = 0; k < sizeof fixed / sizeof fixed[0]; k++) {
+			int j = rig_map_part_joint(&map, &scene, (rig_side)side, fixed[k]);
+			if (j < 0)
+				continue;
+			from[n] = scene.joint[j].head;
+			to[n++] = body->pose.head[map.bone[j]];
+		}
+	return n;
+}
+
+static int align_mesh(const char *path, bound_body *body)
+{
+	vec3 from[2 * RIG_SLOT_COUNT + 1], to[2 * RIG_SLOT_COUNT + 1];
+	rig_align al;
+	skp_error err;
+	if (rig_align_fit(from, to, alignment_pairs(body, from, to), &al, &err) != SKP_OK) {
+		fprintf(stderr, "%s: cannot put the mesh on the skeleton: %s\n", path, err.msg);
+		return -1;
+	}
+	mesh *m = &body->mesh;
+	for (int v = 0; v < m->vert_count; v++)
+		m->pos[v] = rig_align_point(&al, m->pos[v]);
+	for (int j = 0; j < scene.joint_count; j++)
+		scene.joint[j].head = rig_align_point(&al, scene.joint[j].head);
+	mesh_compute_normals(m);
+	body->fitted = 1;
+	fprintf(stderr, "%s: put on the skeleton by its joints: turned %.0f degrees%s, scaled by %.4g, moved by "
+		"%.4g %.4g %.4g; joints off by %.3g after (--no-fit keeps the mesh as it is)\n", path,
+		(double)al.turn_deg, al.snapped ? " (a quarter-turn combination)" : "", (double)al.scale,
+		(double)al.offset.x, (double)al.offset.y, (double)al.offset.z, (double)al.rms);
+	return 0;
+}
+
+static void fit_proportions(const char *path, bound_body *body)
+{
+	rig_proportions pr;
+	rig_fit_proportions(&body->skel, body->pose_value, &body->pose, &scene, &map, &pr);
+	fprintf(stderr, "%s: skeleton given the mesh's proportions: mesh scaled by %.4g more to match the legs",
+		path, (double)pr.mesh_scale);
+	if (pr.scaled)
+		fprintf(stderr, ", %d stretches of bones by %.3g to %.3g", pr.scaled, (double)pr.min_ratio,
+			(double)pr.max_ratio);
+	if (pr.hip_bones)
+		fprintf(stderr, ", %d hip bones moved to the mesh's hips", pr.hip_bones);
+	fprintf(stderr, "\n");
+}
+
+static void pose_skeleton(const bind_args *a, const char *path, bound_body *body)
+{
+	static rig_pose_result res;
+	if (a->pose_path || a->rest_pose) {
+		rig_pose_measure(&scene, &map, &body->pose, &res);
+	} else {
+		rig_pose_fit(&body->skel, &scene, &map, body->pose_value, &body->pose, &res);
+		fprintf(stderr, "%s: skeleton posed as the mesh stands:", path);
+		for (int k = 0; k < res.aim_count; k++)
+			if (res.aim[k].turned_deg >= 1.0f)
+				fprintf(stderr, " %s %.0f", body->skel.bone[res.aim[k].bone].name,
+					(double)res.aim[k].turned_deg);
+		fprintf(stderr, " degrees (--bind-pose FILE:F or rest chooses)\n");
+	}
+	float h = bind_fit_skel_height(&body->skel, &body->pose, NULL);
+	if (res.pairs && h > 0.0f)
+		fprintf(stderr, "%s: mapped joints %.1f%% of the height from the skeleton's on average, %.1f%% at "
+			"worst (%s)\n", path, (double)(100.0f * res.mean_gap / h), (double)(100.0f * res.worst_gap / h),
+			scene.joint[res.worst_joint].name);
+}
+
+static int mesh_weights(const char *path, bound_body *body)
+{
+	rig_weights_info info;
+	rig_weights_to_skel(&scene, &map, &body->weights, &info);
+	body->automatic = 0;
+	fprintf(stderr, "%s: the mesh's own weights", path);
+	if (info.trimmed)
+		fprintf(stderr, ", %d vertices cut to their 4 largest bones", info.trimmed);
+	if (info.unweighted)
+		fprintf(stderr, ", %d vertices without weights given to the root", info.unweighted);
+	fprintf(stderr, "\n");
+	return 0;
+}
+
+/* No skin, or joints that do not map: bound as an OBJ of one's own. */
+static int bind_unrigged(const bind_args *a, const char *path, bound_body *body)
+{
+	if (a->weights_mesh && !scene.joint_count) {
+		fprintf(stderr, "%s: --weights mesh: the mesh has no skin (no joints, no weights); without --weights "
+			"skintool computes them\n", path);
+		return -1;
+	}
+	if (a->weights_mesh) {
+		fprintf(stderr, "%s: --weights mesh: its arms and legs did not map onto the skeleton; name its joints "
+			"in a map file (--joint-map FILE, lines MESH_JOINT = SKELETON_BONE; README \"Rigged meshes\") "
+			"or leave out --weights to have skintool compute them\n", path);
+		return -1;
+	}
+	if (scene.joint_count)
+		fprintf(stderr, "%s: its arms and legs did not map onto the skeleton (a --joint-map FILE would map "
+			"them): bound like an OBJ, weights computed\n", path);
+	if (cli_place_mesh(a, path, body) < 0)
+		return -1;
+	return bind_args_auto_weights(a, 0, path, body);
+}
+
+int rig_load_mesh(const bind_args *a, const char *path, bound_body *body)
+{
+	if (import_scene(a, path, body) < 0 || (scene.joint_count && load_map(a, path, body) < 0))
+		return -1;
+	if (!scene.joint_count || (map.limbs < 2 && !a->joint_map))
+		return bind_unrigged(a, path, body);
+	body->rigged = 1;
+	if (!a->no_fit) {
+		if (align_mesh(path, body) < 0)
+			return -1;
+		fit_proportions(path, body);
+	}
+	pose_skeleton(a, path, body);
+	if (a->weights_mesh)
+		return mesh_weights(path, body);
+	return bind_args_auto_weights(a, 0, path, body);
+}

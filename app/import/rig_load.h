@@ -1,0 +1,21 @@
+/* skintool's mesh importer (bind_args_set_importer): a rigged glTF, FBX or
+ * COLLADA body onto an ASF or BVH skeleton, each decision said on stderr:
+ *   1. read it (rig_import.h), the parts used named;
+ *   2. map its joints (rig_map.h, --joint-map FILE), the unmapped listed;
+ *   3. turn, scale and move it onto the skeleton by the mapped joints
+ *      (rig_align.h; --no-fit keeps it as it is);
+ *   4. pose the skeleton as the mesh stands (rig_pose.h), unless
+ *      --bind-pose names a pose;
+ *   5. weights: the mesh's own (--weights mesh, rig_weights.h) or computed.
+ * A mesh without a skin, or whose joints do not map, is bound like an OBJ
+ * of one's own (cli_mesh_place.h) with computed weights; --weights mesh
+ * then fails with the report. */
+#ifndef RIG_LOAD_H
+#define RIG_LOAD_H
+
+#include "cli_bind_args.h"
+
+/* Returns 0, or -1 after reporting the error. */
+int rig_load_mesh(const bind_args *a, const char *path, bound_body *body);
+
+#endif

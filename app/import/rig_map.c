@@ -1,0 +1,227 @@
+#include "rig_map.h"
+
+#include <math.h>
+#include <string.h>
+
+static int depth_of(const rig_scene *r, int j)
+{
+	int d = 0;
+	for (; j >= 0 && d <= RIG_MAX_JOINTS; j = r->joint[j].parent)
+		d++;
+	return d;
+}
+
+static int is_ancestor(const rig_scene *r, int a, int j)
+{
+	for (int d = 0; j >= 0 && d <= RIG_MAX_JOINTS; j = r->joint[j].parent, d++)
+		if (j == a)
+			return 1;
+	return 0;
+}
+
+static int common_ancestor(const rig_scene *r, int a, int b)
+{
+	if (a < 0 || b < 0)
+		return -1;
+	for (int d = 0; a >= 0 && d <= RIG_MAX_JOINTS; a = r->joint[a].parent, d++)
+		if (is_ancestor(r, a, b))
+			return a;
+	return -1;
+}
+
+/* The shallowest joint named as that part. */
+static int named_joint(const rig_scene *r, const rig_map *m, rig_side side, rig_slot slot)
+{
+	int best = -1;
+	for (int j = 0; j < r->joint_count; j++)
+		if (m->name[j].slot == slot && m->name[j].side == side &&
+		    (best < 0 || depth_of(r, j) < depth_of(r, best)))
+			best = j;
+	return best;
+}
+
+/* Longest chain of unsided joints below j. */
+static int unsided_height(const rig_scene *r, int j, int *next)
+{
+	int best = 0;
+	*next = -1;
+	for (int c = 0; c < r->joint_count; c++) {
+		int dummy;
+		if (r->joint[c].parent != j || rig_name_side(r->joint[c].name) != RIG_CENTRE)
+			continue;
+		int h = 1 + unsided_height(r, c, &dummy);
+		if (h > best) {
+			best = h;
+			*next = c;
+		}
+	}
+	return best;
+}
+
+static void find_trunk(const rig_scene *r, rig_map *m)
+{
+	m->hips = common_ancestor(r, named_joint(r, m, RIG_LEFT, RIG_THIGH), named_joint(r, m, RIG_RIGHT, RIG_THIGH));
+	m->head = named_joint(r, m, RIG_CENTRE, RIG_HEAD);
+	m->chest = common_ancestor(r, named_joint(r, m, RIG_LEFT, RIG_CLAVICLE),
+				   named_joint(r, m, RIG_RIGHT, RIG_CLAVICLE));
+	if (m->chest < 0)
+		m->chest = common_ancestor(r, named_joint(r, m, RIG_LEFT, RIG_UPPER_ARM),
+					   named_joint(r, m, RIG_RIGHT, RIG_UPPER_ARM));
+	if (m->head >= 0)
+		return;
+	for (int chest = m->chest, next; chest >= 0; chest = next) {
+		m->head = chest;
+		unsided_height(r, chest, &next);
+	}
+}
+
+/* Where each joint of the chain sits along it: 0 at its first, 0.5 at
+ * the chest (index chest; -1: none), 1 at its last, in proportion to the
+ * distance along the chain in between. */
+static void chain_places(const vec3 *head, int n, int chest, float *t)
+{
+	float total = 0.0f;
+	t[0] = 0.0f;
+	for (int i = 1; i < n; i++)
+		t[i] = total += vec3_length(vec3_sub(head[i], head[i - 1]));
+	float mid = chest > 0 && chest < n - 1 ? t[chest] : 0.5f * total;
+	for (int i = 0; i < n; i++) {
+		if (!(total > 0.0f))
+			t[i] = (float)i / (float)(n > 1 ? n - 1 : 1);
+		else if (t[i] <= mid)
+			t[i] = mid > 0.0f ? 0.5f * t[i] / mid : 0.5f;
+		else
+			t[i] = 0.5f + 0.5f * (t[i] - mid) / (total - mid);
+	}
+}
+
+static int index_in(const int *list, int n, int x)
+{
+	for (int i = 0; i < n; i++)
+		if (list[i] == x)
+			return i;
+	return -1;
+}
+
+static void map_spine(const rig_scene *r, const skel_pose *p, rig_map *m)
+{
+	static vec3 mesh_head[RIG_MAX_JOINTS], skel_head[SKP_MAX_BONES];
+	static float mt[RIG_MAX_JOINTS], st[SKP_MAX_BONES];
+	int chain[RIG_MAX_JOINTS], n = 0;
+	const rig_skel_parts *parts = &m->parts;
+	if (m->hips < 0 || m->head < 0 || !is_ancestor(r, m->hips, m->head))
+		return;
+	for (int j = m->head; j >= 0 && n < RIG_MAX_JOINTS; j = r->joint[j].parent) {
+		chain[n++] = j;
+		if (j == m->hips)
+			break;
+	}
+	int up[RIG_MAX_JOINTS];                         /* hips first */
+	for (int i = 0; i < n; i++) {
+		up[i] = chain[n - 1 - i];
+		mesh_head[i] = r->joint[up[i]].head;
+	}
+	for (int i = 0; i < parts->spine_count; i++)
+		skel_head[i] = p->head[parts->spine[i]];
+	chain_places(mesh_head, n, index_in(up, n, m->chest), mt);
+	chain_places(skel_head, parts->spine_count, index_in(parts->spine, parts->spine_count, parts->chest), st);
+	for (int i = 0; i < n; i++) {
+		int best = 0;
+		for (int k = 1; k < parts->spine_count; k++)   /* ties: the later bone */
+			if (fabsf(st[k] - mt[i]) <= fabsf(st[best] - mt[i]))
+				best = k;
+		m->bone[chain[n - 1 - i]] = parts->spine[best];
+	}
+	m->bone[m->hips] = parts->spine[0];
+	m->bone[m->head] = parts->spine[parts->spine_count - 1];
+}
+
+static void map_limbs(const rig_scene *r, rig_map *m)
+{
+	for (int side = RIG_LEFT; side <= RIG_RIGHT; side++)
+		for (int slot = RIG_CLAVICLE; slot < RIG_SLOT_COUNT; slot++) {
+			int j = named_joint(r, m, (rig_side)side, (rig_slot)slot);
+			if (j >= 0 && m->parts.bone[side][slot] >= 0)
+				m->bone[j] = m->parts.bone[side][slot];
+		}
+}
+
+static skp_status apply_file(const rig_scene *r, const skel *s, const rig_map_file *f, rig_map *m,
+			     skp_error *err)
+{
+	for (int i = 0; f && i < f->count; i++) {
+		const rig_map_entry *e = &f->entry[i];
+		int j = rig_find_joint(r, e->joint);
+		if (j < 0)
+			return skp_fail(err, SKP_ERR_RANGE, e->line, "the mesh has no joint named '%s'", e->joint);
+		int b = strcmp(e->bone, "-") == 0 ? -1 : skel_find(s, e->bone);
+		if (b < 0 && strcmp(e->bone, "-") != 0)
+			return skp_fail(err, SKP_ERR_RANGE, e->line, "the skeleton has no bone named '%s'", e->bone);
+		m->bone[j] = b;
+		m->by_file[j] = 1;
+	}
+	return SKP_OK;
+}
+
+static void find_follow(const rig_scene *r, rig_map *m)
+{
+	m->mapped = 0;
+	for (int j = 0; j < r->joint_count; j++) {
+		m->mapped += m->bone[j] >= 0;
+		m->follow[j] = 0;
+		m->via[j] = -1;
+		for (int a = j, d = 0; a >= 0 && d <= RIG_MAX_JOINTS; a = r->joint[a].parent, d++)
+			if (m->bone[a] >= 0) {
+				m->follow[j] = m->bone[a];
+				m->via[j] = a == j ? -1 : a;
+				break;
+			}
+	}
+}
+
+static void find_family(const rig_scene *r, rig_map *m)
+{
+	int hits[16] = { 0 }, best = 0;
+	for (int j = 0; j < r->joint_count; j++)
+		for (int k = 0; k < 16; k++)
+			hits[k] += (m->name[j].rig >> k) & 1;
+	for (int k = 1; k < 16; k++)
+		if (hits[k] > hits[best])
+			best = k;
+	m->family = hits[best] ? 1 << best : 0;
+}
+
+int rig_map_part_joint(const rig_map *m, const rig_scene *r, rig_side side, rig_slot slot)
+{
+	int b = m->parts.bone[side][slot], best = -1;
+	for (int j = 0; b >= 0 && j < r->joint_count; j++)
+		if (m->bone[j] == b && (best < 0 || depth_of(r, j) < depth_of(r, best)))
+			best = j;
+	return best;
+}
+
+skp_status rig_map_joints(const rig_scene *r, const skel *s, const skel_pose *p,
+			  const rig_map_file *file, rig_map *out, skp_error *err)
+{
+	memset(out, 0, sizeof *out);
+	rig_find_skel_parts(s, p, &out->parts);
+	for (int j = 0; j < r->joint_count; j++) {
+		out->bone[j] = -1;
+		rig_name_parse(r->joint[j].name, &out->name[j]);
+	}
+	find_trunk(r, out);
+	map_spine(r, p, out);
+	map_limbs(r, out);
+	skp_status rc = apply_file(r, s, file, out, err);
+	if (rc != SKP_OK)
+		return rc;
+	find_follow(r, out);
+	find_family(r, out);
+	for (int side = RIG_LEFT; side <= RIG_RIGHT; side++) {
+		out->limbs += rig_map_part_joint(out, r, side, RIG_UPPER_ARM) >= 0 &&
+			      rig_map_part_joint(out, r, side, RIG_FOREARM) >= 0;
+		out->limbs += rig_map_part_joint(out, r, side, RIG_THIGH) >= 0 &&
+			      rig_map_part_joint(out, r, side, RIG_SHIN) >= 0;
+	}
+	return SKP_OK;
+}

@@ -1,0 +1,51 @@
+/* A rigged character read from an interchange file (glTF 2.0, FBX,
+ * COLLADA, ...: rig_import.c), before it meets a skeleton: its triangles,
+ * its joints with their bind-pose places and hierarchy, and the artist's
+ * per-vertex joint weights. Host code: the device reads packed images. */
+#ifndef RIG_SCENE_H
+#define RIG_SCENE_H
+
+#include <stdint.h>
+
+#include "mesh.h"
+#include "skp_error.h"
+
+#define RIG_MAX_JOINTS 256
+#define RIG_MAX_INFLUENCES 8    /* per vertex as read; skinning keeps 4 */
+#define RIG_MAX_PARTS 64
+#define RIG_NAME 64
+
+typedef struct rig_joint {
+	char name[RIG_NAME];
+	int parent;             /* nearest ancestor that is a joint, or -1 */
+	vec3 head;              /* bind-pose origin, scene space */
+	int weighted;           /* vertices it has a weight on */
+} rig_joint;
+
+typedef struct rig_scene {
+	mesh *mesh;             /* the caller's: positions in scene space */
+	int joint_count;
+	rig_joint joint[RIG_MAX_JOINTS];
+	uint8_t infl_count[SKP_MAX_VERTS];
+	uint16_t infl_joint[SKP_MAX_VERTS][RIG_MAX_INFLUENCES];
+	float infl_weight[SKP_MAX_VERTS][RIG_MAX_INFLUENCES];
+	int dropped_influences; /* vertices that had more than RIG_MAX_INFLUENCES */
+	int part_count;         /* the file's meshes (primitives) */
+	char part[RIG_MAX_PARTS][RIG_NAME];
+	int part_used[RIG_MAX_PARTS];
+	int part_skinned[RIG_MAX_PARTS];
+	int welded;             /* vertices merged with an identical one */
+} rig_scene;
+
+/* Reads path: every triangle mesh (only those named group, when not NULL),
+ * each moved by its node's transform into the scene's space, vertices at
+ * the same place with the same weights welded, and the joints of their
+ * skins. Fails with a message naming what went wrong: a file the library
+ * cannot read, no triangles, a group that is not there (listing the
+ * meshes), too many vertices, joints or triangles. */
+skp_status rig_import(const char *path, const char *group, rig_scene *out, skp_error *err);
+
+/* Index of the joint named name, or -1. */
+int rig_find_joint(const rig_scene *r, const char *name);
+
+#endif

@@ -1,0 +1,403 @@
+/* Rigged meshes from interchange files (app/import): the shared CC0 body
+ * (glTF binary, a Blender metarig skin) imports with its joints and
+ * weights, maps onto the CMU and BVH skeletons, binds with its own weights
+ * and with computed ones, renders, and gets the side-by-side compare
+ * report; a rig whose names mean nothing (an FBX of Bone.NNN), a mesh
+ * without a skin and a broken FBX get clear reports; a joint map file
+ * remaps joints and its errors name their lines. Skips without
+ * ../shared (and the FBX/glTF samples without Debian's assimp-testmodels). */
+#include <stdarg.h>
+#include <stddef.h>
+#include <setjmp.h>
+#include <stdint.h>
+#include <cmocka.h>
+
+#include <math.h>
+#include <png.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+#include "cli_common.h"
+#include "rig_map.h"
+#include "test_paths.h"
+#include "test_run.h"
+
+#define GLB "mesh/orange_juice_male_base/male_base_mesh.glb"
+#define SAMPLES "/usr/share/assimp/models"
+
+static mesh glb_mesh;
+static rig_scene scene;
+
+static const char *data(const char *rel, char *buf, size_t n)
+{
+	const char *p = test_data_path(rel);
+	if (!p)
+		return NULL;
+	snprintf(buf, n, "%s", p);
+	return buf;
+}
+
+static int contains(const char *path, const char *text)
+{
+	size_t size = 0;
+	char *d = test_read_file(path, &size);
+	int found = d && strstr(d, text) != NULL;
+	free(d);
+	return found;
+}
+
+/* Imports the shared glb into scene; 0 when the shared data is absent. */
+static int import_glb(char *glb, size_t n)
+{
+	if (!data(GLB, glb, n))
+		return 0;
+	skp_error err;
+	scene.mesh = &glb_mesh;
+	assert_int_equal(rig_import(glb, NULL, &scene, &err), SKP_OK);
+	return 1;
+}
+
+static void test_glb_imports(void **state)
+{
+	(void)state;
+	char glb[4096];
+	skp_error err;
+	if (!import_glb(glb, sizeof glb))
+		skip();
+	/* 1,226 file vertices, split at UV seams: welded back to 904 */
+	assert_int_equal(glb_mesh.vert_count, 904);
+	assert_int_equal(scene.welded, 322);
+	assert_int_equal(glb_mesh.tri_count, 1804);
+	assert_int_equal(scene.joint_count, 56);
+	int ua = rig_find_joint(&scene, "upper_arm.L"), sh = rig_find_joint(&scene, "shoulder.L");
+	assert_true(ua >= 0 && sh >= 0);
+	assert_int_equal(scene.joint[ua].parent, sh);
+	assert_int_equal(scene.joint[rig_find_joint(&scene, "spine")].parent, -1);
+	for (int v = 0; v < glb_mesh.vert_count; v++) {
+		float sum = 0.0f;
+		for (int k = 0; k < scene.infl_count[v]; k++)
+			sum += scene.infl_weight[v][k];
+		if (fabsf(sum - 1.0f) > 1e-3f)
+			fail_msg("vertex %d: weights sum to %g", v, (double)sum);
+	}
+	/* the armature is turned 90 degrees about Y: the node transforms are
+	 * applied, so the body is 1.94 m tall along Y and its arms span X */
+	float lo = INFINITY, hi = -INFINITY, xmin = INFINITY, xmax = -INFINITY;
+	for (int v = 0; v < glb_mesh.vert_count; v++) {
+		lo = fminf(lo, glb_mesh.pos[v].y);
+		hi = fmaxf(hi, glb_mesh.pos[v].y);
+		xmin = fminf(xmin, glb_mesh.pos[v].x);
+		xmax = fmaxf(xmax, glb_mesh.pos[v].x);
+	}
+	assert_true(fabsf(hi - lo - 1.945f) < 0.01f);
+	assert_true(xmax - xmin > 1.0f);
+	/* the arms span X, one hand on each side */
+	float lx = scene.joint[rig_find_joint(&scene, "hand.L")].head.x;
+	float rx = scene.joint[rig_find_joint(&scene, "hand.R")].head.x;
+	assert_true(fabsf(lx) > 0.5f && fabsf(rx) > 0.5f && lx * rx < 0.0f);
+	assert_int_equal(rig_import(glb, "nosuch", &scene, &err), SKP_ERR_RANGE);
+	assert_non_null(strstr(err.msg, "'Cube.001'"));
+}
+
+typedef struct want_map {
+	const char *joint, *bone;
+} want_map;
+
+static void check_map(const char *skel_rel, const want_map *want, size_t n)
+{
+	char path[4096];
+	static skel s;
+	static skel_pose p;
+	static rig_map m;
+	skp_error err;
+	if (!data(skel_rel, path, sizeof path) || cli_load_skel(path, &s) < 0)
+		fail_msg("%s: cannot load", skel_rel);
+	fk_pose(&s, NULL, &p);
+	assert_int_equal(rig_map_joints(&scene, &s, &p, NULL, &m, &err), SKP_OK);
+	assert_int_equal(m.limbs, 4);
+	for (size_t i = 0; i < n; i++) {
+		int j = rig_find_joint(&scene, want[i].joint);
+		assert_true(j >= 0);
+		const char *got = s.bone[m.follow[j]].name;
+		if (strcmp(got, want[i].bone) != 0)
+			fail_msg("%s on %s: %s moves with %s, want %s", skel_rel, GLB, want[i].joint, got, want[i].bone);
+	}
+}
+
+static void test_glb_maps(void **state)
+{
+	(void)state;
+	char glb[4096];
+	if (!import_glb(glb, sizeof glb))
+		skip();
+	static const want_map cmu[] = {
+		{ "spine", "root" }, { "spine.003", "thorax" }, { "spine.005", "head" },
+		{ "shoulder.L", "lclavicle" }, { "upper_arm.L", "lhumerus" }, { "forearm.R", "rradius" },
+		{ "hand.L", "lhand" }, { "f_index.02.L", "lhand" }, { "thumb.03.R", "rhand" },
+		{ "thigh.R", "rfemur" }, { "shin.L", "ltibia" }, { "foot.R", "rfoot" }, { "toe.L", "ltoes" },
+		{ "heel.02.L", "lfoot" },
+	};
+	check_map("mocap/cmu/02.asf", cmu, sizeof cmu / sizeof cmu[0]);
+	check_map("mocap/hdm05/HDM_dg.asf", cmu, sizeof cmu / sizeof cmu[0]);
+	/* the CMU BVH conversion: other names, same parts */
+	static const want_map bvh[] = {
+		{ "spine", "Hips" }, { "upper_arm.L", "LeftShoulder" }, { "forearm.L", "LeftElbow" },
+		{ "shoulder.R", "RightCollar" }, { "thigh.L", "LeftHip" }, { "shin.R", "RightKnee" },
+		{ "foot.L", "LeftAnkle" },
+	};
+	check_map("mocap/cmu_bvh/131_01.bvh", bvh, sizeof bvh / sizeof bvh[0]);
+}
+
+/* Weights CSV (vertex,bone,weight rows): dominant bone per vertex. */
+static int load_dominant(const char *path, char (*bone)[64], int n)
+{
+	FILE *f = fopen(path, "r");
+	assert_non_null(f);
+	static float best[4096];
+	char line[256], name[64];
+	int rows = 0;
+	for (int v = 0; v < n; v++)
+		best[v] = -1.0f;
+	assert_non_null(fgets(line, sizeof line, f));
+	while (fgets(line, sizeof line, f)) {
+		long v;
+		float w;
+		assert_int_equal(sscanf(line, "%ld,%63[^,],%f", &v, name, &w), 3);
+		assert_true(v >= 0 && v < n);
+		if (w > best[v]) {
+			best[v] = w;
+			memcpy(bone[v], name, sizeof name);
+		}
+		rows++;
+	}
+	fclose(f);
+	for (int v = 0; v < n; v++)
+		assert_true(best[v] > 0.0f);
+	return rows;
+}
+
+/* Body parts as skinning sees them: a hand with its fingers is one part
+ * (the artist's fingers follow the hand, the computed weights give CMU's
+ * finger bones theirs), so is the trunk. */
+static const char *body_part(const char *bone)
+{
+	static const char *const hand[] = { "hand", "fingers", "thumb", "wrist" };
+	static const char *const trunk[] = { "root", "lowerback", "upperback", "thorax", "lowerneck", "upperneck",
+					     "head", "lhipjoint", "rhipjoint" };
+	for (size_t i = 0; i < sizeof trunk / sizeof trunk[0]; i++)
+		if (!strcmp(bone, trunk[i]))
+			return "trunk";
+	for (size_t i = 0; i < sizeof hand / sizeof hand[0]; i++)
+		if (!strcmp(bone + 1, hand[i]))
+			return bone[0] == 'l' ? "left hand" : "right hand";
+	return bone;
+}
+
+static void test_bind_own_and_computed(void **state)
+{
+	(void)state;
+	char glb[4096], asf[4096];
+	if (!data(GLB, glb, sizeof glb) || !data("mocap/cmu/02.asf", asf, sizeof asf))
+		skip();
+	const char *own = test_scratch("own.csv"), *computed = test_scratch("computed.csv");
+	const char *log = test_scratch("bind.log");
+	assert_int_equal(test_run("%s bind %s %s --weights mesh -o %s 2> %s", test_tool_path("skintool"), asf, glb,
+				  own, log), 0);
+	assert_true(contains(log, "22 of 56 joints mapped onto the skeleton (names: Rigify"));
+	assert_true(contains(log, "upper_arm.L=lhumerus"));
+	assert_true(contains(log, "34 joints unmapped, moving with their nearest mapped parent"));
+	assert_true(contains(log, "turned 180 degrees (a quarter-turn combination)"));
+	assert_true(contains(log, "skeleton posed as the mesh stands"));
+	assert_true(contains(log, "the mesh's own weights"));
+	assert_int_equal(test_run("%s bind %s %s -o %s 2> %s", test_tool_path("skintool"), asf, glb, computed, log),
+			 0);
+	static char own_bone[904][64], comp_bone[904][64];
+	load_dominant(own, own_bone, 904);
+	load_dominant(computed, comp_bone, 904);
+	int same = 0, same_part = 0;
+	for (int v = 0; v < 904; v++) {
+		same += strcmp(own_bone[v], comp_bone[v]) == 0;
+		same_part += strcmp(body_part(own_bone[v]), body_part(comp_bone[v])) == 0;
+	}
+	printf("dominant bone: the artist's and the computed weights agree on %d of 904 vertices (%.1f%%), "
+	       "on the body part on %d (%.1f%%)\n", same, 100.0 * same / 904, same_part, 100.0 * same_part / 904);
+	/* measured 855 (94.6%): the two differ where parts meet */
+	assert_true(same_part >= 904 * 9 / 10);
+}
+
+/* Skin-toned pixels of a PNG, in its left and right halves. */
+static void figure_pixels(const char *path, long *left, long *right)
+{
+	png_image img;
+	memset(&img, 0, sizeof img);
+	img.version = PNG_IMAGE_VERSION;
+	assert_true(png_image_begin_read_from_file(&img, path));
+	img.format = PNG_FORMAT_RGB;
+	unsigned char *buf = malloc(PNG_IMAGE_SIZE(img));
+	assert_non_null(buf);
+	assert_true(png_image_finish_read(&img, NULL, buf, 0, NULL));
+	*left = *right = 0;
+	for (size_t i = 0; i < (size_t)img.width * img.height; i++) {
+		const unsigned char *p = buf + 3 * i;
+		/* the body is skin-toned: red well above blue */
+		if (p[0] > 120 && p[0] > p[2] + 40)
+			++*(i % img.width < img.width / 2 ? left : right);
+	}
+	free(buf);
+}
+
+static void test_pack_and_render(void **state)
+{
+	(void)state;
+	char glb[4096], asf[4096], amc[4096];
+	if (!data(GLB, glb, sizeof glb) || !data("mocap/cmu/02.asf", asf, sizeof asf) ||
+	    !data("mocap/cmu/02_01.amc", amc, sizeof amc))
+		skip();
+	const char *img = test_scratch("glb.skn"), *out = test_scratch("glb_frames");
+	assert_int_equal(test_run("%s pack %s %s --mesh %s --weights mesh -o %s > /dev/null 2>&1",
+				  test_tool_path("skintool"), asf, amc, glb, img), 0);
+	assert_int_equal(test_run("%s --image %s --platform surfaceless --algo compare --size 320x240 --frames 61 "
+				  "--every 60 --out %s > /dev/null 2>&1", test_tool_path("skinplay"), img, out), 0);
+	char png[4200];
+	for (int f = 1; f <= 61; f += 60) {
+		snprintf(png, sizeof png, "%s/frame_%06d.png", out, f);
+		long lbs, dqbs;
+		figure_pixels(png, &lbs, &dqbs);
+		printf("%s: body pixels %ld (LBS half), %ld (DQBS half) of 38400 each\n", png, lbs, dqbs);
+		/* a body of about 20 x 90 pixels in each half (measured 1079-1160) */
+		assert_true(lbs > 700 && lbs < 5000 && dqbs > 700 && dqbs < 5000);
+	}
+}
+
+static void test_compare_side_by_side(void **state)
+{
+	(void)state;
+	char glb[4096], asf[4096], amc[4096];
+	if (!data(GLB, glb, sizeof glb) || !data("mocap/cmu/02.asf", asf, sizeof asf) ||
+	    !data("mocap/cmu/02_01.amc", amc, sizeof amc))
+		skip();
+	const char *dir = test_scratch("glb_report");
+	assert_int_equal(test_run("%s compare %s %s --mesh %s --weights mesh --renders 1 -o %s > /dev/null 2>&1",
+				  test_tool_path("skintool"), asf, amc, glb, dir), 0);
+	char path[4200];
+	snprintf(path, sizeof path, "%s/index.html", dir);
+	assert_true(contains(path, "<table id=\"weights\">"));
+	assert_true(contains(path, "the mesh&#39;s own") || contains(path, "the mesh's own"));
+	assert_true(contains(path, "automatic (the paper"));
+	snprintf(path, sizeof path, "%s/metrics_weights_computed.csv", dir);
+	size_t size = 0;
+	char *csv = test_read_file(path, &size);
+	assert_non_null(csv);
+	long lines = 0;
+	for (size_t i = 0; i < size; i++)
+		lines += csv[i] == '\n';
+	free(csv);
+	assert_int_equal(lines, 1 + 343 * 3);
+}
+
+static void test_unmapped_and_unskinned(void **state)
+{
+	(void)state;
+	char asf[4096];
+	if (!data("mocap/cmu/02.asf", asf, sizeof asf) || access(SAMPLES "/FBX/animation_with_skeleton.fbx", R_OK))
+		skip();
+	const char *log = test_scratch("unmapped.log"), *w = test_scratch("unmapped.csv");
+	assert_int_equal(test_run("%s bind %s " SAMPLES "/FBX/animation_with_skeleton.fbx --weights mesh -o %s 2> %s",
+				  test_tool_path("skintool"), asf, w, log), 1);
+	assert_true(contains(log, "none of its 14 joints is named as the built-in maps know"));
+	assert_true(contains(log, "Bone Bone.001"));
+	assert_true(contains(log, "--joint-map FILE"));
+	assert_int_not_equal(access(w, F_OK), 0);
+	assert_int_equal(test_run("%s bind %s " SAMPLES "/FBX/animation_with_skeleton.fbx -o %s 2> %s",
+				  test_tool_path("skintool"), asf, w, log), 0);
+	assert_true(contains(log, "bound like an OBJ, weights computed"));
+	assert_int_equal(test_run("%s bind %s " SAMPLES "/glTF2/BoxTextured-glTF-Binary/BoxTextured.glb --weights mesh "
+				  "-o %s 2> %s", test_tool_path("skintool"), asf, w, log), 1);
+	assert_true(contains(log, "the mesh has no skin"));
+}
+
+static void test_broken_files(void **state)
+{
+	(void)state;
+	char asf[4096], glb[4096], amc[4096];
+	if (!data("mocap/cmu/02.asf", asf, sizeof asf) || !data(GLB, glb, sizeof glb) ||
+	    !data("mocap/cmu/02_01.amc", amc, sizeof amc))
+		skip();
+	const char *fbx = test_scratch("broken.fbx"), *log = test_scratch("broken.log");
+	FILE *f = fopen(fbx, "w");
+	assert_non_null(f);
+	fputs("; FBX 7.4.0 project file\nnot really\n", f);
+	fclose(f);
+	assert_int_equal(test_run("%s bind %s %s -o %s 2> %s", test_tool_path("skintool"), asf, fbx,
+				  test_scratch("x.csv"), log), 1);
+	assert_true(contains(log, "broken.fbx: "));
+	assert_true(contains(log, "export the character as glTF 2.0 (.glb)"));
+	assert_int_equal(test_run("%s bind %s %s -o %s 2> %s", test_tool_path("skintool"), asf,
+				  test_scratch("missing.glb"), test_scratch("x.csv"), log), 1);
+	assert_true(contains(log, "missing.glb: "));
+	/* the device program reads packed images, never the interchange files */
+	assert_int_equal(test_run("%s --asf %s --amc %s --mesh %s --platform surfaceless --frames 1 2> %s",
+				  test_tool_path("skinplay"), asf, amc, glb, log), 1);
+	assert_true(contains(log, "pack the rigged mesh into an image first"));
+	assert_int_equal(test_run("%s bind %s %s --group nosuch -o %s 2> %s", test_tool_path("skintool"), asf, glb,
+				  test_scratch("x.csv"), log), 1);
+	assert_true(contains(log, "no mesh named 'nosuch'; there are: 'Cube.001'"));
+}
+
+static void write_text(const char *path, const char *text)
+{
+	FILE *f = fopen(path, "w");
+	assert_non_null(f);
+	fputs(text, f);
+	fclose(f);
+}
+
+static void test_joint_map_file(void **state)
+{
+	(void)state;
+	char asf[4096], glb[4096];
+	if (!data("mocap/cmu/02.asf", asf, sizeof asf) || !data(GLB, glb, sizeof glb))
+		skip();
+	const char *map = test_scratch("fingers.map"), *w = test_scratch("fingers.csv");
+	const char *log = test_scratch("map.log");
+	write_text(map, "# Rigify fingers onto CMU's finger bones\nf_index.01.L = lfingers\nthumb.01.L = lthumb\n"
+		   "shoulder.R = -\n");
+	assert_int_equal(test_run("%s bind %s %s --weights mesh --joint-map %s -o %s 2> %s",
+				  test_tool_path("skintool"), asf, glb, map, w, log), 0);
+	assert_true(contains(log, "and the joint map"));
+	assert_true(contains(log, "f_index.01.L=lfingers"));
+	assert_true(contains(w, ",lfingers,") && contains(w, ",lthumb,"));
+	assert_false(contains(w, ",rclavicle,"));
+	static const struct {
+		const char *text, *error;
+	} bad[] = {
+		{ "hand.L = lhand\nnosuch = lhumerus\n", "bad.map:2: the mesh has no joint named 'nosuch'" },
+		{ "hand.L = nosuch\n", "bad.map:1: the skeleton has no bone named 'nosuch'" },
+		{ "\nhand.L lhumerus\n", "bad.map:2: expected JOINT = BONE, found no '='" },
+	};
+	const char *bad_map = test_scratch("bad.map");
+	for (size_t i = 0; i < sizeof bad / sizeof bad[0]; i++) {
+		write_text(bad_map, bad[i].text);
+		assert_int_equal(test_run("%s bind %s %s --joint-map %s -o %s 2> %s", test_tool_path("skintool"), asf,
+					  glb, bad_map, w, log), 1);
+		if (!contains(log, bad[i].error))
+			fail_msg("'%s': no '%s' in the message", bad[i].text, bad[i].error);
+	}
+}
+
+int main(void)
+{
+	const struct CMUnitTest tests[] = {
+		cmocka_unit_test(test_glb_imports),
+		cmocka_unit_test(test_glb_maps),
+		cmocka_unit_test(test_bind_own_and_computed),
+		cmocka_unit_test(test_pack_and_render),
+		cmocka_unit_test(test_compare_side_by_side),
+		cmocka_unit_test(test_unmapped_and_unskinned),
+		cmocka_unit_test(test_broken_files),
+		cmocka_unit_test(test_joint_map_file),
+	};
+	return cmocka_run_group_tests(tests, test_scratch_setup, test_scratch_teardown);
+}

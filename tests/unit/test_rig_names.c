@@ -1,0 +1,114 @@
+/* Joint names of the common rigs read as body parts and sides
+ * (app/import/rig_names.c), and names that are not parts. */
+#include <stdarg.h>
+#include <stddef.h>
+#include <setjmp.h>
+#include <stdint.h>
+#include <cmocka.h>
+
+#include <stdio.h>
+#include <string.h>
+
+#include "rig_names.h"
+
+typedef struct case_ {
+	const char *name;
+	rig_slot slot;
+	rig_side side;
+} case_;
+
+static void check(const case_ *c, size_t n)
+{
+	for (size_t i = 0; i < n; i++) {
+		rig_name got;
+		rig_name_parse(c[i].name, &got);
+		if (got.slot != c[i].slot || (got.slot != RIG_NONE && got.side != c[i].side))
+			fail_msg("'%s': got %s side %d, want %s side %d", c[i].name, rig_slot_name(got.slot),
+				 (int)got.side, rig_slot_name(c[i].slot), (int)c[i].side);
+	}
+}
+
+static void test_rigify(void **state)
+{
+	(void)state;
+	static const case_ c[] = {
+		{ "upper_arm.L", RIG_UPPER_ARM, RIG_LEFT }, { "forearm.R", RIG_FOREARM, RIG_RIGHT },
+		{ "hand.L", RIG_HAND, RIG_LEFT }, { "shoulder.R", RIG_CLAVICLE, RIG_RIGHT },
+		{ "thigh.L", RIG_THIGH, RIG_LEFT }, { "shin.R", RIG_SHIN, RIG_RIGHT },
+		{ "foot.L", RIG_FOOT, RIG_LEFT }, { "toe.R", RIG_TOE, RIG_RIGHT },
+		{ "DEF-upper_arm.L", RIG_UPPER_ARM, RIG_LEFT }, { "DEF-thigh.R", RIG_THIGH, RIG_RIGHT },
+		/* twist halves, fingers, the spine and helpers are not parts */
+		{ "DEF-upper_arm.L.001", RIG_NONE, RIG_CENTRE }, { "f_index.01.L", RIG_NONE, RIG_CENTRE },
+		{ "spine.003", RIG_NONE, RIG_CENTRE }, { "pelvis.L", RIG_NONE, RIG_CENTRE },
+		{ "heel.02.L", RIG_NONE, RIG_CENTRE }, { "breast.R", RIG_NONE, RIG_CENTRE },
+	};
+	check(c, sizeof c / sizeof c[0]);
+}
+
+static void test_mixamo_makehuman_unreal_daz_cmu(void **state)
+{
+	(void)state;
+	static const case_ c[] = {
+		{ "mixamorig:LeftArm", RIG_UPPER_ARM, RIG_LEFT }, { "mixamorig:RightForeArm", RIG_FOREARM, RIG_RIGHT },
+		{ "mixamorig:LeftUpLeg", RIG_THIGH, RIG_LEFT }, { "mixamorig:RightLeg", RIG_SHIN, RIG_RIGHT },
+		{ "mixamorig:LeftToeBase", RIG_TOE, RIG_LEFT }, { "mixamorig:LeftShoulder", RIG_CLAVICLE, RIG_LEFT },
+		{ "mixamorig:Head", RIG_HEAD, RIG_CENTRE }, { "Armature|mixamorig:LeftHand", RIG_HAND, RIG_LEFT },
+		{ "upperarm01.L", RIG_UPPER_ARM, RIG_LEFT }, { "lowerarm01.R", RIG_FOREARM, RIG_RIGHT },
+		{ "wrist.L", RIG_HAND, RIG_LEFT }, { "upperleg01.R", RIG_THIGH, RIG_RIGHT },
+		{ "lowerleg01.L", RIG_SHIN, RIG_LEFT }, { "clavicle.R", RIG_CLAVICLE, RIG_RIGHT },
+		{ "upperarm02.L", RIG_NONE, RIG_CENTRE }, { "toe1-1.L", RIG_NONE, RIG_CENTRE },
+		{ "upperarm_l", RIG_UPPER_ARM, RIG_LEFT }, { "calf_r", RIG_SHIN, RIG_RIGHT },
+		{ "ball_l", RIG_TOE, RIG_LEFT }, { "clavicle_r", RIG_CLAVICLE, RIG_RIGHT },
+		{ "lShldrBend", RIG_UPPER_ARM, RIG_LEFT }, { "rForearmBend", RIG_FOREARM, RIG_RIGHT },
+		{ "lCollar", RIG_CLAVICLE, RIG_LEFT }, { "rShin", RIG_SHIN, RIG_RIGHT },
+		{ "lhumerus", RIG_UPPER_ARM, RIG_LEFT }, { "rradius", RIG_FOREARM, RIG_RIGHT },
+		{ "lfemur", RIG_THIGH, RIG_LEFT }, { "rtibia", RIG_SHIN, RIG_RIGHT }, { "ltoes", RIG_TOE, RIG_LEFT },
+		{ "lhipjoint", RIG_NONE, RIG_CENTRE }, { "lowerback", RIG_NONE, RIG_CENTRE },
+		{ "Left Arm", RIG_UPPER_ARM, RIG_LEFT }, { "hand-right", RIG_HAND, RIG_RIGHT },
+	};
+	check(c, sizeof c / sizeof c[0]);
+}
+
+static void test_not_parts(void **state)
+{
+	(void)state;
+	/* a limb without a side, a side without a part, empty and odd names */
+	static const case_ c[] = {
+		{ "arm", RIG_NONE, RIG_CENTRE }, { "leg", RIG_NONE, RIG_CENTRE }, { "Left", RIG_NONE, RIG_CENTRE },
+		{ "L", RIG_NONE, RIG_CENTRE }, { "", RIG_NONE, RIG_CENTRE }, { ".L", RIG_NONE, RIG_CENTRE },
+		{ "head.L", RIG_NONE, RIG_CENTRE }, { "Bone.001", RIG_NONE, RIG_CENTRE },
+		{ "nodes[1]", RIG_NONE, RIG_CENTRE }, { ":::", RIG_NONE, RIG_CENTRE },
+	};
+	check(c, sizeof c / sizeof c[0]);
+	char longname[400];
+	memset(longname, 'x', sizeof longname - 1);
+	longname[sizeof longname - 1] = '\0';
+	rig_name got;
+	assert_int_equal(rig_name_parse(longname, &got), RIG_NONE);
+	assert_int_equal(rig_name_side("spine.L"), RIG_LEFT);
+	assert_int_equal(rig_name_side("spine.005"), RIG_CENTRE);
+}
+
+static void test_families(void **state)
+{
+	(void)state;
+	rig_name n;
+	rig_name_parse("upper_arm.L", &n);
+	assert_string_equal(rig_family_name(n.rig), "Rigify (Blender metarig)");
+	rig_name_parse("mixamorig:LeftUpLeg", &n);
+	assert_string_equal(rig_family_name(n.rig), "Mixamo");
+	rig_name_parse("upperleg01.L", &n);
+	assert_string_equal(rig_family_name(n.rig), "MakeHuman default");
+	assert_string_equal(rig_family_name(0), "none");
+}
+
+int main(void)
+{
+	const struct CMUnitTest tests[] = {
+		cmocka_unit_test(test_rigify),
+		cmocka_unit_test(test_mixamo_makehuman_unreal_daz_cmu),
+		cmocka_unit_test(test_not_parts),
+		cmocka_unit_test(test_families),
+	};
+	return cmocka_run_group_tests(tests, NULL, NULL);
+}
