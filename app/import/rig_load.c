@@ -182,12 +182,13 @@ static void pose_skeleton(const bind_args *a, const char *path, bound_body *body
 			scene.joint[res.worst_joint].name);
 }
 
-static int mesh_weights(const char *path, bound_body *body)
+static int mesh_weights(const bind_args *a, const char *path, bound_body *body)
 {
 	rig_weights_info info;
 	rig_weights_to_skel(&scene, &map, &body->weights, &info);
 	body->automatic = 0;
-	fprintf(stderr, "%s: the mesh's own weights", path);
+	fprintf(stderr, "%s: the mesh's own weights%s", path,
+		a->balance == 1 ? " (kept as they are: --balance is for computed weights)" : "");
 	if (info.trimmed)
 		fprintf(stderr, ", %d vertices cut to their 4 largest bones", info.trimmed);
 	if (info.unweighted)
@@ -232,6 +233,6 @@ int rig_load_mesh(const bind_args *a, const char *path, bound_body *body)
 	}
 	pose_skeleton(a, path, body);
 	if (a->weights_mesh)
-		return mesh_weights(path, body);
+		return mesh_weights(a, path, body);
 	return bind_args_auto_weights(a, 0, path, body);
 }
