@@ -40,7 +40,7 @@ static int split_pose(bind_args *a, const char *spec)
 {
 	size_t n = strlen(spec);
 	if (n == 0 || n >= sizeof a->pose_buf) {
-		fprintf(stderr, "skintool: --bind-pose: bad file name '%s'\n", spec);
+		fprintf(stderr, "%s: --bind-pose: bad file name '%s'\n", cli_program(), spec);
 		return -1;
 	}
 	memcpy(a->pose_buf, spec, n + 1);

@@ -86,6 +86,13 @@ static int answer(const cli_command *c, const cli_opt *o)
 	return 1;
 }
 
+static char program[32] = "skintool";
+
+const char *cli_program(void)
+{
+	return program;
+}
+
 int cli_parse(const cli_command *c, void *ctx, int argc, char **argv, int first)
 {
 	static opt_index x;
@@ -98,6 +105,7 @@ int cli_parse(const cli_command *c, void *ctx, int argc, char **argv, int first)
 	for (int i = first; i < argc; i++)
 		args[n++] = argv[i];
 	args[n] = NULL;
+	snprintf(program, sizeof program, "%.*s", (int)strcspn(c->prog, " "), c->prog);
 	build(c, &x);
 	optind = 0;     /* GNU: start afresh (a second parse in one process) */
 	opterr = 0;

@@ -37,6 +37,10 @@ typedef struct cli_command {
  * hint to --help (exit 1). */
 int cli_parse(const cli_command *c, void *ctx, int argc, char **argv, int first);
 
+/* "skinplay" or "skintool": the program whose command line cli_parse
+ * read last, for messages that only know an option's name. */
+const char *cli_program(void);
+
 /* The --help text. */
 void cli_help(const cli_command *c, FILE *f);
 

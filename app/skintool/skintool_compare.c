@@ -7,7 +7,9 @@
  * synthetic twist and bend scenes next to their analytic values, and LBS |
  * DQBS renders of the frames where LBS collapses most compared with DQBS
  * (compare_output.c, report/). */
+#define _GNU_SOURCE /* nftw */
 #include <errno.h>
+#include <ftw.h>
 #include <stdio.h>
 #include <string.h>
 #include <sys/stat.h>
@@ -91,13 +93,30 @@ static int parse_args(compare_args *a, int argc, char **argv)
 	return 0;
 }
 
+/* 1 when the folder was made here (and goes again if the command fails),
+ * 0 when it was there, -1 after reporting. */
 static int make_dir(const char *dir)
 {
-	if (mkdir(dir, 0755) != 0 && errno != EEXIST) {
-		fprintf(stderr, "skintool compare: %s: %s\n", dir, strerror(errno));
-		return -1;
-	}
-	return 0;
+	if (mkdir(dir, 0755) == 0)
+		return 1;
+	if (errno == EEXIST)
+		return 0;
+	fprintf(stderr, "skintool compare: %s: %s\n", dir, strerror(errno));
+	return -1;
+}
+
+static int remove_entry(const char *path, const struct stat *st, int type, struct FTW *ftw)
+{
+	(void)st, (void)type, (void)ftw;
+	return remove(path);
+}
+
+/* A failed run leaves no half-written report behind in a folder it made. */
+static int fail(const char *dir, int made)
+{
+	if (made && nftw(dir, remove_entry, 16, FTW_DEPTH | FTW_PHYS) == 0)
+		fprintf(stderr, "skintool compare: %s removed (the report was not finished)\n", dir);
+	return 1;
 }
 
 int cmd_compare(int argc, char **argv)
@@ -108,7 +127,8 @@ int cmd_compare(int argc, char **argv)
 	int rc = parse_args(&a, argc, argv);
 	if (rc != 0)
 		return rc < 0;
-	if (make_dir(a.out) < 0)
+	int made = make_dir(a.out);
+	if (made < 0)
 		return 1;
 	uint64_t t0 = clock_now_ns();
 	memset(&c.rep, 0, sizeof c.rep);
@@ -121,12 +141,12 @@ int cmd_compare(int argc, char **argv)
 	c.rep.clip = clip;
 	if (compare_measure_scenes(&c) < 0 || compare_load_clip(&c, &a) < 0 || compare_measure_clip(&c, &a) < 0 ||
 	    compare_other_weights(&c, &a) < 0)
-		return 1;
+		return fail(a.out, made);
 	uint64_t t1 = clock_now_ns();
 	compare_pick_stills(&c, (int)a.renders);
 	if (compare_explain_volume(&c, &a) < 0 || compare_render_stills(&c, &a) < 0 ||
 	    compare_write_charts(&c, a.out) < 0 || report_write_html(&c.rep, a.out) < 0)
-		return 1;
+		return fail(a.out, made);
 	uint64_t t2 = clock_now_ns();
 	fprintf(stderr, "%s: %ld frames x 3 algorithms, %d vertices: measured in %.2f s, renders, "
 		"charts and page %.2f s, total %.2f s -> %s/index.html\n", a.amc, c.rep.frames,
