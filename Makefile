@@ -247,10 +247,21 @@ $(RUN_DIR)/%: $(OUT)/%
 $(DEMO_SKN): $(RUN_DIR)/skintool $(DEMO_AMC) $(DEMO_ASF)
 	@$< pack $(DEMO_ASF) $(DEMO_AMC) --sequence 0 -o $@ >/dev/null
 
-# man pages from --help and --version (help2man), so they never drift
-$(OUT)/man/%.1: $(RUN_DIR)/% platform/debian/%.h2m
+# man pages from --help and --version (help2man), so they never drift;
+# skintool's gets a COMMANDS section from each command's own --help
+MAN_EXTRA_skintool := $(OUT)/man/skintool-commands.h2m
+.SECONDEXPANSION:
+$(OUT)/man/%.1: $(RUN_DIR)/% platform/debian/%.h2m $$(MAN_EXTRA_$$*)
 	@mkdir -p $(@D)
-	@help2man --no-info --section=1 --include=platform/debian/$*.h2m --output=$@ $<
+	@help2man --no-info --section=1 --include=platform/debian/$*.h2m \
+	  $(addprefix --include=,$(MAN_EXTRA_$*)) --output=$@ $<
+$(OUT)/man/skintool-commands.h2m: $(RUN_DIR)/skintool
+	@mkdir -p $(@D)
+	@{ echo '[COMMANDS]'; \
+	  for c in $$($< --help | sed -n 's/^  \([a-z-]*\)  .*/\1/p'); do \
+	    printf '.SS "skintool %s"\n.nf\n' "$$c"; \
+	    $< $$c --help | sed 's/\\/\\e/g; s/^[.'"'"']/\\\&&/'; echo '.fi'; \
+	  done; } > $@.tmp && mv $@.tmp $@
 
 install: all $(DEMO_SKN) $(MAN_PAGES)
 	@install -d $(DESTDIR)$(BINDIR) $(DESTDIR)$(DATADIR)/board/$(BOARD) $(DESTDIR)$(MANDIR) \

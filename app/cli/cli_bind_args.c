@@ -21,13 +21,26 @@ void bind_args_init(bind_args *a)
 	a->balance = -1;
 }
 
+enum { OPT_GROUP = BIND_OPT_FIRST, OPT_FIT, OPT_NO_FIT, OPT_BIND_POSE, OPT_WEIGHTS, OPT_JOINT_MAP, OPT_BALANCE };
+
+const cli_opt bind_opts[] = {
+	{ "group", 0, "NAME", OPT_GROUP, "bind only the OBJ group/object or glTF mesh NAME (default: the body)" },
+	{ "fit", 0, NULL, OPT_FIT, "always scale and move the mesh onto the skeleton" },
+	{ "no-fit", 0, NULL, OPT_NO_FIT, "keep the mesh's size and place (default: fit when they differ)" },
+	{ "bind-pose", 0, "P.amc[:F]", OPT_BIND_POSE, "bind in frame F of P, or 'rest' (default: the mesh's own pose)" },
+	{ "weights", 0, "W.csv|mesh", OPT_WEIGHTS, "read the weights, or keep a rigged mesh's own (default: computed)" },
+	{ "joint-map", 0, "FILE", OPT_JOINT_MAP, "a rigged mesh's joints onto skeleton bones (JOINT = BONE lines)" },
+	{ "balance", 0, "on|off", OPT_BALANCE, "volume-balance computed weights (default: on for the generated body)" },
+	{ NULL, 0, NULL, 0, NULL },
+};
+
 /* P.amc:F -> path P.amc, frame F. A colon not followed by digits only is
  * part of the path. */
 static int split_pose(bind_args *a, const char *spec)
 {
 	size_t n = strlen(spec);
 	if (n == 0 || n >= sizeof a->pose_buf) {
-		fprintf(stderr, "skintool: --bind-pose: bad file name '%s'\n", spec);
+		fprintf(stderr, "%s: --bind-pose: bad file name '%s'\n", cli_program(), spec);
 		return -1;
 	}
 	memcpy(a->pose_buf, spec, n + 1);
@@ -44,49 +57,27 @@ static int split_pose(bind_args *a, const char *spec)
 	return cli_parse_long("--bind-pose", colon + 1, &a->pose_frame);
 }
 
-int bind_args_parse(bind_args *a, int argc, char **argv, int *i)
+int bind_args_take(bind_args *a, const char *prog, int id, const char *value)
 {
-	const char *opt = argv[*i], *val;
-	if (strcmp(opt, "--fit") == 0 || strcmp(opt, "--no-fit") == 0) {
-		a->fit = opt[2] == 'f';
-		a->no_fit = !a->fit;
-		return 1;
-	}
-	if (strcmp(opt, "--balance") == 0) {
-		if (!(val = cli_option_value("skintool", opt, argc, argv, i)))
+	static const char *const onoff[] = { "off", "on" };
+	int k;
+	switch (id) {
+	case OPT_GROUP: a->group = value; return 0;
+	case OPT_FIT: a->fit = 1; a->no_fit = 0; return 0;
+	case OPT_NO_FIT: a->no_fit = 1; a->fit = 0; return 0;
+	case OPT_BIND_POSE: return split_pose(a, value);
+	case OPT_WEIGHTS:
+		a->weights_mesh = strcmp(value, "mesh") == 0;
+		a->weights_path = a->weights_mesh ? NULL : value;
+		return 0;
+	case OPT_JOINT_MAP: a->joint_map = value; return 0;
+	case OPT_BALANCE:
+		if ((k = cli_choice(prog, "balance", value, onoff, 2)) < 0)
 			return -1;
-		if (strcmp(val, "on") != 0 && strcmp(val, "off") != 0) {
-			fprintf(stderr, "skintool: --balance: expected on or off, got '%s'\n", val);
-			return -1;
-		}
-		a->balance = strcmp(val, "on") == 0;
-		return 1;
+		a->balance = k;
+		return 0;
 	}
-	if (strcmp(opt, "--group") == 0) {
-		if (!(val = cli_option_value("skintool", opt, argc, argv, i)))
-			return -1;
-		a->group = val;
-		return 1;
-	}
-	if (strcmp(opt, "--weights") == 0) {
-		if (!(val = cli_option_value("skintool", opt, argc, argv, i)))
-			return -1;
-		a->weights_mesh = strcmp(val, "mesh") == 0;
-		a->weights_path = a->weights_mesh ? NULL : val;
-		return 1;
-	}
-	if (strcmp(opt, "--joint-map") == 0) {
-		if (!(val = cli_option_value("skintool", opt, argc, argv, i)))
-			return -1;
-		a->joint_map = val;
-		return 1;
-	}
-	if (strcmp(opt, "--bind-pose") == 0) {
-		if (!(val = cli_option_value("skintool", opt, argc, argv, i)))
-			return -1;
-		return split_pose(a, val) < 0 ? -1 : 1;
-	}
-	return 0;
+	return -1;
 }
 
 /* Poses body->skel in the requested frame, or the rest pose. */

@@ -24,9 +24,9 @@
 #include "bind_balance.h"
 #include "bind_fit.h"
 #include "bind_pose_guess.h"
+#include "cli_opts.h"
 #include "mesh.h"
 
-#define BIND_ARGS_USAGE "[--group G] [--fit|--no-fit] [--bind-pose P.amc[:F]|rest] [--weights IN.csv|mesh] [--joint-map FILE] [--balance on|off]"
 
 typedef struct bind_args {
 	const char *group;          /* NULL: every face */
@@ -43,10 +43,15 @@ typedef struct bind_args {
 
 void bind_args_init(bind_args *a);
 
-/* When argv[*i] is one of the options above, takes it (and its value,
- * advancing *i) and returns 1; returns 0 when it is not one of them, -1
- * after reporting a missing or bad value. */
-int bind_args_parse(bind_args *a, int argc, char **argv, int *i);
+/* The options above as a cli_opts table (ids BIND_OPT_FIRST and up), and
+ * taking one: 0, or -1 after reporting a bad value (prog names the
+ * command). */
+#define BIND_OPT_FIRST 500
+extern const cli_opt bind_opts[];
+int bind_args_take(bind_args *a, const char *prog, int id, const char *value);
+/* 1 when id is one of bind_opts'. */
+#define BIND_OPT_ID(id) ((id) >= BIND_OPT_FIRST && (id) < BIND_OPT_FIRST + 16)
+
 
 /* Everything bind_args_load produces: tens of MB, keep it static. */
 typedef struct bound_body {

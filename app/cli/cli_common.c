@@ -15,15 +15,6 @@ void cli_error(const char *path, const skp_error *err)
 		fprintf(stderr, "%s: %s\n", path, err->msg);
 }
 
-const char *cli_option_value(const char *cmd, const char *opt, int argc, char **argv, int *i)
-{
-	if (*i + 1 >= argc) {
-		fprintf(stderr, "%s: %s needs a value\n", cmd, opt);
-		return NULL;
-	}
-	return argv[++*i];
-}
-
 int cli_take_positional(const char *cmd, const char **const *slots, int n, const char *arg)
 {
 	for (int k = 0; k < n; k++)

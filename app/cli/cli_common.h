@@ -44,10 +44,6 @@ long cli_motion_count(const char *path, const skel *s);
  * the frames the file has when number is not one of them). */
 int cli_read_frame(const char *path, const skel *s, long number, amc_frame *f);
 
-/* argv[*i + 1], advancing *i; NULL after reporting "CMD: OPT needs a
- * value" when the command line ends there. */
-const char *cli_option_value(const char *cmd, const char *opt, int argc, char **argv, int *i);
-
 /* Puts arg into the first of the n slots still NULL; -1 after reporting
  * "CMD: unexpected argument" when every slot is taken. */
 int cli_take_positional(const char *cmd, const char **const *slots, int n, const char *arg);

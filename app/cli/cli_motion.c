@@ -6,6 +6,7 @@
 #include "asf.h"
 #include "bvh.h"
 #include "cli_common.h"
+#include "cli_opts.h"
 #include "text_tokens.h"
 
 static int open_lines(const char *path, file_reader *fr, text_lines *tl)
@@ -124,7 +125,7 @@ long cli_motion_count(const char *path, const skel *s)
 int cli_parse_long(const char *opt, const char *text, long *out)
 {
 	if (!text || tok_parse_long(text, out) != 0) {
-		fprintf(stderr, "skintool: %s expects an integer, got '%s'\n", opt, text ? text : "");
+		fprintf(stderr, "%s: %s expects an integer, got '%s'\n", cli_program(), opt, text ? text : "");
 		return -1;
 	}
 	return 0;

@@ -224,7 +224,10 @@ static int play(player *p)
 	double fps = 0;
 	long shown = 0;
 	int quit = 0, r = 1;
-	while (!quit && (p->o.frames < 0 || shown < p->o.frames)) {
+	/* headless: the clip once, frames held by a pause included, so a
+	 * scripted pause cannot keep a batch run going for ever */
+	long budget = p->o.frames >= 0 ? p->o.frames : p->headless ? frames_clip_length(p) : -1;
+	while (!quit && (budget < 0 || shown < budget)) {
 		unsigned act = kiosk_frame(&p->kiosk, shown);
 		if (act & (KIOSK_QUIT | KIOSK_RELOAD)) {
 			p->reload = !(act & KIOSK_QUIT);

@@ -58,6 +58,8 @@ int frames_next(player *p);
 /* PLAY long (clip < 0: this clip from its start) or NEXT (clip i, or the
  * next one that can play). 0, or -1 after reporting (AMC files only). */
 int frames_restart(player *p, int clip);
+/* Frames in the clip playing (an image's header; an AMC or BVH counted). */
+long frames_clip_length(player *p);
 
 /* Shows text on screen for about seconds at the frame rate. */
 void frames_notice(player *p, const char *text, double seconds);

@@ -120,6 +120,16 @@ int frames_next(player *p)
 	return cli_motion_next(&p->motion, &p->frame);
 }
 
+long frames_clip_length(player *p)
+{
+	if (p->o.image_count) {
+		const show_source *s = &p->show;
+		return s->clip >= 0 ? (long)s->slot[s->active].im.clip[s->clip].frame_count : 1;
+	}
+	long n = cli_motion_count(p->o.amc, &p->body.skel);
+	return n > 0 ? n : 1;
+}
+
 /* PLAY long, NEXT: back to the first frame of the clip (or of clip i). */
 int frames_restart(player *p, int clip)
 {

@@ -3,34 +3,48 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <strings.h>
 
 #include "cli_common.h"
 
-static const char usage_text[] =
-	"usage: skinplay [--image show.skn [--image slot2.skn] [--clip NAME] | --asf A.asf --amc M.amc | --bvh M.bvh\n"
-	"                [--mesh M.obj]\n"
-	"                [--group G] [--fit|--no-fit] [--bind-pose P.amc[:F]|rest] [--weights W.csv] [--balance on|off]]\n"
-	"                [--algo lbs|dqbs|dqbs-fixed|compare] [--skin cpu|gpu]\n"
-	"                [--platform auto|surfaceless|osmesa|kms|x11] [--device DEV] [--rotation 0|90|180|270]\n"
-	"                [--size WxH] [--frames N] [--start FRAME] [--out DIR [--every K] [--sheet F.png]]\n"
-	"                [--view body|skeleton|weights] [--fps F] [--hud-fps on|off] [--report-memory]\n"
-	"                [--board board/NAME/board.ini] [--input gpio|keyboard|script:FILE|none]\n"
-	"Without --mesh the generated body is used. Headless, the clip plays once;\n"
-	"on a display it loops until closed.\n";
+enum {
+	OPT_IMAGE = 1, OPT_CLIP, OPT_ASF, OPT_AMC, OPT_BVH, OPT_MESH, OPT_ALGO, OPT_SKIN, OPT_PLATFORM, OPT_DEVICE,
+	OPT_ROTATION, OPT_SIZE, OPT_FRAMES, OPT_START, OPT_OUT, OPT_EVERY, OPT_SHEET, OPT_VIEW, OPT_FPS,
+	OPT_HUD_FPS, OPT_REPORT_MEMORY, OPT_BOARD, OPT_INPUT, OPT_PRINT_PLATFORM
+};
 
-static int unknown(const char *opt, const char *v)
-{
-	fprintf(stderr, "skinplay: %s: unknown value '%s'\n", opt, v ? v : "");
-	return -1;
-}
+static const cli_opt play_opts_table[] = {
+	{ "image", 0, "SHOW.skn", OPT_IMAGE, "play a packed image (repeat for slots: the newest valid one plays)" },
+	{ "clip", 0, "NAME", OPT_CLIP, "the image's clip to start with (default: its first)" },
+	{ "skeleton", 0, "S.asf", OPT_ASF, "the skeleton (also --asf)" },
+	{ "asf", 0, "S.asf", OPT_ASF, "the skeleton" },
+	{ "motion", 0, "M.amc|M.bvh", OPT_AMC, "the motion (also --amc; a BVH carries its skeleton)" },
+	{ "amc", 0, "M.amc", OPT_AMC, "the motion" },
+	{ "bvh", 0, "M.bvh", OPT_BVH, "skeleton and motion from one BVH file" },
+	{ "mesh", 0, "MESH.obj", OPT_MESH, "the body to skin (default: the generated one)" },
+	{ "algo", 0, "ALGO", OPT_ALGO, "lbs, dqbs, dqbs-fixed or compare (side by side); default dqbs" },
+	{ "skin", 0, "cpu|gpu", OPT_SKIN, "skin on the CPU (default) or in the vertex shader" },
+	{ "platform", 0, "NAME", OPT_PLATFORM, "auto, surfaceless, osmesa, kms or x11 (default auto)" },
+	{ "device", 0, "DEV", OPT_DEVICE, "the DRM device for kms (default: the first with a screen)" },
+	{ "rotation", 0, "DEG", OPT_ROTATION, "turn the picture 0, 90, 180 or 270 degrees (portrait screens)" },
+	{ "size", 0, "WxH", OPT_SIZE, "the picture's size headless or in a window (default 1280x720)" },
+	{ "frames", 0, "N", OPT_FRAMES, "play N frames (default: the clip once headless, for ever on a screen)" },
+	{ "start", 0, "FRAME", OPT_START, "start at the frame numbered FRAME" },
+	{ "output", 'o', "DIR", OPT_OUT, "write every K-th frame as DIR/frame_NNNNNN.png (also --out)" },
+	{ "out", 0, "DIR", OPT_OUT, "the same as --output" },
+	{ "every", 0, "K", OPT_EVERY, "with --output: every K-th frame (default 1)" },
+	{ "sheet", 0, "F.png", OPT_SHEET, "with --output: also a contact sheet of the frames written" },
+	{ "view", 0, "VIEW", OPT_VIEW, "body, skeleton or weights (default body)" },
+	{ "fps", 0, "F", OPT_FPS, "the motion's capture rate in Hz (default 120, the CMU rate; images carry theirs)" },
+	{ "hud-fps", 0, "on|off", OPT_HUD_FPS, "show the measured frame rate (off: reproducible pictures)" },
+	{ "report-memory", 0, NULL, OPT_REPORT_MEMORY, "print the peak and current resident memory at the end" },
+	{ "board", 0, "FILE", OPT_BOARD, "the board's runtime config (board/NAME/board.ini; default: none)" },
+	{ "input", 0, "SPEC", OPT_INPUT, "buttons: gpio, keyboard, script:FILE or none (default: the board's)" },
+	{ "print-platform", 0, NULL, OPT_PRINT_PLATFORM, "print the display backend auto would pick, and exit" },
+	{ NULL, 0, NULL, 0, NULL },
+};
 
-static int pick(const char *opt, const char *v, const char *const *names, int n)
-{
-	for (int i = 0; v && i < n; i++)
-		if (strcmp(v, names[i]) == 0)
-			return i;
-	return unknown(opt, v);
-}
+#define PROG "skinplay"
 
 static int parse_size(const char *v, play_opts *o)
 {
@@ -39,7 +53,7 @@ static int parse_size(const char *v, play_opts *o)
 	if (v && *x == 'x')
 		h = strtol(x + 1, &x, 10);
 	if (!v || *x || w < 16 || h < 16 || w > SKP_DISPLAY_MAX_W || h > SKP_DISPLAY_MAX_H) {
-		fprintf(stderr, "skinplay: --size expects WxH between 16x16 and %dx%d (board limit), got '%s'\n",
+		fprintf(stderr, PROG ": --size expects WxH between 16x16 and %dx%d (board limit), got '%s'\n",
 			SKP_DISPLAY_MAX_W, SKP_DISPLAY_MAX_H, v ? v : "");
 		return -1;
 	}
@@ -48,47 +62,118 @@ static int parse_size(const char *v, play_opts *o)
 	return 0;
 }
 
-static int value_opt(play_opts *o, const char *a, const char *v)
+static int take_image(play_opts *o, const char *v)
 {
-	static const char *const skins[] = { "cpu", "gpu" };
-	static const char *const onoff[] = { "off", "on" };
-	long n;
-	int k;
-	if (!strcmp(a, "--asf")) o->asf = v;
-	else if (!strcmp(a, "--amc")) o->amc = v;
-	else if (!strcmp(a, "--bvh")) o->bvh = v;
-	else if (!strcmp(a, "--mesh")) o->mesh = v;
-	else if (!strcmp(a, "--image")) {
-		if (o->image_count >= 4)
-			return fprintf(stderr, "skinplay: at most 4 --image slots\n"), -1;
-		o->image[o->image_count++] = v;
-	} else if (!strcmp(a, "--clip")) o->clip = v;
-	else if (!strcmp(a, "--input")) o->input = v;
-	else if (!strcmp(a, "--board")) o->board = v;
-	else if (!strcmp(a, "--platform")) o->platform = v;
-	else if (!strcmp(a, "--device")) o->device = v;
-	else if (!strcmp(a, "--out")) o->out_dir = v;
-	else if (!strcmp(a, "--sheet")) o->sheet_path = v;
-	else if (!strcmp(a, "--algo")) return (k = skin_algo_parse(v)) < 0 ? unknown(a, v) : (o->algo = k, 0);
-	else if (!strcmp(a, "--skin")) return (k = pick(a, v, skins, 2)) < 0 ? -1 : (o->gpu = k, 0);
-	else if (!strcmp(a, "--view")) return (k = render_view_parse(v)) < 0 ? unknown(a, v) : (o->view = k, 0);
-	else if (!strcmp(a, "--hud-fps")) return (k = pick(a, v, onoff, 2)) < 0 ? -1 : (o->hud_fps = k, 0);
-	else if (!strcmp(a, "--size")) return parse_size(v, o);
-	else if (!strcmp(a, "--frames")) return cli_parse_long(a, v, &o->frames);
-	else if (!strcmp(a, "--start")) return cli_parse_long(a, v, &o->start);
-	else if (!strcmp(a, "--every")) return cli_parse_long(a, v, &o->every) < 0 || o->every < 1 ? -1 : 0;
-	else if (!strcmp(a, "--rotation")) {
-		if (cli_parse_long(a, v, &n) < 0 || n % 90 || n < 0 || n > 270)
-			return fprintf(stderr, "skinplay: --rotation expects 0, 90, 180 or 270\n"), -1;
-		o->rotation = (int)n;
-	} else if (!strcmp(a, "--fps")) {
-		o->fps = v ? atof(v) : 0;
-		if (!(o->fps > 0 && o->fps < 10000))
-			return fprintf(stderr, "skinplay: --fps expects a rate in Hz\n"), -1;
-	} else
-		return 1;
+	if (o->image_count >= 4)
+		return fprintf(stderr, PROG ": at most 4 --image slots\n"), -1;
+	o->image[o->image_count++] = v;
 	return 0;
 }
+
+static int take_motion(play_opts *o, const char *v)
+{
+	const char *dot = strrchr(v, '.');
+	if (dot && !strcasecmp(dot, ".bvh"))
+		o->bvh = v;
+	else
+		o->amc = v;
+	return 0;
+}
+
+static int take_number(const char *opt, const char *v, long *out, long min)
+{
+	if (cli_parse_long(opt, v, out) < 0)
+		return -1;
+	if (*out < min)
+		return fprintf(stderr, PROG ": %s expects %ld or more, got %ld\n", opt, min, *out), -1;
+	return 0;
+}
+
+static int take_rate(play_opts *o, const char *v)
+{
+	char *end;
+	o->fps = strtod(v, &end);
+	if (*end || !(o->fps >= 1.0 && o->fps <= 10000.0))
+		return fprintf(stderr, PROG ": --fps expects a rate from 1 to 10000 Hz, got '%s'\n", v), -1;
+	return 0;
+}
+
+static int take_choice(play_opts *o, int id, const char *v)
+{
+	static const char *const skins[] = { "cpu", "gpu" }, *const onoff[] = { "off", "on" };
+	static const char *const algos[] = { "lbs", "dqbs", "dqbs-fixed", "compare" };
+	static const char *const views[] = { "body", "skeleton", "weights" };
+	int k;
+	switch (id) {
+	case OPT_ALGO:
+		if ((k = skin_algo_parse(v)) < 0)
+			return cli_bad_choice(PROG, "algo", v, algos, 4);
+		o->algo = k;
+		return 0;
+	case OPT_VIEW:
+		if ((k = render_view_parse(v)) < 0)
+			return cli_bad_choice(PROG, "view", v, views, 3);
+		o->view = k;
+		return 0;
+	case OPT_SKIN:
+		return (k = cli_choice(PROG, "skin", v, skins, 2)) < 0 ? -1 : (o->gpu = k, 0);
+	default:
+		return (k = cli_choice(PROG, "hud-fps", v, onoff, 2)) < 0 ? -1 : (o->hud_fps = k, 0);
+	}
+}
+
+static int take(void *ctx, int id, const char *v)
+{
+	play_opts *o = ctx;
+	long n;
+	if (BIND_OPT_ID(id))
+		return bind_args_take(&o->bind, PROG, id, v);
+	switch (id) {
+	case OPT_IMAGE: return take_image(o, v);
+	case OPT_CLIP: o->clip = v; return 0;
+	case OPT_ASF: o->asf = v; return 0;
+	case OPT_AMC: return take_motion(o, v);
+	case OPT_BVH: o->bvh = v; return 0;
+	case OPT_MESH: o->mesh = v; return 0;
+	case OPT_ALGO: case OPT_VIEW: case OPT_SKIN: case OPT_HUD_FPS: return take_choice(o, id, v);
+	case OPT_PLATFORM: o->platform = v; return 0;
+	case OPT_DEVICE: o->device = v; return 0;
+	case OPT_ROTATION:
+		if (cli_parse_long("--rotation", v, &n) < 0 || n % 90 || n < 0 || n > 270)
+			return fprintf(stderr, PROG ": --rotation expects 0, 90, 180 or 270, got '%s'\n", v), -1;
+		o->rotation = (int)n;
+		return 0;
+	case OPT_SIZE: return parse_size(v, o);
+	case OPT_FRAMES: return take_number("--frames", v, &o->frames, 1);
+	case OPT_START: return take_number("--start", v, &o->start, 0);
+	case OPT_OUT: o->out_dir = v; return 0;
+	case OPT_EVERY: return take_number("--every", v, &o->every, 1);
+	case OPT_SHEET: o->sheet_path = v; return 0;
+	case OPT_FPS: return take_rate(o, v);
+	case OPT_REPORT_MEMORY: o->report_memory = 1; return 0;
+	case OPT_BOARD: o->board = v; return 0;
+	case OPT_INPUT: o->input = v; return 0;
+	case OPT_PRINT_PLATFORM: o->print_platform = 1; return 0;
+	}
+	return -1;
+}
+
+static const cli_command play_command = {
+	.prog = PROG,
+	.usage = "[OPTION]... --image SHOW.skn\n"
+		 "  or:  skinplay [OPTION]... --asf S.asf --amc M.amc [--mesh MESH.obj]\n"
+		 "  or:  skinplay [OPTION]... --bvh M.bvh [--mesh MESH.obj]",
+	.about = "Plays motion capture on a skinned body with LBS, DQBS or fixed-point DQBS, on a screen (DRM/KMS\n"
+		 "console or X11 window) or headless (EGL surfaceless, OSMesa). Headless, the clip plays once (a\n"
+		 "scripted pause holds the frame, and the held frames count: the run always ends); on a screen it\n"
+		 "loops until closed, and buttons (--input) switch the algorithm, pause, restart and change clips.",
+	.opts = { play_opts_table, bind_opts },
+	.take = take,
+	.more = "Without --mesh the generated body is used; the bind options apply to --mesh.\n"
+		"Examples:\n"
+		"  skinplay --image /usr/share/skinplay/demo.skn\n"
+		"  skinplay --bvh 131_01.bvh --platform surfaceless --algo compare --output out --every 60\n",
+};
 
 int play_parse(play_opts *o, int argc, char **argv)
 {
@@ -102,51 +187,32 @@ int play_parse(play_opts *o, int argc, char **argv)
 	o->every = 1;
 	o->hud_fps = 1;
 	o->fps = 120.0;
-	for (int i = 1; i < argc; i++) {
-		if (!strcmp(argv[i], "--help") || !strcmp(argv[i], "-h"))
-			return fputs(usage_text, stdout), 1;
-		if (!strcmp(argv[i], "--print-platform")) {
-			o->print_platform = 1;
-			return 0;
-		}
-		if (!strcmp(argv[i], "--report-memory")) {
-			o->report_memory = 1;
-			continue;
-		}
-		int r = bind_args_parse(&o->bind, argc, argv, &i);
-		if (r < 0)
-			return -1;
-		if (r > 0)
-			continue;
-		if (argv[i][0] != '-' || i + 1 >= argc || (r = value_opt(o, argv[i], argv[i + 1])) > 0) {
-			fprintf(stderr, "skinplay: unknown option or missing value: '%s'\n%s", argv[i], usage_text);
-			return -1;
-		}
-		if (r < 0)
-			return -1;
-		i++;
-	}
+	int rc = cli_parse(&play_command, o, argc, argv, 1);
+	if (rc != 0)
+		return rc;
+	if (o->print_platform)
+		return 0;
 	if (o->sheet_path && !o->out_dir) {
-		fprintf(stderr, "skinplay: --sheet collects the frames --out writes: give --out too\n");
+		fprintf(stderr, PROG ": --sheet collects the frames --out writes: give --out too\n");
 		return -1;
 	}
 	/* a BVH is the skeleton and the motion in one file */
 	if (o->bvh && (o->asf || o->amc)) {
-		fprintf(stderr, "skinplay: --bvh carries its skeleton: give it without --asf and --amc\n");
+		fprintf(stderr, PROG ": --bvh carries its skeleton: give it without --asf and --amc\n");
 		return -1;
 	}
 	if (o->bvh)
 		o->asf = o->amc = o->bvh;
 	if (o->image_count && (o->asf || o->amc || o->mesh || o->bind.group || o->bind.fit || o->bind.no_fit ||
 			       o->bind.rest_pose || o->bind.pose_path ||
-			       o->bind.weights_path || o->bind.balance >= 0)) {
-		fprintf(stderr, "skinplay: --image carries the skeleton, the bound body and the clips: "
+			       o->bind.weights_path || o->bind.weights_mesh || o->bind.joint_map || o->bind.balance >= 0)) {
+		fprintf(stderr, PROG ": --image carries the skeleton, the bound body and the clips: "
 			"give it without --asf, --amc, --bvh, --mesh and the bind options\n");
 		return -1;
 	}
 	/* with --board the show may come from its [storage] slots (skinplay_kiosk.c) */
 	if (!o->image_count && !o->board && (!o->asf || !o->amc)) {
-		fprintf(stderr, "skinplay: give --asf and --amc, or --bvh\n%s", usage_text);
+		fprintf(stderr, PROG ": give --image, or --asf and --amc, or --bvh\nTry 'skinplay --help' for more information.\n");
 		return -1;
 	}
 	return 0;

@@ -2,6 +2,7 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "cli_opts.h"
 #include "cli_version.h"
 #include "rig_load.h"
 #include "skintool_cmds.h"
@@ -9,30 +10,36 @@
 typedef struct command {
 	const char *name;
 	int (*run)(int argc, char **argv);
-	const char *usage;
+	const char *what;
 } command;
 
 static const command commands[] = {
-	{ "fk", cmd_fk, "fk SKELETON.asf MOTION.amc [--frame N] | fk MOTION.bvh [--frame N]    joint positions and rotations as CSV" },
-	{ "convert", cmd_convert, "convert SKELETON.asf MOTION.amc -o OUT.bvh [--fps F] | convert IN.bvh -o OUT.asf    ASF/AMC to BVH and back (OUT.asf also writes OUT.amc)" },
-	{ "bench", cmd_bench, "bench [--verts N] [--threads T]    skinning speed against the memory-bandwidth bound" },
-	{ "bind", cmd_bind, "bind SKELETON.asf MESH.obj [--group G] [--fit|--no-fit] [--bind-pose P.amc[:F]|rest] [--weights IN.csv] [--balance on|off] [--report] -o W.csv    skin weights as CSV (report on stderr)" },
-	{ "mannequin", cmd_mannequin, "mannequin SKELETON.asf -o BODY.obj [--detail N]    closed body mesh around the rest pose" },
-	{ "skin", cmd_skin, "skin SKELETON.asf MOTION.amc MESH.obj --frame N --algo lbs|dqbs|dqbs-fixed [--group G] [--fit|--no-fit] [--bind-pose P.amc[:F]|rest] [--weights IN.csv] [--balance on|off] -o OUT.obj    the mesh deformed for frame N" },
-	{ "pack", cmd_pack, "pack SKELETON.asf MOTION.amc [MOTION2.amc ...] [--mesh MESH.obj [bind options]] [--fps F] [--sequence N] [--block-size B] -o show.skn    flash image for skinplay --image" },
-	{ "info", cmd_info, "info show.skn    header, sections and clips of an image; checks every block (exit 2 when damaged)" },
-	{ "repair", cmd_repair, "repair show.skn    rebuilds an image's bad blocks from its parity and replaces it (exit 2 when beyond repair)" },
-	{ "bench-parse", cmd_bench_parse, "bench-parse [SKELETON.asf] MOTION.amc|MOTION.bvh ... [--runs N]    motion parse throughput, MB/s against the first file" },
-	{ "bench-image", cmd_bench_image, "bench-image show.skn [--amc M.amc]    time to the first frame, bytes per frame" },
-	{ "metrics", cmd_metrics, "metrics SKELETON.asf MOTION.amc MESH.obj [bind options] [--algo LIST] | metrics --scene twist|bend --angle DEG [--algo LIST]    volume and radius ratios per frame as CSV" },
-	{ "compare", cmd_compare, "compare SKELETON.asf MOTION.amc [--mesh MESH.obj [bind options]] -o DIR [--renders N]    LBS vs DQBS report: index.html, metrics.csv, charts, renders of the worst frames" },
+	{ "fk", cmd_fk, "joint positions and rotations per frame, as CSV" },
+	{ "convert", cmd_convert, "ASF/AMC to BVH and back" },
+	{ "bind", cmd_bind, "skin weights of a mesh on a skeleton, as CSV" },
+	{ "mannequin", cmd_mannequin, "a closed body mesh around a skeleton's rest pose" },
+	{ "skin", cmd_skin, "the mesh deformed for one frame, as OBJ" },
+	{ "metrics", cmd_metrics, "volume and radius ratios per frame, as CSV" },
+	{ "compare", cmd_compare, "the LBS vs DQBS report: a page, CSV, charts, renders" },
+	{ "pack", cmd_pack, "a flash image of the bound body and clips for skinplay --image" },
+	{ "info", cmd_info, "an image's header and clips; checks every block" },
+	{ "repair", cmd_repair, "rebuilds an image's bad blocks from its parity" },
+	{ "bench", cmd_bench, "skinning speed against the memory-bandwidth bound" },
+	{ "bench-parse", cmd_bench_parse, "motion parse throughput against the first file" },
+	{ "bench-image", cmd_bench_image, "an image's time to the first frame, bytes per frame" },
 };
 
 static void usage(FILE *to)
 {
-	fprintf(to, "usage: skintool COMMAND [ARGS]\n\ncommands:\n");
+	fprintf(to, "Usage: skintool COMMAND [OPTION]... [FILE]...\n"
+		"The host tool of skinplay: reads motion (ASF/AMC, BVH) and bodies (OBJ; rigged glTF, FBX,\n"
+		"COLLADA), binds, skins, measures, compares and packs images for the device.\n\nCommands:\n");
 	for (size_t i = 0; i < sizeof commands / sizeof commands[0]; i++)
-		fprintf(to, "  %s\n", commands[i].usage);
+		fprintf(to, "  %-13s %s\n", commands[i].name, commands[i].what);
+	fprintf(to, "\n'skintool COMMAND --help' describes a command and its options. Options take their\n"
+		"value as --opt=value or --opt value; files and options come in any order.\n\n"
+		"Options:\n  -h, --help       show this help and exit\n      --version    show the version, "
+		"revision, board and backends, and exit\n\n" CLI_EXIT_CODES);
 }
 
 int main(int argc, char **argv)
@@ -47,7 +54,6 @@ int main(int argc, char **argv)
 	for (size_t i = 0; i < sizeof commands / sizeof commands[0]; i++)
 		if (strcmp(argv[1], commands[i].name) == 0)
 			return commands[i].run(argc - 2, argv + 2);
-	fprintf(stderr, "skintool: unknown command '%s'\n", argv[1]);
-	usage(stderr);
+	fprintf(stderr, "skintool: unknown command '%s'\nTry 'skintool --help' for the commands.\n", argv[1]);
 	return 1;
 }

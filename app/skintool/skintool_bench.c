@@ -8,6 +8,7 @@
 
 #include "clock.h"
 #include "cli_common.h"
+#include "cli_opts.h"
 #include "skin.h"
 #include "skintool_cmds.h"
 #include "workers.h"
@@ -159,23 +160,41 @@ static double copy_bandwidth(size_t bytes)
 	return 2.0 * (double)bytes / best;
 }
 
+typedef struct bench_args {
+	long verts, threads;
+} bench_args;
+
+enum { OPT_VERTS = 1, OPT_THREADS };
+
+static const cli_opt bench_opts[] = {
+	{ "verts", 0, "N", OPT_VERTS, "vertices to skin (default 1000000)" },
+	{ "threads", 0, "T", OPT_THREADS, "worker threads (default 1)" },
+	{ NULL, 0, NULL, 0, NULL },
+};
+
+static int bench_take(void *ctx, int id, const char *v)
+{
+	bench_args *a = ctx;
+	return id == OPT_VERTS ? cli_parse_long("--verts", v, &a->verts) : cli_parse_long("--threads", v, &a->threads);
+}
+
+static const cli_command bench_command = {
+	.prog = "skintool bench",
+	.usage = "[--verts=N] [--threads=T]",
+	.about = "Skinning speed of every kernel (LBS, DQBS, fixed-point DQBS; scalar and SIMD) on a synthetic\n"
+		 "mesh, against the memory-bandwidth bound measured in the same run.",
+	.opts = { bench_opts },
+	.take = bench_take,
+};
+
 static int parse(int argc, char **argv, long *verts, long *threads)
 {
-	for (int i = 0; i < argc; i++) {
-		const char *v = i + 1 < argc ? argv[i + 1] : NULL;
-		if (strcmp(argv[i], "--verts") == 0) {
-			if (cli_parse_long("--verts", v, verts) < 0)
-				return -1;
-			i++;
-		} else if (strcmp(argv[i], "--threads") == 0) {
-			if (cli_parse_long("--threads", v, threads) < 0)
-				return -1;
-			i++;
-		} else {
-			fprintf(stderr, "usage: skintool bench [--verts N] [--threads T]\n");
-			return -1;
-		}
-	}
+	bench_args a = { *verts, *threads };
+	int rc = cli_parse(&bench_command, &a, argc, argv, 0);
+	if (rc != 0)
+		return rc;
+	*verts = a.verts;
+	*threads = a.threads;
 	if (*verts < SKIN_LANES || *verts > 50000000 || *threads < 1 || *threads > WORKERS_MAX) {
 		fprintf(stderr, "skintool bench: --verts must be 8..50000000 and --threads 1..%d\n", WORKERS_MAX);
 		return -1;
@@ -188,8 +207,9 @@ int cmd_bench(int argc, char **argv)
 	static bench b;
 	long verts = 1000000, threads = 1;
 	void *block = NULL;
-	if (parse(argc, argv, &verts, &threads) < 0)
-		return 1;
+	int rc = parse(argc, argv, &verts, &threads);
+	if (rc != 0)
+		return rc < 0;
 	if (make_scene(&b, (int)verts, &block) < 0) {
 		fprintf(stderr, "skintool bench: out of memory for %ld vertices\n", verts);
 		return 1;

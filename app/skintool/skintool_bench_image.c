@@ -13,6 +13,7 @@
 #include <unistd.h>
 
 #include "cli_common.h"
+#include "cli_opts.h"
 #include "cli_show.h"
 #include "clock.h"
 #include "fk.h"
@@ -142,28 +143,66 @@ static void print_parity(const show_image *img)
 		       100.0 * (h->parity_blocks + 1) / h->data_blocks);
 }
 
+typedef struct bench_image_args {
+	const char *path, *amc[SKP_IMAGE_MAX_CLIPS];
+	long runs;
+	int amc_count;
+} bench_image_args;
+
+enum { OPT_AMC = 1, OPT_RUNS };
+
+static const cli_opt bench_image_opts[] = {
+	{ "amc", 0, "M.amc", OPT_AMC, "the clip's source AMC, to compare bytes per frame (repeat per clip)" },
+	{ "runs", 0, "N", OPT_RUNS, "time the first frame N times and keep the best (default 10)" },
+	{ NULL, 0, NULL, 0, NULL },
+};
+
+static int bi_take(void *ctx, int id, const char *v)
+{
+	bench_image_args *a = ctx;
+	if (id == OPT_AMC) {
+		if (a->amc_count == SKP_IMAGE_MAX_CLIPS)
+			return fprintf(stderr, "skintool bench-image: more than %d --amc\n", SKP_IMAGE_MAX_CLIPS), -1;
+		a->amc[a->amc_count++] = v;
+		return 0;
+	}
+	if (cli_parse_long("--runs", v, &a->runs) < 0)
+		return -1;
+	return a->runs < 1 ? fprintf(stderr, "skintool bench-image: --runs expects 1 or more\n"), -1 : 0;
+}
+
+static int bi_file(void *ctx, const char *arg)
+{
+	bench_image_args *a = ctx;
+	const char **slots[] = { &a->path };
+	return cli_take_positional("skintool bench-image", slots, 1, arg);
+}
+
+static const cli_command bench_image_command = {
+	.prog = "skintool bench-image",
+	.usage = "SHOW.skn [--amc=M.amc]... [--runs=N]",
+	.about = "An image's time to the first frame (open, header, skeleton and body, first block and\n"
+		 "decode; no GL) and its bytes per frame, decode time per frame and parity overhead.",
+	.opts = { bench_image_opts },
+	.take = bi_take,
+	.positional = bi_file,
+};
+
 int cmd_bench_image(int argc, char **argv)
 {
 	static show_image img;
-	const char *path = NULL, *amc[SKP_IMAGE_MAX_CLIPS] = { 0 };
-	long runs = 10;
-	int amc_count = 0;
+	static bench_image_args a;
 	skp_error err;
-	for (int i = 0; i < argc; i++) {
-		if (!strcmp(argv[i], "--amc") && i + 1 < argc && amc_count < SKP_IMAGE_MAX_CLIPS)
-			amc[amc_count++] = argv[++i];
-		else if (!strcmp(argv[i], "--runs") && i + 1 < argc) {
-			if (cli_parse_long("--runs", argv[++i], &runs) < 0 || runs < 1)
-				return 1;
-		} else if (argv[i][0] != '-' && !path)
-			path = argv[i];
-		else {
-			fprintf(stderr, "usage: skintool bench-image show.skn [--amc M.amc ...] [--runs N]\n");
-			return 1;
-		}
-	}
+	memset(&a, 0, sizeof a);
+	a.runs = 10;
+	int rc = cli_parse(&bench_image_command, &a, argc, argv, 0);
+	if (rc != 0)
+		return rc < 0;
+	const char *path = a.path, *const *amc = a.amc;
+	long runs = a.runs;
+	int amc_count = a.amc_count;
 	if (!path) {
-		fprintf(stderr, "usage: skintool bench-image show.skn [--amc M.amc ...] [--runs N]\n");
+		fprintf(stderr, "skintool bench-image: give SHOW.skn\nTry 'skintool bench-image --help' for more information.\n");
 		return 1;
 	}
 	first_frame_ns best = best_first_frame(path, runs);

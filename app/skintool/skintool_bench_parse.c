@@ -10,10 +10,53 @@
 
 #include "bvh.h"
 #include "cli_common.h"
+#include "cli_opts.h"
 #include "clock.h"
 #include "skintool_cmds.h"
 
-#define BENCH_PARSE_USAGE "usage: skintool bench-parse [SKELETON.asf] MOTION.amc|MOTION.bvh ... [--runs N]\n"
+#define MAX_FILES 64
+
+typedef struct bench_parse_args {
+	long runs;
+	int count;
+	const char *file[MAX_FILES];
+} bench_parse_args;
+
+static const cli_opt bench_parse_opts[] = {
+	{ "runs", 0, "N", 1, "time each file N times and keep the best (default 5)" },
+	{ NULL, 0, NULL, 0, NULL },
+};
+
+static int bp_take(void *ctx, int id, const char *v)
+{
+	bench_parse_args *a = ctx;
+	(void)id;
+	if (cli_parse_long("--runs", v, &a->runs) < 0)
+		return -1;
+	if (a->runs < 1)
+		return fprintf(stderr, "skintool bench-parse: --runs expects 1 or more, got %ld\n", a->runs), -1;
+	return 0;
+}
+
+static int bp_file(void *ctx, const char *arg)
+{
+	bench_parse_args *a = ctx;
+	if (a->count == MAX_FILES)
+		return fprintf(stderr, "skintool bench-parse: more than %d files\n", MAX_FILES), -1;
+	a->file[a->count++] = arg;
+	return 0;
+}
+
+static const cli_command bench_parse_command = {
+	.prog = "skintool bench-parse",
+	.usage = "[SKELETON.asf] MOTION.amc|MOTION.bvh... [--runs=N]",
+	.about = "Motion parse throughput: streams each motion file through the parser (an AMC against the\n"
+		 "ASF named before it, a BVH on its own) and prints CSV file,format,bytes,frames,MB_per_s,\n"
+		 "frames_per_s,vs_first (the ratio to the first file measured, in the same run).",
+	.opts = { bench_parse_opts },
+	.take = bp_take,
+	.positional = bp_file,
+};
 
 typedef struct parse_figure {
 	double mb_s, frames_s;
@@ -44,20 +87,19 @@ static int measure(const char *path, const skel *s, long runs, parse_figure *out
 int cmd_bench_parse(int argc, char **argv)
 {
 	static skel asf, own;
-	long runs = 5;
+	static bench_parse_args a;
+	a.runs = 5;
+	a.count = 0;
+	int rc = cli_parse(&bench_parse_command, &a, argc, argv, 0);
+	if (rc != 0)
+		return rc < 0;
+	long runs = a.runs;
 	int have_asf = 0, measured = 0;
 	parse_figure base = { 0, 0, 0 };
-	for (int i = 0; i < argc; i++)
-		if (!strcmp(argv[i], "--runs") && (i + 1 >= argc || cli_parse_long("--runs", argv[++i], &runs) < 0 || runs < 1))
-			return fprintf(stderr, "%s", BENCH_PARSE_USAGE), 1;
 	printf("file,format,bytes,frames,MB_per_s,frames_per_s,vs_first\n");
-	for (int i = 0; i < argc; i++) {
-		const char *p = argv[i];
+	for (int i = 0; i < a.count; i++) {
+		const char *p = a.file[i];
 		size_t n = strlen(p);
-		if (!strcmp(p, "--runs")) {
-			i++;
-			continue;
-		}
 		if (n > 4 && !strcmp(p + n - 4, ".asf")) {
 			if (cli_load_skel(p, &asf) < 0)
 				return 1;
@@ -79,6 +121,7 @@ int cmd_bench_parse(int argc, char **argv)
 		       f.frames, f.mb_s, f.frames_s, f.mb_s / base.mb_s);
 	}
 	if (!measured)
-		return fprintf(stderr, "%s", BENCH_PARSE_USAGE), 1;
+		return fprintf(stderr, "skintool bench-parse: give a motion file\n"
+			       "Try 'skintool bench-parse --help' for more information.\n"), 1;
 	return 0;
 }

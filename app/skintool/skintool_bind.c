@@ -7,11 +7,11 @@
 #include <string.h>
 
 #include "cli_bind_args.h"
+#include "cli_common.h"
 #include "cli_weights.h"
 #include "skintool_cmds.h"
+#include "tool_args.h"
 
-#define BIND_USAGE "usage: skintool bind SKELETON.asf MESH.obj " BIND_ARGS_USAGE \
-	" [--report] -o weights.csv\n"
 
 static void report_pose(FILE *to, const bind_args *a, const bound_body *b)
 {
@@ -79,49 +79,65 @@ static void report(FILE *to, const bind_args *a, const bound_body *b)
 		fprintf(to, "%s,%d\n", s->bone[i].name, st.bone_verts[i]);
 }
 
+typedef struct bind_cmd {
+	tool_common c;
+	int want_report;
+} bind_cmd;
+
+enum { OPT_REPORT = 1 };
+
+static const cli_opt bind_cmd_opts[] = {
+	{ "report", 0, NULL, OPT_REPORT, "also print how the body was bound (pose, fit, balancing) on stderr" },
+	{ NULL, 0, NULL, 0, NULL },
+};
+
+static int bind_take(void *ctx, int id, const char *v)
+{
+	bind_cmd *b = ctx;
+	int r = tool_common_take(&b->c, id, v);
+	if (r <= 0)
+		return r;
+	b->want_report = 1;
+	return 0;
+}
+
+static int bind_file(void *ctx, const char *arg)
+{
+	bind_cmd *b = ctx;
+	const char **slots[] = { &b->c.asf, &b->c.mesh };
+	return cli_take_positional(b->c.prog, slots, 2, arg);
+}
+
+static const cli_command bind_command = {
+	.prog = "skintool bind",
+	.usage = "SKELETON MESH [OPTION]... -o W.csv",
+	.about = "Binds a mesh to a skeleton (ASF or BVH) and writes its skin weights as CSV rows\n"
+		 "vertex,bone,weight (at most 4 per vertex; -o - writes to stdout). The weights are computed\n"
+		 "(the paper's rule, volume-balanced by default for the generated body), read from a CSV, or\n"
+		 "a rigged mesh's own. Every choice made for the mesh is said on stderr.",
+	.opts = { tool_opt_skeleton, tool_opt_mesh, tool_opt_output, bind_cmd_opts, bind_opts },
+	.take = bind_take,
+	.positional = bind_file,
+	.more = "Examples:\n  skintool bind 02.asf base.obj -o w.csv\n"
+		"  skintool bind 02.asf male_base_mesh.glb --weights=mesh -o w.csv\n",
+};
+
 int cmd_bind(int argc, char **argv)
 {
-	static bind_args a;
+	static bind_cmd b;
 	static bound_body body;
-	const char *asf = NULL, *obj = NULL, *out = NULL;
-	int want_report = 0;
-
-	bind_args_init(&a);
-	for (int i = 0; i < argc; i++) {
-		int r = bind_args_parse(&a, argc, argv, &i);
-		if (r < 0)
-			return 1;
-		if (r > 0)
-			continue;
-		if (strcmp(argv[i], "--report") == 0) {
-			want_report = 1;
-		} else if (strcmp(argv[i], "-o") == 0) {
-			if (i + 1 >= argc) {
-				fprintf(stderr, "skintool bind: -o needs a file name\n");
-				return 1;
-			}
-			out = argv[++i];
-		} else if (argv[i][0] == '-' && argv[i][1]) {
-			fprintf(stderr, "skintool bind: unknown option '%s'\n", argv[i]);
-			return 1;
-		} else if (!asf) {
-			asf = argv[i];
-		} else if (!obj) {
-			obj = argv[i];
-		} else {
-			fprintf(stderr, "skintool bind: unexpected argument '%s'\n", argv[i]);
-			return 1;
-		}
-	}
-	if (!asf || !obj || !out) {
-		fprintf(stderr, BIND_USAGE);
+	tool_common_init(&b.c, bind_command.prog);
+	b.want_report = 0;
+	int rc = cli_parse(&bind_command, &b, argc, argv, 0);
+	if (rc != 0)
+		return rc < 0;
+	if (!b.c.asf || !b.c.mesh || !b.c.out)
+		return tool_missing(&b.c, "SKELETON, MESH and -o W.csv");
+	if (bind_args_load(&b.c.bind, b.c.asf, b.c.mesh, &body) < 0)
 		return 1;
-	}
-	if (bind_args_load(&a, asf, obj, &body) < 0)
+	if (cli_write_weights(b.c.out, &body.skel, &body.weights) < 0)
 		return 1;
-	if (cli_write_weights(out, &body.skel, &body.weights) < 0)
-		return 1;
-	if (want_report)
-		report(stderr, &a, &body);
+	if (b.want_report)
+		report(stderr, &b.c.bind, &body);
 	return 0;
 }

@@ -7,7 +7,9 @@
  * synthetic twist and bend scenes next to their analytic values, and LBS |
  * DQBS renders of the frames where LBS collapses most compared with DQBS
  * (compare_output.c, report/). */
+#define _GNU_SOURCE /* nftw */
 #include <errno.h>
+#include <ftw.h>
 #include <stdio.h>
 #include <string.h>
 #include <sys/stat.h>
@@ -16,56 +18,67 @@
 #include "clock.h"
 #include "compare.h"
 #include "skintool_cmds.h"
-
-#define COMPARE_USAGE "usage: skintool compare SKELETON.asf MOTION.amc [--mesh MESH.obj " \
-	BIND_ARGS_USAGE "] -o DIR [--renders N]\n"
+#include "tool_args.h"
 
 const char *const compare_algo_label[NALGO] = { "LBS", "DQBS", "DQBS fixed" };
 
-static int parse_one(compare_args *a, int argc, char **argv, int *i)
+enum { OPT_RENDERS = 1 };
+
+static const cli_opt compare_cmd_opts[] = {
+	{ "renders", 0, "N", OPT_RENDERS, "LBS | DQBS renders of the N worst frames (0 to 8, default 4)" },
+	{ NULL, 0, NULL, 0, NULL },
+};
+
+static const cli_opt compare_out_opt[] = {
+	{ "output", 'o', "DIR", TOOL_OPT_OUTPUT, "the report's folder (created; removed again when the command fails)" },
+	{ NULL, 0, NULL, 0, NULL },
+};
+
+static int compare_take(void *ctx, int id, const char *v)
 {
-	const char *opt = argv[*i];
-	int r = bind_args_parse(&a->bind, argc, argv, i);
-	if (r != 0)
-		return r < 0 ? -1 : 0;
-	if (!strcmp(opt, "--mesh") || !strcmp(opt, "-o") || !strcmp(opt, "--renders")) {
-		if (*i + 1 >= argc) {
-			fprintf(stderr, "skintool compare: %s needs a value\n", opt);
-			return -1;
-		}
-		const char *val = argv[++*i];
-		if (!strcmp(opt, "--mesh"))
-			a->mesh = val;
-		else if (!strcmp(opt, "-o"))
-			a->out = val;
-		else if (cli_parse_long(opt, val, &a->renders) < 0)
-			return -1;
-		return 0;
+	compare_args *a = ctx;
+	if (BIND_OPT_ID(id))
+		return bind_args_take(&a->bind, "skintool compare", id, v);
+	switch (id) {
+	case TOOL_OPT_SKELETON: a->asf = v; return 0;
+	case TOOL_OPT_MOTION: a->amc = v; return 0;
+	case TOOL_OPT_MESH: a->mesh = v; return 0;
+	case TOOL_OPT_OUTPUT: a->out = v; return 0;
 	}
-	if (opt[0] == '-' && opt[1]) {
-		fprintf(stderr, "skintool compare: unknown option '%s'\n", opt);
-		return -1;
-	}
-	const char **slot = !a->asf ? &a->asf : !a->amc ? &a->amc : NULL;
-	if (!slot) {
-		fprintf(stderr, "skintool compare: unexpected argument '%s'\n", opt);
-		return -1;
-	}
-	*slot = opt;
-	return 0;
+	return cli_parse_long("--renders", v, &a->renders);
 }
+
+static int compare_file(void *ctx, const char *arg)
+{
+	compare_args *a = ctx;
+	const char **slots[] = { &a->asf, &a->amc };
+	return cli_take_positional("skintool compare", slots, 2, arg);
+}
+
+static const cli_command compare_command = {
+	.prog = "skintool compare",
+	.usage = "SKELETON MOTION [--mesh=MESH [OPTION]...] -o DIR",
+	.about = "The paper's experiment on any clip: skins every frame with LBS, DQBS and fixed-point DQBS,\n"
+		 "measures volume and radius ratios overall and per joint region, and writes DIR/index.html\n"
+		 "(a static page), DIR/metrics.csv, charts, the twist and bend scenes and renders of the worst\n"
+		 "frames. A rigged mesh is measured with its own and with computed weights, side by side.",
+	.opts = { tool_opt_skeleton, tool_opt_motion, tool_opt_mesh, compare_out_opt, compare_cmd_opts, bind_opts },
+	.take = compare_take,
+	.positional = compare_file,
+};
 
 static int parse_args(compare_args *a, int argc, char **argv)
 {
 	memset(a, 0, sizeof *a);
 	bind_args_init(&a->bind);
 	a->renders = 4;
-	for (int i = 0; i < argc; i++)
-		if (parse_one(a, argc, argv, &i) < 0)
-			return -1;
+	int rc = cli_parse(&compare_command, a, argc, argv, 0);
+	if (rc != 0)
+		return rc;
 	cli_bvh_slots(&a->asf, &a->amc, NULL);
 	if (!a->asf || !a->amc || !a->out) {
-		fputs(COMPARE_USAGE, stderr);
+		fprintf(stderr, "skintool compare: give SKELETON MOTION and -o DIR\n"
+			"Try 'skintool compare --help' for more information.\n");
 		return -1;
 	}
 	if (a->renders < 0 || a->renders > REPORT_MAX_STILLS) {
@@ -80,13 +93,30 @@ static int parse_args(compare_args *a, int argc, char **argv)
 	return 0;
 }
 
+/* 1 when the folder was made here (and goes again if the command fails),
+ * 0 when it was there, -1 after reporting. */
 static int make_dir(const char *dir)
 {
-	if (mkdir(dir, 0755) != 0 && errno != EEXIST) {
-		fprintf(stderr, "skintool compare: %s: %s\n", dir, strerror(errno));
-		return -1;
-	}
-	return 0;
+	if (mkdir(dir, 0755) == 0)
+		return 1;
+	if (errno == EEXIST)
+		return 0;
+	fprintf(stderr, "skintool compare: %s: %s\n", dir, strerror(errno));
+	return -1;
+}
+
+static int remove_entry(const char *path, const struct stat *st, int type, struct FTW *ftw)
+{
+	(void)st, (void)type, (void)ftw;
+	return remove(path);
+}
+
+/* A failed run leaves no half-written report behind in a folder it made. */
+static int fail(const char *dir, int made)
+{
+	if (made && nftw(dir, remove_entry, 16, FTW_DEPTH | FTW_PHYS) == 0)
+		fprintf(stderr, "skintool compare: %s removed (the report was not finished)\n", dir);
+	return 1;
 }
 
 int cmd_compare(int argc, char **argv)
@@ -94,7 +124,11 @@ int cmd_compare(int argc, char **argv)
 	static compare_args a;
 	static compare_run c;
 	static char clip[256];
-	if (parse_args(&a, argc, argv) < 0 || make_dir(a.out) < 0)
+	int rc = parse_args(&a, argc, argv);
+	if (rc != 0)
+		return rc < 0;
+	int made = make_dir(a.out);
+	if (made < 0)
 		return 1;
 	uint64_t t0 = clock_now_ns();
 	memset(&c.rep, 0, sizeof c.rep);
@@ -107,12 +141,12 @@ int cmd_compare(int argc, char **argv)
 	c.rep.clip = clip;
 	if (compare_measure_scenes(&c) < 0 || compare_load_clip(&c, &a) < 0 || compare_measure_clip(&c, &a) < 0 ||
 	    compare_other_weights(&c, &a) < 0)
-		return 1;
+		return fail(a.out, made);
 	uint64_t t1 = clock_now_ns();
 	compare_pick_stills(&c, (int)a.renders);
 	if (compare_explain_volume(&c, &a) < 0 || compare_render_stills(&c, &a) < 0 ||
 	    compare_write_charts(&c, a.out) < 0 || report_write_html(&c.rep, a.out) < 0)
-		return 1;
+		return fail(a.out, made);
 	uint64_t t2 = clock_now_ns();
 	fprintf(stderr, "%s: %ld frames x 3 algorithms, %d vertices: measured in %.2f s, renders, "
 		"charts and page %.2f s, total %.2f s -> %s/index.html\n", a.amc, c.rep.frames,

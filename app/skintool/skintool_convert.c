@@ -7,12 +7,11 @@
 #include <string.h>
 
 #include "cli_text_out.h"
+#include "cli_opts.h"
 #include "convert.h"
 #include "skintool_cmds.h"
 #include "text_tokens.h"
 
-#define CONVERT_USAGE "usage: skintool convert SKELETON.asf MOTION.amc -o OUT.bvh|OUT.asf [--fps F]\n" \
-	"       skintool convert IN.bvh -o OUT.asf|OUT.bvh [--fps F]\n"
 #define AMC_DEFAULT_FPS 120.0   /* the CMU database's rate; AMC does not record one */
 
 typedef struct convert_args {
@@ -27,31 +26,67 @@ static int ends_with(const char *path, const char *ext)
 	return n > k && tok_ieq(path + n - k, ext);
 }
 
+enum { OPT_SKELETON = 1, OPT_MOTION, OPT_OUTPUT, OPT_FPS };
+
+static const cli_opt convert_opts[] = {
+	{ "skeleton", 0, "S.asf", OPT_SKELETON, "the skeleton (or the first file named)" },
+	{ "motion", 0, "M.amc", OPT_MOTION, "the motion (or the second file; a BVH alone is both)" },
+	{ "output", 'o', "OUT", OPT_OUTPUT, "OUT.bvh, or OUT.asf (which also writes OUT.amc)" },
+	{ "fps", 0, "F", OPT_FPS, "the BVH's frame rate in Hz (default: a BVH input's own, else 120)" },
+	{ NULL, 0, NULL, 0, NULL },
+};
+
+typedef struct convert_parse {
+	convert_args *a;
+	const char *next;
+} convert_parse;
+
+static int convert_take(void *ctx, int id, const char *v)
+{
+	convert_args *a = ((convert_parse *)ctx)->a;
+	char *end;
+	switch (id) {
+	case OPT_SKELETON: a->skel_path = v; return 0;
+	case OPT_MOTION: a->motion_path = v; return 0;
+	case OPT_OUTPUT: a->out = v; return 0;
+	}
+	a->fps = strtod(v, &end);
+	if (*end || !(a->fps >= 1e-3 && a->fps <= 1e6)) {
+		fprintf(stderr, "skintool convert: --fps expects a rate in Hz, got '%s'\n", v);
+		return -1;
+	}
+	return 0;
+}
+
+static int convert_file(void *ctx, const char *arg)
+{
+	convert_parse *c = ctx;
+	const char **slots[] = { &c->a->skel_path, &c->a->motion_path, &c->next };
+	return cli_take_positional("skintool convert", slots, 3, arg);
+}
+
+static const cli_command convert_command = {
+	.prog = "skintool convert",
+	.usage = "SKELETON.asf MOTION.amc -o OUT.bvh|OUT.asf [--fps=F]\n"
+		 "  or:  skintool convert IN.bvh -o OUT.asf|OUT.bvh [--fps=F]",
+	.about = "Converts motion between ASF/AMC and BVH, the format following the output's name (.asf also\n"
+		 "writes its .amc). Forward kinematics on the result equals that on the source within 1e-6 of\n"
+		 "the body's height. Outputs are written under a temporary name and renamed.",
+	.opts = { convert_opts },
+	.take = convert_take,
+	.positional = convert_file,
+};
+
 static int parse(convert_args *a, int argc, char **argv)
 {
-	const char *next = NULL;
-	const char **slots[] = { &a->skel_path, &a->motion_path, &next };
-	for (int i = 0; i < argc; i++) {
-		const char *v;
-		if (!strcmp(argv[i], "-o") || !strcmp(argv[i], "--fps")) {
-			if (!(v = cli_option_value("skintool convert", argv[i], argc, argv, &i)))
-				return -1;
-			if (argv[i - 1][1] == 'o') {
-				a->out = v;
-			} else if (!((a->fps = atof(v)) >= 1e-3 && a->fps <= 1e6)) {
-				fprintf(stderr, "skintool convert: --fps expects a rate in Hz, got '%s'\n", v);
-				return -1;
-			}
-		} else if (argv[i][0] == '-' && argv[i][1]) {
-			fprintf(stderr, "skintool convert: unknown option '%s'\n%s", argv[i], CONVERT_USAGE);
-			return -1;
-		} else if (cli_take_positional("skintool convert", slots, 3, argv[i]) < 0) {
-			return -1;
-		}
-	}
-	cli_bvh_slots(&a->skel_path, &a->motion_path, &next);
-	if (!a->skel_path || !a->motion_path || !a->out || next) {
-		fprintf(stderr, "%s", CONVERT_USAGE);
+	convert_parse c = { a, NULL };
+	int rc = cli_parse(&convert_command, &c, argc, argv, 0);
+	if (rc != 0)
+		return rc;
+	cli_bvh_slots(&a->skel_path, &a->motion_path, &c.next);
+	if (!a->skel_path || !a->motion_path || !a->out || c.next) {
+		fprintf(stderr, "skintool convert: give SKELETON.asf MOTION.amc or IN.bvh, and -o OUT\n"
+			"Try 'skintool convert --help' for more information.\n");
 		return -1;
 	}
 	if (!ends_with(a->out, ".bvh") && !ends_with(a->out, ".asf")) {
@@ -131,7 +166,10 @@ int cmd_convert(int argc, char **argv)
 	static convert_args a;
 	static skel s;
 	memset(&a, 0, sizeof a);
-	if (parse(&a, argc, argv) < 0 || cli_load_skel(a.skel_path, &s) < 0)
+	int rc = parse(&a, argc, argv);
+	if (rc != 0)
+		return rc < 0;
+	if (cli_load_skel(a.skel_path, &s) < 0)
 		return 1;
 	int bone;
 	const char *why = ends_with(a.out, ".bvh") ? convert_unsupported(&s, &bone) : NULL;

@@ -5,6 +5,7 @@
 #include "fk.h"
 #include "skintool_cmds.h"
 #include "cli_common.h"
+#include "cli_opts.h"
 
 static void print_pose(const skel *s, long frame, const skel_pose *p)
 {
@@ -17,34 +18,68 @@ static void print_pose(const skel *s, long frame, const skel_pose *p)
 	}
 }
 
+typedef struct fk_args {
+	const char *asf, *amc;
+	long only;
+} fk_args;
+
+enum { OPT_SKELETON = 1, OPT_MOTION, OPT_FRAME };
+
+static const cli_opt fk_opts[] = {
+	{ "skeleton", 0, "S.asf", OPT_SKELETON, "the skeleton (or the first file named)" },
+	{ "motion", 0, "M.amc", OPT_MOTION, "the motion (or the second file; a BVH alone is both)" },
+	{ "frame", 0, "N", OPT_FRAME, "only the frame numbered N in the file (default: every frame)" },
+	{ NULL, 0, NULL, 0, NULL },
+};
+
+static int fk_take(void *ctx, int id, const char *v)
+{
+	fk_args *a = ctx;
+	if (id == OPT_SKELETON)
+		a->asf = v;
+	else if (id == OPT_MOTION)
+		a->amc = v;
+	else if (cli_parse_long("--frame", v, &a->only) < 0)
+		return -1;
+	else if (a->only < 0)
+		return fprintf(stderr, "skintool fk: --frame expects a frame number (0 or more), got %ld\n", a->only), -1;
+	return 0;
+}
+
+static int fk_file(void *ctx, const char *arg)
+{
+	fk_args *a = ctx;
+	const char **slots[] = { &a->asf, &a->amc };
+	return cli_take_positional("skintool fk", slots, 2, arg);
+}
+
+static const cli_command fk_command = {
+	.prog = "skintool fk",
+	.usage = "SKELETON.asf MOTION.amc [--frame=N]\n  or:  skintool fk MOTION.bvh [--frame=N]",
+	.about = "Forward kinematics: prints CSV, a header then one row per bone per frame: frame,bone,x,y,z\n"
+		 "(the bone's tip in world space, the skeleton's length unit) and qw,qx,qy,qz (its global\n"
+		 "rotation, qw >= 0). The root comes first, then the bones in file order.",
+	.opts = { fk_opts },
+	.take = fk_take,
+	.positional = fk_file,
+};
+
 int cmd_fk(int argc, char **argv)
 {
 	static skel s;
 	static cli_motion m;
 	static amc_frame f;
 	static skel_pose pose;
-	const char *asf = NULL, *amc = NULL;
-	long only = -1;
-
-	for (int i = 0; i < argc; i++) {
-		if (strcmp(argv[i], "--frame") == 0) {
-			if (cli_parse_long("--frame", i + 1 < argc ? argv[++i] : NULL, &only) < 0)
-				return 1;
-		} else if (argv[i][0] == '-' && argv[i][1]) {
-			fprintf(stderr, "skintool fk: unknown option '%s'\n", argv[i]);
-			return 1;
-		} else if (!asf) {
-			asf = argv[i];
-		} else if (!amc) {
-			amc = argv[i];
-		} else {
-			fprintf(stderr, "skintool fk: unexpected argument '%s'\n", argv[i]);
-			return 1;
-		}
-	}
+	fk_args args = { NULL, NULL, -1 };
+	int rc = cli_parse(&fk_command, &args, argc, argv, 0);
+	if (rc != 0)
+		return rc < 0;
+	const char *asf = args.asf, *amc = args.amc;
+	long only = args.only;
 	cli_bvh_slots(&asf, &amc, NULL);
 	if (!asf || !amc) {
-		fprintf(stderr, "usage: skintool fk SKELETON.asf MOTION.amc [--frame N] | fk MOTION.bvh [--frame N]\n");
+		fprintf(stderr, "skintool fk: give SKELETON.asf MOTION.amc, or MOTION.bvh\n"
+			"Try 'skintool fk --help' for more information.\n");
 		return 1;
 	}
 	if (cli_load_skel(asf, &s) < 0 || cli_motion_open(&m, amc, &s) < 0)

@@ -10,6 +10,7 @@
 
 #include "cli_show.h"
 #include "skintool_cmds.h"
+#include "tool_args.h"
 
 static void print_header(const show_image *s)
 {
@@ -164,17 +165,25 @@ static int refused(show_image *s, const skp_error *err)
 	return 2;
 }
 
+static const cli_command info_command = {
+	.prog = "skintool info",
+	.usage = "SHOW.skn",
+	.about = "Prints an image's header, sections and clips, accepts its body as skinplay would, and checks\n"
+		 "every block (CRC, tag, parity, the header copy). Exit status 2 when a block is bad or the\n"
+		 "body is refused (`skintool repair` rebuilds what parity allows).",
+};
+
 int cmd_info(int argc, char **argv)
 {
 	static show_image s;
 	skp_error err;
-	if (argc != 1 || argv[0][0] == '-') {
-		fprintf(stderr, "usage: skintool info show.skn\n");
-		return 1;
-	}
-	if (show_image_open(&s, argv[0], &err) < 0) {
+	const char *path;
+	int rc = tool_one_file(&info_command, argc, argv, &path);
+	if (rc != 0)
+		return rc < 0;
+	if (show_image_open(&s, path, &err) < 0) {
 		if (err.code == SKP_ERR_IO && err.block < 0) {
-			fprintf(stderr, "%s: %s\n", argv[0], err.msg);
+			fprintf(stderr, "%s: %s\n", path, err.msg);
 			return 1;
 		}
 		return refused(&s, &err);

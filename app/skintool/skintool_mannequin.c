@@ -5,42 +5,63 @@
 
 #include "cli_common.h"
 #include "cli_mesh_io.h"
+#include "cli_opts.h"
 #include "mannequin.h"
 #include "skintool_cmds.h"
-
-static const char usage_text[] = "usage: skintool mannequin SKELETON.asf -o BODY.obj [--detail N]\n";
 
 typedef struct manq_args {
 	const char *asf, *out;
 	long detail;
 } manq_args;
 
+enum { OPT_SKELETON = 1, OPT_OUTPUT, OPT_DETAIL };
+
+static const cli_opt manq_opts[] = {
+	{ "skeleton", 0, "S.asf", OPT_SKELETON, "the skeleton, ASF or BVH (or the file named)" },
+	{ "output", 'o', "BODY.obj", OPT_OUTPUT, "the OBJ to write (under a temporary name first)" },
+	{ "detail", 0, "N", OPT_DETAIL, "grid cells across the body's largest extent (default 72, 8 to the board limit)" },
+	{ NULL, 0, NULL, 0, NULL },
+};
+
+static int manq_take(void *ctx, int id, const char *v)
+{
+	manq_args *a = ctx;
+	if (id == OPT_SKELETON)
+		a->asf = v;
+	else if (id == OPT_OUTPUT)
+		a->out = v;
+	else
+		return cli_parse_long("--detail", v, &a->detail);
+	return 0;
+}
+
+static int manq_file(void *ctx, const char *arg)
+{
+	manq_args *a = ctx;
+	const char **slots[] = { &a->asf };
+	return cli_take_positional("skintool mannequin", slots, 1, arg);
+}
+
+static const cli_command manq_command = {
+	.prog = "skintool mannequin",
+	.usage = "SKELETON -o BODY.obj [--detail=N]",
+	.about = "Writes a closed, outward-facing body mesh around the skeleton's rest pose (arms that hang are\n"
+		 "raised sideways first): the body skinplay shows when no mesh is given.",
+	.opts = { manq_opts },
+	.take = manq_take,
+	.positional = manq_file,
+};
+
 static int parse_args(int argc, char **argv, manq_args *a)
 {
 	a->asf = a->out = NULL;
 	a->detail = MANQ_DEFAULT_DETAIL;
-	for (int i = 0; i < argc; i++) {
-		if (strcmp(argv[i], "--detail") == 0) {
-			if (cli_parse_long("--detail", i + 1 < argc ? argv[++i] : NULL, &a->detail) < 0)
-				return -1;
-		} else if (strcmp(argv[i], "-o") == 0) {
-			if (i + 1 >= argc) {
-				fprintf(stderr, "skintool mannequin: -o needs a file name\n");
-				return -1;
-			}
-			a->out = argv[++i];
-		} else if (argv[i][0] == '-' && argv[i][1]) {
-			fprintf(stderr, "skintool mannequin: unknown option '%s'\n", argv[i]);
-			return -1;
-		} else if (!a->asf) {
-			a->asf = argv[i];
-		} else {
-			fprintf(stderr, "skintool mannequin: unexpected argument '%s'\n", argv[i]);
-			return -1;
-		}
-	}
+	int rc = cli_parse(&manq_command, a, argc, argv, 0);
+	if (rc != 0)
+		return rc;
 	if (!a->asf || !a->out) {
-		fputs(usage_text, stderr);
+		fprintf(stderr, "skintool mannequin: give SKELETON and -o BODY.obj\n"
+			"Try 'skintool mannequin --help' for more information.\n");
 		return -1;
 	}
 	if (a->detail < MANQ_MIN_DETAIL || a->detail > MANQ_MAX_DETAIL) {
@@ -59,7 +80,10 @@ int cmd_mannequin(int argc, char **argv)
 	manq_args a;
 	skp_error err;
 
-	if (parse_args(argc, argv, &a) < 0 || cli_load_skel(a.asf, &s) < 0)
+	int rc = parse_args(argc, argv, &a);
+	if (rc != 0)
+		return rc < 0;
+	if (cli_load_skel(a.asf, &s) < 0)
 		return 1;
 	if (manq_build(&s, (int)a.detail, &work, &body, &err) != SKP_OK) {
 		cli_error(a.asf, &err);

@@ -18,15 +18,11 @@
 #include "skin_metrics.h"
 #include "skin_scene.h"
 #include "skintool_cmds.h"
+#include "tool_args.h"
 #include "text_tokens.h"
 
-#define METRICS_USAGE "usage: skintool metrics SKELETON.asf MOTION.amc MESH.obj " BIND_ARGS_USAGE \
-	" [--algo LIST]\n       skintool metrics --scene twist|bend --angle DEG [--algo LIST]\n" \
-	"LIST: comma-separated lbs,dqbs,dqbs-fixed (default all three)\n"
-
 typedef struct metrics_args {
-	bind_args bind;
-	const char *asf, *amc, *obj;
+	tool_common c;
 	int scene;                        /* skin_scene_kind, -1: a clip */
 	double angle_deg;
 	int have_angle;
@@ -86,53 +82,66 @@ static int parse_angle(metrics_args *a, const char *text)
 	return 0;
 }
 
-static int parse_one(metrics_args *a, int argc, char **argv, int *i)
+enum { OPT_ALGO = 1, OPT_SCENE, OPT_ANGLE };
+
+static const cli_opt metrics_cmd_opts[] = {
+	{ "algo", 0, "LIST", OPT_ALGO, "comma-separated lbs,dqbs,dqbs-fixed (default all three)" },
+	{ "scene", 0, "twist|bend", OPT_SCENE, "a synthetic scene instead of a clip (no files; needs --angle)" },
+	{ "angle", 0, "DEG", OPT_ANGLE, "the scene's twist or bend angle in degrees" },
+	{ NULL, 0, NULL, 0, NULL },
+};
+
+static int metrics_take(void *ctx, int id, const char *v)
 {
-	const char *opt = argv[*i], *val;
-	int r = bind_args_parse(&a->bind, argc, argv, i);
-	if (r != 0)
-		return r < 0 ? -1 : 0;
-	if (strcmp(opt, "--algo") == 0)
-		return (val = cli_option_value("skintool metrics", opt, argc, argv, i)) ? parse_algos(a, val) : -1;
-	if (strcmp(opt, "--scene") == 0)
-		return (val = cli_option_value("skintool metrics", opt, argc, argv, i)) ? parse_scene(a, val) : -1;
-	if (strcmp(opt, "--angle") == 0)
-		return (val = cli_option_value("skintool metrics", opt, argc, argv, i)) ? parse_angle(a, val) : -1;
-	if (opt[0] == '-' && opt[1]) {
-		fprintf(stderr, "skintool metrics: unknown option '%s'\n", opt);
-		return -1;
-	}
-	const char **const slots[] = { &a->asf, &a->amc, &a->obj };
-	return cli_take_positional("skintool metrics", slots, 3, opt);
+	metrics_args *a = ctx;
+	int r = tool_common_take(&a->c, id, v);
+	if (r <= 0)
+		return r;
+	return id == OPT_ALGO ? parse_algos(a, v) : id == OPT_SCENE ? parse_scene(a, v) : parse_angle(a, v);
 }
+
+static int metrics_file(void *ctx, const char *arg)
+{
+	metrics_args *a = ctx;
+	const char **slots[] = { &a->c.asf, &a->c.amc, &a->c.mesh };
+	return cli_take_positional(a->c.prog, slots, 3, arg);
+}
+
+static const cli_command metrics_command = {
+	.prog = "skintool metrics",
+	.usage = "SKELETON MOTION MESH [OPTION]...\n  or:  skintool metrics --scene=twist|bend --angle=DEG [--algo=LIST]",
+	.about = "Skinning artifacts as CSV on stdout, one row per frame and algorithm:\n"
+		 "frame,algo,volume_ratio,min_radius_ratio,max_radius_ratio. volume_ratio: the enclosed volume\n"
+		 "over the volume as bound; the radius ratios: the range over vertices of the distance to the\n"
+		 "nearest posed bone over the same distance as bound. A scene prints one row per algorithm.",
+	.opts = { tool_opt_skeleton, tool_opt_motion, tool_opt_mesh, metrics_cmd_opts, bind_opts },
+	.take = metrics_take,
+	.positional = metrics_file,
+};
 
 static int check_args(metrics_args *a)
 {
-	cli_bvh_slots(&a->asf, &a->amc, &a->obj);
-	int clip = a->asf || a->amc || a->obj;
+	cli_bvh_slots(&a->c.asf, &a->c.amc, &a->c.mesh);
+	int clip = a->c.asf || a->c.amc || a->c.mesh;
 	if (a->scene >= 0 && (clip || !a->have_angle)) {
 		fprintf(stderr, "skintool metrics: --scene takes --angle DEG and no files\n");
 		return -1;
 	}
-	if (a->scene < 0 && (!a->asf || !a->amc || !a->obj || a->have_angle)) {
-		fputs(METRICS_USAGE, stderr);
-		return -1;
-	}
+	if (a->scene < 0 && (!a->c.asf || !a->c.amc || !a->c.mesh || a->have_angle))
+		return -tool_missing(&a->c, "SKELETON MOTION MESH, or --scene with --angle");
 	return 0;
 }
 
 static int parse_args(metrics_args *a, int argc, char **argv)
 {
-	memset(a, 0, sizeof *a);
-	bind_args_init(&a->bind);
+	tool_common_init(&a->c, metrics_command.prog);
 	a->scene = -1;
+	a->have_angle = 0;
 	a->algo_count = SKIN_ALGO_COUNT;
 	for (int k = 0; k < SKIN_ALGO_COUNT; k++)
 		a->algo[k] = (skin_algo)k;
-	for (int i = 0; i < argc; i++)
-		if (parse_one(a, argc, argv, &i) < 0)
-			return -1;
-	return check_args(a);
+	int rc = cli_parse(&metrics_command, a, argc, argv, 0);
+	return rc != 0 ? rc : check_args(a);
 }
 
 static int start(metrics_run *r, const skel *s, const skel_pose *bind, const mesh *m,
@@ -176,9 +185,9 @@ static int run_clip(metrics_run *r, const metrics_args *a)
 	static bound_body body;
 	static cli_motion mo;
 	static amc_frame f;
-	if (bind_args_load(&a->bind, a->asf, a->obj, &body) < 0 ||
-	    start(r, &body.skel, &body.pose, &body.mesh, &body.weights, a->obj) < 0 ||
-	    cli_motion_open(&mo, a->amc, &body.skel) < 0)
+	if (bind_args_load(&a->c.bind, a->c.asf, a->c.mesh, &body) < 0 ||
+	    start(r, &body.skel, &body.pose, &body.mesh, &body.weights, a->c.mesh) < 0 ||
+	    cli_motion_open(&mo, a->c.amc, &body.skel) < 0)
 		return -1;
 	uint64_t t0 = clock_now_ns();
 	long frames = 0;
@@ -189,7 +198,7 @@ static int run_clip(metrics_run *r, const metrics_args *a)
 		frames++;
 	}
 	cli_motion_close(&mo);
-	fprintf(stderr, "%s: %ld frames x %d algorithms, %d vertices: %.3f s\n", a->amc, frames,
+	fprintf(stderr, "%s: %ld frames x %d algorithms, %d vertices: %.3f s\n", a->c.amc, frames,
 		a->algo_count, body.mesh.vert_count, (double)(clock_now_ns() - t0) / 1e9);
 	return rc < 0 ? -1 : 0;
 }
@@ -199,8 +208,9 @@ int cmd_metrics(int argc, char **argv)
 	static metrics_args a;
 	static metrics_run r;
 
-	if (parse_args(&a, argc, argv) < 0)
-		return 1;
-	int rc = a.scene >= 0 ? run_scene(&r, &a) : run_clip(&r, &a);
+	int rc = parse_args(&a, argc, argv);
+	if (rc != 0)
+		return rc < 0;
+	rc = a.scene >= 0 ? run_scene(&r, &a) : run_clip(&r, &a);
 	return rc < 0 ? 1 : 0;
 }

@@ -22,9 +22,7 @@
 #include "cli_image_out.h"
 #include "image_write.h"
 #include "skintool_cmds.h"
-
-#define PACK_USAGE "usage: skintool pack SKELETON.asf MOTION.amc [MOTION2.amc ...] [--mesh MESH.obj " \
-	BIND_ARGS_USAGE "] [--fps F] [--sequence N] [--block-size B] [--parity G|none] -o show.skn\n"
+#include "tool_args.h"
 
 #define PACK_MAX_AMC SKP_IMAGE_MAX_CLIPS
 
@@ -54,26 +52,84 @@ static int parse_parity(pack_args *p, const char *v)
 	return 0;
 }
 
-static int pack_value(pack_args *p, const char *opt, const char *v)
+enum { OPT_FPS = 1, OPT_SEQUENCE, OPT_BLOCK_SIZE, OPT_PARITY };
+
+static const cli_opt pack_cmd_opts[] = {
+	{ "fps", 0, "F", OPT_FPS, "the clips' capture rate in Hz (default: a BVH's own, else 120, the CMU rate)" },
+	{ "sequence", 0, "N", OPT_SEQUENCE, "the image's sequence number: the newest valid slot plays (default: now)" },
+	{ "block-size", 0, "B", OPT_BLOCK_SIZE, "the flash block size in bytes (default 4096)" },
+	{ "parity", 0, "G|none", OPT_PARITY, "one parity block per G data blocks, or none (default 8)" },
+	{ NULL, 0, NULL, 0, NULL },
+};
+
+static const cli_opt pack_motion_opt[] = {
+	{ "motion", 0, "M.amc", TOOL_OPT_MOTION, "a clip, AMC or BVH (repeat for more; or the files after the skeleton)" },
+	{ NULL, 0, NULL, 0, NULL },
+};
+
+static int add_clip(pack_args *p, const char *path)
 {
-	if (!strcmp(opt, "--mesh"))
-		p->mesh = v;
-	else if (!strcmp(opt, "-o"))
-		p->out = v;
-	else if (!strcmp(opt, "--sequence"))
-		return cli_parse_long(opt, v, &p->sequence) < 0 || p->sequence < 0 ? -1 : 0;
-	else if (!strcmp(opt, "--block-size"))
-		return cli_parse_long(opt, v, &p->block_size);
-	else if (!strcmp(opt, "--parity"))
-		return parse_parity(p, v);
-	else if (!strcmp(opt, "--fps")) {
-		p->fps = atof(v);
-		if (!(p->fps > 0 && p->fps < 10000))
-			return fprintf(stderr, "skintool pack: --fps expects a rate in Hz, got '%s'\n", v), -1;
-	} else
-		return 1;
+	if (p->amc_count >= PACK_MAX_AMC) {
+		fprintf(stderr, "skintool pack: more than %d clips (board limit SKP_IMAGE_MAX_CLIPS)\n", PACK_MAX_AMC);
+		return -1;
+	}
+	p->amc[p->amc_count++] = path;
 	return 0;
 }
+
+static int take_rate(pack_args *p, const char *v)
+{
+	char *end;
+	p->fps = strtod(v, &end);
+	if (*end || !(p->fps >= 1.0 && p->fps <= 10000.0))
+		return fprintf(stderr, "skintool pack: --fps expects a rate from 1 to 10000 Hz, got '%s'\n", v), -1;
+	return 0;
+}
+
+static int pack_take(void *ctx, int id, const char *v)
+{
+	pack_args *p = ctx;
+	if (BIND_OPT_ID(id))
+		return bind_args_take(&p->bind, "skintool pack", id, v);
+	switch (id) {
+	case TOOL_OPT_SKELETON: p->asf = v; return 0;
+	case TOOL_OPT_MOTION: return add_clip(p, v);
+	case TOOL_OPT_MESH: p->mesh = v; return 0;
+	case TOOL_OPT_OUTPUT: p->out = v; return 0;
+	case OPT_FPS: return take_rate(p, v);
+	case OPT_SEQUENCE:
+		if (cli_parse_long("--sequence", v, &p->sequence) < 0)
+			return -1;
+		if (p->sequence < 0 || p->sequence > 0xffffffffL)
+			return fprintf(stderr, "skintool pack: --sequence expects 0 to 4294967295, got '%s'\n", v), -1;
+		return 0;
+	case OPT_BLOCK_SIZE: return cli_parse_long("--block-size", v, &p->block_size);
+	case OPT_PARITY: return parse_parity(p, v);
+	}
+	return -1;
+}
+
+static int pack_file(void *ctx, const char *arg)
+{
+	pack_args *p = ctx;
+	if (!p->asf) {
+		p->asf = arg;
+		return 0;
+	}
+	return add_clip(p, arg);
+}
+
+static const cli_command pack_command = {
+	.prog = "skintool pack",
+	.usage = "SKELETON MOTION [MOTION2]... [--mesh=MESH [OPTION]...] -o SHOW.skn\n"
+		 "  or:  skintool pack MOTION.bvh [MOTION2.bvh]... [OPTION]... -o SHOW.skn",
+	.about = "Binds the body (the generated one without --mesh) and packs it with the clips into a flash\n"
+		 "image for skinplay --image: CRC-checked blocks with parity, written under a temporary name,\n"
+		 "synced and renamed, so a pack cut short leaves the previous image whole.",
+	.opts = { tool_opt_skeleton, pack_motion_opt, tool_opt_mesh, tool_opt_output, pack_cmd_opts, bind_opts },
+	.take = pack_take,
+	.positional = pack_file,
+};
 
 static int pack_parse(pack_args *p, int argc, char **argv)
 {
@@ -81,29 +137,9 @@ static int pack_parse(pack_args *p, int argc, char **argv)
 	p->fps = 0.0;   /* not given: the BVH's rate, else 120 */
 	p->sequence = (long)time(NULL);
 	p->block_size = SKP_IMAGE_DEFAULT_BLOCK;
-	for (int i = 0; i < argc; i++) {
-		int r = bind_args_parse(&p->bind, argc, argv, &i);
-		if (r < 0)
-			return -1;
-		if (r > 0)
-			continue;
-		if (argv[i][0] == '-' && argv[i][1]) {
-			if (i + 1 >= argc || (r = pack_value(p, argv[i], argv[i + 1])) > 0) {
-				fprintf(stderr, "skintool pack: unknown option or missing value '%s'\n%s", argv[i], PACK_USAGE);
-				return -1;
-			}
-			if (r < 0)
-				return -1;
-			i++;
-		} else if (!p->asf) {
-			p->asf = argv[i];
-		} else if (p->amc_count < PACK_MAX_AMC) {
-			p->amc[p->amc_count++] = argv[i];
-		} else {
-			fprintf(stderr, "skintool pack: more than %d clips (board limit SKP_IMAGE_MAX_CLIPS)\n", PACK_MAX_AMC);
-			return -1;
-		}
-	}
+	int rc = cli_parse(&pack_command, p, argc, argv, 0);
+	if (rc != 0)
+		return rc;
 	/* MOTION.bvh [MOTION2.bvh ...]: the first file is the skeleton too */
 	if (p->asf && bvh_is_path(p->asf) && p->amc_count < PACK_MAX_AMC) {
 		memmove(p->amc + 1, p->amc, sizeof p->amc[0] * (size_t)p->amc_count);
@@ -111,7 +147,8 @@ static int pack_parse(pack_args *p, int argc, char **argv)
 		p->amc_count++;
 	}
 	if (!p->asf || !p->amc_count || !p->out) {
-		fputs(PACK_USAGE, stderr);
+		fprintf(stderr, "skintool pack: give SKELETON MOTION... and -o SHOW.skn\n"
+			"Try 'skintool pack --help' for more information.\n");
 		return -1;
 	}
 	return 0;
@@ -223,7 +260,10 @@ int cmd_pack(int argc, char **argv)
 	static bound_body body;
 	static cli_image_out out;
 	memset(&p, 0, sizeof p);
-	if (pack_parse(&p, argc, argv) < 0 || bind_args_load(&p.bind, p.asf, p.mesh, &body) < 0 ||
+	int rc = pack_parse(&p, argc, argv);
+	if (rc != 0)
+		return rc < 0;
+	if (bind_args_load(&p.bind, p.asf, p.mesh, &body) < 0 ||
 	    cli_image_out_open(&out, p.out, (uint32_t)p.block_size) < 0)
 		return 1;
 	if (write_image(&p, &body, &out.sf) < 0) {

@@ -14,6 +14,7 @@
 #include "cli_show.h"
 #include "image_parity.h"
 #include "skintool_cmds.h"
+#include "tool_args.h"
 
 static void beyond(void *ctx, uint32_t b, const skp_block_report *r)
 {
@@ -58,17 +59,25 @@ static int rewrite(show_image *s, cli_image_out *out)
 	return 0;
 }
 
+static const cli_command repair_command = {
+	.prog = "skintool repair",
+	.usage = "SHOW.skn",
+	.about = "Rebuilds an image's bad blocks from its parity and replaces the file (written under a\n"
+		 "temporary name, synced and renamed). Exit status 2, the file untouched, when a block is\n"
+		 "beyond repair.",
+};
+
 int cmd_repair(int argc, char **argv)
 {
 	static show_image s;
 	static cli_image_out out;
 	skp_error err;
-	if (argc != 1 || argv[0][0] == '-') {
-		fprintf(stderr, "usage: skintool repair show.skn\n");
-		return 1;
-	}
-	if (show_image_open(&s, argv[0], &err) < 0) {
-		cli_error(argv[0], &err);
+	const char *path;
+	int prc = tool_one_file(&repair_command, argc, argv, &path);
+	if (prc != 0)
+		return prc < 0;
+	if (show_image_open(&s, path, &err) < 0) {
+		cli_error(path, &err);
 		return err.code == SKP_ERR_IO && err.block < 0 ? 1 : 2;
 	}
 	long bad = 0, lost;

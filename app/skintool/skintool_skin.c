@@ -10,64 +10,65 @@
 #include "cli_mesh_io.h"
 #include "cli_skin.h"
 #include "skintool_cmds.h"
-
-#define CMD "skintool skin"
-#define SKIN_USAGE "usage: skintool skin SKELETON.asf MOTION.amc MESH.obj --frame N " \
-	"--algo lbs|dqbs|dqbs-fixed " BIND_ARGS_USAGE " -o OUT.obj\n"
+#include "tool_args.h"
 
 typedef struct skin_args {
-	bind_args bind;
-	const char *asf, *amc, *obj, *out;
+	tool_common c;
 	long frame;
 	int have_frame;
 	int algo;
 } skin_args;
 
-static int parse_algo(const char *name, int *algo)
+enum { OPT_FRAME = 1, OPT_ALGO };
+
+static const cli_opt skin_cmd_opts[] = {
+	{ "frame", 0, "N", OPT_FRAME, "the frame numbered N in the motion file (required)" },
+	{ "algo", 0, "ALGO", OPT_ALGO, "lbs, dqbs or dqbs-fixed (required)" },
+	{ NULL, 0, NULL, 0, NULL },
+};
+
+static int skin_take(void *ctx, int id, const char *v)
 {
-	*algo = skin_algo_parse(name);
-	if (*algo < 0 || *algo >= SKIN_ALGO_COUNT) {
-		fprintf(stderr, "skintool skin: unknown --algo '%s' (lbs, dqbs or dqbs-fixed)\n", name);
-		return -1;
+	static const char *const algos[] = { "lbs", "dqbs", "dqbs-fixed" };
+	skin_args *a = ctx;
+	int r = tool_common_take(&a->c, id, v);
+	if (r <= 0)
+		return r;
+	if (id == OPT_FRAME) {
+		a->have_frame = 1;
+		return cli_parse_long("--frame", v, &a->frame);
 	}
-	return 0;
+	return (a->algo = cli_choice(a->c.prog, "algo", v, algos, SKIN_ALGO_COUNT)) < 0 ? -1 : 0;
 }
 
-static int parse_one(skin_args *a, int argc, char **argv, int *i)
+static int skin_file(void *ctx, const char *arg)
 {
-	const char *opt = argv[*i], *val;
-	int r = bind_args_parse(&a->bind, argc, argv, i);
-	if (r != 0)
-		return r < 0 ? -1 : 0;
-	if (strcmp(opt, "--frame") == 0) {
-		a->have_frame = 1;
-		return (val = cli_option_value(CMD, opt, argc, argv, i)) ? cli_parse_long(opt, val, &a->frame) : -1;
-	}
-	if (strcmp(opt, "--algo") == 0)
-		return (val = cli_option_value(CMD, opt, argc, argv, i)) ? parse_algo(val, &a->algo) : -1;
-	if (strcmp(opt, "-o") == 0)
-		return (a->out = cli_option_value(CMD, opt, argc, argv, i)) ? 0 : -1;
-	if (opt[0] == '-' && opt[1]) {
-		fprintf(stderr, "skintool skin: unknown option '%s'\n", opt);
-		return -1;
-	}
-	const char **const slots[] = { &a->asf, &a->amc, &a->obj };
-	return cli_take_positional(CMD, slots, 3, opt);
+	skin_args *a = ctx;
+	const char **slots[] = { &a->c.asf, &a->c.amc, &a->c.mesh };
+	return cli_take_positional(a->c.prog, slots, 3, arg);
 }
+
+static const cli_command skin_command = {
+	.prog = "skintool skin",
+	.usage = "SKELETON MOTION MESH --frame=N --algo=ALGO [OPTION]... -o OUT.obj",
+	.about = "Writes the mesh deformed for one frame of the motion as OBJ: the same vertices in the same\n"
+		 "order, skinned normals, the same faces. MOTION.bvh alone stands for SKELETON MOTION.",
+	.opts = { tool_opt_skeleton, tool_opt_motion, tool_opt_mesh, tool_opt_output, skin_cmd_opts, bind_opts },
+	.take = skin_take,
+	.positional = skin_file,
+};
 
 static int parse_args(skin_args *a, int argc, char **argv)
 {
-	memset(a, 0, sizeof *a);
-	bind_args_init(&a->bind);
+	tool_common_init(&a->c, skin_command.prog);
+	a->have_frame = 0;
 	a->algo = -1;
-	for (int i = 0; i < argc; i++)
-		if (parse_one(a, argc, argv, &i) < 0)
-			return -1;
-	cli_bvh_slots(&a->asf, &a->amc, &a->obj);
-	if (!a->asf || !a->amc || !a->obj || !a->out || !a->have_frame || a->algo < 0) {
-		fputs(SKIN_USAGE, stderr);
-		return -1;
-	}
+	int rc = cli_parse(&skin_command, a, argc, argv, 0);
+	if (rc != 0)
+		return rc;
+	cli_bvh_slots(&a->c.asf, &a->c.amc, &a->c.mesh);
+	if (!a->c.asf || !a->c.amc || !a->c.mesh || !a->c.out || !a->have_frame || a->algo < 0)
+		return -tool_missing(&a->c, "SKELETON MOTION MESH, --frame, --algo and -o OUT.obj");
 	return 0;
 }
 
@@ -88,16 +89,17 @@ int cmd_skin(int argc, char **argv)
 	static amc_frame f;
 	static float pos[3 * SKP_MAX_VERTS], nrm[3 * SKP_MAX_VERTS];
 
-	if (parse_args(&a, argc, argv) < 0)
+	int rc = parse_args(&a, argc, argv);
+	if (rc != 0)
+		return rc < 0;
+	if (bind_args_load(&a.c.bind, a.c.asf, a.c.mesh, &body) < 0)
 		return 1;
-	if (bind_args_load(&a.bind, a.asf, a.obj, &body) < 0)
+	if (cli_read_frame(a.c.amc, &body.skel, a.frame, &f) < 0)
 		return 1;
-	if (cli_read_frame(a.amc, &body.skel, a.frame, &f) < 0)
-		return 1;
-	if (cli_skin_init(&sk, &body.skel, &body.pose, &body.mesh, &body.weights, a.obj) < 0)
+	if (cli_skin_init(&sk, &body.skel, &body.pose, &body.mesh, &body.weights, a.c.mesh) < 0)
 		return 1;
 	cli_skin_frame(&sk, f.value);
 	cli_skin_run(&sk, (skin_algo)a.algo, pos, nrm);
 	store(&body.mesh, pos, nrm);
-	return mesh_write_obj(a.out, &body.mesh, NULL) < 0 ? 1 : 0;
+	return mesh_write_obj(a.c.out, &body.mesh, NULL) < 0 ? 1 : 0;
 }

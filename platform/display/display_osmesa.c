@@ -70,14 +70,14 @@ static int load_library(skp_error *err)
 	for (size_t i = 0; !s.lib && i < sizeof names / sizeof names[0]; i++)
 		s.lib = dlopen(names[i], RTLD_NOW | RTLD_LOCAL);
 	if (!s.lib)
-		return skp_fail(err, SKP_ERR_IO, 0, "osmesa: cannot load libOSMesa.so.8 (package libosmesa6): %s",
+		return skp_fail(err, SKP_ERR_IO, 0, "cannot load libOSMesa.so.8 (package libosmesa6): %s",
 				dlerror());
 	s.create = (create_fn)dlsym(s.lib, "OSMesaCreateContextAttribs");
 	s.make_current = (make_current_fn)dlsym(s.lib, "OSMesaMakeCurrent");
 	s.destroy = (destroy_fn)dlsym(s.lib, "OSMesaDestroyContext");
 	s.get_proc = (get_proc_fn)dlsym(s.lib, "OSMesaGetProcAddress");
 	if (!s.create || !s.make_current || !s.destroy || !s.get_proc)
-		return skp_fail(err, SKP_ERR_IO, 0, "osmesa: libOSMesa lacks OSMesaCreateContextAttribs (Mesa < 11.2?)");
+		return skp_fail(err, SKP_ERR_IO, 0, "libOSMesa lacks OSMesaCreateContextAttribs (Mesa < 11.2?)");
 	return SKP_OK;
 }
 
@@ -108,9 +108,9 @@ static int make_context(int width, int height, skp_error *err)
 	};
 	s.ctx = s.create(attribs, NULL);
 	if (!s.ctx)
-		return skp_fail(err, SKP_ERR_IO, 0, "osmesa: OSMesaCreateContextAttribs (RGBA, depth 24, GL 2.1 compat) failed");
+		return skp_fail(err, SKP_ERR_IO, 0, "OSMesaCreateContextAttribs (RGBA, depth 24, GL 2.1 compat) failed");
 	if (!s.make_current(s.ctx, color_buffer, GL_UNSIGNED_BYTE_, width, height))
-		return skp_fail(err, SKP_ERR_IO, 0, "osmesa: OSMesaMakeCurrent %dx%d failed", width, height);
+		return skp_fail(err, SKP_ERR_IO, 0, "OSMesaMakeCurrent %dx%d failed", width, height);
 	return SKP_OK;
 }
 
@@ -126,7 +126,7 @@ static int osmesa_init(const display_config *cfg, display_info *out, skp_error *
 	get_string_fn get_string = (get_string_fn)osmesa_get_proc("glGetString");
 	s.finish = (finish_fn)osmesa_get_proc("glFinish");
 	if (!get_string || !s.finish) {
-		rc = skp_fail(err, SKP_ERR_IO, 0, "osmesa: no glGetString or glFinish");
+		rc = skp_fail(err, SKP_ERR_IO, 0, "no glGetString or glFinish");
 		goto fail;
 	}
 	const unsigned char *r = get_string(GL_RENDERER_);

@@ -21,7 +21,7 @@ static int create_fbo(int width, int height, skp_error *err)
 
 	gl->GetIntegerv(GL_MAX_RENDERBUFFER_SIZE, &max);
 	if (width > max || height > max)
-		return skp_fail(err, SKP_ERR_LIMIT, 0, "surfaceless: %dx%d is larger than GL_MAX_RENDERBUFFER_SIZE %d",
+		return skp_fail(err, SKP_ERR_LIMIT, 0, "%dx%d is larger than GL_MAX_RENDERBUFFER_SIZE %d",
 				width, height, (int)max);
 	gl->GenFramebuffers(1, &s.fbo);
 	gl->GenRenderbuffers(1, &s.color);
@@ -38,7 +38,7 @@ static int create_fbo(int width, int height, skp_error *err)
 	gl->FramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, s.depth);
 	GLenum status = gl->CheckFramebufferStatus(GL_FRAMEBUFFER);
 	if (status != GL_FRAMEBUFFER_COMPLETE)
-		return skp_fail(err, SKP_ERR_IO, 0, "surfaceless: RGBA8 + depth24 framebuffer incomplete (status %u)",
+		return skp_fail(err, SKP_ERR_IO, 0, "RGBA8 + depth24 framebuffer incomplete (status %u)",
 				(unsigned)status);
 	return SKP_OK;
 }
@@ -77,7 +77,7 @@ static int surfaceless_init(const display_config *cfg, display_info *out, skp_er
 	if (rc != SKP_OK)
 		return rc;
 	if (!display_has_word(eglQueryString(s.egl.dpy, EGL_EXTENSIONS), "EGL_KHR_surfaceless_context")) {
-		rc = skp_fail(err, SKP_ERR_IO, 0, "surfaceless: EGL_KHR_surfaceless_context is not supported");
+		rc = skp_fail(err, SKP_ERR_IO, 0, "EGL_KHR_surfaceless_context is not supported");
 		goto fail;
 	}
 	if ((rc = display_egl_bind(&s.egl, EGL_NO_SURFACE, cfg->width, cfg->height, err)) != SKP_OK)

@@ -25,7 +25,7 @@ static int open_x(const char *name, skp_error *err)
 	s.dpy = XOpenDisplay(name);
 	if (!s.dpy) {
 		const char *shown = XDisplayName(name);
-		return skp_fail(err, SKP_ERR_IO, 0, "x11: cannot open display '%s'", shown ? shown : "");
+		return skp_fail(err, SKP_ERR_IO, 0, "cannot open display '%s'", shown ? shown : "");
 	}
 	return SKP_OK;
 }
@@ -41,7 +41,7 @@ static int create_window(int width, int height, skp_error *err)
 	want.visualid = (VisualID)visual_id;
 	vi = XGetVisualInfo(s.dpy, VisualIDMask, &want, &n);
 	if (!vi)
-		return skp_fail(err, SKP_ERR_IO, 0, "x11: no X visual %d for the EGL config", (int)visual_id);
+		return skp_fail(err, SKP_ERR_IO, 0, "no X visual %d for the EGL config", (int)visual_id);
 	Window root = RootWindow(s.dpy, vi->screen);
 	XSetWindowAttributes attr = { 0 };
 	s.cmap = XCreateColormap(s.dpy, root, vi->visual, AllocNone);
@@ -98,7 +98,7 @@ static int x11_init(const display_config *cfg, display_info *out, skp_error *err
 	 * one would want a pointer to it. */
 	s.egl.surface = eglCreateWindowSurface(s.egl.dpy, s.egl.config, (EGLNativeWindowType)s.win, NULL);
 	if (s.egl.surface == EGL_NO_SURFACE) {
-		rc = skp_fail(err, SKP_ERR_IO, 0, "x11: EGL window surface failed (%s)", display_egl_error());
+		rc = skp_fail(err, SKP_ERR_IO, 0, "EGL window surface failed (%s)", display_egl_error());
 		goto fail;
 	}
 	if ((rc = display_egl_bind(&s.egl, s.egl.surface, cfg->width, cfg->height, err)) != SKP_OK)
@@ -117,7 +117,7 @@ fail:
 static int x11_present(skp_error *err)
 {
 	if (!eglSwapBuffers(s.egl.dpy, s.egl.surface))
-		return skp_fail(err, SKP_ERR_IO, 0, "x11: eglSwapBuffers failed (%s)", display_egl_error());
+		return skp_fail(err, SKP_ERR_IO, 0, "eglSwapBuffers failed (%s)", display_egl_error());
 	return SKP_OK;
 }
 

@@ -206,9 +206,9 @@ static const err_case err_cases[] = {
 	{ "tests/data/tiny.asf %s/tri.obj --bind-pose tests/data/tiny.amc:9 -o %s/out.csv%s", NULL,
 	  "tests/data/tiny.amc: no frame 9" },
 	{ "tests/data/tiny.asf %s/tri.obj --group nothere -o %s/out.csv%s", NULL, "tri.obj" },
-	{ "tests/data/tiny.asf %s/tri.obj%s%s", NULL, "usage: skintool bind" },
+	{ "tests/data/tiny.asf %s/tri.obj%s%s", NULL, "skintool bind: give SKELETON, MESH and -o W.csv" },
 	{ "tests/data/tiny.asf %s/tri.obj --frobnicate -o %s/out.csv%s", NULL, "unknown option '--frobnicate'" },
-	{ "tests/data/tiny.asf %s/tri.obj --balance maybe -o %s/out.csv%s", NULL, "--balance: expected on or off, got 'maybe'" },
+	{ "tests/data/tiny.asf %s/tri.obj --balance maybe -o %s/out.csv%s", NULL, "unknown value 'maybe' for --balance; one of: off, on" },
 };
 
 static void test_bad_input_fails_cleanly(void **state)

@@ -623,8 +623,8 @@ static void test_bad_arguments(void **state)
 {
 	(void)state;
 	char args[2048];
-	expect_fail("compare tests/data/tiny.asf tests/data/tiny.amc", "usage: skintool compare");
-	expect_fail("compare tests/data/tiny.asf", "usage: skintool compare");
+	expect_fail("compare tests/data/tiny.asf tests/data/tiny.amc", "skintool compare: give SKELETON MOTION and -o DIR");
+	expect_fail("compare tests/data/tiny.asf", "skintool compare: give SKELETON MOTION and -o DIR");
 	snprintf(args, sizeof args, "compare tests/data/tiny.asf tests/data/tiny.amc --bogus -o %s/x", workdir);
 	expect_fail(args, "unknown option '--bogus'");
 	snprintf(args, sizeof args, "compare tests/data/tiny.asf tests/data/tiny.amc --renders 99 -o %s/x", workdir);

@@ -365,7 +365,7 @@ static void test_bad_arguments_and_files(void **state)
 	fclose(f);
 	const bad_cli bad[] = {
 		{ "convert %s/cut.bvh -o %s/out.txt", "expected a name ending in .bvh or .asf" },
-		{ "convert %s/cut.bvh", "usage: skintool convert" },
+		{ "convert %s/cut.bvh", "skintool convert: give SKELETON.asf MOTION.amc or IN.bvh, and -o OUT" },
 		{ "convert %s/none.bvh -o %s/x.asf", "none.bvh: cannot open" },
 		{ "convert %s/cut.bvh -o %s/keep.bvh", "cut.bvh:15: frame 2: expected 3 values, found 2" },
 		{ "convert %s/cut.bvh -o %s/x.bvh --fps 0", "--fps expects a rate" },

@@ -9,6 +9,7 @@
 #include <stdint.h>
 #include <cmocka.h>
 
+#include <dirent.h>
 #include <errno.h>
 #include <poll.h>
 #include <signal.h>
@@ -196,6 +197,47 @@ static void test_play_pause_and_view(void **state)
 	assert_true(hud_line_diff(&a, &b, 1) > 0);
 }
 
+/* Frames in an AMC: its lines that are a bare frame number. */
+static long amc_frames(const char *path)
+{
+	char *text = test_read_file(path, NULL);
+	assert_non_null(text);
+	long n = 0;
+	for (char *line = strtok(text, "\n"); line; line = strtok(NULL, "\n")) {
+		size_t d = strspn(line, "0123456789");
+		n += d > 0 && (line[d] == '\0' || line[d] == '\r');
+	}
+	free(text);
+	return n;
+}
+
+/* Headless, a pause the script never lifts still ends the run: the held
+ * frames count, one PNG per frame shown, as many as the clip has. */
+static void test_headless_pause_ends(void **state)
+{
+	(void)state;
+	char cmd[2048], amc[512], out[128];
+	snprintf(amc, sizeof amc, "%s", test_tool_path("assets/demo.amc"));
+	snprintf(out, sizeof out, "%s/held", dir);
+	write_text(script_path, "50 PLAY press\n60 PLAY release\n");
+	snprintf(cmd, sizeof cmd,
+		 "timeout 300 %s --asf assets/demo.asf --amc %s --platform surfaceless --size %dx%d --hud-fps off "
+		 "--input=script:%s --output=%s 2>%s", test_tool_path("skinplay"), amc, W, H, script_path, out, log_path);
+	assert_int_equal(system(cmd), 0);
+	long frames = amc_frames(amc), pngs = 0;
+	DIR *d = opendir(out);
+	assert_non_null(d);
+	for (struct dirent *e; (e = readdir(d)) != NULL;)
+		pngs += strncmp(e->d_name, "frame_", 6) == 0;
+	closedir(d);
+	assert_true(frames > 100);
+	assert_int_equal(pngs, frames);
+	char *log = read_log();
+	if (!strstr(log, "input: PLAY -> pause\n"))
+		fail_msg("log:\n%s", log);
+	free(log);
+}
+
 static int listen_at(const char *name)
 {
 	struct sockaddr_un sa;
@@ -308,6 +350,7 @@ int main(void)
 	const struct CMUnitTest tests[] = {
 		cmocka_unit_test(test_script_switches_algorithm_at_its_frames),
 		cmocka_unit_test(test_play_pause_and_view),
+		cmocka_unit_test(test_headless_pause_ends),
 		cmocka_unit_test(test_notify_signals_and_watchdog),
 		cmocka_unit_test(test_bad_board_config_names_file_line_key),
 	};

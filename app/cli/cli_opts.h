@@ -1,0 +1,58 @@
+/* Command lines the GNU way, for both programs: getopt_long underneath, so
+ * --opt=value and --opt value both work, options and files mix in any
+ * order, `--` ends the options; every command answers --help (its usage,
+ * what it does and each option, on stdout, exit 0) and --version. A
+ * command is a table: its options (with a one-line help each), a handler
+ * for an option's value and one for the files. help2man turns the same
+ * text into the man pages. */
+#ifndef CLI_OPTS_H
+#define CLI_OPTS_H
+
+#include <stdio.h>
+
+typedef struct cli_opt {
+	const char *name;       /* long name without the dashes; NULL ends a table */
+	char short_name;        /* 0: none */
+	const char *arg;        /* the value's name in the help ("FILE"), NULL: a flag */
+	int id;                 /* handed to take() */
+	const char *help;       /* one line */
+} cli_opt;
+
+#define CLI_MAX_TABLES 8
+
+typedef struct cli_command {
+	const char *prog;       /* "skintool bind": in messages and the help */
+	const char *usage;      /* after "usage: PROG " (several lines may follow "\n") */
+	const char *about;      /* what the command does, a paragraph */
+	const cli_opt *opts[CLI_MAX_TABLES]; /* tables; unused ones NULL */
+	/* an option with its value (NULL for a flag): 0, or -1 after reporting */
+	int (*take)(void *ctx, int id, const char *value);
+	/* a file or other word that is not an option: 0, or -1 after reporting */
+	int (*positional)(void *ctx, const char *arg);
+	const char *more;       /* text after the options (exit codes, examples), or NULL */
+} cli_command;
+
+/* Parses argv[first..argc). Returns 0, 1 when --help or --version was
+ * answered (exit 0), or -1 after reporting a usage error on stderr with a
+ * hint to --help (exit 1). */
+int cli_parse(const cli_command *c, void *ctx, int argc, char **argv, int first);
+
+/* "skinplay" or "skintool": the program whose command line cli_parse
+ * read last, for messages that only know an option's name. */
+const char *cli_program(void);
+
+/* The --help text. */
+void cli_help(const cli_command *c, FILE *f);
+
+/* "PROG: unknown value 'V' for --OPT; one of: a, b, c": -1. */
+int cli_bad_choice(const char *prog, const char *opt, const char *value, const char *const *choices, int n);
+
+/* Index of value among choices, or cli_bad_choice's -1. */
+int cli_choice(const char *prog, const char *opt, const char *value, const char *const *choices, int n);
+
+/* The exit codes both programs document. */
+#define CLI_EXIT_CODES \
+	"Exit status: 0 done; 1 bad input, bad usage or a failure (the message names the file, line, block\n" \
+	"or option); 2 a damaged image (skintool info; skintool repair: blocks beyond repair).\n"
+
+#endif
