@@ -9,6 +9,7 @@
 
 #include "cli_common.h"
 #include "clock.h"
+#include "cli_progress.h"
 #include "compare.h"
 #include "skin_overlap.h"
 
@@ -204,25 +205,6 @@ static void measure_frame(compare_run *c, long frame, int keep)
 	c->rel_vertex[k] = v;
 }
 
-static void progress(long done, long total, uint64_t t0, int final)
-{
-	static uint64_t last;
-	uint64_t now = clock_now_ns();
-	if (!final && now - last < 200000000u)
-		return;
-	last = now;
-	int tty = isatty(2), width = 40, fill = total > 0 ? (int)(width * done / total) : width;
-	if (!tty && !final)
-		return;
-	char bar[64];
-	for (int i = 0; i < width; i++)
-		bar[i] = i < fill ? '#' : '.';
-	bar[width] = '\0';
-	double secs = (double)(now - t0) * 1e-9;
-	fprintf(stderr, "%scompare [%s] %3ld%% frame %ld/%ld %.1f s%s", tty ? "\r" : "", bar,
-		total > 0 ? 100 * done / total : 100, done, total, secs, final ? "\n" : "");
-}
-
 static long count_frames(const compare_args *a, const skel *s)
 {
 	static cli_motion mo;
@@ -294,18 +276,21 @@ int compare_measure_clip(compare_run *c, const compare_args *a)
 	c->kept = 0;
 	c->floor_y = NAN;
 	reset_summary(r);
-	uint64_t t0 = clock_now_ns();
+	static cli_progress pr;
+	static char what[300];
+	snprintf(what, sizeof what, "compare %s%s", cli_basename(a->amc), a->csv_name ? " (other weights)" : "");
+	cli_progress_start(&pr, what, "frames", total);
 	long n = 0;
 	int rc;
 	while ((rc = cli_motion_next(&mo, &f)) > 0) {
 		cli_skin_frame(&c->sk, f.value);
 		measure_frame(c, f.number, n % c->stride == 0);
-		progress(++n, total, t0, 0);
+		cli_progress_step(&pr, ++n);
 	}
 	cli_motion_close(&mo);
-	progress(n, total, t0, 1);
+	cli_progress_end(&pr, " x 3 algorithms measured");
 	r->frames = n;
-	r->seconds = (double)(clock_now_ns() - t0) * 1e-9;
+	r->seconds = cli_progress_seconds(&pr);
 	int bad = ferror(c->csv);
 	if (fclose(c->csv) != 0 || bad) {
 		fprintf(stderr, "%s: write failed\n", c->path);
