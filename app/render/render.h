@@ -31,6 +31,11 @@ typedef struct render_frame {
 	int panel_count;         /* 1, or 2 for the compare view */
 	render_view view;
 	const char *hud[RENDER_HUD_LINES]; /* top-left text, NULL lines skipped */
+	/* the visitor's screen: each panel's label large (one panel too) with
+	 * a sentence above it, and a badge (PAUSED) across the top */
+	int visitor;
+	const char *caption[RENDER_MAX_PANELS];
+	const char *badge;
 	float dt;                /* seconds since the previous frame (camera) */
 } render_frame;
 

@@ -8,6 +8,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include "board_config.h"
 #include "cli_version.h"
 #include "clock.h"
 #include "png_writer.h"
@@ -122,8 +123,53 @@ static void skin_panels(player *p, render_frame *f)
 	f->bones = &p->skin.bones;
 }
 
+/* The visitor's screen: what each method is, what to look at, the buttons. */
+static const char *const visitor_caption[SKIN_ALGO_COUNT] = {
+	"elbows and twisting wrists lose volume",
+	"volume kept, joints may bulge",
+	"dual quaternions in integer maths",
+};
+static const char *const visitor_name[SKIN_ALGO_COUNT] = {
+	"LINEAR BLEND", "DUAL QUATERNION", "DUAL QUATERNION (FIXED)",
+};
+
+static const char *button_legend(const player *p)
+{
+	const kiosk *k = &p->kiosk;
+	if (!strcmp(k->in->name, "keyboard"))
+		return "KEYS: 1 METHOD   2 PAUSE   3 NEXT CLIP   4 VIEW";
+	if (!strcmp(k->in->name, "gpio"))
+		return "BUTTONS: ALGO CHANGES THE METHOD   PLAY PAUSES   NEXT CLIP   VIEW";
+	return NULL;
+}
+
+static void visitor_hud(player *p, render_frame *f)
+{
+	f->visitor = 1;
+	for (int i = 0; i < p->panel_count; i++) {
+		f->panel[i].label = visitor_name[p->algo[i]];
+		f->caption[i] = visitor_caption[p->algo[i]];
+	}
+	f->hud[0] = button_legend(p);
+	f->badge = p->kiosk.ps.playing ? NULL : "PAUSED";
+}
+
 static void hud_text(player *p, render_frame *f, double fps, char lines[3][128])
 {
+	f->visitor = 0;
+	f->badge = NULL;
+	for (int i = 0; i < RENDER_HUD_LINES; i++)
+		f->hud[i] = NULL;
+	/* a skipped clip, no clip at all: said on screen, not only in the log */
+	f->hud[3] = p->notice_frames > 0 ? p->notice : NULL;
+	if (p->notice_frames > 0)
+		p->notice_frames--;
+	if (p->o.hud == BOARD_HUD_VISITOR) {
+		visitor_hud(p, f);
+		return;
+	}
+	if (p->o.hud == BOARD_HUD_OFF)
+		return;
 	const char *where = p->gpu[0] ? "GPU" : "CPU";
 	if (p->panel_count > 1)
 		snprintf(lines[0], 128, "COMPARE LBS | DQBS  %s  %s", where, render_view_name(p->o.view));
@@ -134,15 +180,14 @@ static void hud_text(player *p, render_frame *f, double fps, char lines[3][128])
 		snprintf(lines[1], 128, "%s  FRAME %ld  REBUILT %lu", p->clip, p->frame.number, rebuilt);
 	else
 		snprintf(lines[1], 128, "%s  FRAME %ld", p->clip, p->frame.number);
-	if (p->o.hud_fps)
-		snprintf(lines[2], 128, "%.1f FPS", fps);
+	/* no figure before the first second is measured */
+	if (fps > 0)
+		snprintf(lines[2], 128, "%.1f FPS%s", fps, p->kiosk.ps.playing ? "" : "  PAUSED");
+	else
+		snprintf(lines[2], 128, "- FPS%s", p->kiosk.ps.playing ? "" : "  PAUSED");
 	f->hud[0] = lines[0];
 	f->hud[1] = lines[1];
 	f->hud[2] = p->o.hud_fps ? lines[2] : NULL;
-	/* a skipped clip, no clip at all: said on screen, not only in the log */
-	f->hud[3] = p->notice_frames > 0 ? p->notice : NULL;
-	if (p->notice_frames > 0)
-		p->notice_frames--;
 }
 
 static int write_png(player *p, long n)
