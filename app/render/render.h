@@ -15,6 +15,7 @@
 #define RENDER_MAX_PANELS 2
 #define RENDER_HUD_LINES 4
 #define RENDER_MAX_TEXT 512     /* glyphs drawn per frame */
+#define RENDER_CAMERA_AZIMUTH 0.45f /* the usual view: front, a little from the body's left */
 
 /* One side of the picture: which algorithm, and for CPU skinning the
  * skinned positions and normals (xyz per vertex). */

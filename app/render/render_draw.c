@@ -155,8 +155,11 @@ static int bone_uniforms(renderer *r, const skin_bones *b, int as_dq)
 static void body_program(renderer *r, shader_kind k, const mat4 *vp, int weights_view)
 {
 	const gl_api *gl = r->gl;
-	vec3 key = vec3_normalize(vec3_make(0.45f, 0.8f, 0.55f));
-	vec3 fill = vec3_normalize(vec3_make(-0.7f, 0.25f, 0.2f));
+	/* the lights turn with the camera about the vertical: a close-up from
+	 * behind a joint is lit as well as the usual front view */
+	quat turn = quat_from_axis_angle(vec3_make(0.0f, 1.0f, 0.0f), r->cam.azimuth - RENDER_CAMERA_AZIMUTH);
+	vec3 key = quat_rotate(turn, vec3_normalize(vec3_make(0.45f, 0.8f, 0.55f)));
+	vec3 fill = quat_rotate(turn, vec3_normalize(vec3_make(-0.7f, 0.25f, 0.2f)));
 	gl->UseProgram(r->prog[k]);
 	gl->UniformMatrix4fv(render_loc[k][U_MVP], 1, GL_FALSE, vp->m);
 	gl->Uniform3f(render_loc[k][U_KEY], key.x, key.y, key.z);
