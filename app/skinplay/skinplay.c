@@ -208,9 +208,14 @@ static int write_png(player *p, long n)
 static void log_second(player *p, timing *t, uint64_t now)
 {
 	double secs = (double)(now - t->since) * 1e-9, n = (double)t->frames;
-	fprintf(stderr, "frame %ld: %.1f fps, decode %.2f ms, skin %.2f ms, upload %.2f ms, draw %.2f ms\n",
+	fprintf(stderr, "frame %ld: %.1f fps, decode %.2f ms, skin %.2f ms, upload %.2f ms, draw %.2f ms",
 		p->frame.number, n / secs, t->decode * 1e-6 / n, t->skin * 1e-6 / n, t->upload * 1e-6 / n,
 		t->draw * 1e-6 / n);
+	/* a run of known length (headless, --frames: make soak): how far, how long left */
+	if (p->budget > 0 && n > 0)
+		fprintf(stderr, "; %ld of %ld shown (%.1f%%), %.0f s left", p->shown, p->budget,
+			100.0 * (double)p->shown / (double)p->budget, (double)(p->budget - p->shown) * secs / n);
+	fputc('\n', stderr);
 	total.decode += t->decode;
 	total.skin += t->skin;
 	total.upload += t->upload;
@@ -272,6 +277,7 @@ static int play(player *p)
 	/* headless: the clip once, frames held by a pause included, so a
 	 * scripted pause cannot keep a batch run going for ever */
 	long budget = p->o.frames >= 0 ? p->o.frames : p->headless ? frames_clip_length(p) : -1;
+	p->budget = budget;
 	while (!quit && (budget < 0 || shown < budget)) {
 		unsigned act = kiosk_frame(&p->kiosk, shown);
 		if (act & (KIOSK_QUIT | KIOSK_RELOAD)) {
@@ -289,7 +295,7 @@ static int play(player *p)
 		t.decode += clock_now_ns() - t0;
 		if (draw_one(p, &t, fps, &f) < 0)
 			return -1;
-		shown++;
+		p->shown = ++shown;
 		t.frames++;
 		if (p->o.out_dir && (shown - 1) % p->o.every == 0 && write_png(p, shown) < 0)
 			return -1;
