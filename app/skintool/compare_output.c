@@ -46,78 +46,78 @@ static int write_chart(compare_run *c, const char *dir, const char *png, const c
 	return 0;
 }
 
+/* A chart over the kept frames with the ratio 1 marked. */
+static void chart_start(const compare_run *c, chart *ch, const char *title)
+{
+	memset(ch, 0, sizeof *ch);
+	ch->title = title;
+	ch->x_label = "FRAME";
+	ch->x = c->frame;
+	ch->n = c->kept;
+	ch->ref_y = 1.0f;
+}
+
+static float chart_y[2 * NALGO][STORE_MAX];
+
+/* Region g's smallest (solid) and largest (dashed) radius ratio. */
+static int region_radius_chart(compare_run *c, const char *dir, int g)
+{
+	static char title[REGION_COUNT][64], png[REGION_COUNT][32];
+	static const char *const mins[NALGO] = { "LBS MIN", "DQBS MIN", "FIXED MIN" };
+	chart ch;
+	snprintf(title[g], sizeof title[g], "%s: MIN AND MAX RADIUS RATIO", report_region_name(g));
+	snprintf(png[g], sizeof png[g], "region_%s.png", report_region_name(g));
+	chart_start(c, &ch, title[g]);
+	/* DQBS fixed is within 1e-4 of DQBS: two lines would hide each other */
+	for (int a = 0; a < SKIN_DQBS_FIXED; a++) {
+		column(c, a, 3, g, chart_y[2 * a]);
+		column(c, a, 4, g, chart_y[2 * a + 1]);
+		ch.series[ch.series_count++] = series(a, mins[a], chart_y[2 * a], 0);
+	}
+	for (int a = 0; a < SKIN_DQBS_FIXED; a++) {
+		chart_series s = series(a, a ? "DQBS MAX" : "LBS MAX", chart_y[2 * a + 1], 1);
+		s.width = 1.5f;
+		ch.series[ch.series_count++] = s;
+	}
+	return write_chart(c, dir, png[g], title[g],
+			   "Solid: the smallest radius ratio of the region's vertices; dashed: the largest.", &ch);
+}
+
+/* Region g's volume around its joints (compare_region_volume.c). */
+static int region_volume_chart(compare_run *c, const char *dir, int g)
+{
+	static char title[REGION_COUNT][64], png[REGION_COUNT][40];
+	chart ch;
+	snprintf(title[g], sizeof title[g], "%s: VOLUME AROUND THE JOINTS", report_region_name(g));
+	snprintf(png[g], sizeof png[g], "region_%s_volume.png", report_region_name(g));
+	chart_start(c, &ch, title[g]);
+	for (int a = 0; a < SKIN_DQBS_FIXED; a++) {
+		column(c, a, 5, g, chart_y[a]);
+		ch.series[ch.series_count++] = series(a, compare_algo_label[a], chart_y[a], 0);
+	}
+	return write_chart(c, dir, png[g], title[g],
+			   "The volume of the region's skin over its volume as bound (see \"Volume around each "
+			   "joint\"): below 1 the joints collapse, above they bulge.", &ch);
+}
+
+/* The body's volume over time, then per joint region its radius ratios and
+ * its volume. The global radius extremes stay in the CSV: contact between
+ * limbs sets them, flat for every algorithm. */
 int compare_write_charts(compare_run *c, const char *dir)
 {
-	static float y[2 * NALGO][STORE_MAX];
-	/* the body's volume over time; the global radius extremes are left to
-	 * the CSV: contact between limbs sets them, flat for every algorithm */
-	static const char *const titles[1] = { "VOLUME RATIO" };
-	static const char *const captions[1] = {
-		"Enclosed volume over the volume as bound (1 = kept). LBS loses volume at every bent or twisted joint.",
-	};
-	static char region_title[REGION_COUNT][64], region_png[REGION_COUNT][32];
-	static char vol_title[REGION_COUNT][64], vol_png[REGION_COUNT][40];
 	chart ch;
-	for (int f = 0; f < 1; f++) {
-		memset(&ch, 0, sizeof ch);
-		ch.title = titles[f];
-		ch.x_label = "FRAME";
-		ch.x = c->frame;
-		ch.n = c->kept;
-		ch.ref_y = 1.0f;
-		for (int a = 0; a < NALGO; a++) {
-			column(c, a, f, 0, y[a]);
-			ch.series[ch.series_count++] = series(a, compare_algo_label[a], y[a], 0);
-		}
-		static const char *const pngs[1] = { "volume.png" };
-		if (write_chart(c, dir, pngs[f], titles[f], captions[f], &ch) < 0)
-			return -1;
+	chart_start(c, &ch, "VOLUME RATIO");
+	for (int a = 0; a < NALGO; a++) {
+		column(c, a, 0, 0, chart_y[a]);
+		ch.series[ch.series_count++] = series(a, compare_algo_label[a], chart_y[a], 0);
 	}
-	for (int g = 0; g < REGION_COUNT; g++) {
-		if (!c->rep.region_verts[g])
-			continue;
-		memset(&ch, 0, sizeof ch);
-		snprintf(region_title[g], sizeof region_title[g], "%s: MIN AND MAX RADIUS RATIO",
-			 report_region_name(g));
-		snprintf(region_png[g], sizeof region_png[g], "region_%s.png", report_region_name(g));
-		ch.title = region_title[g];
-		ch.x_label = "FRAME";
-		ch.x = c->frame;
-		ch.n = c->kept;
-		ch.ref_y = 1.0f;
-		static const char *const mins[NALGO] = { "LBS MIN", "DQBS MIN", "FIXED MIN" };
-		for (int a = 0; a < NALGO; a += 1) {
-			if (a == SKIN_DQBS_FIXED)
-				continue; /* within 1e-4 of DQBS: two lines would hide each other */
-			column(c, a, 3, g, y[2 * a]);
-			column(c, a, 4, g, y[2 * a + 1]);
-			ch.series[ch.series_count++] = series(a, mins[a], y[2 * a], 0);
-		}
-		for (int a = 0; a < SKIN_DQBS_FIXED; a++) {
-			chart_series s = series(a, a ? "DQBS MAX" : "LBS MAX", y[2 * a + 1], 1);
-			s.width = 1.5f;
-			ch.series[ch.series_count++] = s;
-		}
-		if (write_chart(c, dir, region_png[g], region_title[g],
-				"Solid: the smallest radius ratio of the region's vertices; dashed: the largest.", &ch) < 0)
+	if (write_chart(c, dir, "volume.png", "VOLUME RATIO", "Enclosed volume over the volume as bound (1 = kept). "
+			"LBS loses volume at every bent or twisted joint.", &ch) < 0)
+		return -1;
+	for (int g = 0; g < REGION_COUNT; g++)
+		if (c->rep.region_verts[g] &&
+		    (region_radius_chart(c, dir, g) < 0 || region_volume_chart(c, dir, g) < 0))
 			return -1;
-		memset(&ch, 0, sizeof ch);
-		snprintf(vol_title[g], sizeof vol_title[g], "%s: VOLUME AROUND THE JOINTS", report_region_name(g));
-		snprintf(vol_png[g], sizeof vol_png[g], "region_%s_volume.png", report_region_name(g));
-		ch.title = vol_title[g];
-		ch.x_label = "FRAME";
-		ch.x = c->frame;
-		ch.n = c->kept;
-		ch.ref_y = 1.0f;
-		for (int a = 0; a < SKIN_DQBS_FIXED; a++) {
-			column(c, a, 5, g, y[a]);
-			ch.series[ch.series_count++] = series(a, compare_algo_label[a], y[a], 0);
-		}
-		if (write_chart(c, dir, vol_png[g], vol_title[g],
-				"The volume of the region's skin over its volume as bound (see \"Volume around each "
-				"joint\"): below 1 the joints collapse, above they bulge.", &ch) < 0)
-			return -1;
-	}
 	return 0;
 }
 
