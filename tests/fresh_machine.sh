@@ -117,11 +117,30 @@ mkdir -p "$logs"
 # Runs script (sh) in root $1 (build or package), logging to $logs/$2.log;
 # prints the step's time; on failure prints the log's tail and stops.
 fail=0
+# On a terminal a running step shows its time and, from the last run's
+# time of the same step (kept in the cache), about how long is left.
+times=$cache/$suite.times
+progress() {
+	pid=$1 name=$2 t=$3
+	last=$(awk -v n="$name" '$1 == n { s = $2 } END { print s + 0 }' "$times" 2>/dev/null) || last=0
+	while kill -0 "$pid" 2>/dev/null; do
+		if [ -t 2 ]; then
+			el=$(($(now) - t))
+			if [ "$last" -gt "$el" ]; then left=", about $((last - el)) s left"; else left=""; fi
+			printf '\rfresh-machine %s: %s: %d s%s   ' "$suite" "$name" "$el" "$left" >&2
+		fi
+		sleep 1
+	done
+	[ -t 2 ] && printf '\r%78s\r' '' >&2
+	wait "$pid"
+}
 step() {
 	r=$1 name=$2 script=$3 t=$(now)
-	if FRESH_WORK=$work FRESH_SCRIPT="$script" unshare --mount --pid --fork --propagation private \
-		"$0" --suite="$suite" --cache="$cache" --inside="$r" > "$logs/$name.log" 2>&1; then
+	FRESH_WORK=$work FRESH_SCRIPT="$script" unshare --mount --pid --fork --propagation private \
+		"$0" --suite="$suite" --cache="$cache" --inside="$r" > "$logs/$name.log" 2>&1 &
+	if progress $! "$name" "$t"; then
 		summary=$(grep -E '^(tests:|run:|deb:|package:)' "$logs/$name.log" | tail -n 3 | tr '\n' ' ')
+		echo "$name $(($(now) - t))" >> "$times"
 		say "$name: passed in $(($(now) - t)) s ${summary:+($summary)}"
 	else
 		say "$name: FAILED after $(($(now) - t)) s; the end of its log:"

@@ -3,14 +3,17 @@
 #include <getopt.h>
 #include <string.h>
 
+#include "cli_progress.h"
 #include "cli_version.h"
 
 #define MAX_OPTS 96
 #define ID_HELP (-1000)
 #define ID_VERSION (-1001)
+#define ID_QUIET (-1002)
 
 static const cli_opt common[] = {
 	{ "help", 'h', NULL, ID_HELP, "show this help and exit" },
+	{ "quiet", 'q', NULL, ID_QUIET, "no progress and no summary line on stderr (errors still)" },
 	{ "version", 0, NULL, ID_VERSION, "show the version, revision, board and backends, and exit" },
 	{ NULL, 0, NULL, 0, NULL },
 };
@@ -116,6 +119,10 @@ int cli_parse(const cli_command *c, void *ctx, int argc, char **argv, int first)
 			return bad_option(c, ch, args);
 		if (o->id == ID_HELP || o->id == ID_VERSION)
 			return answer(c, o);
+		if (o->id == ID_QUIET) {
+			cli_set_quiet(1);
+			continue;
+		}
 		if (c->take(ctx, o->id, o->arg ? optarg : NULL) < 0)
 			return -1;
 	}

@@ -21,6 +21,7 @@ void board_config_defaults(board_config *c)
 {
 	memset(c, 0, sizeof *c);
 	c->rotation = -1;
+	c->hud = -1;
 	for (int i = 0; i < PLAYER_BTN_COUNT; i++) {
 		c->button[i].active_low = 1;
 		c->button[i].bias = BOARD_BIAS_PULL_UP;
@@ -79,6 +80,12 @@ static skp_status parse_size(board_config *c, const ini_entry *e, skp_error *err
 	return SKP_OK;
 }
 
+int board_hud_parse(const char *word)
+{
+	static const char *const names[] = { "off", "engineer", "visitor" };
+	return word ? pick(word, names, 3) : -1;
+}
+
 static skp_status display_key(board_config *c, const ini_entry *e, skp_error *err)
 {
 	static const char *const plats[] = { "auto", "surfaceless", "osmesa", "kms", "x11" };
@@ -100,8 +107,13 @@ static skp_status display_key(board_config *c, const ini_entry *e, skp_error *er
 		c->rotation = (int)v;
 		return SKP_OK;
 	}
-	return skp_fail(err, SKP_ERR_SYNTAX, e->line, "unknown key '%s' in [display] (platform, device, rotation, size)",
-			e->key);
+	if (tok_ieq(e->key, "hud")) {
+		if ((c->hud = board_hud_parse(e->value)) < 0)
+			return bad(err, e, "visitor, engineer or off");
+		return SKP_OK;
+	}
+	return skp_fail(err, SKP_ERR_SYNTAX, e->line,
+			"unknown key '%s' in [display] (platform, device, rotation, size, hud)", e->key);
 }
 
 static skp_status timing_key(const ini_entry *e, long *debounce, long *long_press, skp_error *err)

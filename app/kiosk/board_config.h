@@ -3,6 +3,7 @@
  * this is what an installer may change on the device without a rebuild.
  *
  *   [display]  platform = kms   device = /dev/dri/card1   rotation = 0   size = 1920x1080
+ *              hud = visitor | engineer | off   (skinplay --hud)
  *   [input]    backend = gpio   chip = gpiochip0   debounce_ms = 30   long_press_ms = 800
  *   [button.algo]  line = 17   active = low   bias = pull-up   (debounce_ms, long_press_ms)
  *   [storage]  slot = PATH   (one line per image slot)
@@ -40,6 +41,12 @@ typedef enum board_bias {
 	BOARD_BIAS_PULL_DOWN
 } board_bias;
 
+/* What the screen shows over the body (skinplay --hud). */
+typedef enum board_hud { BOARD_HUD_OFF, BOARD_HUD_ENGINEER, BOARD_HUD_VISITOR } board_hud;
+
+/* "off", "engineer", "visitor"; -1 for another word. */
+int board_hud_parse(const char *word);
+
 typedef struct board_button {
 	int present;             /* its [button.NAME] section gives a line */
 	unsigned int line;       /* line offset on the chip (BCM GPIO on a Pi) */
@@ -53,6 +60,7 @@ typedef struct board_config {
 	char device[SKP_MAX_PATH];
 	int rotation;            /* -1: not given */
 	int width, height;       /* 0: not given */
+	int hud;                 /* board_hud, -1: not given */
 	char input[SKP_MAX_PATH]; /* gpio | keyboard | none | script:FILE; "" = none */
 	char chip[SKP_MAX_PATH]; /* gpiochip name, path, label or number */
 	board_button button[PLAYER_BTN_COUNT];

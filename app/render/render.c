@@ -150,7 +150,7 @@ skp_status render_init(renderer *r, const gl_api *gl, int width, int height, int
 		gl->BufferData(GL_ARRAY_BUFFER, (GLsizeiptr)soa->count * 24, NULL, GL_DYNAMIC_DRAW);
 	}
 	gl->GenBuffers(1, &r->vbo_misc);
-	camera_init(&r->cam, body_extent(soa), floor_y, 0.45f);
+	camera_init(&r->cam, body_extent(soa), floor_y, RENDER_CAMERA_AZIMUTH);
 	return gl->GetError() == GL_NO_ERROR ? SKP_OK
 					      : skp_fail(err, SKP_ERR_RANGE, 0, "OpenGL error while uploading the body");
 }

@@ -15,6 +15,7 @@
 #define RENDER_MAX_PANELS 2
 #define RENDER_HUD_LINES 4
 #define RENDER_MAX_TEXT 512     /* glyphs drawn per frame */
+#define RENDER_CAMERA_AZIMUTH 0.45f /* the usual view: front, a little from the body's left */
 
 /* One side of the picture: which algorithm, and for CPU skinning the
  * skinned positions and normals (xyz per vertex). */
@@ -31,6 +32,11 @@ typedef struct render_frame {
 	int panel_count;         /* 1, or 2 for the compare view */
 	render_view view;
 	const char *hud[RENDER_HUD_LINES]; /* top-left text, NULL lines skipped */
+	/* the visitor's screen: each panel's label large (one panel too) with
+	 * a sentence above it, and a badge (PAUSED) across the top */
+	int visitor;
+	const char *caption[RENDER_MAX_PANELS];
+	const char *badge;
 	float dt;                /* seconds since the previous frame (camera) */
 } render_frame;
 

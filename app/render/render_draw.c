@@ -155,8 +155,11 @@ static int bone_uniforms(renderer *r, const skin_bones *b, int as_dq)
 static void body_program(renderer *r, shader_kind k, const mat4 *vp, int weights_view)
 {
 	const gl_api *gl = r->gl;
-	vec3 key = vec3_normalize(vec3_make(0.45f, 0.8f, 0.55f));
-	vec3 fill = vec3_normalize(vec3_make(-0.7f, 0.25f, 0.2f));
+	/* the lights turn with the camera about the vertical: a close-up from
+	 * behind a joint is lit as well as the usual front view */
+	quat turn = quat_from_axis_angle(vec3_make(0.0f, 1.0f, 0.0f), r->cam.azimuth - RENDER_CAMERA_AZIMUTH);
+	vec3 key = quat_rotate(turn, vec3_normalize(vec3_make(0.45f, 0.8f, 0.55f)));
+	vec3 fill = quat_rotate(turn, vec3_normalize(vec3_make(-0.7f, 0.25f, 0.2f)));
 	gl->UseProgram(r->prog[k]);
 	gl->UniformMatrix4fv(render_loc[k][U_MVP], 1, GL_FALSE, vp->m);
 	gl->Uniform3f(render_loc[k][U_KEY], key.x, key.y, key.z);
@@ -253,6 +256,32 @@ static int text_scale(int logical_h)
 	return s < 1 ? 1 : s;
 }
 
+static int text_width(const char *s, int scale)
+{
+	return (int)strlen(s) * (FONT_GLYPH_W + 1) * scale;
+}
+
+/* The panel's label at its foot, centred; on the visitor's screen larger,
+ * with the panel's sentence above it (smaller when it would not fit). */
+static void draw_label(renderer *r, const render_frame *f, int i, render_rect area)
+{
+	static const float label_rgba[4] = { 1, 1, 1, 1 }, caption_rgba[4] = { 0.95f, 0.85f, 0.55f, 1 };
+	int base = text_scale(area.h), s = base + (f->visitor ? 3 : 1);
+	const char *label = f->panel[i].label;
+	while (s > 1 && text_width(label, s) > area.w - 8)
+		s--;
+	int y = area.h - (FONT_CELL_H + 4) * s;
+	render_text(r, area, (area.w - text_width(label, s)) / 2, y, s, label, label_rgba);
+	const char *caption = f->visitor ? f->caption[i] : NULL;
+	if (!caption)
+		return;
+	int cs = base + 1;
+	while (cs > 1 && text_width(caption, cs) > area.w - 8)
+		cs--;
+	render_text(r, area, (area.w - text_width(caption, cs)) / 2, y - (FONT_CELL_H + 3) * cs, cs, caption,
+		    caption_rgba);
+}
+
 static void draw_panel(renderer *r, const render_frame *f, int i, render_rect area)
 {
 	render_set_viewport(r, area);
@@ -262,13 +291,8 @@ static void draw_panel(renderer *r, const render_frame *f, int i, render_rect ar
 	render_body(r, &vp, f, i);
 	if (f->view == RENDER_VIEW_SKELETON)
 		render_skeleton(r, &vp, f->pose);
-	if (f->panel_count > 1 && f->panel[i].label) {
-		static const float label_rgba[4] = { 1, 1, 1, 1 };
-		int s = text_scale(area.h) + 1;
-		int w = (int)strlen(f->panel[i].label) * (FONT_GLYPH_W + 1) * s;
-		render_text(r, area, (area.w - w) / 2, area.h - (FONT_CELL_H + 4) * s, s,
-			    f->panel[i].label, label_rgba);
-	}
+	if ((f->panel_count > 1 || f->visitor) && f->panel[i].label)
+		draw_label(r, f, i, area);
 }
 
 static vec3 skeleton_center(const renderer *r, const skel_pose *pose)
@@ -317,9 +341,14 @@ void render_draw(renderer *r, const render_frame *f)
 		gl->DrawArrays(GL_LINES, 0, 2);
 		disable_attribs(gl);
 	}
-	static const float hud_rgba[4] = { 0.95f, 0.95f, 0.85f, 1.0f };
+	static const float hud_rgba[4] = { 0.95f, 0.95f, 0.85f, 1.0f }, badge_rgba[4] = { 1.0f, 0.8f, 0.2f, 1.0f };
 	int s = text_scale(lh);
 	for (int i = 0; i < RENDER_HUD_LINES; i++)
 		if (f->hud[i])
 			render_text(r, full, 4 * s, (4 + i * (FONT_CELL_H + 2)) * s, s, f->hud[i], hud_rgba);
+	if (f->badge) {
+		int bs = s + 3;
+		render_text(r, full, (lw - text_width(f->badge, bs)) / 2, (8 + 2 * (FONT_CELL_H + 2)) * s, bs,
+			    f->badge, badge_rgba);
+	}
 }

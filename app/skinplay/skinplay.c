@@ -8,6 +8,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include "board_config.h"
 #include "cli_version.h"
 #include "clock.h"
 #include "png_writer.h"
@@ -122,8 +123,53 @@ static void skin_panels(player *p, render_frame *f)
 	f->bones = &p->skin.bones;
 }
 
+/* The visitor's screen: what each method is, what to look at, the buttons. */
+static const char *const visitor_caption[SKIN_ALGO_COUNT] = {
+	"elbows and twisting wrists lose volume",
+	"volume kept, joints may bulge",
+	"dual quaternions in integer maths",
+};
+static const char *const visitor_name[SKIN_ALGO_COUNT] = {
+	"LINEAR BLEND", "DUAL QUATERNION", "DUAL QUATERNION (FIXED)",
+};
+
+static const char *button_legend(const player *p)
+{
+	const kiosk *k = &p->kiosk;
+	if (!strcmp(k->in->name, "keyboard"))
+		return "KEYS: 1 METHOD   2 PAUSE   3 NEXT CLIP   4 VIEW";
+	if (!strcmp(k->in->name, "gpio"))
+		return "BUTTONS: ALGO CHANGES THE METHOD   PLAY PAUSES   NEXT CLIP   VIEW";
+	return NULL;
+}
+
+static void visitor_hud(player *p, render_frame *f)
+{
+	f->visitor = 1;
+	for (int i = 0; i < p->panel_count; i++) {
+		f->panel[i].label = visitor_name[p->algo[i]];
+		f->caption[i] = visitor_caption[p->algo[i]];
+	}
+	f->hud[0] = button_legend(p);
+	f->badge = p->kiosk.ps.playing ? NULL : "PAUSED";
+}
+
 static void hud_text(player *p, render_frame *f, double fps, char lines[3][128])
 {
+	f->visitor = 0;
+	f->badge = NULL;
+	for (int i = 0; i < RENDER_HUD_LINES; i++)
+		f->hud[i] = NULL;
+	/* a skipped clip, no clip at all: said on screen, not only in the log */
+	f->hud[3] = p->notice_frames > 0 ? p->notice : NULL;
+	if (p->notice_frames > 0)
+		p->notice_frames--;
+	if (p->o.hud == BOARD_HUD_VISITOR) {
+		visitor_hud(p, f);
+		return;
+	}
+	if (p->o.hud == BOARD_HUD_OFF)
+		return;
 	const char *where = p->gpu[0] ? "GPU" : "CPU";
 	if (p->panel_count > 1)
 		snprintf(lines[0], 128, "COMPARE LBS | DQBS  %s  %s", where, render_view_name(p->o.view));
@@ -134,15 +180,14 @@ static void hud_text(player *p, render_frame *f, double fps, char lines[3][128])
 		snprintf(lines[1], 128, "%s  FRAME %ld  REBUILT %lu", p->clip, p->frame.number, rebuilt);
 	else
 		snprintf(lines[1], 128, "%s  FRAME %ld", p->clip, p->frame.number);
-	if (p->o.hud_fps)
-		snprintf(lines[2], 128, "%.1f FPS", fps);
+	/* no figure before the first second is measured */
+	if (fps > 0)
+		snprintf(lines[2], 128, "%.1f FPS%s", fps, p->kiosk.ps.playing ? "" : "  PAUSED");
+	else
+		snprintf(lines[2], 128, "- FPS%s", p->kiosk.ps.playing ? "" : "  PAUSED");
 	f->hud[0] = lines[0];
 	f->hud[1] = lines[1];
 	f->hud[2] = p->o.hud_fps ? lines[2] : NULL;
-	/* a skipped clip, no clip at all: said on screen, not only in the log */
-	f->hud[3] = p->notice_frames > 0 ? p->notice : NULL;
-	if (p->notice_frames > 0)
-		p->notice_frames--;
 }
 
 static int write_png(player *p, long n)
@@ -163,9 +208,14 @@ static int write_png(player *p, long n)
 static void log_second(player *p, timing *t, uint64_t now)
 {
 	double secs = (double)(now - t->since) * 1e-9, n = (double)t->frames;
-	fprintf(stderr, "frame %ld: %.1f fps, decode %.2f ms, skin %.2f ms, upload %.2f ms, draw %.2f ms\n",
+	fprintf(stderr, "frame %ld: %.1f fps, decode %.2f ms, skin %.2f ms, upload %.2f ms, draw %.2f ms",
 		p->frame.number, n / secs, t->decode * 1e-6 / n, t->skin * 1e-6 / n, t->upload * 1e-6 / n,
 		t->draw * 1e-6 / n);
+	/* a run of known length (headless, --frames: make soak): how far, how long left */
+	if (p->budget > 0 && n > 0)
+		fprintf(stderr, "; %ld of %ld shown (%.1f%%), %.0f s left", p->shown, p->budget,
+			100.0 * (double)p->shown / (double)p->budget, (double)(p->budget - p->shown) * secs / n);
+	fputc('\n', stderr);
 	total.decode += t->decode;
 	total.skin += t->skin;
 	total.upload += t->upload;
@@ -227,6 +277,7 @@ static int play(player *p)
 	/* headless: the clip once, frames held by a pause included, so a
 	 * scripted pause cannot keep a batch run going for ever */
 	long budget = p->o.frames >= 0 ? p->o.frames : p->headless ? frames_clip_length(p) : -1;
+	p->budget = budget;
 	while (!quit && (budget < 0 || shown < budget)) {
 		unsigned act = kiosk_frame(&p->kiosk, shown);
 		if (act & (KIOSK_QUIT | KIOSK_RELOAD)) {
@@ -244,7 +295,7 @@ static int play(player *p)
 		t.decode += clock_now_ns() - t0;
 		if (draw_one(p, &t, fps, &f) < 0)
 			return -1;
-		shown++;
+		p->shown = ++shown;
 		t.frames++;
 		if (p->o.out_dir && (shown - 1) % p->o.every == 0 && write_png(p, shown) < 0)
 			return -1;

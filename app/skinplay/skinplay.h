@@ -15,6 +15,7 @@
 
 typedef struct player {
 	play_opts o;
+	long budget, shown;  /* frames to show (-1: until closed) and shown so far */
 	bound_body body;
 	cli_skin skin;
 	cli_motion motion;

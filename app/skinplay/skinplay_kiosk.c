@@ -45,6 +45,8 @@ static void apply_board(const board_config *b, play_opts *o, int argc, char **ar
 		o->device = b->device;
 	if (b->rotation >= 0 && !given(argc, argv, "--rotation"))
 		o->rotation = b->rotation;
+	if (b->hud >= 0 && o->hud < 0)
+		o->hud = b->hud;
 	if (b->width && !given(argc, argv, "--size")) {
 		o->width = b->width;
 		o->height = b->height;
@@ -61,6 +63,8 @@ int kiosk_setup(kiosk *k, play_opts *o, int argc, char **argv)
 		return -1;
 	if (k->have_board)
 		apply_board(&k->board, o, argc, argv);
+	if (o->hud < 0)
+		o->hud = BOARD_HUD_ENGINEER;
 	/* no show on the command line: the board's image slots (A/B update) */
 	if (!o->image_count && (!o->asf || !o->amc)) {
 		for (int i = 0; i < k->board.slot_count && o->image_count < 4; i++)

@@ -5,12 +5,13 @@
 #include <string.h>
 #include <strings.h>
 
+#include "board_config.h"
 #include "cli_common.h"
 
 enum {
 	OPT_IMAGE = 1, OPT_CLIP, OPT_ASF, OPT_AMC, OPT_BVH, OPT_MESH, OPT_ALGO, OPT_SKIN, OPT_PLATFORM, OPT_DEVICE,
 	OPT_ROTATION, OPT_SIZE, OPT_FRAMES, OPT_START, OPT_OUT, OPT_EVERY, OPT_SHEET, OPT_VIEW, OPT_FPS,
-	OPT_HUD_FPS, OPT_REPORT_MEMORY, OPT_BOARD, OPT_INPUT, OPT_PRINT_PLATFORM
+	OPT_HUD_FPS, OPT_REPORT_MEMORY, OPT_BOARD, OPT_INPUT, OPT_PRINT_PLATFORM, OPT_HUD
 };
 
 static const cli_opt play_opts_table[] = {
@@ -36,7 +37,8 @@ static const cli_opt play_opts_table[] = {
 	{ "sheet", 0, "F.png", OPT_SHEET, "with --output: also a contact sheet of the frames written" },
 	{ "view", 0, "VIEW", OPT_VIEW, "body, skeleton or weights (default body)" },
 	{ "fps", 0, "F", OPT_FPS, "the motion's capture rate in Hz (default 120, the CMU rate; images carry theirs)" },
-	{ "hud-fps", 0, "on|off", OPT_HUD_FPS, "show the measured frame rate (off: reproducible pictures)" },
+	{ "hud", 0, "MODE", OPT_HUD, "visitor, engineer or off (default: the board's [display] hud, else engineer)" },
+	{ "hud-fps", 0, "on|off", OPT_HUD_FPS, "engineer HUD: show the measured frame rate (off: reproducible pictures)" },
 	{ "report-memory", 0, NULL, OPT_REPORT_MEMORY, "print the peak and current resident memory at the end" },
 	{ "board", 0, "FILE", OPT_BOARD, "the board's runtime config (board/NAME/board.ini; default: none)" },
 	{ "input", 0, "SPEC", OPT_INPUT, "buttons: gpio, keyboard, script:FILE or none (default: the board's)" },
@@ -154,6 +156,12 @@ static int take(void *ctx, int id, const char *v)
 	case OPT_BOARD: o->board = v; return 0;
 	case OPT_INPUT: o->input = v; return 0;
 	case OPT_PRINT_PLATFORM: o->print_platform = 1; return 0;
+	case OPT_HUD:
+		if ((o->hud = board_hud_parse(v)) < 0) {
+			static const char *const modes[] = { "visitor", "engineer", "off" };
+			return cli_bad_choice(PROG, "hud", v, modes, 3);
+		}
+		return 0;
 	}
 	return -1;
 }
@@ -186,6 +194,7 @@ int play_parse(play_opts *o, int argc, char **argv)
 	o->start = -1;
 	o->every = 1;
 	o->hud_fps = 1;
+	o->hud = -1;
 	o->fps = 120.0;
 	int rc = cli_parse(&play_command, o, argc, argv, 1);
 	if (rc != 0)

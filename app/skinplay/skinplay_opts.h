@@ -29,6 +29,7 @@ typedef struct play_opts {
 	long every;
 	render_view view;
 	int hud_fps;             /* 0: leave the measured fps out (reproducible images) */
+	int hud;                 /* board_hud; -1: the board's, else engineer */
 	double fps;              /* the clip's capture rate */
 } play_opts;
 

@@ -29,7 +29,19 @@ typedef struct compare_args {
 typedef struct frame_stats {
 	float vol, rmin, rmax;
 	float reg_min[REGION_COUNT], reg_max[REGION_COUNT];
+	float rvol[REGION_COUNT];       /* the region's volume ratio (compare_region_volume) */
 } frame_stats;
+
+/* The skin around each joint region as a volume: each triangle of the
+ * region (its first vertex's) with the joint nearest to that vertex makes
+ * a tetrahedron, posed with the posed joint; their sum over the region,
+ * over the same sum as bound, is the region's volume ratio. A collapsing
+ * elbow shrinks it, a bulging one swells it, whatever the rest does. */
+typedef struct region_volume {
+	int8_t tri_region[SKP_MAX_TRIS];   /* -1: no region */
+	int16_t tri_joint[SKP_MAX_TRIS];
+	double bind[REGION_COUNT];         /* <= 0: not measured */
+} region_volume;
 
 typedef struct compare_run {
 	bound_body body;
@@ -37,6 +49,7 @@ typedef struct compare_run {
 	measure_state meas;
 	report rep;
 	int joint[SKP_MAX_VERTS], region[SKP_MAX_VERTS];
+	region_volume rv;
 	float pos[3 * SKP_MAX_VERTS], nrm[3 * SKP_MAX_VERTS];
 	float ratio[NALGO][SKP_MAX_VERTS];
 	/* the kept frames */
@@ -45,6 +58,8 @@ typedef struct compare_run {
 	frame_stats st[NALGO][STORE_MAX];
 	float rel[STORE_MAX];         /* LBS - DQBS at the worst vertex */
 	int rel_vertex[STORE_MAX];
+	float rel_region[REGION_COUNT][STORE_MAX];   /* ... at each region's worst */
+	int rel_region_vertex[REGION_COUNT][STORE_MAX];
 	float floor_y;
 	FILE *csv;
 	char path[4096];
@@ -57,6 +72,12 @@ extern const char *const compare_algo_label[NALGO];
  * DIR/metrics_OTHER.csv, its summary beside the main one on the page.
  * Returns 0 (also when the mesh has no weights of its own), or -1. */
 int compare_other_weights(compare_run *main_run, const compare_args *a);
+
+/* compare_region_volume.c: set up once the body is classified (joint[],
+ * region[]); then each skinned frame's ratios (NAN where not measured). */
+void compare_region_volume_init(compare_run *c);
+void compare_region_volume(const compare_run *c, const float *pos, const skel_pose *pose,
+			   double ratio[REGION_COUNT]);
 
 /* The measuring part: each returns 0, or -1 after reporting. */
 int compare_measure_scenes(compare_run *c);

@@ -9,6 +9,7 @@
 
 #include "cli_common.h"
 #include "clock.h"
+#include "cli_progress.h"
 #include "compare.h"
 #include "skin_overlap.h"
 
@@ -70,6 +71,9 @@ static void reset_summary(report *r)
 		for (int g = 0; g < REGION_COUNT; g++) {
 			extreme_init(&s->reg_min[g], NAN);
 			extreme_init(&s->reg_max[g], NAN);
+			extreme_init(&s->rvol_min[g], NAN);
+			extreme_init(&s->rvol_max[g], NAN);
+			s->rvol_folded[g] = 0;
 		}
 		s->vol_dev = -1.0;
 		s->vol_dev_frame = -1;
@@ -123,6 +127,26 @@ static void print_row(compare_run *c, long frame, int a, const measure_row *row,
 	fputc('\n', c->csv);
 }
 
+/* The regions' volume ratios against their extremes over the clip. */
+static void summarise_region_volumes(compare_run *c, long frame, int a, const double *ratio)
+{
+	report_algo *s = &c->rep.algo[a];
+	for (int g = 0; g < REGION_COUNT; g++) {
+		if (isnan(ratio[g]))
+			continue;
+		if (ratio[g] <= 0.0)
+			s->rvol_folded[g] = 1;
+		if (!(ratio[g] >= s->rvol_min[g].value)) {
+			compare_set_extreme(c, &s->rvol_min[g], ratio[g], frame, -1);
+			s->rvol_min[g].region = g;
+		}
+		if (!(ratio[g] <= s->rvol_max[g].value)) {
+			compare_set_extreme(c, &s->rvol_max[g], ratio[g], frame, -1);
+			s->rvol_max[g].region = g;
+		}
+	}
+}
+
 static void summarise(compare_run *c, long frame, int a, const measure_row *row,
 		      const frame_stats *st, const int *at_min, const int *at_max)
 {
@@ -154,17 +178,22 @@ static void summarise(compare_run *c, long frame, int a, const measure_row *row,
  * min(LBS ratio, 1) - min(DQBS ratio, 1). Contact with another limb
  * shrinks both alike and DQBS's bulges are no collapse, so what remains
  * is LBS's own collapse. */
-static float lbs_vs_dqbs(const compare_run *c, int *vertex)
+static float lbs_vs_dqbs(const compare_run *c, int *vertex, float *region_best, int *region_vertex)
 {
 	const float *l = c->ratio[SKIN_LBS], *d = c->ratio[SKIN_DQBS];
 	float best = INFINITY;
 	*vertex = -1;
+	for (int g = 0; g < REGION_COUNT; g++)
+		region_best[g] = INFINITY, region_vertex[g] = -1;
 	for (int v = 0; v < c->rep.vert_count; v++) {
-		if (c->region[v] < 0 || isnan(l[v]) || isnan(d[v]))
+		int g = c->region[v];
+		if (g < 0 || isnan(l[v]) || isnan(d[v]))
 			continue;
 		float x = fminf(l[v], 1.0f) - fminf(d[v], 1.0f);
 		if (x < best)
 			best = x, *vertex = v;
+		if (x < region_best[g])
+			region_best[g] = x, region_vertex[g] = v;
 	}
 	return best;
 }
@@ -184,14 +213,20 @@ static void measure_frame(compare_run *c, long frame, int keep)
 		region_ranges(c, c->ratio[a], &st[a], at_min, at_max);
 		print_row(c, frame, a, &row[a], &st[a]);
 		summarise(c, frame, a, &row[a], &st[a], at_min, at_max);
+		double rvol[REGION_COUNT];
+		compare_region_volume(c, c->pos, &c->sk.pose, rvol);
+		summarise_region_volumes(c, frame, a, rvol);
+		for (int g = 0; g < REGION_COUNT; g++)
+			st[a].rvol[g] = (float)rvol[g];
 		if (a == SKIN_DQBS && isnan(c->floor_y)) {
 			c->floor_y = INFINITY;
 			for (int v = 0; v < c->rep.vert_count; v++)
 				c->floor_y = fminf(c->floor_y, c->pos[3 * v + 1]);
 		}
 	}
-	int v;
-	float rel = lbs_vs_dqbs(c, &v);
+	int v, reg_v[REGION_COUNT];
+	float reg_rel[REGION_COUNT];
+	float rel = lbs_vs_dqbs(c, &v, reg_rel, reg_v);
 	if (v >= 0 && rel < c->rep.rel_min.value)
 		compare_set_extreme(c, &c->rep.rel_min, rel, frame, v);
 	if (!keep || c->kept >= STORE_MAX)
@@ -202,25 +237,10 @@ static void measure_frame(compare_run *c, long frame, int keep)
 		c->st[a][k] = st[a];
 	c->rel[k] = v >= 0 ? rel : NAN;
 	c->rel_vertex[k] = v;
-}
-
-static void progress(long done, long total, uint64_t t0, int final)
-{
-	static uint64_t last;
-	uint64_t now = clock_now_ns();
-	if (!final && now - last < 200000000u)
-		return;
-	last = now;
-	int tty = isatty(2), width = 40, fill = total > 0 ? (int)(width * done / total) : width;
-	if (!tty && !final)
-		return;
-	char bar[64];
-	for (int i = 0; i < width; i++)
-		bar[i] = i < fill ? '#' : '.';
-	bar[width] = '\0';
-	double secs = (double)(now - t0) * 1e-9;
-	fprintf(stderr, "%scompare [%s] %3ld%% frame %ld/%ld %.1f s%s", tty ? "\r" : "", bar,
-		total > 0 ? 100 * done / total : 100, done, total, secs, final ? "\n" : "");
+	for (int g = 0; g < REGION_COUNT; g++) {
+		c->rel_region[g][k] = reg_v[g] >= 0 ? reg_rel[g] : NAN;
+		c->rel_region_vertex[g][k] = reg_v[g];
+	}
 }
 
 static long count_frames(const compare_args *a, const skel *s)
@@ -272,6 +292,7 @@ int compare_load_clip(compare_run *c, const compare_args *a)
 	r->vert_count = c->body.mesh.vert_count;
 	r->tri_count = c->body.mesh.tri_count;
 	report_classify(&c->body.skel, &c->body.pose, c->meas.bind_xyz, r->vert_count, c->joint, c->region);
+	compare_region_volume_init(c);
 	r->measured = 0;
 	for (int v = 0; v < r->vert_count; v++) {
 		int measured = c->meas.rest_dist[v] > c->meas.min_rest;
@@ -294,18 +315,21 @@ int compare_measure_clip(compare_run *c, const compare_args *a)
 	c->kept = 0;
 	c->floor_y = NAN;
 	reset_summary(r);
-	uint64_t t0 = clock_now_ns();
+	static cli_progress pr;
+	static char what[300];
+	snprintf(what, sizeof what, "compare %s%s", cli_basename(a->amc), a->csv_name ? " (other weights)" : "");
+	cli_progress_start(&pr, what, "frames", total);
 	long n = 0;
 	int rc;
 	while ((rc = cli_motion_next(&mo, &f)) > 0) {
 		cli_skin_frame(&c->sk, f.value);
 		measure_frame(c, f.number, n % c->stride == 0);
-		progress(++n, total, t0, 0);
+		cli_progress_step(&pr, ++n);
 	}
 	cli_motion_close(&mo);
-	progress(n, total, t0, 1);
+	cli_progress_end(&pr, " x 3 algorithms measured");
 	r->frames = n;
-	r->seconds = (double)(clock_now_ns() - t0) * 1e-9;
+	r->seconds = cli_progress_seconds(&pr);
 	int bad = ferror(c->csv);
 	if (fclose(c->csv) != 0 || bad) {
 		fprintf(stderr, "%s: write failed\n", c->path);

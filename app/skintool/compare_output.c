@@ -28,7 +28,7 @@ static void column(const compare_run *c, int a, int field, int region, float *ou
 	for (int k = 0; k < c->kept; k++) {
 		const frame_stats *s = &c->st[a][k];
 		out[k] = field == 0 ? s->vol : field == 1 ? s->rmin : field == 2 ? s->rmax
-			 : field == 3 ? s->reg_min[region] : s->reg_max[region];
+			 : field == 3 ? s->reg_min[region] : field == 4 ? s->reg_max[region] : s->rvol[region];
 	}
 }
 
@@ -46,61 +46,78 @@ static int write_chart(compare_run *c, const char *dir, const char *png, const c
 	return 0;
 }
 
+/* A chart over the kept frames with the ratio 1 marked. */
+static void chart_start(const compare_run *c, chart *ch, const char *title)
+{
+	memset(ch, 0, sizeof *ch);
+	ch->title = title;
+	ch->x_label = "FRAME";
+	ch->x = c->frame;
+	ch->n = c->kept;
+	ch->ref_y = 1.0f;
+}
+
+static float chart_y[2 * NALGO][STORE_MAX];
+
+/* Region g's smallest (solid) and largest (dashed) radius ratio. */
+static int region_radius_chart(compare_run *c, const char *dir, int g)
+{
+	static char title[REGION_COUNT][64], png[REGION_COUNT][32];
+	static const char *const mins[NALGO] = { "LBS MIN", "DQBS MIN", "FIXED MIN" };
+	chart ch;
+	snprintf(title[g], sizeof title[g], "%s: MIN AND MAX RADIUS RATIO", report_region_name(g));
+	snprintf(png[g], sizeof png[g], "region_%s.png", report_region_name(g));
+	chart_start(c, &ch, title[g]);
+	/* DQBS fixed is within 1e-4 of DQBS: two lines would hide each other */
+	for (int a = 0; a < SKIN_DQBS_FIXED; a++) {
+		column(c, a, 3, g, chart_y[2 * a]);
+		column(c, a, 4, g, chart_y[2 * a + 1]);
+		ch.series[ch.series_count++] = series(a, mins[a], chart_y[2 * a], 0);
+	}
+	for (int a = 0; a < SKIN_DQBS_FIXED; a++) {
+		chart_series s = series(a, a ? "DQBS MAX" : "LBS MAX", chart_y[2 * a + 1], 1);
+		s.width = 1.5f;
+		ch.series[ch.series_count++] = s;
+	}
+	return write_chart(c, dir, png[g], title[g],
+			   "Solid: the smallest radius ratio of the region's vertices; dashed: the largest.", &ch);
+}
+
+/* Region g's volume around its joints (compare_region_volume.c). */
+static int region_volume_chart(compare_run *c, const char *dir, int g)
+{
+	static char title[REGION_COUNT][64], png[REGION_COUNT][40];
+	chart ch;
+	snprintf(title[g], sizeof title[g], "%s: VOLUME AROUND THE JOINTS", report_region_name(g));
+	snprintf(png[g], sizeof png[g], "region_%s_volume.png", report_region_name(g));
+	chart_start(c, &ch, title[g]);
+	for (int a = 0; a < SKIN_DQBS_FIXED; a++) {
+		column(c, a, 5, g, chart_y[a]);
+		ch.series[ch.series_count++] = series(a, compare_algo_label[a], chart_y[a], 0);
+	}
+	return write_chart(c, dir, png[g], title[g],
+			   "The volume of the region's skin over its volume as bound (see \"Volume around each "
+			   "joint\"): below 1 the joints collapse, above they bulge.", &ch);
+}
+
+/* The body's volume over time, then per joint region its radius ratios and
+ * its volume. The global radius extremes stay in the CSV: contact between
+ * limbs sets them, flat for every algorithm. */
 int compare_write_charts(compare_run *c, const char *dir)
 {
-	static float y[2 * NALGO][STORE_MAX];
-	static const char *const titles[3] = { "VOLUME RATIO", "MIN RADIUS RATIO", "MAX RADIUS RATIO" };
-	static const char *const captions[3] = {
-		"Enclosed volume over the volume as bound (1 = kept). LBS loses volume at every bent or twisted joint.",
-		"Smallest ratio over all vertices of the distance to the nearest posed bone over the same distance as bound: where the skin collapses (contact with another limb lowers it for every algorithm alike).",
-		"Largest ratio: where the skin swells (DQBS bulges a little at bends instead of collapsing).",
-	};
-	static char region_title[REGION_COUNT][64], region_png[REGION_COUNT][32];
 	chart ch;
-	for (int f = 0; f < 3; f++) {
-		memset(&ch, 0, sizeof ch);
-		ch.title = titles[f];
-		ch.x_label = "FRAME";
-		ch.x = c->frame;
-		ch.n = c->kept;
-		ch.ref_y = 1.0f;
-		for (int a = 0; a < NALGO; a++) {
-			column(c, a, f, 0, y[a]);
-			ch.series[ch.series_count++] = series(a, compare_algo_label[a], y[a], 0);
-		}
-		static const char *const pngs[3] = { "volume.png", "radius_min.png", "radius_max.png" };
-		if (write_chart(c, dir, pngs[f], titles[f], captions[f], &ch) < 0)
-			return -1;
+	chart_start(c, &ch, "VOLUME RATIO");
+	for (int a = 0; a < NALGO; a++) {
+		column(c, a, 0, 0, chart_y[a]);
+		ch.series[ch.series_count++] = series(a, compare_algo_label[a], chart_y[a], 0);
 	}
-	for (int g = 0; g < REGION_COUNT; g++) {
-		if (!c->rep.region_verts[g])
-			continue;
-		memset(&ch, 0, sizeof ch);
-		snprintf(region_title[g], sizeof region_title[g], "%s: MIN AND MAX RADIUS RATIO",
-			 report_region_name(g));
-		snprintf(region_png[g], sizeof region_png[g], "region_%s.png", report_region_name(g));
-		ch.title = region_title[g];
-		ch.x_label = "FRAME";
-		ch.x = c->frame;
-		ch.n = c->kept;
-		ch.ref_y = 1.0f;
-		static const char *const mins[NALGO] = { "LBS MIN", "DQBS MIN", "FIXED MIN" };
-		for (int a = 0; a < NALGO; a += 1) {
-			if (a == SKIN_DQBS_FIXED)
-				continue; /* within 1e-4 of DQBS: two lines would hide each other */
-			column(c, a, 3, g, y[2 * a]);
-			column(c, a, 4, g, y[2 * a + 1]);
-			ch.series[ch.series_count++] = series(a, mins[a], y[2 * a], 0);
-		}
-		for (int a = 0; a < SKIN_DQBS_FIXED; a++) {
-			chart_series s = series(a, a ? "DQBS MAX" : "LBS MAX", y[2 * a + 1], 1);
-			s.width = 1.5f;
-			ch.series[ch.series_count++] = s;
-		}
-		if (write_chart(c, dir, region_png[g], region_title[g],
-				"Solid: the smallest radius ratio of the region's vertices; dashed: the largest.", &ch) < 0)
+	if (write_chart(c, dir, "volume.png", "VOLUME RATIO", "Enclosed volume over the volume as bound (1 = kept). "
+			"LBS loses volume at every bent or twisted joint.", &ch) < 0)
+		return -1;
+	for (int g = 0; g < REGION_COUNT; g++)
+		if (c->rep.region_verts[g] &&
+		    (region_radius_chart(c, dir, g) < 0 || region_volume_chart(c, dir, g) < 0))
 			return -1;
-	}
 	return 0;
 }
 
@@ -108,29 +125,63 @@ int compare_write_charts(compare_run *c, const char *dir)
 
 /* The kept frames with the most negative LBS - DQBS, at least sep frames
  * apart, worst first. */
+/* The kept frame where LBS is thinnest against DQBS (in region g, or
+ * anywhere for g < 0), at least sep frames from the stills so far. -1:
+ * none. */
+static int worst_kept(const compare_run *c, long sep, int g)
+{
+	const report *r = &c->rep;
+	const float *rel = g >= 0 ? c->rel_region[g] : c->rel;
+	int best = -1;
+	for (int k = 0; k < c->kept; k++) {
+		if (!(rel[k] < 0.0f) || (best >= 0 && !(rel[k] < rel[best])))
+			continue;
+		int near = 0;
+		for (int i = 0; i < r->still_count; i++)
+			near |= labs(c->frame[k] - r->still[i].frame) < sep;
+		if (!near)
+			best = k;
+	}
+	return best;
+}
+
+static void add_still(compare_run *c, int k, int g)
+{
+	report *r = &c->rep;
+	report_still *s = &r->still[r->still_count++];
+	int v = g >= 0 ? c->rel_region_vertex[g][k] : c->rel_vertex[k];
+	memset(s, 0, sizeof *s);
+	s->frame = c->frame[k];
+	compare_set_extreme(c, &s->rel, g >= 0 ? c->rel_region[g][k] : c->rel[k], s->frame, v);
+	s->vertex = v;
+}
+
+/* The frames to render: LBS's worst collapse against DQBS at each joint
+ * region in turn, the region where it is worst first, then, when renders
+ * are left, the next worst frames wherever they are. */
 void compare_pick_stills(compare_run *c, int want)
 {
 	report *r = &c->rep;
 	long sep = r->frames / 16 > 60 ? 60 : r->frames / 16 < 1 ? 1 : r->frames / 16;
+	int done[REGION_COUNT] = { 0 };
 	r->still_count = 0;
 	while (r->still_count < want) {
-		int best = -1;
-		for (int k = 0; k < c->kept; k++) {
-			if (!(c->rel[k] < 0.0f) || (best >= 0 && !(c->rel[k] < c->rel[best])))
-				continue;
-			int near = 0;
-			for (int i = 0; i < r->still_count; i++)
-				near |= labs(c->frame[k] - r->still[i].frame) < sep;
-			if (!near)
-				best = k;
+		int best_g = -1, best_k = -1;
+		for (int g = 0; g < REGION_COUNT; g++) {
+			int k = done[g] ? -1 : worst_kept(c, sep, g);
+			if (k >= 0 && (best_k < 0 || c->rel_region[g][k] < c->rel_region[best_g][best_k]))
+				best_g = g, best_k = k;
 		}
-		if (best < 0)
+		if (best_k < 0)
 			break;
-		report_still *s = &r->still[r->still_count++];
-		memset(s, 0, sizeof *s);
-		s->frame = c->frame[best];
-		compare_set_extreme(c, &s->rel, c->rel[best], s->frame, c->rel_vertex[best]);
-		s->vertex = c->rel_vertex[best];
+		done[best_g] = 1;
+		add_still(c, best_k, best_g);
+	}
+	while (r->still_count < want) {
+		int k = worst_kept(c, sep, -1);
+		if (k < 0)
+			break;
+		add_still(c, k, -1);
 	}
 }
 

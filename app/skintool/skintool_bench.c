@@ -9,6 +9,7 @@
 #include "clock.h"
 #include "cli_common.h"
 #include "cli_opts.h"
+#include "cli_progress.h"
 #include "skin.h"
 #include "skintool_cmds.h"
 #include "workers.h"
@@ -126,15 +127,20 @@ static double round_seconds_per_pass(workers *w, bench *b)
  * algorithm more chances to be timed in the machine's fast phases. */
 static void best_seconds_per_pass(workers *w, bench *b, double best[SKIN_ALGO_COUNT])
 {
+	static cli_progress pr;
 	for (int a = 0; a < SKIN_ALGO_COUNT; a++)
 		best[a] = 1e30;
-	for (int round = 0; round < 20; round++)
+	cli_progress_start(&pr, "bench", "rounds", 20);
+	for (int round = 0; round < 20; round++) {
 		for (int a = 0; a < SKIN_ALGO_COUNT; a++) {
 			b->algo = (skin_algo)a;
 			double s = round_seconds_per_pass(w, b);
 			if (s < best[a])
 				best[a] = s;
 		}
+		cli_progress_step(&pr, round + 1);
+	}
+	cli_progress_end(&pr, " of the 3 kernels");
 }
 
 /* Copy bandwidth (bytes read + written per second) over buffers the size

@@ -13,6 +13,7 @@
 #include "clock.h"
 #include "cli_bind_args.h"
 #include "cli_common.h"
+#include "cli_progress.h"
 #include "measure.h"
 #include "cli_skin.h"
 #include "skin_metrics.h"
@@ -189,17 +190,23 @@ static int run_clip(metrics_run *r, const metrics_args *a)
 	    start(r, &body.skel, &body.pose, &body.mesh, &body.weights, a->c.mesh) < 0 ||
 	    cli_motion_open(&mo, a->c.amc, &body.skel) < 0)
 		return -1;
-	uint64_t t0 = clock_now_ns();
+	static cli_progress pr;
+	static char what[300], extra[96];
+	long total = cli_motion_count(a->c.amc, &body.skel);
+	if (total < 0)
+		return -1;
+	snprintf(what, sizeof what, "metrics %s", cli_basename(a->c.amc));
+	cli_progress_start(&pr, what, "frames", total);
 	long frames = 0;
 	int rc;
 	while ((rc = cli_motion_next(&mo, &f)) > 0) {
 		cli_skin_frame(&r->sk, f.value);
 		metrics_pose(r, a, f.number);
-		frames++;
+		cli_progress_step(&pr, ++frames);
 	}
 	cli_motion_close(&mo);
-	fprintf(stderr, "%s: %ld frames x %d algorithms, %d vertices: %.3f s\n", a->c.amc, frames,
-		a->algo_count, body.mesh.vert_count, (double)(clock_now_ns() - t0) / 1e9);
+	snprintf(extra, sizeof extra, ", %d algorithms, %d vertices", a->algo_count, body.mesh.vert_count);
+	cli_progress_end(&pr, extra);
 	return rc < 0 ? -1 : 0;
 }
 

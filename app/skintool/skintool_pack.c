@@ -20,6 +20,7 @@
 #include "cli_bind_args.h"
 #include "cli_common.h"
 #include "cli_image_out.h"
+#include "cli_progress.h"
 #include "image_write.h"
 #include "skintool_cmds.h"
 #include "tool_args.h"
@@ -212,13 +213,20 @@ static int pack_clip(skp_image_writer *w, const char *path, double fps)
 	}
 	if (cli_motion_open(&m, path, w->s) < 0)
 		return -1;
+	static cli_progress pr;
+	static char what[SKP_MAX_NAME + 32];
+	snprintf(what, sizeof what, "pack %s", name);
+	cli_progress_start(&pr, what, "frames", range.frames);
+	long n = 0;
 	while ((r = cli_motion_next(&m, &f)) > 0) {
 		if (skp_image_clip_frame(w, &f, &err) != SKP_OK) {
 			cli_error(path, &err);
 			r = -1;
 			break;
 		}
+		cli_progress_step(&pr, ++n);
 	}
+	cli_progress_clear(&pr);
 	cli_motion_close(&m);
 	if (r == 0)
 		printf("clip %s: %ld frames, max error %.3g rad (%.3g deg), %.3g length units\n", name,

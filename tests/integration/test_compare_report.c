@@ -563,6 +563,81 @@ static void test_renders(void **state)
 	}
 }
 
+/* The text of the paragraph with this id, tags stripped. */
+static void paragraph(const char *page, const char *id, char *out, size_t cap)
+{
+	char key[96];
+	snprintf(key, sizeof key, "id=\"%s\">", id);
+	const char *p = strstr(page, key);
+	assert_non_null(p);
+	p += strlen(key);
+	const char *end = strstr(p, "</p>");
+	assert_non_null(end);
+	size_t n = 0;
+	for (int tag = 0; p < end && n + 1 < cap; p++) {
+		if (*p == '<')
+			tag = 1;
+		else if (*p == '>')
+			tag = 0;
+		else if (!tag)
+			out[n++] = *p;
+	}
+	out[n] = '\0';
+}
+
+/* The MakeHuman body on 131_04: the summary names where DQBS keeps more
+ * volume around a joint than LBS and where it swells more, with figures;
+ * the renders are of different joint regions; the page's total time is
+ * the command's last line's. */
+static void test_joint_truths(void **state)
+{
+	(void)state;
+	const char *asf = test_data_path("mocap/cmu/131.asf");
+	if (!asf)
+		skip();
+	char cmd[8192], dir[1100], asf_path[1024], amc[1024], mesh[1024];
+	snprintf(asf_path, sizeof asf_path, "%s", asf);
+	snprintf(amc, sizeof amc, "%s", test_data_path("mocap/cmu/131_04.amc"));
+	snprintf(mesh, sizeof mesh, "%s", test_data_path("mesh/makehuman/base.obj"));
+	snprintf(dir, sizeof dir, "%s/truths", workdir);
+	snprintf(cmd, sizeof cmd, "%s compare %s %s --mesh %s --renders 3 -o %s", test_tool_path("skintool"), asf_path,
+		 amc, mesh, dir);
+	assert_int_equal(sh(cmd, NULL), 0);
+	char path[1200], keeps[2048], swells[2048];
+	snprintf(path, sizeof path, "%s/index.html", dir);
+	char *page = slurp(path);
+	paragraph(page, "verdict-dqbs-keeps", keeps, sizeof keeps);
+	paragraph(page, "verdict-dqbs-bulges", swells, sizeof swells);
+	print_message("%s\n%s\n", keeps, swells);
+	/* a region named with DQBS's and LBS's figures */
+	assert_non_null(strstr(keeps, "% against "));
+	assert_non_null(strstr(swells, "% against "));
+	/* three renders, three joint regions */
+	char region[3][32];
+	const char *p = page;
+	for (int i = 0; i < 3; i++) {
+		p = strstr(p, "<h3>");
+		assert_non_null(p);
+		p = strstr(p, "&mdash; ");
+		assert_non_null(p);
+		assert_int_equal(sscanf(p, "&mdash; %31s", region[i]), 1);
+	}
+	assert_true(strcmp(region[0], region[1]) && strcmp(region[0], region[2]) && strcmp(region[1], region[2]));
+	/* the timings agree */
+	snprintf(path, sizeof path, "%s/stderr.txt", workdir);
+	char *err = slurp(path);
+	const char *t = strstr(err, "total ");
+	double total = 0, page_total = 0;
+	assert_non_null(t);
+	assert_int_equal(sscanf(t, "total %lf s", &total), 1);
+	const char *q = strstr(page, "this page included, took ");
+	assert_non_null(q);
+	assert_int_equal(sscanf(q, "this page included, took %lf s", &page_total), 1);
+	assert_true(total == page_total);
+	free(err);
+	free(page);
+}
+
 /* Headless Chromium's screenshot of the page: a real, mostly light page
  * with text, tables and pictures in it. */
 static void test_page_in_chromium(void **state)
@@ -662,6 +737,7 @@ int main(void)
 		cmocka_unit_test(test_every_clip),
 		cmocka_unit_test(test_scene_tables),
 		cmocka_unit_test(test_renders),
+		cmocka_unit_test(test_joint_truths),
 		cmocka_unit_test(test_page_in_chromium),
 		cmocka_unit_test(test_bad_arguments),
 	};

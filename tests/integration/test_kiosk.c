@@ -197,6 +197,41 @@ static void test_play_pause_and_view(void **state)
 	assert_true(hud_line_diff(&a, &b, 1) > 0);
 }
 
+/* Skin-toned or text pixels differ between two frames in a box. */
+static long box_diff(const image *x, const image *y, int x0, int y0, int x1, int y1)
+{
+	long n = 0;
+	for (int r = y0; r < y1; r++)
+		for (int c = x0; c < x1; c++)
+			n += memcmp(&x->px[(r * W + c) * 4], &y->px[(r * W + c) * 4], 3) != 0;
+	return n;
+}
+
+/* The visitor's screen: the methods' names large at the foot with their
+ * sentence, no figures at the top; PAUSED across the top only while paused. */
+static void test_visitor_hud(void **state)
+{
+	(void)state;
+	char extra[256];
+	write_text(script_path, "50 PLAY press\n60 PLAY release\n");
+	snprintf(extra, sizeof extra, "--algo compare --hud=visitor --input script:%s", script_path);
+	assert_int_equal(run("v", extra, 12), 0);
+	assert_int_equal(run("e", "--algo compare --hud engineer", 12), 0);
+	load("v", 5, &a);
+	load("e", 5, &b);
+	/* engineer's figures at the top left, none for the visitor */
+	assert_true(hud_line_diff(&a, &b, 0) > 0);
+	/* the visitor's labels are larger: more of the foot differs */
+	assert_true(box_diff(&a, &b, 0, H - 60, W, H) > 500);
+	/* paused at 60 ms (file 9 on): the badge across the top */
+	load("v", 12, &b);
+	long badge = box_diff(&a, &b, W / 4, 10, 3 * W / 4, 60);
+	if (badge < 100)
+		fail_msg("no PAUSED badge: %ld pixels differ", badge);
+	load("v", 4, &b);
+	assert_int_equal(box_diff(&a, &b, W / 4, 10, 3 * W / 4, 36), 0);
+}
+
 /* Frames in an AMC: its lines that are a bare frame number. */
 static long amc_frames(const char *path)
 {
@@ -351,6 +386,7 @@ int main(void)
 		cmocka_unit_test(test_script_switches_algorithm_at_its_frames),
 		cmocka_unit_test(test_play_pause_and_view),
 		cmocka_unit_test(test_headless_pause_ends),
+		cmocka_unit_test(test_visitor_hud),
 		cmocka_unit_test(test_notify_signals_and_watchdog),
 		cmocka_unit_test(test_bad_board_config_names_file_line_key),
 	};

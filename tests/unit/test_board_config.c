@@ -44,6 +44,7 @@ static void test_rpi4_board(void **state)
 	assert_int_equal(cfg.width, 1920);
 	assert_int_equal(cfg.height, 1080);
 	assert_int_equal(cfg.rotation, 0);
+	assert_int_equal(cfg.hud, BOARD_HUD_VISITOR);
 	for (int b = 0; b < PLAYER_BTN_COUNT; b++) {
 		assert_true(cfg.button[b].present);
 		assert_int_equal(cfg.button[b].line, lines[b]);
@@ -99,6 +100,7 @@ static void test_inheritance_and_syntax(void **state)
 	assert_false(cfg.button[PLAYER_BTN_PLAY].present);
 	assert_string_equal(cfg.slot[0], "/data/a#1.skn");
 	assert_int_equal(cfg.rotation, -1);            /* not given */
+	assert_int_equal(cfg.hud, -1);
 }
 
 typedef struct bad_case {
@@ -115,6 +117,7 @@ static void test_errors_name_line_and_key(void **state)
 		{ "[display]\nsize = 1280*720\n", 2, "key 'size' in [display]: expected WxH" },
 		{ "[display]\nplatform = wayland\n", 2, "key 'platform'" },
 		{ "[display]\ncolour = red\n", 2, "unknown key 'colour' in [display]" },
+		{ "[display]\n\nhud = tourist\n", 3, "key 'hud' in [display]: expected visitor, engineer or off, found 'tourist'" },
 		{ "\n\n[button.play]\nline = seventeen\n", 4, "key 'line' in [button.play]: expected a line offset" },
 		{ "[button.play]\nactive = sideways\n", 2, "key 'active' in [button.play]: expected high or low" },
 		{ "[button.play]\nbias = strong\n", 2, "key 'bias'" },

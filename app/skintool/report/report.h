@@ -49,6 +49,13 @@ typedef struct report_extreme {
 typedef struct report_algo {
 	report_extreme vol_min, vol_max, rad_min, rad_max;
 	report_extreme reg_min[REGION_COUNT], reg_max[REGION_COUNT]; /* value NAN: never measured */
+	/* the volume of the skin around each joint region over its volume as
+	 * bound (compare_region_volume.c): smallest and largest; NAN: none */
+	report_extreme rvol_min[REGION_COUNT], rvol_max[REGION_COUNT];
+	/* the region's skin turned inside out round its joint in some frame
+	 * (the measure's sum went through zero: a deep fold, skin through the
+	 * joint): no figure */
+	uint8_t rvol_folded[REGION_COUNT];
 	double vol_dev;             /* max over frames of |1 - volume_ratio| */
 	long vol_dev_frame;
 } report_algo;
@@ -122,6 +129,7 @@ typedef struct report {
 	int region_verts[REGION_COUNT];
 	long frames;
 	double seconds;             /* measuring the clip */
+	double total_seconds;       /* the whole command, as its last line says */
 	report_algo algo[SKIN_ALGO_COUNT];
 	report_extreme rel_min;     /* worst LBS - DQBS over the clip */
 	/* at DQBS's largest volume deviation: the volume where the skin passes

@@ -93,8 +93,77 @@ static void head(FILE *f, const report *r)
 	fputs("</code>, mesh: ", f);
 	put_escaped(f, r->mesh_name);
 	fprintf(f, " (%d vertices, %d triangles), weights %s. %ld frames, each skinned with LBS, DQBS and "
-		"fixed-point DQBS and measured in %.1f s. Numbers per frame: <a href=\"metrics.csv\">metrics.csv</a>.</p>\n",
-		r->vert_count, r->tri_count, r->weights, r->frames, r->seconds);
+		"fixed-point DQBS and measured in %.2f s; the whole command, binding, renders, charts and this "
+		"page included, took %.2f s. Numbers per frame: <a href=\"metrics.csv\">metrics.csv</a>.</p>\n",
+		r->vert_count, r->tri_count, r->weights, r->frames, r->seconds, r->total_seconds);
+}
+
+/* A region's worst loss and largest gain of its own volume, in percent. */
+static int region_volume(const report_algo *a, int g, double *loss, double *gain)
+{
+	if (isnan(a->rvol_min[g].value) || a->rvol_folded[g])
+		return 0;
+	*loss = 100.0 * (1.0 - fmin(a->rvol_min[g].value, 1.0));
+	*gain = 100.0 * (fmax(a->rvol_max[g].value, 1.0) - 1.0);
+	return 1;
+}
+
+/* Where DQBS wins (the skin around a joint loses less volume) and where it
+ * loses (it swells more), region by region, with the figures. */
+static void joint_verdicts(FILE *f, const report *r)
+{
+	const report_algo *l = &r->algo[SKIN_LBS], *d = &r->algo[SKIN_DQBS];
+	int wins = 0, loses = 0;
+	for (int pass = 0; pass < 2; pass++) {
+		fprintf(f, "<p class=\"verdict\" id=\"verdict-%s\">%s", pass ? "dqbs-bulges" : "dqbs-keeps",
+			pass ? "Where DQBS swells more than LBS: " : "Where DQBS keeps more volume than LBS: ");
+		int n = 0;
+		for (int g = 0; g < REGION_COUNT; g++) {
+			double ll, lg, dl, dg;
+			if (!region_volume(l, g, &ll, &lg) || !region_volume(d, g, &dl, &dg))
+				continue;
+			if (!pass && dl + 0.1 < ll)
+				fprintf(f, "%s<b>%s</b> (loses %.1f%% against %.1f%%, LBS's worst at frame %ld)", n++ ? "; " : "",
+					report_region_name(g), dl, ll, l->rvol_min[g].frame);
+			if (pass && dg > lg + 0.1)
+				fprintf(f, "%s<b>%s</b> (gains %.1f%% against %.1f%%, frame %ld)", n++ ? "; " : "",
+					report_region_name(g), dg, lg, d->rvol_max[g].frame);
+		}
+		if (!n)
+			fputs("none", f);
+		*(pass ? &loses : &wins) = n;
+		fputs(". <small>The volume of the skin around each joint region (below).</small></p>\n", f);
+	}
+	(void)wins, (void)loses;
+}
+
+static void region_volume_table(FILE *f, const report *r)
+{
+	fputs("<h2>Volume around each joint</h2>\n<table id=\"region-volume\">\n<tr><th>region</th>", f);
+	for (int a = 0; a < SKIN_ALGO_COUNT; a++)
+		fprintf(f, "<th>%s worst loss</th><th>%s largest gain</th>", algo_label[a], algo_label[a]);
+	fputs("</tr>\n", f);
+	for (int g = 0; g < REGION_COUNT; g++) {
+		fprintf(f, "<tr><td>%s</td>", report_region_name(g));
+		for (int a = 0; a < SKIN_ALGO_COUNT; a++) {
+			double loss, gain;
+			if (!region_volume(&r->algo[a], g, &loss, &gain)) {
+				fprintf(f, "<td colspan=\"2\">%s</td>", r->algo[a].rvol_folded[g] ? "folded through "
+					"its joint" : "&ndash;");
+				continue;
+			}
+			fprintf(f, "<td>%.2f%%<small>frame %ld</small></td><td>%.2f%%<small>frame %ld</small></td>", loss,
+				r->algo[a].rvol_min[g].frame, gain, r->algo[a].rvol_max[g].frame);
+		}
+		fputs("</tr>\n", f);
+	}
+	fputs("</table>\n<p class=\"meta\">Each region's skin (the vertices nearest to its joints) as a volume: "
+	      "every triangle with the joint nearest to it makes a tetrahedron, posed with the posed joint, and "
+	      "their sum is compared with the same sum as bound. A collapsing elbow or a candy-wrapper forearm "
+	      "loses volume there; a bulging knee gains. Unlike the radius ratios, contact with another limb "
+	      "does not move it. Where the skin folds through its joint in some frame (a deep knee bend, a "
+	      "shrug, a hand turned past its limits) the sum goes through zero and has no meaning: such a "
+	      "region shows no figure.</p>\n", f);
 }
 
 static void verdicts(FILE *f, const report *r)
@@ -127,6 +196,7 @@ static void verdicts(FILE *f, const report *r)
 	if (d->vol_min.value < 1.0)
 		fprintf(f, " (frame %ld)", d->vol_min.frame);
 	fputs(".</p>\n", f);
+	joint_verdicts(f, r);
 	if (r->rel_min.frame >= 0) {
 		fprintf(f, "<p class=\"verdict\" id=\"verdict-collapse\">Where LBS collapses most compared "
 			"with DQBS: at frame %ld a vertex keeps <b>%.3f less</b> of its radius with LBS, ",
@@ -324,8 +394,9 @@ static void stills(FILE *f, const report *r)
 		fputs("<p>LBS is nowhere thinner than DQBS in this clip: nothing to show.</p>\n", f);
 		return;
 	}
-	fputs("<p>The frames where a vertex of a joint region keeps the least of its radius with LBS "
-	      "compared with DQBS (see <i>LBS minus DQBS</i> below), at least half a second apart. LBS "
+	fputs("<p>For each joint region in turn, the frame where a vertex of that region keeps the least of "
+	      "its radius with LBS compared with DQBS (see <i>LBS minus DQBS</i> below), the worst region "
+	      "first, at least half a second apart. LBS "
 	      "on the left, DQBS on the right, same pose and camera. The ring marks the joint nearest "
 	      "to that vertex; the close-up looks at it from the side it faces.</p>\n", f);
 	for (int i = 0; i < r->still_count; i++) {
@@ -445,6 +516,7 @@ int report_write_html(const report *r, const char *dir)
 	weights_table(f, r);
 	joints_section(f, r);
 	stills(f, r);
+	region_volume_table(f, r);
 	region_table(f, r);
 	charts(f, r);
 	scenes(f, r);
