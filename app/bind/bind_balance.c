@@ -261,6 +261,14 @@ skp_status bind_balance(const skel *s, const skel_pose *pose, const vec3 *pos, i
 			const uint32_t (*tri)[3], int tri_count, skin_weights *w,
 			bind_balance_work *work, bind_balance_info *info, skp_error *err)
 {
+	return bind_balance_watched(s, pose, pos, n, tri, tri_count, w, work, info, NULL, err);
+}
+
+skp_status bind_balance_watched(const skel *s, const skel_pose *pose, const vec3 *pos, int n,
+				const uint32_t (*tri)[3], int tri_count, skin_weights *w,
+				bind_balance_work *work, bind_balance_info *info,
+				const bind_progress *progress, skp_error *err)
+{
 	bind_balance_info local;
 	if (!info)
 		info = &local;
@@ -276,8 +284,11 @@ skp_status bind_balance(const skel *s, const skel_pose *pose, const vec3 *pos, i
 	info->volume = volume_gradient(work, pos, n, tri, tri_count);
 	if (!(fabs(info->volume) > 0.0))
 		return SKP_OK;
-	for (int b = 1; b < s->count; b++)
+	for (int b = 1; b < s->count; b++) {
 		if (rotates(&s->bone[b]))
 			balance_joint(work, s, pose, b, pos, w, info->volume, info);
+		if (progress)
+			progress->step(progress->ctx, b, s->count - 1);
+	}
 	return SKP_OK;
 }

@@ -100,4 +100,17 @@ skp_status bind_balance(const skel *s, const skel_pose *pose, const vec3 *pos, i
 			const uint32_t (*tri)[3], int tri_count, skin_weights *w,
 			bind_balance_work *work, bind_balance_info *info, skp_error *err);
 
+/* Told after each joint: done of total (a front end draws progress; a
+ * large mesh takes seconds). */
+typedef struct bind_progress {
+	void (*step)(void *ctx, int done, int total);
+	void *ctx;
+} bind_progress;
+
+/* bind_balance, calling progress (may be NULL) after each joint. */
+skp_status bind_balance_watched(const skel *s, const skel_pose *pose, const vec3 *pos, int n,
+				const uint32_t (*tri)[3], int tri_count, skin_weights *w,
+				bind_balance_work *work, bind_balance_info *info,
+				const bind_progress *progress, skp_error *err);
+
 #endif

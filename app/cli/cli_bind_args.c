@@ -8,6 +8,7 @@
 #include "cli_mesh_io.h"
 #include "cli_mesh_pick.h"
 #include "cli_mesh_place.h"
+#include "cli_progress.h"
 #include "cli_scratch.h"
 #include "cli_weights.h"
 #include "clock.h"
@@ -119,6 +120,27 @@ int bind_args_is_interchange(const char *path)
 	return 0;
 }
 
+static void balance_step(void *ctx, int done, int total)
+{
+	cli_progress *p = ctx;
+	p->total = total;
+	cli_progress_step(p, done);
+}
+
+/* Balancing a large mesh takes seconds: progress on a terminal. */
+static skp_status balance_watched(bound_body *body, bind_balance_work *work, skp_error *err)
+{
+	static cli_progress pr;
+	const mesh *m = &body->mesh;
+	bind_progress watch = { balance_step, &pr };
+	cli_progress_start(&pr, "balance", "joints", body->skel.count - 1);
+	skp_status rc = bind_balance_watched(&body->skel, &body->pose, m->pos, m->vert_count,
+					     (const uint32_t (*)[3])m->tri, m->tri_count, &body->weights, work,
+					     &body->balance, &watch, err);
+	cli_progress_clear(&pr);
+	return rc;
+}
+
 /* generated: the body is the generated one, where balancing is measured */
 int bind_args_auto_weights(const bind_args *a, int generated, const char *obj, bound_body *body)
 {
@@ -130,9 +152,7 @@ int bind_args_auto_weights(const bind_args *a, int generated, const char *obj, b
 	skp_status rc = bind_weights(&body->rig, m->pos, m->vert_count, &body->weights, &body->info, &err);
 	body->balanced = rc == SKP_OK && (a->balance < 0 ? generated : a->balance);
 	if (body->balanced)
-		rc = bind_balance(&body->skel, &body->pose, m->pos, m->vert_count,
-				  (const uint32_t (*)[3])m->tri, m->tri_count, &body->weights,
-				  work, &body->balance, &err);
+		rc = balance_watched(body, work, &err);
 	body->bind_ns = clock_now_ns() - t0;
 	if (rc != SKP_OK) {
 		fprintf(stderr, "%s: bind: %s\n", obj, err.msg);
