@@ -238,6 +238,8 @@ RUN_DIR    := $(OUT)/run
 DEMO_SKN   := $(OUT)/assets/demo.skn
 MAN_PAGES  := $(OUT)/man/skinplay.1 $(OUT)/man/skintool.1
 
+# kept (not deleted as intermediates: no "rm" line after an install)
+.SECONDARY: $(RUN_DIR)/skinplay $(RUN_DIR)/skintool
 $(RUN_DIR)/%: $(OUT)/%
 	@mkdir -p $(@D)
 	@printf '#!/bin/sh\nexec %s %s "$$@"\n' '$(TARGET_RUN)' '$(abspath $<)' > $@ && chmod 755 $@
