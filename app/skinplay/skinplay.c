@@ -109,15 +109,24 @@ static int setup(player *p)
 
 static void skin_panels(player *p, render_frame *f)
 {
-	cli_skin_frame(&p->skin, p->frame.value);
+	uint64_t t0 = clock_now_ns();
+	fk_pose(p->skin.skel, p->frame.value, &p->skin.pose);
+	uint64_t t1 = clock_now_ns();
+	cli_skin_pose(&p->skin, &p->skin.pose);
+	uint64_t t2 = clock_now_ns();
+	stage_add(&p->stages, STAGE_FK, t1 - t0);
+	stage_add(&p->stages, STAGE_BONES, t2 - t1);
 	f->panel_count = p->panel_count;
 	for (int i = 0; i < p->panel_count; i++) {
 		f->panel[i].algo = p->algo[i];
 		f->panel[i].label = p->panel_count > 1 ? (i ? "DQBS" : "LBS") : NULL;
 		f->panel[i].pos = p->gpu[i] ? NULL : p->pos[i];
 		f->panel[i].nrm = p->gpu[i] ? NULL : p->nrm[i];
-		if (!p->gpu[i])
+		if (!p->gpu[i]) {
+			uint64_t t3 = clock_now_ns();
 			cli_skin_run(&p->skin, p->algo[i], p->pos[i], p->nrm[i]);
+			stage_add(&p->stages, STAGE_SKIN, clock_now_ns() - t3);
+		}
 	}
 	f->pose = &p->skin.pose;
 	f->bones = &p->skin.bones;
@@ -242,10 +251,13 @@ static int draw_one(player *p, timing *t, double fps, render_frame *f)
 	t->skin += t1 - t0;
 	t->upload += t2 - t1;
 	t->draw += t3 - t2;
+	stage_add(&p->stages, STAGE_UPLOAD, t2 - t1);
+	stage_add(&p->stages, STAGE_DRAW, t3 - t2);
 	if (p->disp->present(&err) != 0) {
 		fprintf(stderr, "skinplay: %s: %s\n", p->disp->name, err.msg);
 		return -1;
 	}
+	stage_add(&p->stages, STAGE_SWAP, clock_now_ns() - t3);
 	return 0;
 }
 
@@ -293,12 +305,16 @@ static int play(player *p)
 		if (r <= 0)
 			break;
 		t.decode += clock_now_ns() - t0;
+		stage_add(&p->stages, STAGE_DECODE, clock_now_ns() - t0);
 		if (draw_one(p, &t, fps, &f) < 0)
 			return -1;
 		p->shown = ++shown;
 		t.frames++;
+		uint64_t t_png = clock_now_ns();
 		if (p->o.out_dir && (shown - 1) % p->o.every == 0 && write_png(p, shown) < 0)
 			return -1;
+		stage_add(&p->stages, STAGE_SWAP, clock_now_ns() - t_png);
+		stage_frame_done(&p->stages, p->frame.number);
 		if (p->disp->handle_events)
 			p->disp->handle_events(&quit);
 		uint64_t now = clock_now_ns();
@@ -316,6 +332,8 @@ static int play(player *p)
 		"upload %.2f ms, draw %.2f ms (%s, %dx%d, %s skinning)\n", shown, p->o.amc ? p->o.amc : p->clip, secs, shown / secs,
 		total.decode * 1e-6 / n, total.skin * 1e-6 / n, total.upload * 1e-6 / n, total.draw * 1e-6 / n,
 		p->disp->name, p->info.width, p->info.height, p->gpu[0] ? "GPU" : "CPU");
+	if (p->o.report_timing)
+		stage_report(&p->stages);
 	if (p->o.sheet_path && sheet_write(&p->contact, p->o.sheet_path) < 0)
 		return -1;
 	return 0;

@@ -11,11 +11,13 @@
 #include "display.h"
 #include "skinplay_kiosk.h"
 #include "skinplay_opts.h"
+#include "skinplay_timing.h"
 #include "skinplay_sheet.h"
 
 typedef struct player {
 	play_opts o;
 	long budget, shown;  /* frames to show (-1: until closed) and shown so far */
+	stage_times stages;  /* --report-timing */
 	bound_body body;
 	cli_skin skin;
 	cli_motion motion;

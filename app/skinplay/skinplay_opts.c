@@ -11,7 +11,7 @@
 enum {
 	OPT_IMAGE = 1, OPT_CLIP, OPT_ASF, OPT_AMC, OPT_BVH, OPT_MESH, OPT_ALGO, OPT_SKIN, OPT_PLATFORM, OPT_DEVICE,
 	OPT_ROTATION, OPT_SIZE, OPT_FRAMES, OPT_START, OPT_OUT, OPT_EVERY, OPT_SHEET, OPT_VIEW, OPT_FPS,
-	OPT_HUD_FPS, OPT_REPORT_MEMORY, OPT_BOARD, OPT_INPUT, OPT_PRINT_PLATFORM, OPT_HUD
+	OPT_HUD_FPS, OPT_REPORT_MEMORY, OPT_BOARD, OPT_INPUT, OPT_PRINT_PLATFORM, OPT_HUD, OPT_REPORT_TIMING
 };
 
 static const cli_opt play_opts_table[] = {
@@ -40,6 +40,8 @@ static const cli_opt play_opts_table[] = {
 	{ "hud", 0, "MODE", OPT_HUD, "visitor, engineer or off (default: the board's [display] hud, else engineer)" },
 	{ "hud-fps", 0, "on|off", OPT_HUD_FPS, "engineer HUD: show the measured frame rate (off: reproducible pictures)" },
 	{ "report-memory", 0, NULL, OPT_REPORT_MEMORY, "print the peak and current resident memory at the end" },
+	{ "report-timing", 0, NULL, OPT_REPORT_TIMING, "print per stage (decode, FK, bones, skinning, upload, draw, "
+	  "swap) the mean and worst time at the end" },
 	{ "board", 0, "FILE", OPT_BOARD, "the board's runtime config (board/NAME/board.ini; default: none)" },
 	{ "input", 0, "SPEC", OPT_INPUT, "buttons: gpio, keyboard, script:FILE or none (default: the board's)" },
 	{ "print-platform", 0, NULL, OPT_PRINT_PLATFORM, "print the display backend auto would pick, and exit" },
@@ -153,6 +155,7 @@ static int take(void *ctx, int id, const char *v)
 	case OPT_SHEET: o->sheet_path = v; return 0;
 	case OPT_FPS: return take_rate(o, v);
 	case OPT_REPORT_MEMORY: o->report_memory = 1; return 0;
+	case OPT_REPORT_TIMING: o->report_timing = 1; return 0;
 	case OPT_BOARD: o->board = v; return 0;
 	case OPT_INPUT: o->input = v; return 0;
 	case OPT_PRINT_PLATFORM: o->print_platform = 1; return 0;

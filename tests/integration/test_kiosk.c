@@ -11,6 +11,7 @@
 
 #include <dirent.h>
 #include <errno.h>
+#include <math.h>
 #include <poll.h>
 #include <signal.h>
 #include <stdio.h>
@@ -232,6 +233,32 @@ static void test_visitor_hud(void **state)
 	assert_int_equal(box_diff(&a, &b, W / 4, 10, 3 * W / 4, 36), 0);
 }
 
+/* --report-timing: a row per stage, means that add up to the frame's. */
+static void test_report_timing(void **state)
+{
+	(void)state;
+	assert_int_equal(run("t", "--report-timing", 20), 0);
+	char *log = read_log();
+	static const char *const stages[] = { "decode", "forward kinematics", "bone transforms", "skinning (CPU)",
+					      "upload", "draw", "swap / present" };
+	const char *table = strstr(log, "timing over 20 frames");
+	if (!table)
+		fail_msg("no timing table in:\n%s", log);
+	double sum = 0, frame = 0, mean, worst;
+	for (size_t i = 0; i < sizeof stages / sizeof stages[0]; i++) {
+		const char *row = strstr(table, stages[i]);
+		assert_non_null(row);
+		assert_int_equal(sscanf(row + strlen(stages[i]), "%lf %lf", &mean, &worst), 2);
+		assert_true(mean >= 0 && worst >= mean);
+		sum += mean;
+	}
+	const char *last = strstr(table, "\n  frame ");
+	assert_non_null(last);
+	assert_int_equal(sscanf(last + 9, "%lf", &frame), 1);
+	assert_true(frame > 0 && fabs(sum - frame) <= 0.01 + 0.001 * frame);
+	free(log);
+}
+
 /* Frames in an AMC: its lines that are a bare frame number. */
 static long amc_frames(const char *path)
 {
@@ -387,6 +414,7 @@ int main(void)
 		cmocka_unit_test(test_play_pause_and_view),
 		cmocka_unit_test(test_headless_pause_ends),
 		cmocka_unit_test(test_visitor_hud),
+		cmocka_unit_test(test_report_timing),
 		cmocka_unit_test(test_notify_signals_and_watchdog),
 		cmocka_unit_test(test_bad_board_config_names_file_line_key),
 	};
