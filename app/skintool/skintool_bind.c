@@ -101,13 +101,6 @@ static int bind_take(void *ctx, int id, const char *v)
 	return 0;
 }
 
-static int bind_file(void *ctx, const char *arg)
-{
-	bind_cmd *b = ctx;
-	const char **slots[] = { &b->c.asf, &b->c.mesh };
-	return cli_take_positional(b->c.prog, slots, 2, arg);
-}
-
 static const cli_command bind_command = {
 	.prog = "skintool bind",
 	.usage = "SKELETON MESH [OPTION]... -o W.csv",
@@ -117,7 +110,7 @@ static const cli_command bind_command = {
 		 "a rigged mesh's own. Every choice made for the mesh is said on stderr.",
 	.opts = { tool_opt_skeleton, tool_opt_mesh, tool_opt_output, bind_cmd_opts, bind_opts },
 	.take = bind_take,
-	.positional = bind_file,
+	.positional = tool_files_skel_mesh,
 	.more = "Examples:\n  skintool bind 02.asf base.obj -o w.csv\n"
 		"  skintool bind 02.asf male_base_mesh.glb --weights=mesh -o w.csv\n",
 };

@@ -101,13 +101,6 @@ static int metrics_take(void *ctx, int id, const char *v)
 	return id == OPT_ALGO ? parse_algos(a, v) : id == OPT_SCENE ? parse_scene(a, v) : parse_angle(a, v);
 }
 
-static int metrics_file(void *ctx, const char *arg)
-{
-	metrics_args *a = ctx;
-	const char **slots[] = { &a->c.asf, &a->c.amc, &a->c.mesh };
-	return cli_take_positional(a->c.prog, slots, 3, arg);
-}
-
 static const cli_command metrics_command = {
 	.prog = "skintool metrics",
 	.usage = "SKELETON MOTION MESH [OPTION]...\n  or:  skintool metrics --scene=twist|bend --angle=DEG [--algo=LIST]",
@@ -117,7 +110,7 @@ static const cli_command metrics_command = {
 		 "nearest posed bone over the same distance as bound. A scene prints one row per algorithm.",
 	.opts = { tool_opt_skeleton, tool_opt_motion, tool_opt_mesh, metrics_cmd_opts, bind_opts },
 	.take = metrics_take,
-	.positional = metrics_file,
+	.positional = tool_files_skel_motion_mesh,
 };
 
 static int check_args(metrics_args *a)

@@ -41,13 +41,6 @@ static int skin_take(void *ctx, int id, const char *v)
 	return (a->algo = cli_choice(a->c.prog, "algo", v, algos, SKIN_ALGO_COUNT)) < 0 ? -1 : 0;
 }
 
-static int skin_file(void *ctx, const char *arg)
-{
-	skin_args *a = ctx;
-	const char **slots[] = { &a->c.asf, &a->c.amc, &a->c.mesh };
-	return cli_take_positional(a->c.prog, slots, 3, arg);
-}
-
 static const cli_command skin_command = {
 	.prog = "skintool skin",
 	.usage = "SKELETON MOTION MESH --frame=N --algo=ALGO [OPTION]... -o OUT.obj",
@@ -55,7 +48,7 @@ static const cli_command skin_command = {
 		 "order, skinned normals, the same faces. MOTION.bvh alone stands for SKELETON MOTION.",
 	.opts = { tool_opt_skeleton, tool_opt_motion, tool_opt_mesh, tool_opt_output, skin_cmd_opts, bind_opts },
 	.take = skin_take,
-	.positional = skin_file,
+	.positional = tool_files_skel_motion_mesh,
 };
 
 static int parse_args(skin_args *a, int argc, char **argv)

@@ -2,6 +2,8 @@
 
 #include <string.h>
 
+#include "cli_common.h"
+
 const cli_opt tool_opt_skeleton[] = {
 	{ "skeleton", 0, "S.asf", TOOL_OPT_SKELETON, "the skeleton, ASF or BVH (or the first file named)" },
 	{ NULL, 0, NULL, 0, NULL },
@@ -37,6 +39,20 @@ int tool_common_take(tool_common *c, int id, const char *value)
 	case TOOL_OPT_OUTPUT: c->out = value; return 0;
 	}
 	return 1;
+}
+
+int tool_files_skel_mesh(void *ctx, const char *arg)
+{
+	tool_common *c = ctx;
+	const char **slots[] = { &c->asf, &c->mesh };
+	return cli_take_positional(c->prog, slots, 2, arg);
+}
+
+int tool_files_skel_motion_mesh(void *ctx, const char *arg)
+{
+	tool_common *c = ctx;
+	const char **slots[] = { &c->asf, &c->amc, &c->mesh };
+	return cli_take_positional(c->prog, slots, 3, arg);
 }
 
 static int no_option(void *ctx, int id, const char *value)

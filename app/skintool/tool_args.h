@@ -25,6 +25,12 @@ void tool_common_init(tool_common *c, const char *prog);
  * not one of them (the command's own). */
 int tool_common_take(tool_common *c, int id, const char *value);
 
+/* cli_command.positional for commands whose arguments struct starts with
+ * a tool_common: the files in the order SKELETON MESH, or SKELETON MOTION
+ * MESH. */
+int tool_files_skel_mesh(void *ctx, const char *arg);
+int tool_files_skel_motion_mesh(void *ctx, const char *arg);
+
 /* A command whose only argument is one file (info, repair): parses argv
  * with c (no options of its own, take and positional unused) into *path.
  * 0, 1 (--help/--version answered) or -1 (reported). */
