@@ -164,6 +164,12 @@ void cli_help(const cli_command *c, FILE *f)
 	fprintf(f, "\n" CLI_EXIT_CODES);
 }
 
+int cli_missing(const char *prog, const char *what)
+{
+	fprintf(stderr, "%s: give %s\nTry '%s --help' for more information.\n", prog, what, prog);
+	return -1;
+}
+
 int cli_bad_choice(const char *prog, const char *opt, const char *value, const char *const *choices, int n)
 {
 	fprintf(stderr, "%s: unknown value '%s' for --%s; one of:", prog, value ? value : "", opt);

@@ -44,6 +44,10 @@ const char *cli_program(void);
 /* The --help text. */
 void cli_help(const cli_command *c, FILE *f);
 
+/* "PROG: give WHAT" and the hint to --help, on stderr: -1 (a command's
+ * files or required options missing). */
+int cli_missing(const char *prog, const char *what);
+
 /* "PROG: unknown value 'V' for --OPT; one of: a, b, c": -1. */
 int cli_bad_choice(const char *prog, const char *opt, const char *value, const char *const *choices, int n);
 

@@ -224,8 +224,7 @@ int play_parse(play_opts *o, int argc, char **argv)
 	}
 	/* with --board the show may come from its [storage] slots (skinplay_kiosk.c) */
 	if (!o->image_count && !o->board && (!o->asf || !o->amc)) {
-		fprintf(stderr, PROG ": give --image, or --asf and --amc, or --bvh\nTry 'skinplay --help' for more information.\n");
-		return -1;
+		return cli_missing(PROG, "--image, or --asf and --amc, or --bvh");
 	}
 	return 0;
 }

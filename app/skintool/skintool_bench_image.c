@@ -201,10 +201,8 @@ int cmd_bench_image(int argc, char **argv)
 	const char *path = a.path, *const *amc = a.amc;
 	long runs = a.runs;
 	int amc_count = a.amc_count;
-	if (!path) {
-		fprintf(stderr, "skintool bench-image: give SHOW.skn\nTry 'skintool bench-image --help' for more information.\n");
-		return 1;
-	}
+	if (!path)
+		return -cli_missing(bench_image_command.prog, "SHOW.skn");
 	first_frame_ns best = best_first_frame(path, runs);
 	if (best.open == UINT64_MAX)
 		return 1;

@@ -121,7 +121,6 @@ int cmd_bench_parse(int argc, char **argv)
 		       f.frames, f.mb_s, f.frames_s, f.mb_s / base.mb_s);
 	}
 	if (!measured)
-		return fprintf(stderr, "skintool bench-parse: give a motion file\n"
-			       "Try 'skintool bench-parse --help' for more information.\n"), 1;
+		return -cli_missing(bench_parse_command.prog, "a motion file");
 	return 0;
 }

@@ -78,9 +78,7 @@ static int parse_args(compare_args *a, int argc, char **argv)
 		return rc;
 	cli_bvh_slots(&a->asf, &a->amc, NULL);
 	if (!a->asf || !a->amc || !a->out) {
-		fprintf(stderr, "skintool compare: give SKELETON MOTION and -o DIR\n"
-			"Try 'skintool compare --help' for more information.\n");
-		return -1;
+		return cli_missing(compare_command.prog, "SKELETON MOTION and -o DIR");
 	}
 	if (a->renders < 0 || a->renders > REPORT_MAX_STILLS) {
 		fprintf(stderr, "skintool compare: --renders takes 0 to %d, got %ld\n", REPORT_MAX_STILLS,

@@ -85,9 +85,7 @@ static int parse(convert_args *a, int argc, char **argv)
 		return rc;
 	cli_bvh_slots(&a->skel_path, &a->motion_path, &c.next);
 	if (!a->skel_path || !a->motion_path || !a->out || c.next) {
-		fprintf(stderr, "skintool convert: give SKELETON.asf MOTION.amc or IN.bvh, and -o OUT\n"
-			"Try 'skintool convert --help' for more information.\n");
-		return -1;
+		return cli_missing(convert_command.prog, "SKELETON.asf MOTION.amc or IN.bvh, and -o OUT");
 	}
 	if (!ends_with(a->out, ".bvh") && !ends_with(a->out, ".asf")) {
 		fprintf(stderr, "skintool convert: -o: expected a name ending in .bvh or .asf, got '%s'\n", a->out);

@@ -77,11 +77,8 @@ int cmd_fk(int argc, char **argv)
 	const char *asf = args.asf, *amc = args.amc;
 	long only = args.only;
 	cli_bvh_slots(&asf, &amc, NULL);
-	if (!asf || !amc) {
-		fprintf(stderr, "skintool fk: give SKELETON.asf MOTION.amc, or MOTION.bvh\n"
-			"Try 'skintool fk --help' for more information.\n");
-		return 1;
-	}
+	if (!asf || !amc)
+		return -cli_missing(fk_command.prog, "SKELETON.asf MOTION.amc, or MOTION.bvh");
 	if (cli_load_skel(asf, &s) < 0 || cli_motion_open(&m, amc, &s) < 0)
 		return 1;
 	printf("frame,bone,x,y,z,qw,qx,qy,qz\n");

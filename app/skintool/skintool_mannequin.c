@@ -60,9 +60,7 @@ static int parse_args(int argc, char **argv, manq_args *a)
 	if (rc != 0)
 		return rc;
 	if (!a->asf || !a->out) {
-		fprintf(stderr, "skintool mannequin: give SKELETON and -o BODY.obj\n"
-			"Try 'skintool mannequin --help' for more information.\n");
-		return -1;
+		return cli_missing(manq_command.prog, "SKELETON and -o BODY.obj");
 	}
 	if (a->detail < MANQ_MIN_DETAIL || a->detail > MANQ_MAX_DETAIL) {
 		fprintf(stderr, "skintool mannequin: --detail must be %d..%d, got %ld\n",

@@ -148,9 +148,7 @@ static int pack_parse(pack_args *p, int argc, char **argv)
 		p->amc_count++;
 	}
 	if (!p->asf || !p->amc_count || !p->out) {
-		fprintf(stderr, "skintool pack: give SKELETON MOTION... and -o SHOW.skn\n"
-			"Try 'skintool pack --help' for more information.\n");
-		return -1;
+		return cli_missing(pack_command.prog, "SKELETON MOTION... and -o SHOW.skn");
 	}
 	return 0;
 }

@@ -79,15 +79,12 @@ int tool_one_file(const cli_command *c, int argc, char **argv, const char **path
 	cmd.positional = one_file;
 	*path = NULL;
 	int rc = cli_parse(&cmd, (void *)path, argc, argv, 0);
-	if (rc == 0 && !*path) {
-		fprintf(stderr, "%s: give the image file\nTry '%s --help' for more information.\n", c->prog, c->prog);
-		return -1;
-	}
+	if (rc == 0 && !*path)
+		return cli_missing(c->prog, "the image file");
 	return rc;
 }
 
 int tool_missing(const tool_common *c, const char *what)
 {
-	fprintf(stderr, "%s: give %s\nTry '%s --help' for more information.\n", c->prog, what, c->prog);
-	return 1;
+	return -cli_missing(c->prog, what);
 }
