@@ -82,13 +82,15 @@ typedef struct skin_bones {
 #ifdef SKP_SIMD_AVX2
 	/* The DQBS sign fix depends only on the pair (pivot bone, bone): the
 	 * decision for every pair, computed once per frame with the dot
-	 * product the scalar kernel uses (fixed point for flip_x, float for
-	 * flip_f), so the SIMD kernels look it up instead of recomputing it
-	 * per vertex: a mask, -1 (flip) or 0. Only the AVX2 kernels read them
-	 * (and fdq_halves below), so other boards neither store nor compute
-	 * them. */
+	 * product the scalar kernel uses, so the SIMD kernels look it up
+	 * instead of recomputing it per vertex. flip_x (fixed point) holds a
+	 * mask, -1 (flip) or 0, for the fixed kernel's gathers; flip_f
+	 * (float) holds the sign bit, -0.0f (flip) or 0.0f, which the float
+	 * kernel broadcasts and xors into a bone's row. Only the AVX2
+	 * kernels read them (and fdq_halves below), so other boards neither
+	 * store nor compute them. */
 	int32_t flip_x[SKP_MAX_BONES + 1][SKP_MAX_BONES + 1];
-	int32_t flip_f[SKP_MAX_BONES + 1][SKP_MAX_BONES + 1];
+	float flip_f[SKP_MAX_BONES + 1][SKP_MAX_BONES + 1];
 	/* fdq with every component c split as c = hi * 2^16 + lo, lo and hi
 	 * signed 16-bit halves, laid out per bone as lo of components 0-3,
 	 * hi of 0-3, lo of 4-7, hi of 4-7: a 16-bit unpack of two bones' rows

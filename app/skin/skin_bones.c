@@ -41,7 +41,7 @@ static void compute_flips(skin_bones *out)
 		for (int c = 0; c < n; c++) {
 			int k = slots[c];
 			out->flip_x[p][k] = fx_quat_dot(out->fdq[k].real, out->fdq[p].real) < 0 ? -1 : 0;
-			out->flip_f[p][k] = quat_dot(out->dq[k].real, out->dq[p].real) < 0.0f ? -1 : 0;
+			out->flip_f[p][k] = quat_dot(out->dq[k].real, out->dq[p].real) < 0.0f ? -0.0f : 0.0f;
 		}
 	}
 }

@@ -105,31 +105,23 @@ typedef struct dq8 {
 
 /* Weighted sum with each influence's sign flipped when its real part
  * points away from the pivot (influence 0, the largest weight): the flip
- * per bone pair is looked up (flip_f, the scalar kernel's own test), the
- * signed weights staged in memory and broadcast per vertex. */
+ * per bone pair is looked up (flip_f, the scalar kernel's own test) and
+ * xored into the bone's row as it is loaded, per vertex like the rows:
+ * gathering the flips into lanes cost a third of the kernel's time. */
 static inline __attribute__((always_inline)) dq8 dq_blend8(const skin_soa *in, const skin_bones *b, int v)
 {
-	float ws[SKP_MAX_INFLUENCES][SKIN_LANES] __attribute__((aligned(32)));
-#pragma GCC unroll 4
-	for (int k = 0; k < SKP_MAX_INFLUENCES; k++) {
-		__m256 w = _mm256_load_ps(in->weight[k] + v);
-		if (k) {
-			__m256i neg = skin_flip_mask(&b->flip_f[0][0], in->bone[0], in->bone[k], v);
-			w = _mm256_xor_ps(w, _mm256_and_ps(_mm256_castsi256_ps(neg), _mm256_set1_ps(-0.0f)));
-		}
-		_mm256_store_ps(ws[k], w);
-	}
-	/* read back through memory: forwarded in registers, GCC broadcasts
-	 * them with shuffles, where a broadcast load costs only a load */
-	__asm__("" : "+m"(ws));
 	__m256 r[SKIN_LANES];
 #pragma GCC unroll 8
 	for (int j = 0; j < SKIN_LANES; j++) {
-		__m256 acc = _mm256_mul_ps(_mm256_broadcast_ss(&ws[0][j]), _mm256_loadu_ps(b->dq8[in->bone[0][v + j]]));
+		const float *flip = b->flip_f[in->bone[0][v + j]];
+		__m256 acc = _mm256_mul_ps(_mm256_broadcast_ss(in->weight[0] + v + j),
+					   _mm256_loadu_ps(b->dq8[in->bone[0][v + j]]));
 #pragma GCC unroll 4
-		for (int k = 1; k < SKP_MAX_INFLUENCES; k++)
-			acc = _mm256_fmadd_ps(_mm256_broadcast_ss(&ws[k][j]), _mm256_loadu_ps(b->dq8[in->bone[k][v + j]]),
-					      acc);
+		for (int k = 1; k < SKP_MAX_INFLUENCES; k++) {
+			int bone = in->bone[k][v + j];
+			__m256 row = _mm256_xor_ps(_mm256_loadu_ps(b->dq8[bone]), _mm256_broadcast_ss(flip + bone));
+			acc = _mm256_fmadd_ps(_mm256_broadcast_ss(in->weight[k] + v + j), row, acc);
+		}
 		r[j] = acc;
 	}
 	skin_transpose8(r);
@@ -152,31 +144,48 @@ static v3x8 madd8(v3x8 a, v3x8 b, __m256 s)
 	return r;
 }
 
-/* v + 2 r x (r x v + w v): rotation by the unit quaternion (w, r) */
-static v3x8 rotate8(__m256 w, v3x8 r, v3x8 v)
+static v3x8 add8(v3x8 a, v3x8 b)
 {
-	v3x8 t = madd8(cross8(r, v), v, w);
-	return madd8(v, cross8(r, t), _mm256_set1_ps(2.0f));
+	v3x8 r = { _mm256_add_ps(a.x, b.x), _mm256_add_ps(a.y, b.y), _mm256_add_ps(a.z, b.z) };
+	return r;
+}
+
+/* 2 / |real|^2: an approximate reciprocal and one Newton step (relative
+ * error about 1e-7, far inside the kernels' tolerance), where normalising
+ * the blend would cost a square root and a division. */
+static __m256 two_over_norm2(const dq8 *d)
+{
+	__m256 n2 = _mm256_fmadd_ps(d->rw, d->rw, _mm256_fmadd_ps(d->rx, d->rx,
+				    _mm256_fmadd_ps(d->ry, d->ry, _mm256_mul_ps(d->rz, d->rz))));
+	__m256 y = _mm256_rcp_ps(n2);
+	y = _mm256_mul_ps(y, _mm256_fnmadd_ps(n2, y, _mm256_set1_ps(2.0f)));
+	return _mm256_add_ps(y, y);
+}
+
+/* The unnormalised blend moves v to v + s (r x (r x v + w v + dv) + w dv -
+ * dw r) with s = 2 / |real|^2 (fx_dq_transform_blend's form): the same as
+ * normalising first and applying the rotation and translation, with one
+ * cross product fewer and no square root. A normal takes the rotation
+ * only. */
+static v3x8 move8(const dq8 *d, __m256 s, v3x8 v, int with_dual)
+{
+	v3x8 r = { d->rx, d->ry, d->rz }, dv = { d->dx, d->dy, d->dz };
+	v3x8 a = madd8(cross8(r, v), v, d->rw);
+	if (with_dual)
+		a = add8(a, dv);
+	v3x8 b = cross8(r, a);
+	if (with_dual)
+		b = madd8(madd8(b, dv, d->rw), r, _mm256_sub_ps(_mm256_setzero_ps(), d->dw));
+	return madd8(v, b, s);
 }
 
 void skin_dqbs_avx2(const skin_soa *in, const skin_bones *b, int first, int end, const skin_out *out)
 {
-	const __m256 two = _mm256_set1_ps(2.0f);
 	for (int v = first; v < end; v += SKIN_LANES) {
 		dq8 d = dq_blend8(in, b, v);
-		__m256 n2 = _mm256_fmadd_ps(d.rw, d.rw, _mm256_fmadd_ps(d.rx, d.rx,
-					    _mm256_fmadd_ps(d.ry, d.ry, _mm256_mul_ps(d.rz, d.rz))));
-		__m256 inv = _mm256_div_ps(_mm256_set1_ps(1.0f), _mm256_sqrt_ps(n2));
-		__m256 rw = _mm256_mul_ps(d.rw, inv), dw = _mm256_mul_ps(d.dw, inv);
-		v3x8 r = { _mm256_mul_ps(d.rx, inv), _mm256_mul_ps(d.ry, inv), _mm256_mul_ps(d.rz, inv) };
-		v3x8 dv = { _mm256_mul_ps(d.dx, inv), _mm256_mul_ps(d.dy, inv), _mm256_mul_ps(d.dz, inv) };
-		/* translation 2 (w_r d_v - w_d r_v + r_v x d_v) */
-		v3x8 t = cross8(r, dv);
-		t = madd8(t, dv, rw);
-		t = madd8(t, r, _mm256_sub_ps(_mm256_setzero_ps(), dw));
-		v3x8 p = rotate8(rw, r, load3(in->px, in->py, in->pz, v));
-		p = madd8(p, t, two);
-		v3x8 n = rotate8(rw, r, load3(in->nx, in->ny, in->nz, v));
+		__m256 s = two_over_norm2(&d);
+		v3x8 p = move8(&d, s, load3(in->px, in->py, in->pz, v), 1);
+		v3x8 n = move8(&d, s, load3(in->nx, in->ny, in->nz, v), 0);
 		int valid = end - v < SKIN_LANES ? end - v : SKIN_LANES;
 		skin_store_xyz8(out->pos + 3 * v, p.x, p.y, p.z, valid);
 		skin_store_xyz8(out->nrm + 3 * v, n.x, n.y, n.z, valid);
