@@ -82,24 +82,25 @@ typedef struct skin_bones {
 #ifdef SKP_SIMD_AVX2
 	/* The DQBS sign fix depends only on the pair (pivot bone, bone): the
 	 * decision for every pair, computed once per frame with the dot
-	 * product the scalar kernel uses, so the SIMD kernels look it up
-	 * instead of recomputing it per vertex. flip_x (fixed point) holds a
-	 * mask, -1 (flip) or 0, for the fixed kernel's gathers; flip_f
-	 * (float) holds the sign bit, -0.0f (flip) or 0.0f, which the float
-	 * kernel broadcasts and xors into a bone's row. Only the AVX2
-	 * kernels read them (and fdq_halves below), so other boards neither
-	 * store nor compute them. */
-	int32_t flip_x[SKP_MAX_BONES + 1][SKP_MAX_BONES + 1];
+	 * product the scalar kernel uses, so the SIMD kernels look it up per
+	 * vertex and bone (as they load the bone's row) instead of
+	 * recomputing it. flip_f (float) holds the sign bit, -0.0f (flip) or
+	 * 0.0f, which the float kernel xors into the row; flip_x (fixed
+	 * point) 1 (flip) or 0, which picks the negated or the plain row of
+	 * fdq_halves. Only the AVX2 kernels read them, so other boards
+	 * neither store nor compute them. */
 	float flip_f[SKP_MAX_BONES + 1][SKP_MAX_BONES + 1];
-	/* fdq with every component c split as c = hi * 2^16 + lo, lo and hi
-	 * signed 16-bit halves, laid out per bone as lo of components 0-3,
-	 * hi of 0-3, lo of 4-7, hi of 4-7: a 16-bit unpack of two bones' rows
-	 * then pairs their lo (or hi) halves component by component, and the
-	 * AVX2 fixed kernel blends them with 16-bit multiply-adds. simd_ok is
-	 * 0 when a dual component is 2^26 (1024 units) or longer: beyond that
-	 * the kernel's 32-bit intermediates could overflow where the scalar
-	 * kernel saturates, so it takes the scalar path for the frame. */
-	int16_t fdq_halves[SKP_MAX_BONES + 1][16];
+	uint8_t flip_x[SKP_MAX_BONES + 1][SKP_MAX_BONES + 1];
+	/* fdq ([0]) and its negation ([1]) with every component c split as
+	 * c = hi * 2^16 + lo, lo and hi signed 16-bit halves, laid out as lo
+	 * of components 0-3, hi of 0-3, lo of 4-7, hi of 4-7: a 16-bit unpack
+	 * of two bones' rows then pairs their lo (or hi) halves component by
+	 * component, and the AVX2 fixed kernel blends them with 16-bit
+	 * multiply-adds. simd_ok is 0 when a dual component is 2^26 (1024
+	 * units) or longer: beyond that the kernel's 32-bit intermediates
+	 * could overflow where the scalar kernel saturates, so it takes the
+	 * scalar path for the frame. */
+	int16_t fdq_halves[SKP_MAX_BONES + 1][2][16];
 	int simd_ok;
 #endif
 } skin_bones;

@@ -40,9 +40,19 @@ static void compute_flips(skin_bones *out)
 		int p = slots[a];
 		for (int c = 0; c < n; c++) {
 			int k = slots[c];
-			out->flip_x[p][k] = fx_quat_dot(out->fdq[k].real, out->fdq[p].real) < 0 ? -1 : 0;
+			out->flip_x[p][k] = fx_quat_dot(out->fdq[k].real, out->fdq[p].real) < 0;
 			out->flip_f[p][k] = quat_dot(out->dq[k].real, out->dq[p].real) < 0.0f ? -0.0f : 0.0f;
 		}
+	}
+}
+
+static void split_halves(int16_t dst[16], const int32_t c[8])
+{
+	for (int i = 0; i < 8; i++) {
+		int16_t lo = (int16_t)(uint16_t)((uint32_t)c[i] & 0xffff);
+		int16_t hi = (int16_t)(((int64_t)c[i] - lo) / 65536);
+		dst[i / 4 * 8 + i % 4] = lo;
+		dst[i / 4 * 8 + 4 + i % 4] = hi;
 	}
 }
 
@@ -53,18 +63,17 @@ static void compute_halves(skin_bones *out)
 		if (b >= out->count && b != SKIN_IDENTITY_BONE)
 			continue;
 		const fx_dq *d = &out->fdq[b];
-		const int32_t c[8] = { d->real.w, d->real.x, d->real.y, d->real.z,
-				       d->dual.w, d->dual.x, d->dual.y, d->dual.z };
-		for (int i = 0; i < 8; i++) {
-			/* within the limit, hi fits int16 too (real parts are
-			 * at most 2^30) */
-			if (i >= 4 && (c[i] >= SKIN_SIMD_DUAL_LIMIT || c[i] <= -SKIN_SIMD_DUAL_LIMIT))
+		int32_t c[8] = { d->real.w, d->real.x, d->real.y, d->real.z,
+				 d->dual.w, d->dual.x, d->dual.y, d->dual.z };
+		/* within the limit, hi fits int16 too, negated or not (real
+		 * parts are at most 2^30 long) */
+		for (int i = 4; i < 8; i++)
+			if (c[i] >= SKIN_SIMD_DUAL_LIMIT || c[i] <= -SKIN_SIMD_DUAL_LIMIT)
 				out->simd_ok = 0;
-			int16_t lo = (int16_t)(uint16_t)((uint32_t)c[i] & 0xffff);
-			int16_t hi = (int16_t)(((int64_t)c[i] - lo) / 65536);
-			out->fdq_halves[b][i / 4 * 8 + i % 4] = lo;
-			out->fdq_halves[b][i / 4 * 8 + 4 + i % 4] = hi;
-		}
+		split_halves(out->fdq_halves[b][0], c);
+		for (int i = 0; i < 8; i++)
+			c[i] = -c[i];
+		split_halves(out->fdq_halves[b][1], c);
 	}
 }
 #endif

@@ -1,5 +1,5 @@
 /* Shared by the AVX2 kernels: moving eight vertices between the
- * per-vertex (AoS) and per-lane (SoA) layouts, and the DQBS flip lookup.
+ * per-vertex (AoS) and per-lane (SoA) layouts.
  * No floating-point arithmetic here, so the fixed-point kernel may use
  * them too. */
 #ifndef SKIN_AVX2_H
@@ -34,16 +34,6 @@ static inline void skin_transpose8(__m256 r[8])
 	r[5] = _mm256_permute2f128_ps(s1, s5, 0x31);
 	r[6] = _mm256_permute2f128_ps(s2, s6, 0x31);
 	r[7] = _mm256_permute2f128_ps(s3, s7, 0x31);
-}
-
-/* The flip masks (-1 or 0) of 8 lanes' (pivot bone, bone) pairs, looked up
- * in a (SKP_MAX_BONES + 1)-square table such as skin_bones' flip_x. */
-static inline __m256i skin_flip_mask(const int32_t *flip, const uint16_t *pivot, const uint16_t *bone, int v)
-{
-	__m256i p = _mm256_cvtepu16_epi32(_mm_load_si128((const __m128i *)(pivot + v)));
-	__m256i k = _mm256_cvtepu16_epi32(_mm_load_si128((const __m128i *)(bone + v)));
-	__m256i index = _mm256_add_epi32(_mm256_mullo_epi32(p, _mm256_set1_epi32(SKP_MAX_BONES + 1)), k);
-	return _mm256_i32gather_epi32((const int *)flip, index, 4);
 }
 
 /* 8 xyz triples from three lane registers to 24 interleaved values at dst

@@ -17,16 +17,15 @@ static __m256i load_weights(const fx_w15 *w, int v)
 	return _mm256_cvtepu16_epi32(_mm_load_si128((const __m128i *)(w + v)));
 }
 
-/* Weights with the sign fix (looked up per bone pair, see skin_bones), as
- * 16-bit multiply-add operands: w01 holds the pair (w0, w1), w23 (w2, w3).
- * Slot 0 (the pivot, never flipped) may hold 32768, which int16 cannot: it
- * enters as w0 - 32768, and blend_vertex adds 32768 c / 2^15 = c after the
- * rounding (exact: c is an integer). Returns nonzero when a lane breaks
- * what the 16-bit products need and skin_soa_load guarantees (weights
- * summing to at most 1.0, a full weight only in slot 0): the caller then
- * takes the scalar path. */
-static inline __attribute__((always_inline)) int blend_weights(const skin_soa *in,
-								const skin_bones *b, int v,
+/* Weights as 16-bit multiply-add operands: w01 holds the pair (w0, w1),
+ * w23 (w2, w3); the sign fix flips the bones' rows instead (see blend).
+ * Slot 0 (the pivot) may hold 32768, which int16 cannot: it enters as
+ * w0 - 32768, and blend_vertex adds 32768 c / 2^15 = c after the rounding
+ * (exact: c is an integer). Returns nonzero when a lane breaks what the
+ * 16-bit products need and skin_soa_load guarantees (weights summing to
+ * at most 1.0, a full weight only in slot 0): the caller then takes the
+ * scalar path. */
+static inline __attribute__((always_inline)) int blend_weights(const skin_soa *in, int v,
 								int32_t w01[SKIN_LANES],
 								int32_t w23[SKIN_LANES])
 {
@@ -36,13 +35,10 @@ static inline __attribute__((always_inline)) int blend_weights(const skin_soa *i
 	for (int k = 0; k < SKP_MAX_INFLUENCES; k++) {
 		__m256i x = load_weights(in->fweight[k], v);
 		sum = _mm256_add_epi32(sum, x);
-		if (k == 0) {
+		if (k == 0)
 			x = _mm256_sub_epi32(x, full);
-		} else {
-			__m256i neg = skin_flip_mask(&b->flip_x[0][0], in->bone[0], in->bone[k], v);
+		else
 			bad = _mm256_or_si256(bad, _mm256_cmpeq_epi32(x, full));
-			x = _mm256_sub_epi32(_mm256_xor_si256(x, neg), neg);
-		}
 		w[k] = x;
 	}
 	_mm256_store_si256((__m256i *)w01, _mm256_or_si256(_mm256_and_si256(w[0], low16), _mm256_slli_epi32(w[1], 16)));
@@ -82,7 +78,10 @@ static inline __attribute__((always_inline)) __m256i blend_vertex(const int16_t 
 	return _mm256_add_epi32(sum, _mm256_loadu_si256((const __m256i *)pivot));
 }
 
-/* The blend of one batch from its weights (see blend_weights). */
+/* The blend of one batch from its weights (see blend_weights), each
+ * bone's row negated where the sign fix (flip_x, per bone pair) says: the
+ * same integers as the scalar kernel's negated weight, as w (-c) = (-w) c,
+ * looked up per vertex where gathering the flips into lanes cost more. */
 static inline __attribute__((always_inline)) void blend(const skin_soa *in, const skin_bones *b, int v,
 							  const int32_t w01[SKIN_LANES],
 							  const int32_t w23[SKIN_LANES], __m256i out[8])
@@ -91,9 +90,13 @@ static inline __attribute__((always_inline)) void blend(const skin_soa *in, cons
 #pragma GCC unroll 8
 	for (int j = 0; j < SKIN_LANES; j++) {
 		const int16_t *row[SKP_MAX_INFLUENCES];
+		int pivot = in->bone[0][v + j];
+		row[0] = b->fdq_halves[pivot][0];
 #pragma GCC unroll 8
-		for (int k = 0; k < SKP_MAX_INFLUENCES; k++)
-			row[k] = b->fdq_halves[in->bone[k][v + j]];
+		for (int k = 1; k < SKP_MAX_INFLUENCES; k++) {
+			int bone = in->bone[k][v + j];
+			row[k] = b->fdq_halves[bone][b->flip_x[pivot][bone]];
+		}
 		r[j] = _mm256_castsi256_ps(blend_vertex(row, &b->fdq[in->bone[0][v + j]], w01[j], w23[j]));
 	}
 	skin_transpose8(r);
@@ -277,7 +280,7 @@ static int outside_envelope(const skin_soa *in, int v)
 static void chunk_blend(const skin_soa *in, const skin_bones *b, int v, int batches, chunk *c)
 {
 	for (int i = 0; i < batches; i++)
-		c->bad[i] = blend_weights(in, b, v + i * SKIN_LANES, c->w01[i], c->w23[i]) |
+		c->bad[i] = blend_weights(in, v + i * SKIN_LANES, c->w01[i], c->w23[i]) |
 			    outside_envelope(in, v + i * SKIN_LANES);
 	for (int i = 0; i < batches; i++) {
 		__m256i *d = c->d[i];
