@@ -19,6 +19,7 @@ int cli_skin_init(cli_skin *t, const skel *s, const skel_pose *bind, const mesh 
 	}
 	t->skel = s;
 	t->bind = bind;
+	t->pool = NULL;
 	skin_soa_attach(&t->soa, block, m->vert_count);
 	if (skin_soa_load(&t->soa, m, w, s->count, &err) != SKP_OK) {
 		cli_error(what, &err);
@@ -47,16 +48,48 @@ static void from_q16(const int32_t *in, float *out, int n)
 		out[i] = (float)in[i] * (1.0f / 65536.0f);
 }
 
+void cli_skin_use_workers(cli_skin *t, workers *pool, int split_min)
+{
+	t->pool = pool;
+	t->split_min = split_min;
+}
+
+int cli_skin_threads(const cli_skin *t)
+{
+	return t->pool && t->soa.count >= t->split_min ? workers_count(t->pool) : 1;
+}
+
+typedef struct skin_job {
+	const cli_skin *t;
+	skin_algo algo;
+	skin_out out;
+} skin_job;
+
+static void run_share(void *ctx, int slice, int slices)
+{
+	const skin_job *j = ctx;
+	skin_run_slice(j->algo, &j->t->soa, &j->t->bones, slice, slices, &j->out);
+}
+
+static void run_kernel(cli_skin *t, skin_algo algo, const skin_out *out)
+{
+	skin_job job = { t, algo, *out };
+	if (cli_skin_threads(t) > 1)
+		workers_run(t->pool, run_share, &job);
+	else
+		skin_run(algo, &t->soa, &t->bones, 0, t->soa.count, out);
+}
+
 void cli_skin_run(cli_skin *t, skin_algo algo, float *pos, float *nrm)
 {
 	int n = t->soa.count;
 	if (algo != SKIN_DQBS_FIXED) {
 		skin_out out = { pos, nrm, NULL, NULL };
-		skin_run(algo, &t->soa, &t->bones, 0, n, &out);
+		run_kernel(t, algo, &out);
 		return;
 	}
 	skin_out out = { NULL, NULL, fpos, fnrm };
-	skin_run(algo, &t->soa, &t->bones, 0, n, &out);
+	run_kernel(t, algo, &out);
 	from_q16(fpos, pos, 3 * n);
 	from_q16(fnrm, nrm, 3 * n);
 }

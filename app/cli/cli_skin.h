@@ -7,6 +7,7 @@
 
 #include "amc.h"
 #include "skin.h"
+#include "workers.h"
 
 typedef struct cli_skin {
 	const skel *skel;
@@ -14,6 +15,8 @@ typedef struct cli_skin {
 	skin_soa soa;         /* lives in one static block: one cli_skin at a time */
 	skel_pose pose;       /* the current pose */
 	skin_bones bones;     /* its transforms */
+	workers *pool;        /* NULL: the caller's thread skins alone */
+	int split_min;        /* vertices from which the pool's threads share the mesh */
 } cli_skin;
 
 /* Lays the mesh and its weights out for the kernels (the mesh is bound in
@@ -28,6 +31,16 @@ void cli_skin_frame(cli_skin *t, const float *values);
 
 /* The same for a pose computed elsewhere (the synthetic scene). */
 void cli_skin_pose(cli_skin *t, const skel_pose *pose);
+
+/* After cli_skin_init (which leaves the pool out): from now on meshes of split_min vertices or more are skinned by every
+ * thread of pool, each on its share (results identical to one thread's);
+ * smaller ones on the caller's thread, where waking the pool would cost
+ * more than it saves. pool NULL: always the caller's. */
+void cli_skin_use_workers(cli_skin *t, workers *pool, int split_min);
+
+/* Whether cli_skin_run splits the current mesh across threads: their
+ * count, 1 when it does not. */
+int cli_skin_threads(const cli_skin *t);
 
 /* Skins every vertex with algo in the current pose: 3 floats per vertex
  * into pos and into nrm. */

@@ -9,7 +9,7 @@
 #define STR(x) STR_(x)
 #define DISPLAY_MAX_TEXT STR(SKP_DISPLAY_MAX_W) "x" STR(SKP_DISPLAY_MAX_H)
 
-typedef enum { SEC_NONE, SEC_DISPLAY, SEC_INPUT, SEC_BUTTON, SEC_STORAGE, SEC_LIMITS } section_kind;
+typedef enum { SEC_NONE, SEC_DISPLAY, SEC_INPUT, SEC_BUTTON, SEC_STORAGE, SEC_LIMITS, SEC_SKIN } section_kind;
 
 /* Per-button timing given in the file; -1 inherits [input]'s. */
 typedef struct pending {
@@ -22,6 +22,7 @@ void board_config_defaults(board_config *c)
 	memset(c, 0, sizeof *c);
 	c->rotation = -1;
 	c->hud = -1;
+	c->split_verts = BOARD_SPLIT_VERTS;
 	for (int i = 0; i < PLAYER_BTN_COUNT; i++) {
 		c->button[i].active_low = 1;
 		c->button[i].bias = BOARD_BIAS_PULL_UP;
@@ -199,6 +200,28 @@ static skp_status limits_key(board_config *c, const ini_entry *e, skp_error *err
 	return skp_fail(err, SKP_ERR_SYNTAX, e->line, "unknown key '%s' in [limits] (max_fps)", e->key);
 }
 
+static skp_status skin_key(board_config *c, const ini_entry *e, skp_error *err)
+{
+	long v;
+	if (tok_ieq(e->key, "threads")) {
+		if (tok_ieq(e->value, "auto")) {
+			c->threads = 0;
+			return SKP_OK;
+		}
+		if (get_long(e, 1, BOARD_MAX_THREADS, &v, "auto or a thread count of 1.." STR(BOARD_MAX_THREADS), err) != SKP_OK)
+			return err->code;
+		c->threads = (int)v;
+		return SKP_OK;
+	}
+	if (tok_ieq(e->key, "split_verts")) {
+		if (get_long(e, 1, 100000000, &v, "a vertex count of 1..100000000", err) != SKP_OK)
+			return err->code;
+		c->split_verts = (int)v;
+		return SKP_OK;
+	}
+	return skp_fail(err, SKP_ERR_SYNTAX, e->line, "unknown key '%s' in [skin] (threads, split_verts)", e->key);
+}
+
 /* "button.algo" -> PLAYER_BTN_ALGO; -1 when not a button section. */
 static int button_section(const char *s)
 {
@@ -209,13 +232,13 @@ static int button_section(const char *s)
 
 static skp_status section_of(const ini_entry *e, section_kind *k, int *b, skp_error *err)
 {
-	static const char *const names[] = { "", "display", "input", "button", "storage", "limits" };
+	static const char *const names[] = { "", "display", "input", "button", "storage", "limits", "skin" };
 	*b = button_section(e->section);
 	if (*b >= 0) {
 		*k = SEC_BUTTON;
 		return SKP_OK;
 	}
-	for (int i = 1; i < 6; i++)
+	for (int i = 1; i < 7; i++)
 		if (i != SEC_BUTTON && tok_ieq(e->section, names[i])) {
 			*k = (section_kind)i;
 			return SKP_OK;
@@ -223,7 +246,7 @@ static skp_status section_of(const ini_entry *e, section_kind *k, int *b, skp_er
 	if (!*e->section)
 		return skp_fail(err, SKP_ERR_SYNTAX, e->line, "key '%s' before any [section]", e->key);
 	return skp_fail(err, SKP_ERR_SYNTAX, e->line,
-			"key '%s' in unknown section [%s] (display, input, button.algo|play|next|view, storage, limits)",
+			"key '%s' in unknown section [%s] (display, input, button.algo|play|next|view, storage, limits, skin)",
 			e->key, e->section);
 }
 
@@ -260,6 +283,7 @@ skp_status board_config_read(board_config *c, skp_reader rd, skp_error *err)
 			case SEC_INPUT: st = input_key(c, &p, &e, err); break;
 			case SEC_BUTTON: st = button_key(c, &p, b, &e, err); break;
 			case SEC_STORAGE: st = storage_key(c, &e, err); break;
+			case SEC_SKIN: st = skin_key(c, &e, err); break;
 			default: st = limits_key(c, &e, err); break;
 			}
 		}

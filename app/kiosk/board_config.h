@@ -9,6 +9,9 @@
  *   [storage]  slot = PATH   (one line per image slot)
  *   [limits]   max_fps = 60   (frame-rate cap on a display; the watchdog
  *              period is the unit's WatchdogSec)
+ *   [skin]     threads = auto | N   split_verts = 50000   (skinplay --threads:
+ *              CPU skinning on N threads, auto one per core, for meshes
+ *              of split_verts vertices or more)
  *
  * Unknown sections and keys are errors naming the line and the key. */
 #ifndef BOARD_CONFIG_H
@@ -67,10 +70,17 @@ typedef struct board_config {
 	char slot[SKP_MAX_SLOTS][SKP_MAX_PATH];
 	int slot_count;
 	int max_fps;             /* 0: no cap beyond the display's */
+	int threads;             /* skinning threads; 0: one per core */
+	int split_verts;         /* meshes this big or bigger use them */
 } board_config;
 
 #define BOARD_DEBOUNCE_MS 30
 #define BOARD_LONG_PRESS_MS 800
+#define BOARD_MAX_THREADS 16
+/* Below this many vertices one thread skins: waking the others costs
+ * more than they save (skintool bench --verts=N --threads=2 on the
+ * development machine: two threads win from about 50,000). */
+#define BOARD_SPLIT_VERTS 50000
 
 void board_config_defaults(board_config *c);
 

@@ -40,3 +40,12 @@ void skin_run(skin_algo algo, const skin_soa *in, const skin_bones *b, int first
 	case SKIN_SHOW_COUNT: break;
 	}
 }
+
+void skin_run_slice(skin_algo algo, const skin_soa *in, const skin_bones *b, int slice, int slices,
+		    const skin_out *out)
+{
+	int lanes = in->padded / SKIN_LANES;
+	int from = lanes * slice / slices * SKIN_LANES;
+	int to = lanes * (slice + 1) / slices * SKIN_LANES;
+	skin_run(algo, in, b, from, to - from, out);
+}

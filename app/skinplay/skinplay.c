@@ -71,6 +71,23 @@ static int open_display(player *p)
 	return 0;
 }
 
+/* Skinning threads when the board has the cores and the mesh the size for
+ * them to pay (the board's [skin] split_verts); otherwise, or when they
+ * cannot start, the frame loop's thread skins alone. */
+static void start_workers(player *p)
+{
+	int n = p->o.threads > 0 ? p->o.threads : workers_cpu_count();
+	int split = p->kiosk.board.split_verts;
+	if (n < 2 || p->skin.soa.count < split)
+		return;
+	p->pool = workers_start(n);
+	if (!p->pool) {
+		fprintf(stderr, "skinplay: cannot start %d skinning threads: skinning on one\n", n);
+		return;
+	}
+	cli_skin_use_workers(&p->skin, p->pool, split);
+}
+
 static int setup(player *p)
 {
 	if (p->o.image_count ? show_open(&p->show, p->o.image, p->o.image_count, &p->body) < 0
@@ -79,6 +96,7 @@ static int setup(player *p)
 	if (cli_skin_init(&p->skin, &p->body.skel, &p->body.pose, &p->body.mesh, &p->body.weights,
 			   p->o.image_count ? show_path(&p->show) : p->o.mesh ? p->o.mesh : "generated body") < 0)
 		return -1;
+	start_workers(p);
 	float floor_y = frames_first(p);
 	if (isnan(floor_y) || open_display(p) < 0)
 		return -1;
@@ -105,6 +123,17 @@ static int setup(player *p)
 		return -1;
 	}
 	return frames_open(p);
+}
+
+/* " on 2 threads" when the CPU kernels share the mesh, else "" */
+static const char *threads_note(const player *p)
+{
+	static char note[24];
+	int n = cli_skin_threads(&p->skin);
+	note[0] = '\0';
+	if (n > 1)
+		snprintf(note, sizeof note, " on %d threads", n);
+	return note;
 }
 
 static void skin_panels(player *p, render_frame *f)
@@ -329,9 +358,10 @@ static int play(player *p)
 	double n = total.frames ? (double)total.frames : 1.0;
 	double secs = (double)(clock_now_ns() - total.since) * 1e-9;
 	fprintf(stderr, "played %ld frames of %s in %.2f s: %.1f fps; per frame decode %.2f ms, skin %.2f ms, "
-		"upload %.2f ms, draw %.2f ms (%s, %dx%d, %s skinning)\n", shown, p->o.amc ? p->o.amc : p->clip, secs, shown / secs,
-		total.decode * 1e-6 / n, total.skin * 1e-6 / n, total.upload * 1e-6 / n, total.draw * 1e-6 / n,
-		p->disp->name, p->info.width, p->info.height, p->gpu[0] ? "GPU" : "CPU");
+		"upload %.2f ms, draw %.2f ms (%s, %dx%d, %s skinning%s)\n", shown, p->o.amc ? p->o.amc : p->clip, secs,
+		shown / secs, total.decode * 1e-6 / n, total.skin * 1e-6 / n, total.upload * 1e-6 / n,
+		total.draw * 1e-6 / n, p->disp->name, p->info.width, p->info.height, p->gpu[0] ? "GPU" : "CPU",
+		threads_note(p));
 	if (p->o.report_timing)
 		stage_report(&p->stages);
 	if (p->o.sheet_path && sheet_write(&p->contact, p->o.sheet_path) < 0)
@@ -369,6 +399,8 @@ int main(int argc, char **argv)
 		render_shutdown(&p.r);
 		p.disp->shutdown();
 	}
+	if (p.pool)
+		workers_stop(p.pool);
 	if (p.reload && rc == 0) {
 		/* a new show: start over as a fresh process (same pid for systemd) */
 		execv("/proc/self/exe", argv);

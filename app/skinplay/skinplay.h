@@ -20,6 +20,7 @@ typedef struct player {
 	stage_times stages;  /* --report-timing */
 	bound_body body;
 	cli_skin skin;
+	workers *pool;           /* skinning threads (--threads), NULL: one */
 	cli_motion motion;
 	show_source show;  /* --image: frames from a packed image instead */
 	amc_frame frame;

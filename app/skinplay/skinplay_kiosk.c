@@ -47,6 +47,8 @@ static void apply_board(const board_config *b, play_opts *o, int argc, char **ar
 		o->rotation = b->rotation;
 	if (b->hud >= 0 && o->hud < 0)
 		o->hud = b->hud;
+	if (o->threads < 0)
+		o->threads = b->threads;
 	if (b->width && !given(argc, argv, "--size")) {
 		o->width = b->width;
 		o->height = b->height;
@@ -65,6 +67,8 @@ int kiosk_setup(kiosk *k, play_opts *o, int argc, char **argv)
 		apply_board(&k->board, o, argc, argv);
 	if (o->hud < 0)
 		o->hud = BOARD_HUD_ENGINEER;
+	if (o->threads < 0)
+		o->threads = k->board.threads; /* the default: auto */
 	/* no show on the command line: the board's image slots (A/B update) */
 	if (!o->image_count && (!o->asf || !o->amc)) {
 		for (int i = 0; i < k->board.slot_count && o->image_count < 4; i++)

@@ -11,7 +11,8 @@
 enum {
 	OPT_IMAGE = 1, OPT_CLIP, OPT_ASF, OPT_AMC, OPT_BVH, OPT_MESH, OPT_ALGO, OPT_SKIN, OPT_PLATFORM, OPT_DEVICE,
 	OPT_ROTATION, OPT_SIZE, OPT_FRAMES, OPT_START, OPT_OUT, OPT_EVERY, OPT_SHEET, OPT_VIEW, OPT_FPS,
-	OPT_HUD_FPS, OPT_REPORT_MEMORY, OPT_BOARD, OPT_INPUT, OPT_PRINT_PLATFORM, OPT_HUD, OPT_REPORT_TIMING
+	OPT_HUD_FPS, OPT_REPORT_MEMORY, OPT_BOARD, OPT_INPUT, OPT_PRINT_PLATFORM, OPT_HUD, OPT_REPORT_TIMING,
+	OPT_THREADS
 };
 
 static const cli_opt play_opts_table[] = {
@@ -25,6 +26,8 @@ static const cli_opt play_opts_table[] = {
 	{ "mesh", 0, "MESH.obj", OPT_MESH, "the body to skin (default: the generated one)" },
 	{ "algo", 0, "ALGO", OPT_ALGO, "lbs, dqbs, dqbs-fixed or compare (side by side); default dqbs" },
 	{ "skin", 0, "cpu|gpu", OPT_SKIN, "skin on the CPU (default) or in the vertex shader" },
+	{ "threads", 0, "N|auto", OPT_THREADS, "CPU skinning on N threads, auto: one per core, for meshes of the "
+	  "board's [skin] split_verts vertices or more (default: the board's, else auto)" },
 	{ "platform", 0, "NAME", OPT_PLATFORM, "auto, surfaceless, osmesa, kms or x11 (default auto)" },
 	{ "device", 0, "DEV", OPT_DEVICE, "the DRM device for kms (default: the first with a screen)" },
 	{ "rotation", 0, "DEG", OPT_ROTATION, "turn the picture 0, 90, 180 or 270 degrees (portrait screens)" },
@@ -93,6 +96,19 @@ static int take_number(const char *opt, const char *v, long *out, long min)
 	return 0;
 }
 
+static int take_threads(play_opts *o, const char *v)
+{
+	long n;
+	if (!strcmp(v, "auto"))
+		return o->threads = 0, 0;
+	if (cli_parse_long("--threads", v, &n) < 0)
+		return -1;
+	if (n < 1 || n > BOARD_MAX_THREADS)
+		return fprintf(stderr, PROG ": --threads expects auto or 1..%d, got %ld\n", BOARD_MAX_THREADS, n), -1;
+	o->threads = (int)n;
+	return 0;
+}
+
 static int take_rate(play_opts *o, const char *v)
 {
 	char *end;
@@ -156,6 +172,7 @@ static int take(void *ctx, int id, const char *v)
 	case OPT_FPS: return take_rate(o, v);
 	case OPT_REPORT_MEMORY: o->report_memory = 1; return 0;
 	case OPT_REPORT_TIMING: o->report_timing = 1; return 0;
+	case OPT_THREADS: return take_threads(o, v);
 	case OPT_BOARD: o->board = v; return 0;
 	case OPT_INPUT: o->input = v; return 0;
 	case OPT_PRINT_PLATFORM: o->print_platform = 1; return 0;
@@ -198,6 +215,7 @@ int play_parse(play_opts *o, int argc, char **argv)
 	o->every = 1;
 	o->hud_fps = 1;
 	o->hud = -1;
+	o->threads = -1;
 	o->fps = 120.0;
 	int rc = cli_parse(&play_command, o, argc, argv, 1);
 	if (rc != 0)

@@ -102,10 +102,7 @@ static void make_bones(skin_bones *bones)
 static void run_slice(void *ctx, int slice, int slices)
 {
 	bench *b = ctx;
-	int lanes = b->soa.padded / SKIN_LANES;
-	int from = lanes * slice / slices * SKIN_LANES;
-	int to = lanes * (slice + 1) / slices * SKIN_LANES;
-	skin_run(b->algo, &b->soa, &b->bones, from, to - from, &b->out);
+	skin_run_slice(b->algo, &b->soa, &b->bones, slice, slices, &b->out);
 }
 
 /* Seconds per pass of one timed round: passes for at least 50 ms. */

@@ -1,6 +1,7 @@
 #include "workers.h"
 
 #include <pthread.h>
+#include <unistd.h>
 
 struct workers {
 	int count;
@@ -63,6 +64,12 @@ void workers_run(workers *w, workers_fn fn, void *ctx)
 int workers_count(const workers *w)
 {
 	return w->count;
+}
+
+int workers_cpu_count(void)
+{
+	long n = sysconf(_SC_NPROCESSORS_ONLN);
+	return n < 1 ? 1 : n > WORKERS_MAX ? WORKERS_MAX : (int)n;
 }
 
 void workers_stop(workers *w)

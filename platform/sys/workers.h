@@ -15,6 +15,8 @@ workers *workers_start(int threads);
  * all slices are done. */
 void workers_run(workers *w, workers_fn fn, void *ctx);
 int workers_count(const workers *w);
+/* Cores online (at most WORKERS_MAX; 1 when the system does not say). */
+int workers_cpu_count(void);
 void workers_stop(workers *w);
 
 #endif

@@ -259,6 +259,42 @@ static void test_report_timing(void **state)
 	free(log);
 }
 
+/* The board's [skin] threads share the mesh between threads (here from
+ * one vertex on, as a big mesh would): every frame the same pixels as one
+ * thread's, and the summary says how many skinned. A small mesh under the
+ * default split_verts stays on one thread. */
+static void test_skinning_threads(void **state)
+{
+	(void)state;
+	char board[128], extra[256];
+	snprintf(board, sizeof board, "%s/threads.ini", dir);
+	write_text(board, "[skin]\nthreads = 2\nsplit_verts = 1\n");
+	snprintf(extra, sizeof extra, "--algo compare --board %s", board);
+	assert_int_equal(run("two", extra, 12), 0);
+	char *log = read_log();
+	if (!strstr(log, "CPU skinning on 2 threads)"))
+		fail_msg("no thread count in:\n%s", log);
+	free(log);
+	snprintf(extra, sizeof extra, "--algo compare --board %s --threads 1", board);
+	assert_int_equal(run("one", extra, 12), 0);
+	log = read_log();
+	assert_non_null(strstr(log, "CPU skinning)"));
+	free(log);
+	for (int n = 1; n <= 12; n += 11) {
+		load("two", n, &a);
+		load("one", n, &b);
+		assert_int_equal(image_diff(&a, &b), 0);
+	}
+	assert_int_equal(run("auto", "--threads auto", 1), 0);
+	log = read_log();
+	assert_non_null(strstr(log, "CPU skinning)"));
+	free(log);
+	assert_int_equal(run("bad", "--threads 0", 1), 1);
+	log = read_log();
+	assert_non_null(strstr(log, "--threads expects auto or 1..16, got 0"));
+	free(log);
+}
+
 /* Frames in an AMC: its lines that are a bare frame number. */
 static long amc_frames(const char *path)
 {
@@ -415,6 +451,7 @@ int main(void)
 		cmocka_unit_test(test_headless_pause_ends),
 		cmocka_unit_test(test_visitor_hud),
 		cmocka_unit_test(test_report_timing),
+		cmocka_unit_test(test_skinning_threads),
 		cmocka_unit_test(test_notify_signals_and_watchdog),
 		cmocka_unit_test(test_bad_board_config_names_file_line_key),
 	};

@@ -57,6 +57,8 @@ static void test_rpi4_board(void **state)
 	assert_string_equal(cfg.slot[1], "/var/lib/skinplay/show-b.skn");
 	assert_string_equal(cfg.slot[2], "/usr/share/skinplay/demo.skn");
 	assert_int_equal(cfg.max_fps, 60);
+	assert_int_equal(cfg.threads, 0);
+	assert_int_equal(cfg.split_verts, BOARD_SPLIT_VERTS);
 }
 
 static void test_host_board(void **state)
@@ -67,6 +69,19 @@ static void test_host_board(void **state)
 	assert_false(cfg.button[PLAYER_BTN_ALGO].present);
 	assert_int_equal(cfg.slot_count, 3);
 	assert_string_equal(cfg.slot[2], "/usr/share/skinplay/demo.skn");
+	assert_int_equal(cfg.threads, 0); /* not given: auto */
+}
+
+static void test_skin_section(void **state)
+{
+	(void)state;
+	skp_error err;
+	assert_int_equal(parse("[skin]\nthreads = 3\nsplit_verts = 20000\n", &err), SKP_OK);
+	assert_int_equal(cfg.threads, 3);
+	assert_int_equal(cfg.split_verts, 20000);
+	assert_int_equal(parse("[Skin]\nthreads = AUTO\n", &err), SKP_OK);
+	assert_int_equal(cfg.threads, 0);
+	assert_int_equal(cfg.split_verts, BOARD_SPLIT_VERTS);
 }
 
 static void test_inheritance_and_syntax(void **state)
@@ -125,6 +140,9 @@ static void test_errors_name_line_and_key(void **state)
 		{ "[input]\nbackend = joystick\n", 2, "key 'backend' in [input]: expected gpio, keyboard, none or script:FILE" },
 		{ "[input]\ndebounce_ms = -5\n", 2, "key 'debounce_ms'" },
 		{ "[limits]\nmax_fps = fast\n", 2, "key 'max_fps' in [limits]" },
+		{ "[skin]\nthreads = 0\n", 2, "key 'threads' in [skin]: expected auto or a thread count of 1..16, found '0'" },
+		{ "[skin]\nsplit_verts = many\n", 2, "key 'split_verts' in [skin]: expected a vertex count" },
+		{ "[skin]\ncores = 4\n", 2, "unknown key 'cores' in [skin] (threads, split_verts)" },
 		{ "[storage]\nslot = a\nslot = b\nslot = c\nslot = d\n", 5, "SKP_MAX_SLOTS" },
 		{ "line = 3\n", 1, "key 'line' before any [section]" },
 		{ "[display\n", 1, "expected ']'" },
@@ -150,6 +168,7 @@ int main(void)
 	const struct CMUnitTest tests[] = {
 		cmocka_unit_test(test_rpi4_board),
 		cmocka_unit_test(test_host_board),
+		cmocka_unit_test(test_skin_section),
 		cmocka_unit_test(test_inheritance_and_syntax),
 		cmocka_unit_test(test_errors_name_line_and_key),
 	};
