@@ -76,7 +76,7 @@ PLAT_OBJ := $(PLAT_SRC:%.c=$(OUT)/%.o)
 $(PLAT_OBJ): MOD_FLAGS = $(foreach m,$(DEPS_platform),-Iapp/$(m)) $(PLAT_INC) $(CFLAGS_HOST)
 
 CORE_OBJ := $(foreach m,$(CORE_MODULES),$(OBJ_$(m)))
-FIXED_OBJ := $(FIXED_SRC:%.c=$(OUT)/%.o) $(if $(filter avx2,$(SIMD)),$(OUT)/app/skin/kernels/skin_fixed_avx2.o)
+FIXED_OBJ := $(FIXED_SRC:%.c=$(OUT)/%.o) $(if $(filter avx2 neon,$(SIMD)),$(OUT)/app/skin/kernels/skin_fixed_$(SIMD).o)
 APP_OBJ  := $(foreach m,$(APP_MODULES),$(OBJ_$(m)))
 
 # Libraries per layer: skinplay links core + cli + platform; skintool adds
@@ -182,7 +182,7 @@ $(OUT)/tests/%: $(OUT)/tests/obj/%.o $(TESTLIB_OBJ) $(IMPORT_LIB) $(CLI_LIB) $(A
 check-core: $(CORE_OBJ)
 	@sh tests/check_core_symbols.sh $(CORE_OBJ)
 	@for f in $(FIXED_SRC); do sh tests/check_fixed_integer.sh $(CC) $(call mod_inc,skin) -Iboard/$(BOARD) $$f || exit 1; done
-	@sh tests/check_simd_integer.sh $(FIXED_OBJ)
+	@OBJDUMP=$(CROSS_COMPILE)objdump sh tests/check_simd_integer.sh $(FIXED_OBJ)
 check-layers:
 	@sh tests/check_layers.sh "$(CC) -Iboard/$(BOARD) $(CFLAGS_CORE)" \
 	  "$(foreach m,$(APP_MODULES),$(m)=$(DEPS_$(m)))" "$(DEPS_platform)" "$(PORT_HEADERS)" "$(PLATFORM_DIRS)"

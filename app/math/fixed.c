@@ -294,9 +294,7 @@ fx_dq fx_dq_blend(const fx_dq *bone_dqs, const uint16_t *bone_idx,
 	return b;
 }
 
-/* inv and the returned sh (0: identity) of fx_dq_transform_blend for the
- * blend's real part; the SIMD kernel computes the same per lane. */
-static int blend_scale(fx_quat real, uint32_t *inv)
+int fx_blend_scale(fx_quat real, uint32_t *inv)
 {
 	int e;
 	uint32_t y = fx_recip_q60(quat_norm2_sat(real), &e);
@@ -349,7 +347,7 @@ static fx_vec3 move_blended(const fx_quat *q, const fx_quat *dual, fx_vec3 v, ui
 void fx_dq_transform_blend(const fx_dq *d, fx_vec3 p, fx_vec3 n, fx_vec3 *po, fx_vec3 *no)
 {
 	uint32_t inv;
-	int sh = blend_scale(d->real, &inv);
+	int sh = fx_blend_scale(d->real, &inv);
 
 	if (sh == 0) {
 		*po = p;

@@ -180,5 +180,9 @@ fx_dq fx_dq_blend(const fx_dq *bone_dqs, const uint16_t *bone_idx,
  * they are) when s is 0, below 2^-28 (an all but cancelled blend) or 2 or
  * more (weights summing well past 1). */
 void fx_dq_transform_blend(const fx_dq *d, fx_vec3 p, fx_vec3 n, fx_vec3 *po, fx_vec3 *no);
+/* fx_dq_transform_blend's 2 / s for the blend's real part as *inv / 2^sh,
+ * returning sh, or 0 where it leaves p and n as they are; for SIMD kernels
+ * that must match it bit for bit. */
+int fx_blend_scale(fx_quat real, uint32_t *inv);
 
 #endif

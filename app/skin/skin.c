@@ -12,7 +12,7 @@
 #elif defined(SKP_SIMD_NEON)
 #define LBS skin_lbs_neon
 #define DQBS skin_dqbs_neon
-#define DQBS_FIXED skin_dqbs_fixed /* skin_neon.c: the fixed kernel stays scalar */
+#define DQBS_FIXED skin_dqbs_fixed_neon
 #define SIMD_NAME "neon"
 #else
 #define LBS skin_lbs_scalar

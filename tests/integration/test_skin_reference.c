@@ -6,8 +6,11 @@
  * with app/ (ASF/AMC parsers, FK, mannequin, automatic weights, OBJ): bone
  * transforms from the contract R = G_pose G_bind^T, t = head_pose - R
  * head_bind, 3x4 LBS and dual quaternion blending are its own, in double.
- * Last, `skintool skin` writes exactly the kernel's output, in the input's
- * vertex order, with the input's faces. */
+ * The kernels skin_run picks (SIMD where the board builds them) also
+ * agree with the portable ones on every pose: float within 1e-5 of the
+ * height, fixed point bit for bit. Last, `skintool skin` writes exactly
+ * the kernel's output, in the input's vertex order, with the input's
+ * faces. */
 #include <stdarg.h>
 #include <stddef.h>
 #include <setjmp.h>
@@ -25,6 +28,7 @@
 #include "mannequin.h"
 #include "obj.h"
 #include "skin.h"
+#include "skin_kernels.h"
 #include "skin_scene.h"
 #include "test_parse.h"
 #include "test_paths.h"
@@ -179,6 +183,9 @@ static skin_bones bones;
 static rbone rbones[SKP_MAX_BONES];
 static float pos[SKIN_ALGO_COUNT][3 * SKP_MAX_VERTS], nrm[SKIN_ALGO_COUNT][3 * SKP_MAX_VERTS];
 static int32_t fpos[3 * SKP_MAX_VERTS], fnrm[3 * SKP_MAX_VERTS];
+/* the portable kernels' results, for the SIMD ones to match */
+static float spos[3 * SKP_MAX_VERTS], snrm[3 * SKP_MAX_VERTS];
+static int32_t sfpos[3 * SKP_MAX_VERTS], sfnrm[3 * SKP_MAX_VERTS];
 
 typedef struct body {
 	const skel *skel;
@@ -187,6 +194,7 @@ typedef struct body {
 	const skin_weights *w;
 	double height;
 	double pos_err[SKIN_ALGO_COUNT], nrm_err[SKIN_ALGO_COUNT]; /* largest so far */
+	double simd_err[SKIN_ALGO_COUNT]; /* against the portable kernel: float units, fixed LSB */
 	long poses;
 } body;
 
@@ -198,16 +206,49 @@ static void load_body(body *b)
 	assert_int_equal(skin_soa_load(&soa, b->mesh, b->w, b->skel->count, &err), SKP_OK);
 	memset(b->pos_err, 0, sizeof b->pos_err);
 	memset(b->nrm_err, 0, sizeof b->nrm_err);
+	memset(b->simd_err, 0, sizeof b->simd_err);
 	b->poses = 0;
 }
 
-static void run_kernels(const skel *s, const skel_pose *bind, const skel_pose *pose, int n)
+static double max_diff(const float *a, const float *b, int n)
 {
-	skin_bones_compute(&bones, s, bind, pose);
+	double d = 0;
+	for (int i = 0; i < n; i++)
+		d = fmax(d, fabs((double)a[i] - b[i]));
+	return d;
+}
+
+static double max_diff_fixed(const int32_t *a, const int32_t *b, int n)
+{
+	double d = 0;
+	for (int i = 0; i < n; i++)
+		d = fmax(d, fabs((double)a[i] - b[i]));
+	return d;
+}
+
+/* skin_run's kernels against the portable ones, into b->simd_err */
+static void compare_portable(body *b, int n)
+{
+	skin_out out = { spos, snrm, sfpos, sfnrm };
+	skin_lbs_scalar(&soa, &bones, 0, n, &out);
+	b->simd_err[SKIN_LBS] = fmax(b->simd_err[SKIN_LBS], fmax(max_diff(pos[SKIN_LBS], spos, 3 * n),
+								   max_diff(nrm[SKIN_LBS], snrm, 3 * n)));
+	skin_dqbs_scalar(&soa, &bones, 0, n, &out);
+	b->simd_err[SKIN_DQBS] = fmax(b->simd_err[SKIN_DQBS], fmax(max_diff(pos[SKIN_DQBS], spos, 3 * n),
+								     max_diff(nrm[SKIN_DQBS], snrm, 3 * n)));
+	skin_dqbs_fixed(&soa, &bones, 0, n, &out);
+	b->simd_err[SKIN_DQBS_FIXED] = fmax(b->simd_err[SKIN_DQBS_FIXED],
+					    fmax(max_diff_fixed(fpos, sfpos, 3 * n), max_diff_fixed(fnrm, sfnrm, 3 * n)));
+}
+
+static void run_kernels(body *b, const skel_pose *pose, int n)
+{
+	skin_bones_compute(&bones, b->skel, b->bind, pose);
 	for (int a = 0; a < SKIN_ALGO_COUNT; a++) {
 		skin_out out = { pos[a], nrm[a], fpos, fnrm };
 		skin_run((skin_algo)a, &soa, &bones, 0, n, &out);
 	}
+	compare_portable(b, n);
 	for (int i = 0; i < 3 * n; i++) {
 		pos[SKIN_DQBS_FIXED][i] = (float)(fpos[i] / 65536.0);
 		nrm[SKIN_DQBS_FIXED][i] = (float)(fnrm[i] / 65536.0);
@@ -229,7 +270,7 @@ static void note(body *b, int a, const float *p, const float *n, const double rp
 static void compare_pose(body *b, const skel_pose *pose)
 {
 	const mesh *m = b->mesh;
-	run_kernels(b->skel, b->bind, pose, m->vert_count);
+	run_kernels(b, pose, m->vert_count);
 	for (int i = 0; i < b->skel->count; i++)
 		ref_bone(b->bind, pose, i, &rbones[i]);
 	for (int v = 0; v < m->vert_count; v++) {
@@ -255,11 +296,18 @@ static void check(const body *b, const char *what)
 			      what, b->poses, skin_algo_name((skin_algo)a), b->pos_err[a], rel, b->height,
 			      b->nrm_err[a]);
 	}
+	print_message("%s: %s kernels against the portable ones: LBS %.3g, DQBS %.3g (%.3g, %.3g of height), "
+		      "fixed DQBS %.0f LSB\n", what, skin_simd_name(), b->simd_err[SKIN_LBS], b->simd_err[SKIN_DQBS],
+		      b->simd_err[SKIN_LBS] / b->height, b->simd_err[SKIN_DQBS] / b->height,
+		      b->simd_err[SKIN_DQBS_FIXED]);
 	for (int a = 0; a < SKIN_ALGO_COUNT; a++) {
 		double tol = a == SKIN_DQBS_FIXED ? 1e-4 : 1e-5;
 		assert_true(b->pos_err[a] / b->height < tol);
 		assert_true(b->nrm_err[a] < 10 * tol);
 	}
+	assert_true(b->simd_err[SKIN_LBS] / b->height < 1e-5);
+	assert_true(b->simd_err[SKIN_DQBS] / b->height < 1e-5);
+	assert_true(b->simd_err[SKIN_DQBS_FIXED] == 0);
 }
 
 /* ---- the CMU body ---- */
@@ -314,7 +362,7 @@ static void test_cmu_walk_every_frame(void **state)
 	if (!have02 || !amc)
 		skip();
 	static body b;
-	b = (body){ &s02, &rest02, &body02, &w02, height_of(&body02), { 0 }, { 0 }, 0 };
+	b = (body){ .skel = &s02, .bind = &rest02, .mesh = &body02, .w = &w02, .height = height_of(&body02) };
 	load_body(&b);
 	size_t len;
 	char *text = test_read_file(amc, &len);
@@ -336,7 +384,7 @@ static void test_scenes(void **state)
 	static skel_pose pose;
 	static body b;
 	skin_scene_build(&sc);
-	b = (body){ &sc.skel, &sc.bind, &sc.mesh, &sc.weights, 2.0, { 0 }, { 0 }, 0 };
+	b = (body){ .skel = &sc.skel, .bind = &sc.bind, .mesh = &sc.mesh, .w = &sc.weights, .height = 2.0 };
 	load_body(&b);
 	for (int k = 0; k < SKIN_SCENE_KIND_COUNT; k++)
 		for (int deg = -180; deg <= 360; deg += 15) {
@@ -434,7 +482,8 @@ static void test_skintool_skin_output(void **state)
 	test_stream_amc(text, len, &s02, &err, frame_values, &f);
 	free(text);
 	fk_pose(&s02, f.value, &pose);
-	run_kernels(&s02, &rest02, &pose, in.vert_count);
+	body tool = { .skel = &s02, .bind = &rest02 };
+	run_kernels(&tool, &pose, in.vert_count);
 	for (int a = 0; a < SKIN_ALGO_COUNT; a++) {
 		snprintf(cmd, sizeof cmd, "%s skin %s %s %s --frame 100 --algo %s -o %s", test_tool_path("skintool"),
 			 asf, amc, body_obj, skin_algo_name((skin_algo)a), out_obj);

@@ -117,7 +117,7 @@ static inline __m256i mul_round(__m256i a, __m256i b, int s)
 				_mm_cvtsi32_si128(s));
 }
 
-/* fixed.c's blend_scale on 4 lanes (fx_recip_q60 step for step the same
+/* fx_blend_scale on 4 lanes (fx_recip_q60 step for step the same
  * integers) for squared norms in [2^56, 2^60 + 2^32]: every blend with the
  * sign fix whose weights sum to at most 1 (its real part is at least the
  * pivot's weight, 1/4, and at most 1 plus rounding long; the bound above

@@ -2,8 +2,8 @@
  * kernels' method on 4 lanes, two steps per SKIN_LANES block. NEON has no
  * gather, so each step loads the 4 vertices' bone rows and transposes them
  * (4x4 at a time) into lanes. Built when the board sets SIMD=neon; results
- * match skin_scalar.c to float rounding (FMA). The fixed-point kernel stays
- * scalar: 64-bit products do not fit NEON's lanes well. */
+ * match skin_scalar.c to float rounding (FMA). The fixed-point kernel is
+ * skin_fixed_neon.c. */
 #include "skin_kernels.h"
 
 #if defined(SKP_SIMD_NEON) && defined(__aarch64__)
