@@ -128,7 +128,7 @@ $(OUT)/platform/%.o: platform/%.c
 	@mkdir -p $(@D)
 	$(CC) $(CPPFLAGS) $(MOD_FLAGS) -c $< -o $@
 
-$(OUT)/app/skin/kernels/skin_avx2.o $(OUT)/app/skin/kernels/skin_fixed_avx2.o: CPPFLAGS += $(SIMD_FLAGS)
+$(OUT)/app/skin/kernels/%_avx2.o: CPPFLAGS += $(SIMD_FLAGS)
 
 # --version: rewritten only when its text changes, so a new commit rebuilds
 # one object.

@@ -61,8 +61,8 @@ PRIVATE_skintool := report
 
 # The skinning kernels (app/skin/kernels/) each SIMD setting builds
 # (board.mk: SIMD; `make SIMD=scalar` builds the portable ones only).
-KERNELS_scalar := skin_scalar skin_fixed
-KERNELS_avx2   := $(KERNELS_scalar) skin_avx2 skin_fixed_avx2
+KERNELS_scalar := skin_scalar skin_fixed skin_compact_scalar
+KERNELS_avx2   := $(KERNELS_scalar) skin_avx2 skin_fixed_avx2 skin_compact_avx2
 KERNELS_neon   := $(KERNELS_scalar) skin_neon skin_fixed_neon
 # The fixed-point path, proven free of floating point by `make check-core`.
 FIXED_SRC      := app/math/fixed.c app/skin/kernels/skin_fixed.c

@@ -84,11 +84,11 @@ void cli_skin_run(cli_skin *t, skin_algo algo, float *pos, float *nrm)
 {
 	int n = t->soa.count;
 	if (algo != SKIN_DQBS_FIXED) {
-		skin_out out = { pos, nrm, NULL, NULL };
+		skin_out out = { pos, nrm, NULL, NULL, NULL };
 		run_kernel(t, algo, &out);
 		return;
 	}
-	skin_out out = { NULL, NULL, fpos, fnrm };
+	skin_out out = { NULL, NULL, fpos, fnrm, NULL };
 	run_kernel(t, algo, &out);
 	from_q16(fpos, pos, 3 * n);
 	from_q16(fnrm, nrm, 3 * n);

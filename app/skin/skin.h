@@ -113,10 +113,13 @@ void skin_bones_compute(skin_bones *out, const skel *s, const skel_pose *bind,
 void skin_bones_derive(skin_bones *out);
 
 /* Where a kernel writes: float kernels xyz triples in pos/nrm, the
- * fixed-point kernel Q16.16 triples (GL_FIXED) in fpos/fnrm. */
+ * fixed-point kernel Q16.16 triples (GL_FIXED) in fpos/fnrm, the compact
+ * kernels (skin_compact.h) float positions in pos and 16-bit snorm normals
+ * in nrm16. */
 typedef struct skin_out {
 	float *pos, *nrm;
 	int32_t *fpos, *fnrm;
+	int16_t *nrm16;
 } skin_out;
 
 /* Skins vertices [first, first + count) of in; first must be a multiple of

@@ -11,16 +11,41 @@
 #include "cli_opts.h"
 #include "cli_progress.h"
 #include "skin.h"
+#include "skin_compact.h"
 #include "skintool_cmds.h"
 #include "workers.h"
 
 #define BENCH_BONES 31
 
+/* The kernels timed: each algorithm over the float streams (the fixed
+ * one over its own), then LBS and DQBS over the compact streams. */
+typedef struct kernel {
+	const char *name;
+	skin_algo algo;
+	int compact;
+	int bytes;               /* read and written per vertex */
+} kernel;
+
+/* bytes per vertex: positions, normals, 4 bone indices and 4 weights
+ * read, positions and normals written (skin_compact.h for its own) */
+#define BYTES_FLOAT (24 + 8 + 16 + 24)
+#define BYTES_FIXED (24 + 8 + 8 + 24)
+
+static const kernel kernels[] = {
+	{ "lbs", SKIN_LBS, 0, BYTES_FLOAT },
+	{ "dqbs", SKIN_DQBS, 0, BYTES_FLOAT },
+	{ "dqbs-fixed", SKIN_DQBS_FIXED, 0, BYTES_FIXED },
+	{ "lbs-compact", SKIN_LBS, 1, SKIN_COMPACT_BYTES_MOVED },
+	{ "dqbs-compact", SKIN_DQBS, 1, SKIN_COMPACT_BYTES_MOVED },
+};
+enum { K_LBS, K_DQBS, K_FIXED, K_LBS_COMPACT, K_DQBS_COMPACT, K_COUNT };
+
 typedef struct bench {
 	skin_soa soa;
+	skin_compact compact;
 	skin_bones bones;
 	skin_out out;
-	skin_algo algo;
+	const kernel *k;
 } bench;
 
 static unsigned long long rng = 0x9e3779b97f4a7c15ull;
@@ -43,16 +68,23 @@ static int by_weight_desc(const void *a, const void *b)
 	return (x < y) - (x > y);
 }
 
-/* A mesh of n vertices in a 2-unit box, 4 influences on random bones. */
-static int make_scene(bench *b, int n, void **block)
+static void *alloc_aligned(size_t bytes)
 {
-	size_t bytes = skin_soa_bytes(n);
-	*block = aligned_alloc(SKIN_ALIGN, (bytes + SKIN_ALIGN - 1) / SKIN_ALIGN * SKIN_ALIGN);
-	float *outp = aligned_alloc(SKIN_ALIGN, sizeof(float) * 3 * (size_t)(n + SKIN_LANES) * 2);
-	int32_t *outf = aligned_alloc(SKIN_ALIGN, sizeof(int32_t) * 3 * (size_t)(n + SKIN_LANES) * 2);
-	if (!*block || !outp || !outf)
+	return aligned_alloc(SKIN_ALIGN, (bytes + SKIN_ALIGN - 1) / SKIN_ALIGN * SKIN_ALIGN);
+}
+
+/* A mesh of n vertices in a 2-unit box, 4 influences on random bones, in
+ * float and compact streams. */
+static int make_scene(bench *b, int n, void *block[2])
+{
+	block[0] = alloc_aligned(skin_soa_bytes(n));
+	block[1] = alloc_aligned(skin_compact_bytes(n));
+	float *outp = alloc_aligned(sizeof(float) * 3 * (size_t)(n + SKIN_LANES) * 2);
+	int32_t *outf = alloc_aligned(sizeof(int32_t) * 3 * (size_t)(n + SKIN_LANES) * 2);
+	int16_t *out16 = alloc_aligned(sizeof(int16_t) * 3 * (size_t)(n + SKIN_LANES));
+	if (!block[0] || !block[1] || !outp || !outf || !out16)
 		return -1;
-	skin_soa_attach(&b->soa, *block, n);
+	skin_soa_attach(&b->soa, block[0], n);
 	for (int v = 0; v < b->soa.padded; v++) {
 		vec3 p = vec3_make(2 * frand() - 1, 2 * frand() - 1, 2 * frand() - 1);
 		vec3 nn = vec3_normalize(vec3_make(frand() - 0.5f, frand() - 0.5f, frand() - 0.5f));
@@ -82,6 +114,9 @@ static int make_scene(bench *b, int n, void **block)
 	b->out.nrm = outp + 3 * (size_t)(n + SKIN_LANES);
 	b->out.fpos = outf;
 	b->out.fnrm = outf + 3 * (size_t)(n + SKIN_LANES);
+	b->out.nrm16 = out16;
+	skin_compact_attach(&b->compact, block[1], n);
+	skin_compact_load(&b->compact, &b->soa);
 	return 0;
 }
 
@@ -102,7 +137,13 @@ static void make_bones(skin_bones *bones)
 static void run_slice(void *ctx, int slice, int slices)
 {
 	bench *b = ctx;
-	skin_run_slice(b->algo, &b->soa, &b->bones, slice, slices, &b->out);
+	if (!b->k->compact) {
+		skin_run_slice(b->k->algo, &b->soa, &b->bones, slice, slices, &b->out);
+		return;
+	}
+	int lanes = b->compact.padded / SKIN_LANES;
+	int from = lanes * slice / slices * SKIN_LANES, to = lanes * (slice + 1) / slices * SKIN_LANES;
+	skin_run_compact(b->k->algo, &b->compact, &b->bones, from, to - from, &b->out);
 }
 
 /* Seconds per pass of one timed round: passes for at least 50 ms. */
@@ -122,22 +163,22 @@ static double round_seconds_per_pass(workers *w, bench *b)
  * that a machine slowing down or speeding up (a shared VM) shifts all of
  * them alike and their ratios stay meaningful: short rounds give each
  * algorithm more chances to be timed in the machine's fast phases. */
-static void best_seconds_per_pass(workers *w, bench *b, double best[SKIN_ALGO_COUNT])
+static void best_seconds_per_pass(workers *w, bench *b, double best[K_COUNT])
 {
 	static cli_progress pr;
-	for (int a = 0; a < SKIN_ALGO_COUNT; a++)
-		best[a] = 1e30;
+	for (int k = 0; k < K_COUNT; k++)
+		best[k] = 1e30;
 	cli_progress_start(&pr, "bench", "rounds", 20);
 	for (int round = 0; round < 20; round++) {
-		for (int a = 0; a < SKIN_ALGO_COUNT; a++) {
-			b->algo = (skin_algo)a;
+		for (int k = 0; k < K_COUNT; k++) {
+			b->k = &kernels[k];
 			double s = round_seconds_per_pass(w, b);
-			if (s < best[a])
-				best[a] = s;
+			if (s < best[k])
+				best[k] = s;
 		}
 		cli_progress_step(&pr, round + 1);
 	}
-	cli_progress_end(&pr, " of the 3 kernels");
+	cli_progress_end(&pr, " of the 5 kernels");
 }
 
 /* Copy bandwidth (bytes read + written per second) over buffers the size
@@ -205,15 +246,44 @@ static int parse(int argc, char **argv, long *verts, long *threads)
 	return 0;
 }
 
+/* Copy bandwidth per working-set size, measured once for each */
+static double bandwidth_for(long verts, int bytes)
+{
+	static int sizes[K_COUNT];
+	static double bw[K_COUNT];
+	for (int i = 0; i < K_COUNT; i++) {
+		if (sizes[i] == bytes)
+			return bw[i];
+		if (!sizes[i]) {
+			sizes[i] = bytes;
+			return bw[i] = copy_bandwidth((size_t)verts * (size_t)bytes / 2);
+		}
+	}
+	return 0;
+}
+
+static void print_ratios(int k, const double best[K_COUNT])
+{
+	if (k == K_DQBS || k == K_FIXED)
+		printf("   %.2fx LBS time", best[k] / best[K_LBS]);
+	if (k == K_FIXED)
+		printf(", %.2fx float DQBS speed", best[K_DQBS] / best[k]);
+	if (k == K_LBS_COMPACT || k == K_DQBS_COMPACT)
+		printf("   %.2fx float speed", best[k - K_LBS_COMPACT] / best[k]);
+	if (k == K_DQBS_COMPACT)
+		printf(", %.2fx compact LBS time", best[k] / best[K_LBS_COMPACT]);
+	printf("\n");
+}
+
 int cmd_bench(int argc, char **argv)
 {
 	static bench b;
 	long verts = 1000000, threads = 1;
-	void *block = NULL;
+	void *block[2] = { NULL, NULL };
 	int rc = parse(argc, argv, &verts, &threads);
 	if (rc != 0)
 		return rc < 0;
-	if (make_scene(&b, (int)verts, &block) < 0) {
+	if (make_scene(&b, (int)verts, block) < 0) {
 		fprintf(stderr, "skintool bench: out of memory for %ld vertices\n", verts);
 		return 1;
 	}
@@ -223,34 +293,26 @@ int cmd_bench(int argc, char **argv)
 		fprintf(stderr, "skintool bench: cannot start %ld threads\n", threads);
 		return 1;
 	}
-	/* bytes per vertex: positions, normals, 4 bone indices and 4 weights
-	 * read, positions and normals written */
-	const int bytes_float = 24 + 8 + 16 + 24, bytes_fixed = 24 + 8 + 8 + 24;
 	printf("skinning %ld vertices, 4 influences, %d bones, %d thread(s), kernels: %s\n", verts,
 	       BENCH_BONES, workers_count(w), skin_simd_name());
-	printf("%-11s %10s %9s %11s %16s %9s\n", "algo", "Mverts/s", "ns/vert", "bytes/vert",
+	printf("%-13s %10s %9s %11s %16s %9s\n", "algo", "Mverts/s", "ns/vert", "bytes/vert",
 	       "bw bound Mv/s", "of bound");
-	double best[SKIN_ALGO_COUNT];
+	double best[K_COUNT];
 	best_seconds_per_pass(w, &b, best);
-	/* one copy-bandwidth measurement per working-set size: the float
-	 * kernels share theirs */
-	const double bw_float = copy_bandwidth((size_t)verts * (size_t)bytes_float / 2);
-	const double bw_fixed = copy_bandwidth((size_t)verts * (size_t)bytes_fixed / 2);
-	for (int a = 0; a < SKIN_ALGO_COUNT; a++) {
-		double rate = (double)verts / best[a];
-		int fixed = a == SKIN_DQBS_FIXED, bytes = fixed ? bytes_fixed : bytes_float;
-		double bound = (fixed ? bw_fixed : bw_float) / bytes;
-		printf("%-11s %10.1f %9.2f %11d %16.1f %8.0f%%", skin_algo_name((skin_algo)a), rate * 1e-6,
-		       best[a] * 1e9 / (double)verts, bytes, bound * 1e-6, 100.0 * rate / bound);
-		if (a != SKIN_LBS)
-			printf("   %.2fx LBS time", best[a] / best[SKIN_LBS]);
-		if (a == SKIN_DQBS_FIXED)
-			printf(", %.2fx float DQBS speed", best[SKIN_DQBS] / best[a]);
-		printf("\n");
+	for (int k = 0; k < K_COUNT; k++) {
+		double rate = (double)verts / best[k];
+		double bound = bandwidth_for(verts, kernels[k].bytes) / kernels[k].bytes;
+		printf("%-13s %10.1f %9.2f %11d %16.1f %8.0f%%", kernels[k].name, rate * 1e-6,
+		       best[k] * 1e9 / (double)verts, kernels[k].bytes, bound * 1e-6, 100.0 * rate / bound);
+		print_ratios(k, best);
 	}
+	printf("compact streams: positions within %.3g of the float ones (half a 16-bit step of the %.3g-unit box)\n",
+	       (double)skin_compact_position_bound(&b.compact), 2.0);
 	workers_stop(w);
-	free(block);
+	free(block[0]);
+	free(block[1]);
 	free(b.out.pos);
 	free(b.out.fpos);
+	free(b.out.nrm16);
 	return 0;
 }

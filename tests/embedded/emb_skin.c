@@ -74,7 +74,7 @@ static int32_t out_pos[3 * CHUNK], out_nrm[3 * CHUNK];
 /* Skins vertices [0, in->count) into the hash in chunks of CHUNK. */
 static void skin_hash(const skin_soa *in, fnv *f)
 {
-	skin_out o = { NULL, NULL, out_pos, out_nrm };
+	skin_out o = { NULL, NULL, out_pos, out_nrm, NULL };
 	for (int first = 0; first < in->count; first += CHUNK) {
 		int n = in->count - first < CHUNK ? in->count - first : CHUNK;
 		skin_soa view = *in;

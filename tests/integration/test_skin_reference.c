@@ -28,6 +28,7 @@
 #include "mannequin.h"
 #include "obj.h"
 #include "skin.h"
+#include "skin_compact.h"
 #include "skin_kernels.h"
 #include "skin_scene.h"
 #include "test_parse.h"
@@ -179,6 +180,9 @@ static void ref_dqbs(const rbone *bones, const skin_weights *w, int v, const dou
 
 static _Alignas(SKIN_ALIGN) unsigned char block[SKIN_SOA_BYTES(SKP_MAX_VERTS)];
 static skin_soa soa;
+static _Alignas(SKIN_ALIGN) unsigned char compact_block[SKIN_COMPACT_BYTES(SKP_MAX_VERTS)];
+static skin_compact compact;
+static int16_t nrm16[3 * SKP_MAX_VERTS];
 static skin_bones bones;
 static rbone rbones[SKP_MAX_BONES];
 static float pos[SKIN_ALGO_COUNT][3 * SKP_MAX_VERTS], nrm[SKIN_ALGO_COUNT][3 * SKP_MAX_VERTS];
@@ -195,6 +199,8 @@ typedef struct body {
 	double height;
 	double pos_err[SKIN_ALGO_COUNT], nrm_err[SKIN_ALGO_COUNT]; /* largest so far */
 	double simd_err[SKIN_ALGO_COUNT]; /* against the portable kernel: float units, fixed LSB */
+	double compact_err[2], compact_nrm_err[2]; /* compact LBS, DQBS against the float streams' */
+	int lbs_collapses;   /* poses where LBS squeezes the skin to a line: its normals are noise there */
 	long poses;
 } body;
 
@@ -207,6 +213,10 @@ static void load_body(body *b)
 	memset(b->pos_err, 0, sizeof b->pos_err);
 	memset(b->nrm_err, 0, sizeof b->nrm_err);
 	memset(b->simd_err, 0, sizeof b->simd_err);
+	memset(b->compact_err, 0, sizeof b->compact_err);
+	memset(b->compact_nrm_err, 0, sizeof b->compact_nrm_err);
+	skin_compact_attach(&compact, compact_block, b->mesh->vert_count);
+	skin_compact_load(&compact, &soa);
 	b->poses = 0;
 }
 
@@ -229,7 +239,7 @@ static double max_diff_fixed(const int32_t *a, const int32_t *b, int n)
 /* skin_run's kernels against the portable ones, into b->simd_err */
 static void compare_portable(body *b, int n)
 {
-	skin_out out = { spos, snrm, sfpos, sfnrm };
+	skin_out out = { spos, snrm, sfpos, sfnrm, NULL };
 	skin_lbs_scalar(&soa, &bones, 0, n, &out);
 	b->simd_err[SKIN_LBS] = fmax(b->simd_err[SKIN_LBS], fmax(max_diff(pos[SKIN_LBS], spos, 3 * n),
 								   max_diff(nrm[SKIN_LBS], snrm, 3 * n)));
@@ -241,25 +251,49 @@ static void compare_portable(body *b, int n)
 					    fmax(max_diff_fixed(fpos, sfpos, 3 * n), max_diff_fixed(fnrm, sfnrm, 3 * n)));
 }
 
+static double err3(const float *k, const double r[3])
+{
+	double dx = k[0] - r[0], dy = k[1] - r[1], dz = k[2] - r[2];
+	return sqrt(dx * dx + dy * dy + dz * dz);
+}
+
+/* The compact streams' LBS and DQBS against the float streams' (pos, nrm
+ * of skin_run), into b->compact_err */
+static void compare_compact(body *b, int n)
+{
+	for (int a = SKIN_LBS; a <= SKIN_DQBS; a++) {
+		skin_out out = { spos, NULL, NULL, NULL, nrm16 };
+		skin_run_compact((skin_algo)a, &compact, &bones, 0, n, &out);
+		for (int v = 0; v < n; v++) {
+			double rp[3], rn[3];
+			for (int i = 0; i < 3; i++) {
+				rp[i] = pos[a][3 * v + i];
+				rn[i] = nrm[a][3 * v + i];
+			}
+			const float n3[3] = { nrm16[3 * v] / SKIN_COMPACT_NORMAL_ONE, nrm16[3 * v + 1] / SKIN_COMPACT_NORMAL_ONE,
+					      nrm16[3 * v + 2] / SKIN_COMPACT_NORMAL_ONE };
+			b->compact_err[a] = fmax(b->compact_err[a], err3(&spos[3 * v], rp));
+			b->compact_nrm_err[a] = fmax(b->compact_nrm_err[a], err3(n3, rn));
+		}
+	}
+}
+
 static void run_kernels(body *b, const skel_pose *pose, int n)
 {
 	skin_bones_compute(&bones, b->skel, b->bind, pose);
 	for (int a = 0; a < SKIN_ALGO_COUNT; a++) {
-		skin_out out = { pos[a], nrm[a], fpos, fnrm };
+		skin_out out = { pos[a], nrm[a], fpos, fnrm, NULL };
 		skin_run((skin_algo)a, &soa, &bones, 0, n, &out);
 	}
 	compare_portable(b, n);
+	if (b->mesh)
+		compare_compact(b, n);
 	for (int i = 0; i < 3 * n; i++) {
 		pos[SKIN_DQBS_FIXED][i] = (float)(fpos[i] / 65536.0);
 		nrm[SKIN_DQBS_FIXED][i] = (float)(fnrm[i] / 65536.0);
 	}
 }
 
-static double err3(const float *k, const double r[3])
-{
-	double dx = k[0] - r[0], dy = k[1] - r[1], dz = k[2] - r[2];
-	return sqrt(dx * dx + dy * dy + dz * dz);
-}
 
 static void note(body *b, int a, const float *p, const float *n, const double rp[3], const double rn[3])
 {
@@ -304,6 +338,15 @@ static void check(const body *b, const char *what)
 		double tol = a == SKIN_DQBS_FIXED ? 1e-4 : 1e-5;
 		assert_true(b->pos_err[a] / b->height < tol);
 		assert_true(b->nrm_err[a] < 10 * tol);
+	}
+	print_message("%s: compact streams (positions within %.3g by quantisation alone): LBS %.3g (%.3g of height), "
+		      "DQBS %.3g (%.3g); normals LBS %.3g, DQBS %.3g\n", what,
+		      (double)skin_compact_position_bound(&compact), b->compact_err[SKIN_LBS],
+		      b->compact_err[SKIN_LBS] / b->height, b->compact_err[SKIN_DQBS], b->compact_err[SKIN_DQBS] / b->height,
+		      b->compact_nrm_err[SKIN_LBS], b->compact_nrm_err[SKIN_DQBS]);
+	for (int a = SKIN_LBS; a <= SKIN_DQBS; a++) {
+		assert_true(b->compact_err[a] / b->height <= 1e-4);
+		assert_true(b->compact_nrm_err[a] <= 2e-4 || (a == SKIN_LBS && b->lbs_collapses));
 	}
 	assert_true(b->simd_err[SKIN_LBS] / b->height < 1e-5);
 	assert_true(b->simd_err[SKIN_DQBS] / b->height < 1e-5);
@@ -384,7 +427,8 @@ static void test_scenes(void **state)
 	static skel_pose pose;
 	static body b;
 	skin_scene_build(&sc);
-	b = (body){ .skel = &sc.skel, .bind = &sc.bind, .mesh = &sc.mesh, .w = &sc.weights, .height = 2.0 };
+	b = (body){ .skel = &sc.skel, .bind = &sc.bind, .mesh = &sc.mesh, .w = &sc.weights, .height = 2.0,
+		    .lbs_collapses = 1 /* the 180-degree twist */ };
 	load_body(&b);
 	for (int k = 0; k < SKIN_SCENE_KIND_COUNT; k++)
 		for (int deg = -180; deg <= 360; deg += 15) {

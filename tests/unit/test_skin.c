@@ -44,7 +44,7 @@ static void run(skin_algo algo, const skel *s, const skel_pose *bind, const skel
 	skin_soa_attach(&soa, block, m.vert_count);
 	assert_int_equal(skin_soa_load(&soa, &m, &w, s->count, &err), SKP_OK);
 	skin_bones_compute(&bones, s, bind, pose);
-	skin_out out = { pos, nrm, fpos, fnrm };
+	skin_out out = { pos, nrm, fpos, fnrm, NULL };
 	skin_run(algo, &soa, &bones, 0, m.vert_count, &out);
 }
 
@@ -253,7 +253,7 @@ static void test_fixed_matches_float(void **state)
 	}
 	random_vertices(s.count);
 	run(SKIN_DQBS_FIXED, &s, &bind, &pose);
-	skin_out out = { pos, nrm, NULL, NULL };
+	skin_out out = { pos, nrm, NULL, NULL, NULL };
 	double err[3], same[3];
 	skin_run(SKIN_DQBS, &soa, &bones, 0, m.vert_count, &out);
 	compare_fixed(pos, nrm, err);

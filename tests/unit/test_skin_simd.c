@@ -22,6 +22,8 @@ static skin_soa soa;
 static skin_bones bones;
 static float pos_a[3 * N], nrm_a[3 * N], pos_b[3 * N], nrm_b[3 * N];
 static int32_t fpos_a[3 * N], fnrm_a[3 * N], fpos_b[3 * N], fnrm_b[3 * N];
+static int16_t n16_a[3 * N], n16_b[3 * N];
+static skin_compact compact;
 
 static float frand(float lo, float hi)
 {
@@ -98,7 +100,7 @@ static void test_float_kernels_match_scalar(void **state)
 {
 	(void)state;
 	setup_scene();
-	skin_out a = { pos_a, nrm_a, NULL, NULL }, b = { pos_b, nrm_b, NULL, NULL };
+	skin_out a = { pos_a, nrm_a, NULL, NULL, NULL }, b = { pos_b, nrm_b, NULL, NULL, NULL };
 	skin_lbs_scalar(&soa, &bones, 0, N, &a);
 	memset(pos_b, 0, sizeof pos_b);
 	run_sliced(SKIN_LBS, &b);
@@ -118,7 +120,7 @@ static void test_fixed_kernel_matches_scalar(void **state)
 {
 	(void)state;
 	setup_scene();
-	skin_out a = { NULL, NULL, fpos_a, fnrm_a }, b = { NULL, NULL, fpos_b, fnrm_b };
+	skin_out a = { NULL, NULL, fpos_a, fnrm_a, NULL }, b = { NULL, NULL, fpos_b, fnrm_b, NULL };
 	skin_dqbs_fixed(&soa, &bones, 0, N, &a);
 	memset(fpos_b, 0, sizeof fpos_b);
 	run_sliced(SKIN_DQBS_FIXED, &b);
@@ -144,7 +146,7 @@ static void test_fixed_norm_just_below_one(void **state)
 	fx_dq d = { { (1 << 30) - 1, 46340, 0, 0 }, { 0, 3 << 16, -(5 << 16), 1 << 16 } };
 	bones.fdq[0] = d;
 	skin_bones_derive(&bones);
-	skin_out a = { NULL, NULL, fpos_a, fnrm_a }, b = { NULL, NULL, fpos_b, fnrm_b };
+	skin_out a = { NULL, NULL, fpos_a, fnrm_a, NULL }, b = { NULL, NULL, fpos_b, fnrm_b, NULL };
 	skin_dqbs_fixed(&soa, &bones, 0, N, &a);
 	run_sliced(SKIN_DQBS_FIXED, &b);
 	assert_int_equal(max_diff_fixed(fpos_a, fpos_b, 3 * N), 0);
@@ -153,7 +155,7 @@ static void test_fixed_norm_just_below_one(void **state)
 
 static void expect_fixed_same_as_scalar(void)
 {
-	skin_out a = { NULL, NULL, fpos_a, fnrm_a }, b = { NULL, NULL, fpos_b, fnrm_b };
+	skin_out a = { NULL, NULL, fpos_a, fnrm_a, NULL }, b = { NULL, NULL, fpos_b, fnrm_b, NULL };
 	skin_dqbs_fixed(&soa, &bones, 0, N, &a);
 	memset(fpos_b, 0, sizeof fpos_b);
 	run_sliced(SKIN_DQBS_FIXED, &b);
@@ -206,6 +208,41 @@ static void test_fixed_outside_envelope(void **state)
 	expect_fixed_same_as_scalar();
 }
 
+static long max_diff16(const int16_t *a, const int16_t *b, int n)
+{
+	long d = 0;
+	for (int i = 0; i < n; i++)
+		d = labs((long)a[i] - b[i]) > d ? labs((long)a[i] - b[i]) : d;
+	return d;
+}
+
+/* The compact kernels skin_run_compact picks agree with the portable
+ * ones: positions to float rounding, snorm16 normals within a step. */
+static void test_compact_kernels_match_scalar(void **state)
+{
+	(void)state;
+	static char block[1 << 16] __attribute__((aligned(SKIN_ALIGN)));
+	setup_scene();
+	assert_true(skin_compact_bytes(N) <= sizeof block);
+	skin_compact_attach(&compact, block, N);
+	skin_compact_load(&compact, &soa);
+	skin_out a = { pos_a, NULL, NULL, NULL, n16_a }, b = { pos_b, NULL, NULL, NULL, n16_b };
+	for (int algo = SKIN_LBS; algo <= SKIN_DQBS; algo++) {
+		if (algo == SKIN_LBS)
+			skin_lbs_compact_scalar(&compact, &bones, 0, N, &a);
+		else
+			skin_dqbs_compact_scalar(&compact, &bones, 0, N, &a);
+		memset(pos_b, 0, sizeof pos_b);
+		skin_run_compact((skin_algo)algo, &compact, &bones, 0, 512, &b);
+		skin_run_compact((skin_algo)algo, &compact, &bones, 512, N - 512, &b);
+		double dp = max_diff(pos_a, pos_b, 3 * N);
+		long dn = max_diff16(n16_a, n16_b, 3 * N);
+		print_message("%s compact %s vs scalar compact: positions %.3g, normals %ld snorm16 steps\n",
+			      skin_simd_name(), algo == SKIN_LBS ? "LBS" : "DQBS", dp, dn);
+		assert_true(dp < 1e-4 && dn <= 2);
+	}
+}
+
 int main(void)
 {
 	const struct CMUnitTest tests[] = {
@@ -215,6 +252,7 @@ int main(void)
 		cmocka_unit_test(test_fixed_weights_outside_invariants),
 		cmocka_unit_test(test_fixed_saturated_dual),
 		cmocka_unit_test(test_fixed_outside_envelope),
+		cmocka_unit_test(test_compact_kernels_match_scalar),
 	};
 	return cmocka_run_group_tests_name("skin_simd", tests, NULL, NULL);
 }
