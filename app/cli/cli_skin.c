@@ -5,6 +5,7 @@
 #include "cli_common.h"
 
 static _Alignas(SKIN_ALIGN) unsigned char block[SKIN_SOA_BYTES(SKP_MAX_VERTS)];
+static _Alignas(SKIN_ALIGN) unsigned char compact_block[SKIN_COMPACT_BYTES(SKP_MAX_VERTS)];
 /* The fixed-point kernel's output before conversion. */
 static int32_t fpos[3 * SKP_MAX_VERTS], fnrm[3 * SKP_MAX_VERTS];
 
@@ -20,6 +21,7 @@ int cli_skin_init(cli_skin *t, const skel *s, const skel_pose *bind, const mesh 
 	t->skel = s;
 	t->bind = bind;
 	t->pool = NULL;
+	t->use_compact = 0;
 	skin_soa_attach(&t->soa, block, m->vert_count);
 	if (skin_soa_load(&t->soa, m, w, s->count, &err) != SKP_OK) {
 		cli_error(what, &err);
@@ -59,25 +61,54 @@ int cli_skin_threads(const cli_skin *t)
 	return t->pool && t->soa.count >= t->split_min ? workers_count(t->pool) : 1;
 }
 
+void cli_skin_use_compact(cli_skin *t)
+{
+	skin_compact_attach(&t->compact, compact_block, t->soa.count);
+	skin_compact_load(&t->compact, &t->soa);
+	t->use_compact = 1;
+}
+
+int cli_skin_compact(const cli_skin *t, skin_algo algo)
+{
+	return t->use_compact && (algo == SKIN_LBS || algo == SKIN_DQBS);
+}
+
 typedef struct skin_job {
 	const cli_skin *t;
 	skin_algo algo;
+	int compact;
 	skin_out out;
 } skin_job;
+
+static void run_part(const skin_job *j, int first, int count)
+{
+	if (j->compact)
+		skin_run_compact(j->algo, &j->t->compact, &j->t->bones, first, count, &j->out);
+	else
+		skin_run(j->algo, &j->t->soa, &j->t->bones, first, count, &j->out);
+}
 
 static void run_share(void *ctx, int slice, int slices)
 {
 	const skin_job *j = ctx;
-	skin_run_slice(j->algo, &j->t->soa, &j->t->bones, slice, slices, &j->out);
+	int first, count;
+	skin_slice(j->t->soa.padded, slice, slices, &first, &count);
+	run_part(j, first, count);
 }
 
-static void run_kernel(cli_skin *t, skin_algo algo, const skin_out *out)
+static void run_kernel(cli_skin *t, skin_algo algo, int compact, const skin_out *out)
 {
-	skin_job job = { t, algo, *out };
+	skin_job job = { t, algo, compact, *out };
 	if (cli_skin_threads(t) > 1)
 		workers_run(t->pool, run_share, &job);
 	else
-		skin_run(algo, &t->soa, &t->bones, 0, t->soa.count, out);
+		run_part(&job, 0, t->soa.count);
+}
+
+void cli_skin_run16(cli_skin *t, skin_algo algo, float *pos, int16_t *nrm16)
+{
+	skin_out out = { pos, NULL, NULL, NULL, nrm16 };
+	run_kernel(t, algo, 1, &out);
 }
 
 void cli_skin_run(cli_skin *t, skin_algo algo, float *pos, float *nrm)
@@ -85,11 +116,11 @@ void cli_skin_run(cli_skin *t, skin_algo algo, float *pos, float *nrm)
 	int n = t->soa.count;
 	if (algo != SKIN_DQBS_FIXED) {
 		skin_out out = { pos, nrm, NULL, NULL, NULL };
-		run_kernel(t, algo, &out);
+		run_kernel(t, algo, 0, &out);
 		return;
 	}
 	skin_out out = { NULL, NULL, fpos, fnrm, NULL };
-	run_kernel(t, algo, &out);
+	run_kernel(t, algo, 0, &out);
 	from_q16(fpos, pos, 3 * n);
 	from_q16(fnrm, nrm, 3 * n);
 }

@@ -7,6 +7,7 @@
 
 #include "amc.h"
 #include "skin.h"
+#include "skin_compact.h"
 #include "workers.h"
 
 typedef struct cli_skin {
@@ -15,6 +16,8 @@ typedef struct cli_skin {
 	skin_soa soa;         /* lives in one static block: one cli_skin at a time */
 	skel_pose pose;       /* the current pose */
 	skin_bones bones;     /* its transforms */
+	skin_compact compact; /* LBS and DQBS read these when use_compact */
+	int use_compact;
 	workers *pool;        /* NULL: the caller's thread skins alone */
 	int split_min;        /* vertices from which the pool's threads share the mesh */
 } cli_skin;
@@ -37,6 +40,18 @@ void cli_skin_pose(cli_skin *t, const skel_pose *pose);
  * smaller ones on the caller's thread, where waking the pool would cost
  * more than it saves. pool NULL: always the caller's. */
 void cli_skin_use_workers(cli_skin *t, workers *pool, int split_min);
+
+/* After cli_skin_init: LBS and DQBS read compact streams (skin_compact.h,
+ * made here from the float ones) from now on, through cli_skin_run16. */
+void cli_skin_use_compact(cli_skin *t);
+
+/* Whether cli_skin_run16 can skin algo: compact streams in use, and LBS or
+ * DQBS (the fixed-point kernel has its own streams). */
+int cli_skin_compact(const cli_skin *t, skin_algo algo);
+
+/* cli_skin_run over the compact streams: positions as float xyz, normals as
+ * 16-bit snorm xyz. Only where cli_skin_compact says so. */
+void cli_skin_run16(cli_skin *t, skin_algo algo, float *pos, int16_t *nrm16);
 
 /* Whether cli_skin_run splits the current mesh across threads: their
  * count, 1 when it does not. */

@@ -1,9 +1,10 @@
-/* The skinplay flash image (.skn), format version 2: a skeleton, a bound
+/* The skinplay flash image (.skn), format version 3: a skeleton, a bound
  * body and motion clips packed once by `skintool pack` and played from
  * CRC-checked fixed-size blocks with fixed memory (app/image/image_read.h,
  * app/image/image_play.h), with XOR parity that rebuilds any one bad block
- * per parity group and a second copy of the header. Version 1 (the same
- * without parity and copy) is still read.
+ * per parity group and a second copy of the header. Versions 1 (without
+ * parity and copy) and 2 (float positions and normals, 16-bit bone
+ * indices in the bind section) are still read.
  *
  * All integers are little-endian; floats are IEEE-754 binary32 stored as
  * their little-endian bit pattern; a "str" is a u8 length then that many
@@ -56,7 +57,7 @@
  * HEADER (payload of block 0, 116 bytes; 104 in version 1):
  *
  *     0    8   magic "SKPIMAGE"
- *     8    2   format version (1)
+ *     8    2   format version (3; 1 and 2 still read)
  *     10   2   header size (104)
  *     12   4   block size B
  *     16   4   block count
@@ -94,10 +95,18 @@
  *     u32 vertices V, u32 triangles T, u8 bind pose (0 the rest pose,
  *     1 a frame or a pose derived from the rest pose: the generated body's
  *     arms raised), i32 its frame number (-1 when derived), f32 values[dof
- *     count] (only when 1; as amc_frame.value), f32 position[V][3], f32 normal[V][3],
- *     u32 triangle[T][3], then per vertex u8 influence count (1..4),
- *     u16 bone[4], u16 weight[4]: weight / 65535, the used ones summing to
- *     exactly 65535 (largest remainder), so |error| <= 1/65535 per weight
+ *     count] (only when 1; as amc_frame.value), then (version 3)
+ *     f32 origin[3], f32 step[3], u16 position[V][3]: origin + q * step per
+ *     axis, origin the least and step (greatest - least) / 65535 over the
+ *     vertices, so |error| <= step / 2 per axis (the compact streams'
+ *     quantisation, app/skin/skin_compact.h); i16 normal[V][2]: octahedral,
+ *     32767 = 1, within 5e-5 of the unit normal; u32 triangle[T][3]; per
+ *     vertex u8 influence count (1..4), u8 bone[4], u16 weight[4]: weight /
+ *     65535, the used ones summing to exactly 65535 (largest remainder), so
+ *     |error| <= 1/65535 per weight. 23 bytes a vertex, 41 in version 2,
+ *     whose bind section after the bind pose is f32 position[V][3],
+ *     f32 normal[V][3], u32 triangle[T][3], then per vertex u8 count,
+ *     u16 bone[4], u16 weight[4].
  *
  * CLIP QUANTISATION (kind 5, item = clip): per dof f32 min, f32 step.
  * A frame value is min + q * step for a u16 q; pack rounds to the nearest q,
@@ -123,7 +132,8 @@
  *
  * Compatibility: a reader refuses any other magic or version, a header
  * size or CRC that does not match, and limits beyond its board's; it reads
- * version 1 images as they are (no parity, no copy). */
+ * version 1 images as they are (no parity, no copy) and version 2 bind
+ * sections in their float form. */
 #ifndef IMAGE_FORMAT_H
 #define IMAGE_FORMAT_H
 
@@ -143,8 +153,8 @@
 #endif
 
 #define SKP_IMAGE_MAGIC        "SKPIMAGE"
-#define SKP_IMAGE_VERSION      2
-#define SKP_IMAGE_HEADER_SIZE  116   /* version 2; version 1: 104 */
+#define SKP_IMAGE_VERSION      3
+#define SKP_IMAGE_HEADER_SIZE  116   /* versions 2 and 3; version 1: 104 */
 #define SKP_IMAGE_HEADER_V1    104
 #define SKP_IMAGE_DEFAULT_GROUP  8    /* data blocks per parity group */
 #define SKP_IMAGE_BLOCK_HDR    12    /* tag, index, kind, 0, item */
@@ -153,6 +163,9 @@
 #define SKP_IMAGE_MIN_BLOCK    512
 #define SKP_IMAGE_DEFAULT_BLOCK 4096
 #define SKP_IMAGE_QMAX         65535u
+/* a vertex's influences in the bind section: count, bones, weights */
+#define SKP_IMAGE_INFLUENCE_BYTES     (1 + 3 * SKP_MAX_INFLUENCES)  /* version 3 */
+#define SKP_IMAGE_INFLUENCE_BYTES_V2  (1 + 4 * SKP_MAX_INFLUENCES)  /* versions 1 and 2 */
 
 enum skp_image_kind {
 	SKP_KIND_HEADER = 1,

@@ -53,7 +53,7 @@ int skp_image_header_get(const uint8_t *p, uint32_t n, skp_image_header *h)
 		h->sec[i].bytes = le_get32(p + 60 + 12 * i);
 	}
 	uint32_t size = h->version == 1 ? SKP_IMAGE_HEADER_V1 : SKP_IMAGE_HEADER_SIZE;
-	if ((h->version != 1 && h->version != SKP_IMAGE_VERSION) || h->header_size != size || n < size)
+	if (h->version < 1 || h->version > SKP_IMAGE_VERSION || h->header_size != size || n < size)
 		return 0;
 	if (h->version == 1) {
 		h->data_blocks = h->block_count;

@@ -6,6 +6,7 @@
 #include <string.h>
 
 #include "image_section.h"
+#include "skin_compact.h"
 
 static skp_status check_bone(skp_image *im, const skel *s, int i, int *dof, skp_error *err)
 {
@@ -117,8 +118,9 @@ skp_status skp_image_load_skel(skp_image *im, skel *s, skp_error *err)
 
 static skp_status get_influences(skp_image *im, const skel *s, skin_weights *w, int v, skp_error *err)
 {
-	uint8_t rec[1 + 4 * SKP_MAX_INFLUENCES];
-	skp_status rc = sec_get(im, rec, sizeof rec, err);
+	const int wide = im->hdr.version < 3; /* 16-bit bone indices */
+	uint8_t rec[SKP_IMAGE_INFLUENCE_BYTES_V2];
+	skp_status rc = sec_get(im, rec, wide ? SKP_IMAGE_INFLUENCE_BYTES_V2 : SKP_IMAGE_INFLUENCE_BYTES, err);
 	if (rc)
 		return rc;
 	int n = rec[0];
@@ -126,8 +128,9 @@ static skp_status get_influences(skp_image *im, const skel *s, skin_weights *w, 
 	if (n < 1 || n > SKP_MAX_INFLUENCES)
 		return sec_bad(im, err, "influence count not 1..4");
 	w->count[v] = (uint8_t)n;
+	const uint8_t *weights = rec + 1 + (wide ? 2 : 1) * SKP_MAX_INFLUENCES;
 	for (int i = 0; i < SKP_MAX_INFLUENCES; i++) {
-		uint16_t bone = le_get16(rec + 1 + 2 * i), q = le_get16(rec + 1 + 2 * SKP_MAX_INFLUENCES + 2 * i);
+		uint16_t bone = wide ? le_get16(rec + 1 + 2 * i) : rec[1 + i], q = le_get16(weights + 2 * i);
 		if (i < n && bone >= s->count)
 			return sec_bad(im, err, "influence on a bone the skeleton does not have");
 		w->bone[v][i] = i < n ? bone : 0;
@@ -144,7 +147,8 @@ static int in_envelope(vec3 p, float limit)
 	return p.x > -limit && p.x < limit && p.y > -limit && p.y < limit && p.z > -limit && p.z < limit;
 }
 
-static skp_status get_mesh(skp_image *im, mesh *m, skp_error *err)
+/* Version 2: positions and normals as floats. */
+static skp_status get_float_vertices(skp_image *im, mesh *m, skp_error *err)
 {
 	skp_status rc = SKP_OK;
 	for (int v = 0; v < m->vert_count && !rc; v++) {
@@ -157,6 +161,42 @@ static skp_status get_mesh(skp_image *im, mesh *m, skp_error *err)
 		if (!rc && !in_envelope(m->normal[v], 1.01f))
 			return sec_bad(im, err, "normal longer than 1");
 	}
+	return rc;
+}
+
+/* Version 3: positions in 16-bit steps over the bounds, octahedral
+ * normals. Every q of 0..65535 decodes inside the envelope once the
+ * bounds' two ends do. */
+static skp_status get_compact_vertices(skp_image *im, mesh *m, skp_error *err)
+{
+	float origin[3], step[3];
+	skp_status rc = sec_floats(im, origin, 3, err);
+	if (!rc) rc = sec_floats(im, step, 3, err);
+	if (rc)
+		return rc;
+	vec3 lo = vec3_make(origin[0], origin[1], origin[2]);
+	vec3 hi = vec3_make(origin[0] + 65535.0f * step[0], origin[1] + 65535.0f * step[1], origin[2] + 65535.0f * step[2]);
+	if (!(step[0] >= 0 && step[1] >= 0 && step[2] >= 0) || !in_envelope(lo, 32767.0f) || !in_envelope(hi, 32767.0f))
+		return sec_bad(im, err, "position bounds outside +-32767 units (the fixed-point range)");
+	for (int v = 0; v < m->vert_count && !rc; v++) {
+		uint8_t rec[6];
+		rc = sec_get(im, rec, sizeof rec, err);
+		float *p = &m->pos[v].x;
+		for (int i = 0; i < 3 && !rc; i++)
+			p[i] = origin[i] + (float)le_get16(rec + 2 * i) * step[i];
+	}
+	for (int v = 0; v < m->vert_count && !rc; v++) {
+		uint8_t rec[4];
+		rc = sec_get(im, rec, sizeof rec, err);
+		if (!rc)
+			m->normal[v] = vec3_normalize(skin_oct_decode((int16_t)le_get16(rec), (int16_t)le_get16(rec + 2)));
+	}
+	return rc;
+}
+
+static skp_status get_mesh(skp_image *im, mesh *m, skp_error *err)
+{
+	skp_status rc = im->hdr.version < 3 ? get_float_vertices(im, m, err) : get_compact_vertices(im, m, err);
 	for (int t = 0; t < m->tri_count && !rc; t++) {
 		for (int k = 0; k < 3 && !rc; k++)
 			rc = sec_u32(im, &m->tri[t][k], err);

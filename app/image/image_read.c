@@ -87,8 +87,8 @@ static skp_status check_header(const skp_image *im, const uint8_t *p, int n, int
 		return image_block_fail(err, SKP_ERR_CORRUPT, 0, "%s%s", "header block: ", "short read");
 	if (!skp_block_crc_ok(im->buf, bs))
 		return image_block_fail(err, SKP_ERR_CORRUPT, 0, "%s%s", "header block: ", "CRC mismatch");
-	if (h->version != 1 && h->version != SKP_IMAGE_VERSION)
-		return skp_fail(err, SKP_ERR_CORRUPT, 0, "image format version %u, this build reads versions 1 and %d",
+	if (h->version < 1 || h->version > SKP_IMAGE_VERSION)
+		return skp_fail(err, SKP_ERR_CORRUPT, 0, "image format version %u, this build reads versions 1 to %d",
 				(unsigned)h->version, SKP_IMAGE_VERSION);
 	unsigned size = h->version == 1 ? SKP_IMAGE_HEADER_V1 : SKP_IMAGE_HEADER_SIZE;
 	if (h->header_size != size)

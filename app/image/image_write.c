@@ -5,6 +5,7 @@
 
 #include "crc32.h"
 #include "image_parity.h"
+#include "skin_compact.h"
 
 void skp_clip_range_init(skp_clip_range *r, const skel *s)
 {
@@ -244,16 +245,47 @@ static void quantise_weights(const float *wf, int n, uint16_t *q)
 
 static skp_status put_influences(skp_image_writer *w, const skin_weights *wt, int v, skp_error *err)
 {
-	uint8_t rec[1 + 4 * SKP_MAX_INFLUENCES] = { 0 };
+	uint8_t rec[SKP_IMAGE_INFLUENCE_BYTES] = { 0 };
 	uint16_t q[SKP_MAX_INFLUENCES] = { 0 };
 	int n = wt->count[v];
 	quantise_weights(wt->weight[v], n, q);
 	rec[0] = (uint8_t)n;
 	for (int i = 0; i < n; i++) {
-		le_put16(rec + 1 + 2 * i, wt->bone[v][i]);
-		le_put16(rec + 1 + 2 * SKP_MAX_INFLUENCES + 2 * i, q[i]);
+		rec[1 + i] = (uint8_t)wt->bone[v][i];
+		le_put16(rec + 1 + SKP_MAX_INFLUENCES + 2 * i, q[i]);
 	}
 	return put(w, rec, sizeof rec, err);
+}
+
+/* Positions as 16-bit steps over the mesh's bounds, normals as octahedral
+ * pairs (skin_compact.h), then the triangles. */
+static skp_status put_mesh(skp_image_writer *w, const mesh *m, skp_error *err)
+{
+	_Static_assert(sizeof(vec3) == 3 * sizeof(float), "positions are read 3 floats apart");
+	float origin[3], step[3];
+	for (int i = 0; i < 3; i++)
+		skin_quant_bounds(&m->pos[0].x + i, m->vert_count, 3, &origin[i], &step[i]);
+	skp_status rc = put_floats(w, origin, 3, err);
+	if (!rc) rc = put_floats(w, step, 3, err);
+	for (int v = 0; v < m->vert_count && !rc; v++) {
+		uint8_t rec[6];
+		const float *p = &m->pos[v].x;
+		for (int i = 0; i < 3; i++)
+			le_put16(rec + 2 * i, skin_quantise(p[i], origin[i], step[i]));
+		rc = put(w, rec, sizeof rec, err);
+	}
+	for (int v = 0; v < m->vert_count && !rc; v++) {
+		uint8_t rec[4];
+		int16_t ox, oy;
+		skin_oct_encode(m->normal[v], &ox, &oy);
+		le_put16(rec, (uint16_t)ox);
+		le_put16(rec + 2, (uint16_t)oy);
+		rc = put(w, rec, sizeof rec, err);
+	}
+	for (int t = 0; t < m->tri_count && !rc; t++)
+		for (int k = 0; k < 3 && !rc; k++)
+			rc = put_u32(w, m->tri[t][k], err);
+	return rc;
 }
 
 static skp_status check_weights(const skp_image_writer *w, const skin_weights *wt, int verts,
@@ -289,13 +321,8 @@ skp_status skp_image_write_bind(skp_image_writer *w, const mesh *m, const skin_w
 	if (!rc) rc = put_u32(w, (uint32_t)(int32_t)(bind_values ? bind_number : -1), err);
 	if (!rc && bind_values)
 		rc = put_floats(w, bind_values, w->s->dof_count, err);
-	for (int v = 0; v < m->vert_count && !rc; v++)
-		rc = put_floats(w, &m->pos[v].x, 3, err);
-	for (int v = 0; v < m->vert_count && !rc; v++)
-		rc = put_floats(w, &m->normal[v].x, 3, err);
-	for (int t = 0; t < m->tri_count && !rc; t++)
-		for (int k = 0; k < 3 && !rc; k++)
-			rc = put_u32(w, m->tri[t][k], err);
+	if (!rc)
+		rc = put_mesh(w, m, err);
 	for (int v = 0; v < m->vert_count && !rc; v++)
 		rc = put_influences(w, wt, v, err);
 	return rc ? rc : sec_end(w, &w->hdr.sec[SKP_SEC_BIND], err);

@@ -87,6 +87,12 @@ int board_hud_parse(const char *word)
 	return word ? pick(word, names, 3) : -1;
 }
 
+int board_streams_parse(const char *word)
+{
+	static const char *const names[] = { "float", "compact" };
+	return word ? pick(word, names, 2) : -1;
+}
+
 static skp_status display_key(board_config *c, const ini_entry *e, skp_error *err)
 {
 	static const char *const plats[] = { "auto", "surfaceless", "osmesa", "kms", "x11" };
@@ -213,13 +219,18 @@ static skp_status skin_key(board_config *c, const ini_entry *e, skp_error *err)
 		c->threads = (int)v;
 		return SKP_OK;
 	}
+	if (tok_ieq(e->key, "streams")) {
+		if ((c->streams = board_streams_parse(e->value)) < 0)
+			return bad(err, e, "float or compact");
+		return SKP_OK;
+	}
 	if (tok_ieq(e->key, "split_verts")) {
 		if (get_long(e, 1, 100000000, &v, "a vertex count of 1..100000000", err) != SKP_OK)
 			return err->code;
 		c->split_verts = (int)v;
 		return SKP_OK;
 	}
-	return skp_fail(err, SKP_ERR_SYNTAX, e->line, "unknown key '%s' in [skin] (threads, split_verts)", e->key);
+	return skp_fail(err, SKP_ERR_SYNTAX, e->line, "unknown key '%s' in [skin] (threads, split_verts, streams)", e->key);
 }
 
 /* "button.algo" -> PLAYER_BTN_ALGO; -1 when not a button section. */

@@ -12,6 +12,7 @@
  *   [skin]     threads = auto | N   split_verts = 50000   (skinplay --threads:
  *              CPU skinning on N threads, auto one per core, for meshes
  *              of split_verts vertices or more)
+ *              streams = float | compact   (skinplay --streams)
  *
  * Unknown sections and keys are errors naming the line and the key. */
 #ifndef BOARD_CONFIG_H
@@ -47,6 +48,12 @@ typedef enum board_bias {
 /* What the screen shows over the body (skinplay --hud). */
 typedef enum board_hud { BOARD_HUD_OFF, BOARD_HUD_ENGINEER, BOARD_HUD_VISITOR } board_hud;
 
+/* What the CPU kernels read (skinplay --streams; app/skin/skin_compact.h). */
+typedef enum board_streams { BOARD_STREAMS_FLOAT, BOARD_STREAMS_COMPACT } board_streams;
+
+/* "float", "compact"; -1 for another word. */
+int board_streams_parse(const char *word);
+
 /* "off", "engineer", "visitor"; -1 for another word. */
 int board_hud_parse(const char *word);
 
@@ -72,6 +79,7 @@ typedef struct board_config {
 	int max_fps;             /* 0: no cap beyond the display's */
 	int threads;             /* skinning threads; 0: one per core */
 	int split_verts;         /* meshes this big or bigger use them */
+	int streams;             /* board_streams */
 } board_config;
 
 #define BOARD_DEBOUNCE_MS 30

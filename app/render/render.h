@@ -18,10 +18,12 @@
 #define RENDER_CAMERA_AZIMUTH 0.45f /* the usual view: front, a little from the body's left */
 
 /* One side of the picture: which algorithm, and for CPU skinning the
- * skinned positions and normals (xyz per vertex). */
+ * skinned positions and normals (xyz per vertex): float normals, or
+ * 16-bit snorm ones from the compact kernels (nrm16, when nrm is NULL). */
 typedef struct render_panel {
 	skin_algo algo;
-	const float *pos, *nrm;  /* NULL: skin on the GPU from the bone uniforms */
+	const float *pos, *nrm;  /* pos NULL: skin on the GPU from the bone uniforms */
+	const int16_t *nrm16;
 	const char *label;       /* drawn at the top of the panel in compare view */
 } render_panel;
 

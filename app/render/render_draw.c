@@ -50,6 +50,13 @@ static void attrib(const gl_api *gl, GLuint slot, int size, int stride, size_t o
 	gl->VertexAttribPointer(slot, size, GL_FLOAT, GL_FALSE, stride, (const void *)offset);
 }
 
+/* 16-bit snorm values, which GL turns into -1..1 */
+static void attrib_snorm16(const gl_api *gl, GLuint slot, int size, size_t offset)
+{
+	gl->EnableVertexAttribArray(slot);
+	gl->VertexAttribPointer(slot, size, GL_SHORT, GL_TRUE, 2 * size, (const void *)offset);
+}
+
 static void disable_attribs(const gl_api *gl)
 {
 	for (GLuint a = 0; a <= ATTR_UV; a++)
@@ -177,7 +184,10 @@ void render_body(renderer *r, const mat4 *vp, const render_frame *f, int panel)
 		body_program(r, SHADER_BODY_CPU, vp, weights_view);
 		gl->BindBuffer(GL_ARRAY_BUFFER, r->vbo_skinned[panel]);
 		attrib(gl, ATTR_POS, 3, 12, 0);
-		attrib(gl, ATTR_NRM, 3, 12, (size_t)r->vert_count * 12);
+		if (p->nrm)
+			attrib(gl, ATTR_NRM, 3, 12, (size_t)r->vert_count * 12);
+		else
+			attrib_snorm16(gl, ATTR_NRM, 3, (size_t)r->vert_count * 12);
 	} else {
 		int as_dq = p->algo != SKIN_LBS;
 		shader_kind k = as_dq ? SHADER_BODY_DQBS : SHADER_BODY_LBS;
@@ -205,7 +215,10 @@ void render_upload(renderer *r, const render_frame *f)
 			continue;
 		gl->BindBuffer(GL_ARRAY_BUFFER, r->vbo_skinned[i]);
 		gl->BufferSubData(GL_ARRAY_BUFFER, 0, bytes, f->panel[i].pos);
-		gl->BufferSubData(GL_ARRAY_BUFFER, bytes, bytes, f->panel[i].nrm);
+		if (f->panel[i].nrm)
+			gl->BufferSubData(GL_ARRAY_BUFFER, bytes, bytes, f->panel[i].nrm);
+		else
+			gl->BufferSubData(GL_ARRAY_BUFFER, bytes, bytes / 2, f->panel[i].nrm16);
 	}
 }
 

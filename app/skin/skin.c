@@ -59,11 +59,9 @@ void skin_run_compact(skin_algo algo, const skin_compact *in, const skin_bones *
 		DQBS_COMPACT(in, b, first, end, out);
 }
 
-void skin_run_slice(skin_algo algo, const skin_soa *in, const skin_bones *b, int slice, int slices,
-		    const skin_out *out)
+void skin_slice(int padded, int slice, int slices, int *first, int *count)
 {
-	int lanes = in->padded / SKIN_LANES;
-	int from = lanes * slice / slices * SKIN_LANES;
-	int to = lanes * (slice + 1) / slices * SKIN_LANES;
-	skin_run(algo, in, b, from, to - from, out);
+	int lanes = padded / SKIN_LANES;
+	*first = lanes * slice / slices * SKIN_LANES;
+	*count = lanes * (slice + 1) / slices * SKIN_LANES - *first;
 }

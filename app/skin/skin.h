@@ -127,10 +127,9 @@ typedef struct skin_out {
 void skin_run(skin_algo algo, const skin_soa *in, const skin_bones *b, int first, int count,
 	      const skin_out *out);
 
-/* Skins part `slice` of `slices` (0-based) of in's vertices: the parts
- * split the mesh on lane boundaries, as worker threads take them. */
-void skin_run_slice(skin_algo algo, const skin_soa *in, const skin_bones *b, int slice, int slices,
-		    const skin_out *out);
+/* Part `slice` of `slices` (0-based) of padded vertices, as worker
+ * threads take them: the parts split the mesh on lane boundaries. */
+void skin_slice(int padded, int slice, int slices, int *first, int *count);
 
 /* "avx2+fma" or "scalar": which float kernels skin_run uses. */
 const char *skin_simd_name(void);

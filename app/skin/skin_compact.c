@@ -28,21 +28,18 @@ void skin_compact_attach(skin_compact *c, void *mem, int count)
 		c->bone[k] = take(&at, n);
 }
 
-/* origin and step per axis over the real vertices' positions */
-static void set_bounds(skin_compact *c, const float *const axis[3])
+void skin_quant_bounds(const float *values, int count, int stride, float *origin, float *step)
 {
-	for (int i = 0; i < 3; i++) {
-		float lo = c->count ? axis[i][0] : 0.0f, hi = lo;
-		for (int v = 1; v < c->count; v++) {
-			lo = fminf(lo, axis[i][v]);
-			hi = fmaxf(hi, axis[i][v]);
-		}
-		c->origin[i] = lo;
-		c->step[i] = (hi - lo) / 65535.0f;
+	float lo = count ? values[0] : 0.0f, hi = lo;
+	for (int i = 1; i < count; i++) {
+		lo = fminf(lo, values[(size_t)i * (size_t)stride]);
+		hi = fmaxf(hi, values[(size_t)i * (size_t)stride]);
 	}
+	*origin = lo;
+	*step = (hi - lo) / 65535.0f;
 }
 
-static uint16_t quantise(float x, float origin, float step)
+uint16_t skin_quantise(float x, float origin, float step)
 {
 	if (!(step > 0.0f))
 		return 0;
@@ -63,7 +60,7 @@ static float angle_error(vec3 n, int16_t ox, int16_t oy)
 
 /* The octahedral pair nearest n: the projection, rounded each of the four
  * ways, keeping the best (about twice as precise as rounding alone). */
-static void oct_encode(vec3 n, int16_t *ox, int16_t *oy)
+void skin_oct_encode(vec3 n, int16_t *ox, int16_t *oy)
 {
 	float l1 = fabsf(n.x) + fabsf(n.y) + fabsf(n.z);
 	float x = l1 > 0.0f ? n.x / l1 : 0.0f, y = l1 > 0.0f ? n.y / l1 : 1.0f;
@@ -104,12 +101,13 @@ static void load_influences(skin_compact *c, const skin_soa *s, int v)
 void skin_compact_load(skin_compact *c, const skin_soa *s)
 {
 	const float *const axis[3] = { s->px, s->py, s->pz };
-	set_bounds(c, axis);
+	for (int i = 0; i < 3; i++)
+		skin_quant_bounds(axis[i], c->count, 1, &c->origin[i], &c->step[i]);
 	for (int v = 0; v < c->padded; v++) {
-		c->qx[v] = quantise(s->px[v], c->origin[0], c->step[0]);
-		c->qy[v] = quantise(s->py[v], c->origin[1], c->step[1]);
-		c->qz[v] = quantise(s->pz[v], c->origin[2], c->step[2]);
-		oct_encode(vec3_make(s->nx[v], s->ny[v], s->nz[v]), &c->ox[v], &c->oy[v]);
+		c->qx[v] = skin_quantise(s->px[v], c->origin[0], c->step[0]);
+		c->qy[v] = skin_quantise(s->py[v], c->origin[1], c->step[1]);
+		c->qz[v] = skin_quantise(s->pz[v], c->origin[2], c->step[2]);
+		skin_oct_encode(vec3_make(s->nx[v], s->ny[v], s->nz[v]), &c->ox[v], &c->oy[v]);
 		load_influences(c, s, v);
 	}
 }

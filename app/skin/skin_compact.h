@@ -60,6 +60,16 @@ void skin_compact_load(skin_compact *c, const skin_soa *s);
  * the coordinate). */
 float skin_compact_position_bound(const skin_compact *c);
 
+/* The quantisation the compact streams and the image's bind section
+ * (format version 3) share. Bounds of count values `stride` floats apart:
+ * origin the least, step the 16-bit step covering them (0 when they are
+ * all the same). */
+void skin_quant_bounds(const float *values, int count, int stride, float *origin, float *step);
+/* The nearest q of origin + q * step (0 for step 0), clamped to 0..65535. */
+uint16_t skin_quantise(float x, float origin, float step);
+/* The octahedral pair nearest the unit normal n. */
+void skin_oct_encode(vec3 n, int16_t *ox, int16_t *oy);
+
 /* The unit normal an octahedral pair stands for (before normalising: the
  * kernels normalise it as they load it). */
 static inline vec3 skin_oct_decode(int16_t ox, int16_t oy)

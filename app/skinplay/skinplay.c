@@ -97,6 +97,8 @@ static int setup(player *p)
 			   p->o.image_count ? show_path(&p->show) : p->o.mesh ? p->o.mesh : "generated body") < 0)
 		return -1;
 	start_workers(p);
+	if (p->o.streams == BOARD_STREAMS_COMPACT)
+		cli_skin_use_compact(&p->skin);
 	float floor_y = frames_first(p);
 	if (isnan(floor_y) || open_display(p) < 0)
 		return -1;
@@ -125,14 +127,14 @@ static int setup(player *p)
 	return frames_open(p);
 }
 
-/* " on 2 threads" when the CPU kernels share the mesh, else "" */
+/* " on 2 threads" when the CPU kernels share the mesh, ", compact
+ * streams" when LBS and DQBS read them, else "" */
 static const char *threads_note(const player *p)
 {
-	static char note[24];
+	static char note[48];
 	int n = cli_skin_threads(&p->skin);
-	note[0] = '\0';
-	if (n > 1)
-		snprintf(note, sizeof note, " on %d threads", n);
+	snprintf(note, sizeof note, "%s%.0d%s%s", n > 1 ? " on " : "", n > 1 ? n : 0, n > 1 ? " threads" : "",
+		 p->skin.use_compact ? ", compact streams" : "");
 	return note;
 }
 
@@ -149,11 +151,16 @@ static void skin_panels(player *p, render_frame *f)
 	for (int i = 0; i < p->panel_count; i++) {
 		f->panel[i].algo = p->algo[i];
 		f->panel[i].label = p->panel_count > 1 ? (i ? "DQBS" : "LBS") : NULL;
+		int compact = cli_skin_compact(&p->skin, p->algo[i]);
 		f->panel[i].pos = p->gpu[i] ? NULL : p->pos[i];
-		f->panel[i].nrm = p->gpu[i] ? NULL : p->nrm[i];
+		f->panel[i].nrm = p->gpu[i] || compact ? NULL : p->nrm[i];
+		f->panel[i].nrm16 = p->gpu[i] || !compact ? NULL : p->nrm16[i];
 		if (!p->gpu[i]) {
 			uint64_t t3 = clock_now_ns();
-			cli_skin_run(&p->skin, p->algo[i], p->pos[i], p->nrm[i]);
+			if (compact)
+				cli_skin_run16(&p->skin, p->algo[i], p->pos[i], p->nrm16[i]);
+			else
+				cli_skin_run(&p->skin, p->algo[i], p->pos[i], p->nrm[i]);
 			stage_add(&p->stages, STAGE_SKIN, clock_now_ns() - t3);
 		}
 	}

@@ -38,6 +38,7 @@ typedef struct player {
 	int gpu[RENDER_MAX_PANELS];
 	float pos[RENDER_MAX_PANELS][3 * SKP_MAX_VERTS];
 	float nrm[RENDER_MAX_PANELS][3 * SKP_MAX_VERTS];
+	int16_t nrm16[RENDER_MAX_PANELS][3 * SKP_MAX_VERTS]; /* --streams compact */
 	uint8_t rgba[SKP_DISPLAY_MAX_W * SKP_DISPLAY_MAX_H * 4]; /* one frame read back for --out */
 	char clip[64];
 	sheet contact;

@@ -69,6 +69,8 @@ int kiosk_setup(kiosk *k, play_opts *o, int argc, char **argv)
 		o->hud = BOARD_HUD_ENGINEER;
 	if (o->threads < 0)
 		o->threads = k->board.threads; /* the default: auto */
+	if (o->streams < 0)
+		o->streams = k->board.streams; /* the default: float */
 	/* no show on the command line: the board's image slots (A/B update) */
 	if (!o->image_count && (!o->asf || !o->amc)) {
 		for (int i = 0; i < k->board.slot_count && o->image_count < 4; i++)

@@ -12,7 +12,7 @@ enum {
 	OPT_IMAGE = 1, OPT_CLIP, OPT_ASF, OPT_AMC, OPT_BVH, OPT_MESH, OPT_ALGO, OPT_SKIN, OPT_PLATFORM, OPT_DEVICE,
 	OPT_ROTATION, OPT_SIZE, OPT_FRAMES, OPT_START, OPT_OUT, OPT_EVERY, OPT_SHEET, OPT_VIEW, OPT_FPS,
 	OPT_HUD_FPS, OPT_REPORT_MEMORY, OPT_BOARD, OPT_INPUT, OPT_PRINT_PLATFORM, OPT_HUD, OPT_REPORT_TIMING,
-	OPT_THREADS
+	OPT_THREADS, OPT_STREAMS
 };
 
 static const cli_opt play_opts_table[] = {
@@ -28,6 +28,8 @@ static const cli_opt play_opts_table[] = {
 	{ "skin", 0, "cpu|gpu", OPT_SKIN, "skin on the CPU (default) or in the vertex shader" },
 	{ "threads", 0, "N|auto", OPT_THREADS, "CPU skinning on N threads, auto: one per core, for meshes of the "
 	  "board's [skin] split_verts vertices or more (default: the board's, else auto)" },
+	{ "streams", 0, "KIND", OPT_STREAMS, "float, or compact: LBS and DQBS read 16-bit vertex streams (38 bytes a "
+	  "vertex, not 72; default: the board's, else float)" },
 	{ "platform", 0, "NAME", OPT_PLATFORM, "auto, surfaceless, osmesa, kms or x11 (default auto)" },
 	{ "device", 0, "DEV", OPT_DEVICE, "the DRM device for kms (default: the first with a screen)" },
 	{ "rotation", 0, "DEG", OPT_ROTATION, "turn the picture 0, 90, 180 or 270 degrees (portrait screens)" },
@@ -173,6 +175,12 @@ static int take(void *ctx, int id, const char *v)
 	case OPT_REPORT_MEMORY: o->report_memory = 1; return 0;
 	case OPT_REPORT_TIMING: o->report_timing = 1; return 0;
 	case OPT_THREADS: return take_threads(o, v);
+	case OPT_STREAMS:
+		if ((o->streams = board_streams_parse(v)) < 0) {
+			static const char *const kinds[] = { "float", "compact" };
+			return cli_bad_choice(PROG, "streams", v, kinds, 2);
+		}
+		return 0;
 	case OPT_BOARD: o->board = v; return 0;
 	case OPT_INPUT: o->input = v; return 0;
 	case OPT_PRINT_PLATFORM: o->print_platform = 1; return 0;
@@ -216,6 +224,7 @@ int play_parse(play_opts *o, int argc, char **argv)
 	o->hud_fps = 1;
 	o->hud = -1;
 	o->threads = -1;
+	o->streams = -1;
 	o->fps = 120.0;
 	int rc = cli_parse(&play_command, o, argc, argv, 1);
 	if (rc != 0)

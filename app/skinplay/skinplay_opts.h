@@ -19,6 +19,7 @@ typedef struct play_opts {
 	skin_algo algo;
 	int gpu;                 /* --skin gpu */
 	int threads;             /* --threads: 0 auto (one per core), -1 the board's */
+	int streams;             /* --streams: board_streams, -1 the board's */
 	const char *platform;    /* NULL or "auto" */
 	const char *device;
 	int rotation;

@@ -137,13 +137,12 @@ static void make_bones(skin_bones *bones)
 static void run_slice(void *ctx, int slice, int slices)
 {
 	bench *b = ctx;
-	if (!b->k->compact) {
-		skin_run_slice(b->k->algo, &b->soa, &b->bones, slice, slices, &b->out);
-		return;
-	}
-	int lanes = b->compact.padded / SKIN_LANES;
-	int from = lanes * slice / slices * SKIN_LANES, to = lanes * (slice + 1) / slices * SKIN_LANES;
-	skin_run_compact(b->k->algo, &b->compact, &b->bones, from, to - from, &b->out);
+	int first, count;
+	skin_slice(b->soa.padded, slice, slices, &first, &count);
+	if (b->k->compact)
+		skin_run_compact(b->k->algo, &b->compact, &b->bones, first, count, &b->out);
+	else
+		skin_run(b->k->algo, &b->soa, &b->bones, first, count, &b->out);
 }
 
 /* Seconds per pass of one timed round: passes for at least 50 ms. */

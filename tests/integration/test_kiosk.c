@@ -295,6 +295,31 @@ static void test_skinning_threads(void **state)
 	free(log);
 }
 
+/* --streams compact: LBS and DQBS read the 16-bit streams and upload
+ * 16-bit normals; the picture is the float streams' within a few pixels'
+ * shading (quantisation moves a vertex by about 1e-5 of the body). */
+static void test_compact_streams(void **state)
+{
+	(void)state;
+	assert_int_equal(run("compact", "--algo compare --hud off --streams compact --start 200", 2), 0);
+	char *log = read_log();
+	if (!strstr(log, "CPU skinning, compact streams)"))
+		fail_msg("no streams in:\n%s", log);
+	free(log);
+	assert_int_equal(run("float", "--algo compare --hud off --streams float --start 200", 2), 0);
+	for (int n = 1; n <= 2; n++) {
+		load("compact", n, &a);
+		load("float", n, &b);
+		long d = image_diff(&a, &b);
+		print_message("frame %d: %ld of %d pixels differ between compact and float streams\n", n, d, W * H);
+		assert_true(d * 200 < W * H); /* under 0.5% */
+	}
+	assert_int_equal(run("bad", "--streams tiny", 1), 1);
+	log = read_log();
+	assert_non_null(strstr(log, "tiny"));
+	free(log);
+}
+
 /* Frames in an AMC: its lines that are a bare frame number. */
 static long amc_frames(const char *path)
 {
@@ -452,6 +477,7 @@ int main(void)
 		cmocka_unit_test(test_visitor_hud),
 		cmocka_unit_test(test_report_timing),
 		cmocka_unit_test(test_skinning_threads),
+		cmocka_unit_test(test_compact_streams),
 		cmocka_unit_test(test_notify_signals_and_watchdog),
 		cmocka_unit_test(test_bad_board_config_names_file_line_key),
 	};

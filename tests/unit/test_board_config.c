@@ -59,6 +59,7 @@ static void test_rpi4_board(void **state)
 	assert_int_equal(cfg.max_fps, 60);
 	assert_int_equal(cfg.threads, 0);
 	assert_int_equal(cfg.split_verts, BOARD_SPLIT_VERTS);
+	assert_int_equal(cfg.streams, BOARD_STREAMS_COMPACT);
 }
 
 static void test_host_board(void **state)
@@ -76,9 +77,10 @@ static void test_skin_section(void **state)
 {
 	(void)state;
 	skp_error err;
-	assert_int_equal(parse("[skin]\nthreads = 3\nsplit_verts = 20000\n", &err), SKP_OK);
+	assert_int_equal(parse("[skin]\nthreads = 3\nsplit_verts = 20000\nstreams = compact\n", &err), SKP_OK);
 	assert_int_equal(cfg.threads, 3);
 	assert_int_equal(cfg.split_verts, 20000);
+	assert_int_equal(cfg.streams, BOARD_STREAMS_COMPACT);
 	assert_int_equal(parse("[Skin]\nthreads = AUTO\n", &err), SKP_OK);
 	assert_int_equal(cfg.threads, 0);
 	assert_int_equal(cfg.split_verts, BOARD_SPLIT_VERTS);
@@ -142,7 +144,8 @@ static void test_errors_name_line_and_key(void **state)
 		{ "[limits]\nmax_fps = fast\n", 2, "key 'max_fps' in [limits]" },
 		{ "[skin]\nthreads = 0\n", 2, "key 'threads' in [skin]: expected auto or a thread count of 1..16, found '0'" },
 		{ "[skin]\nsplit_verts = many\n", 2, "key 'split_verts' in [skin]: expected a vertex count" },
-		{ "[skin]\ncores = 4\n", 2, "unknown key 'cores' in [skin] (threads, split_verts)" },
+		{ "[skin]\ncores = 4\n", 2, "unknown key 'cores' in [skin] (threads, split_verts, streams)" },
+		{ "[skin]\nstreams = tiny\n", 2, "key 'streams' in [skin]: expected float or compact, found 'tiny'" },
 		{ "[storage]\nslot = a\nslot = b\nslot = c\nslot = d\n", 5, "SKP_MAX_SLOTS" },
 		{ "line = 3\n", 1, "key 'line' before any [section]" },
 		{ "[display\n", 1, "expected ']'" },

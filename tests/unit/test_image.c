@@ -75,6 +75,18 @@ static void make_body(void)
 	m.tri_count = 12;
 }
 
+/* Version 3 keeps positions to half a 16-bit step of the bounds on each
+ * axis (the box is 3.6 x 0.6 x 0.6) and normals to 5e-5. */
+static void assert_same_vertices(const mesh *a, const mesh *b)
+{
+	for (int v = 0; v < a->vert_count; v++) {
+		assert_true(fabsf(a->pos[v].x - b->pos[v].x) <= 0.5f * 3.6f / 65535 + 1e-6f);
+		assert_true(fabsf(a->pos[v].y - b->pos[v].y) <= 0.5f * 0.6f / 65535 + 1e-7f);
+		assert_true(fabsf(a->pos[v].z - b->pos[v].z) <= 0.5f * 0.6f / 65535 + 1e-7f);
+		assert_true(vec3_length(vec3_sub(a->normal[v], b->normal[v])) < 5e-5f);
+	}
+}
+
 static void keep_frame(const amc_frame *f, void *ctx)
 {
 	(void)ctx;
@@ -219,8 +231,7 @@ static void test_round_trip(void **state)
 	assert_memory_equal(bind, bind2, sizeof(float) * (size_t)s.dof_count);
 	assert_int_equal(m2.vert_count, 8);
 	assert_int_equal(m2.tri_count, 12);
-	assert_memory_equal(m.pos, m2.pos, sizeof(vec3) * 8);
-	assert_memory_equal(m.normal, m2.normal, sizeof(vec3) * 8);
+	assert_same_vertices(&m, &m2);
 	assert_memory_equal(m.tri, m2.tri, sizeof(uint32_t) * 36);
 	for (int v = 0; v < 8; v++) {
 		assert_int_equal(w.count[v], w2.count[v]);
@@ -349,7 +360,7 @@ static void patch_header(void (*fn)(uint8_t *p), int fix_header_crc)
 	skp_block_seal(copy, BS);
 }
 
-static void set_version_3(uint8_t *p) { le_put16(p + 8, 3); }
+static void set_version_4(uint8_t *p) { le_put16(p + 8, 4); }
 static void set_sequence(uint8_t *p) { le_put64(p + 20, 777); }
 static void set_many_bones(uint8_t *p) { le_put32(p + 28, SKP_MAX_BONES + 1); }
 static void set_magic(uint8_t *p) { p[0] = 'X'; }
@@ -368,8 +379,8 @@ static void test_refusals(void **state)
 	(void)state;
 	load_inputs();
 	pack(5, NULL);
-	patch_header(set_version_3, 1);
-	expect_refusal("version 3, this build reads versions 1 and 2", SKP_ERR_CORRUPT);
+	patch_header(set_version_4, 1);
+	expect_refusal("version 4, this build reads versions 1 to 3", SKP_ERR_CORRUPT);
 	pack(5, NULL);
 	patch_header(set_sequence, 0);
 	expect_refusal("header CRC mismatch", SKP_ERR_CORRUPT);
@@ -456,7 +467,7 @@ static void test_parity_layout(void **state)
 	pack_with(3, NULL, 0);
 	assert_int_equal(open_image(img_size, &err), SKP_OK);
 	const skp_image_header *h = &im.hdr;
-	assert_int_equal(h->version, 2);
+	assert_int_equal(h->version, 3);
 	assert_int_equal(h->parity_blocks, skp_parity_blocks(h->data_blocks, 0));
 	assert_int_equal(h->copy_block, h->data_blocks + h->parity_blocks);
 	assert_int_equal(h->block_count, h->copy_block + 1);
@@ -564,6 +575,40 @@ static void test_version_1_still_reads(void **state)
 	check_clip(0, frames, frame_count);
 }
 
+/* An image the version 2 writer made (tests/data/v2_tiny.skn: the tiny
+ * arm, the box, tiny.amc and the synthetic clip; parity and copy, float
+ * positions and normals and 16-bit bone indices in the bind section)
+ * opens and plays as it did: the body exactly as written then. */
+static void test_version_2_still_reads(void **state)
+{
+	(void)state;
+	static float bind2[SKP_MAX_DOF];
+	skp_error err;
+	long number;
+	size_t n;
+	load_inputs();
+	char *v2 = test_read_file("tests/data/v2_tiny.skn", &n);
+	assert_non_null(v2);
+	memcpy(img, v2, n);
+	img_size = n;
+	free(v2);
+	assert_int_equal(open_image(img_size, &err), SKP_OK);
+	assert_int_equal(im.hdr.version, 2);
+	assert_true(im.hdr.parity_blocks > 0);
+	assert_int_equal(skp_image_load_skel(&im, &s2, &err), SKP_OK);
+	assert_same_skel(&s, &s2);
+	assert_int_equal(skp_image_load_bind(&im, &s2, &m2, &w2, bind2, &number, &err), SKP_OK);
+	assert_int_equal(m2.vert_count, 8);
+	assert_memory_equal(m.pos, m2.pos, sizeof(vec3) * 8);
+	assert_memory_equal(m.normal, m2.normal, sizeof(vec3) * 8);
+	for (int v = 0; v < 8; v++)
+		for (int i = 0; i < w.count[v]; i++)
+			assert_int_equal(w.bone[v][i], w2.bone[v][i]);
+	check_clip(0, frames, frame_count);
+	make_synth(200);
+	check_clip(1, synth, 200);
+}
+
 static void test_writer_errors(void **state)
 {
 	(void)state;
@@ -640,6 +685,7 @@ int main(void)
 		cmocka_unit_test(test_two_bad_blocks_in_a_group),
 		cmocka_unit_test(test_header_copy),
 		cmocka_unit_test(test_version_1_still_reads),
+		cmocka_unit_test(test_version_2_still_reads),
 		cmocka_unit_test(test_writer_errors),
 		cmocka_unit_test(test_blockdev_reader_streams_text),
 	};

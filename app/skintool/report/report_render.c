@@ -121,7 +121,7 @@ int report_view_compare(report_view *v, cli_skin *sk, vec3 joint, int closeup, c
 	static const char *label[2] = { "LBS", "DQBS" };
 	for (int i = 0; i < 2; i++) {
 		cli_skin_run(sk, algo[i], v->pos[i], v->nrm[i]);
-		f.panel[i] = (render_panel){ algo[i], v->pos[i], v->nrm[i], label[i] };
+		f.panel[i] = (render_panel){ .algo = algo[i], .pos = v->pos[i], .nrm = v->nrm[i], .label = label[i] };
 	}
 	follow_camera saved;
 	aim(v, sk, joint, closeup, &saved);
