@@ -16,8 +16,8 @@
 #define DQBS skin_dqbs_neon
 #define DQBS_FIXED skin_dqbs_fixed_neon
 #define SIMD_NAME "neon"
-#define LBS_COMPACT skin_lbs_compact_scalar /* no NEON compact kernels yet */
-#define DQBS_COMPACT skin_dqbs_compact_scalar
+#define LBS_COMPACT skin_lbs_compact_neon
+#define DQBS_COMPACT skin_dqbs_compact_neon
 #else
 #define LBS skin_lbs_scalar
 #define DQBS skin_dqbs_scalar

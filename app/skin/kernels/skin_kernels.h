@@ -3,8 +3,8 @@
  * program. One file per instruction set and stream form: skin_scalar.c,
  * skin_fixed.c and skin_compact_scalar.c (portable, always built; the SIMD
  * kernels fall back to them), skin_avx2.c, skin_fixed_avx2.c and
- * skin_compact_avx2.c (x86-64 AVX2 + FMA, SIMD=avx2), skin_neon.c and
- * skin_fixed_neon.c (AArch64, SIMD=neon). A new kernel: a file here, its
+ * skin_compact_avx2.c (x86-64 AVX2 + FMA, SIMD=avx2), skin_neon.c (float
+ * and compact) and skin_fixed_neon.c (AArch64, SIMD=neon). A new kernel: a file here, its
  * declaration below, its case in skin.c, its board in board.mk. Each skins
  * vertices [first, end) of in with bones b into out. */
 #ifndef SKIN_KERNELS_H
@@ -43,6 +43,8 @@ void skin_dqbs_fixed_avx2(const skin_soa *in, const skin_bones *b, int first, in
 #ifdef SKP_SIMD_NEON
 void skin_lbs_neon(const skin_soa *in, const skin_bones *b, int first, int end, const skin_out *out);
 void skin_dqbs_neon(const skin_soa *in, const skin_bones *b, int first, int end, const skin_out *out);
+void skin_lbs_compact_neon(const skin_compact *in, const skin_bones *b, int first, int end, const skin_out *out);
+void skin_dqbs_compact_neon(const skin_compact *in, const skin_bones *b, int first, int end, const skin_out *out);
 void skin_dqbs_fixed_neon(const skin_soa *in, const skin_bones *b, int first, int end,
 			  const skin_out *out);
 #endif

@@ -1,9 +1,11 @@
-/* NEON kernels (AArch64, e.g. the Raspberry Pi 4's Cortex-A72): the AVX2
- * kernels' method on 4 lanes, two steps per SKIN_LANES block. NEON has no
- * gather, so each step loads the 4 vertices' bone rows and transposes them
- * (4x4 at a time) into lanes. Built when the board sets SIMD=neon; results
- * match skin_scalar.c to float rounding (FMA). The fixed-point kernel is
- * skin_fixed_neon.c. */
+/* NEON kernels (AArch64, e.g. the Raspberry Pi 4's Cortex-A72), over the
+ * float and the compact vertex streams: 4 lanes, two steps per SKIN_LANES
+ * block. NEON has no gather, so each step loads the 4 vertices' bone rows
+ * and transposes them (4x4 at a time) into lanes. A step first loads its
+ * batch (bones, weights, position, normal) from either stream form, then
+ * the same arithmetic runs. Built when the board sets SIMD=neon; results
+ * match skin_scalar.c and skin_compact_scalar.c to float rounding (FMA).
+ * The fixed-point kernel is skin_fixed_neon.c. */
 #include "skin_kernels.h"
 
 #if defined(SKP_SIMD_NEON) && defined(__aarch64__)
@@ -17,10 +19,71 @@ typedef struct v3x4 {
 	float32x4_t x, y, z;
 } v3x4;
 
+/* One step's vertices: bone[k][j] is influence k of lane j. */
+typedef struct batch4 {
+	int bone[SKP_MAX_INFLUENCES][NEON_LANES];
+	float32x4_t w[SKP_MAX_INFLUENCES];
+	v3x4 p, n;
+} batch4;
+
 static v3x4 load3(const float *x, const float *y, const float *z, int v)
 {
 	v3x4 r = { vld1q_f32(x + v), vld1q_f32(y + v), vld1q_f32(z + v) };
 	return r;
+}
+
+static void load_float(const skin_soa *in, int v, batch4 *bt)
+{
+	for (int k = 0; k < SKP_MAX_INFLUENCES; k++) {
+		for (int j = 0; j < NEON_LANES; j++)
+			bt->bone[k][j] = in->bone[k][v + j];
+		bt->w[k] = vld1q_f32(in->weight[k] + v);
+	}
+	bt->p = load3(in->px, in->py, in->pz, v);
+	bt->n = load3(in->nx, in->ny, in->nz, v);
+}
+
+static float32x4_t load_u16(const uint16_t *src)
+{
+	return vcvtq_f32_u32(vmovl_u16(vld1_u16(src)));
+}
+
+static v3x4 normalize4(v3x4 a)
+{
+	float32x4_t len2 = vfmaq_f32(vfmaq_f32(vmulq_f32(a.z, a.z), a.y, a.y), a.x, a.x);
+	float32x4_t inv = vdivq_f32(vdupq_n_f32(1.0f), vsqrtq_f32(len2));
+	v3x4 r = { vmulq_f32(a.x, inv), vmulq_f32(a.y, inv), vmulq_f32(a.z, inv) };
+	return r;
+}
+
+/* skin_compact_scalar.c's decode on 4 lanes */
+static void load_compact(const skin_compact *in, int v, batch4 *bt)
+{
+	const float32x4_t wscale = vdupq_n_f32(1.0f / (float)SKIN_COMPACT_WEIGHT_ONE);
+	uint32x4_t rest = vdupq_n_u32(SKIN_COMPACT_WEIGHT_ONE);
+	for (int k = 0; k < SKP_MAX_INFLUENCES; k++)
+		for (int j = 0; j < NEON_LANES; j++)
+			bt->bone[k][j] = in->bone[k][v + j];
+	for (int k = 1; k < SKP_MAX_INFLUENCES; k++) {
+		uint32x4_t w = vmovl_u16(vld1_u16(in->weight[k - 1] + v));
+		rest = vsubq_u32(rest, w);
+		bt->w[k] = vmulq_f32(vcvtq_f32_u32(w), wscale);
+	}
+	bt->w[0] = vmulq_f32(vcvtq_f32_u32(rest), wscale);
+	const uint16_t *const q[3] = { in->qx, in->qy, in->qz };
+	float32x4_t *const p[3] = { &bt->p.x, &bt->p.y, &bt->p.z };
+	for (int i = 0; i < 3; i++)
+		*p[i] = vfmaq_f32(vdupq_n_f32(in->origin[i]), load_u16(q[i] + v), vdupq_n_f32(in->step[i]));
+	const float32x4_t nscale = vdupq_n_f32(1.0f / SKIN_COMPACT_NORMAL_ONE);
+	float32x4_t x = vmulq_f32(vcvtq_f32_s32(vmovl_s16(vld1_s16(in->ox + v))), nscale);
+	float32x4_t y = vmulq_f32(vcvtq_f32_s32(vmovl_s16(vld1_s16(in->oy + v))), nscale);
+	float32x4_t z = vsubq_f32(vsubq_f32(vdupq_n_f32(1.0f), vabsq_f32(x)), vabsq_f32(y));
+	float32x4_t t = vmaxq_f32(vnegq_f32(z), vdupq_n_f32(0.0f));
+	/* x - t with x's sign: x >= 0 moves down by t, x < 0 up */
+	uint32x4_t xneg = vcltq_f32(x, vdupq_n_f32(0.0f)), yneg = vcltq_f32(y, vdupq_n_f32(0.0f));
+	v3x4 n = { vbslq_f32(xneg, vaddq_f32(x, t), vsubq_f32(x, t)), vbslq_f32(yneg, vaddq_f32(y, t), vsubq_f32(y, t)),
+		   z };
+	bt->n = normalize4(n);
 }
 
 /* r[j] = 4 values of vertex j  ->  r[c] = value c of the 4 vertices */
@@ -34,12 +97,11 @@ static void transpose4(float32x4_t r[4])
 	r[3] = vreinterpretq_f32_f64(vtrn2q_f64(vreinterpretq_f64_f32(t1), vreinterpretq_f64_f32(t3)));
 }
 
-/* Four consecutive floats at offset `at` of each vertex's bone row, in lanes. */
-static void gather4x4(const float *base, int stride, const uint16_t *bone, int v, int at,
-		      float32x4_t out[4])
+/* Four consecutive floats at offset `at` of each lane's bone row, in lanes. */
+static void gather4x4(const float *base, int stride, const int bone[NEON_LANES], int at, float32x4_t out[4])
 {
 	for (int j = 0; j < NEON_LANES; j++)
-		out[j] = vld1q_f32(base + (size_t)bone[v + j] * (size_t)stride + at);
+		out[j] = vld1q_f32(base + (size_t)bone[j] * (size_t)stride + at);
 	transpose4(out);
 }
 
@@ -56,12 +118,20 @@ static void store_xyz4(float *dst, v3x4 a, int valid)
 	memcpy(dst, tmp, sizeof(float) * 3 * (size_t)valid);
 }
 
-static v3x4 normalize4(v3x4 a)
+/* The same as 16-bit snorm (rounded to nearest even, as skin_snorm16_of) */
+static void store_snorm4(int16_t *dst, v3x4 a, int valid)
 {
-	float32x4_t len2 = vfmaq_f32(vfmaq_f32(vmulq_f32(a.z, a.z), a.y, a.y), a.x, a.x);
-	float32x4_t inv = vdivq_f32(vdupq_n_f32(1.0f), vsqrtq_f32(len2));
-	v3x4 r = { vmulq_f32(a.x, inv), vmulq_f32(a.y, inv), vmulq_f32(a.z, inv) };
-	return r;
+	const float32x4_t one = vdupq_n_f32(SKIN_COMPACT_NORMAL_ONE);
+	int16x4x3_t t = { { vqmovn_s32(vcvtnq_s32_f32(vmulq_f32(a.x, one))),
+			    vqmovn_s32(vcvtnq_s32_f32(vmulq_f32(a.y, one))),
+			    vqmovn_s32(vcvtnq_s32_f32(vmulq_f32(a.z, one))) } };
+	if (valid == NEON_LANES) {
+		vst3_s16(dst, t);
+		return;
+	}
+	int16_t tmp[3 * NEON_LANES];
+	vst3_s16(tmp, t);
+	memcpy(dst, tmp, sizeof(int16_t) * 3 * (size_t)valid);
 }
 
 static v3x4 apply_rows(const float32x4_t m[12], v3x4 p, int with_translation)
@@ -78,40 +148,32 @@ static v3x4 apply_rows(const float32x4_t m[12], v3x4 p, int with_translation)
 	return r;
 }
 
-void skin_lbs_neon(const skin_soa *in, const skin_bones *b, int first, int end, const skin_out *out);
-void skin_lbs_neon(const skin_soa *in, const skin_bones *b, int first, int end, const skin_out *out)
+static void lbs4(const skin_bones *b, const batch4 *bt, v3x4 *p, v3x4 *n)
 {
 	const float *base = &b->lbs12[0][0];
-	for (int v = first; v < end; v += NEON_LANES) {
-		float32x4_t m[12];
-		for (int i = 0; i < 12; i++)
-			m[i] = vdupq_n_f32(0.0f);
-		for (int k = 0; k < SKP_MAX_INFLUENCES; k++) {
-			float32x4_t w = vld1q_f32(in->weight[k] + v);
-			for (int row = 0; row < 3; row++) {
-				float32x4_t c[4];
-				gather4x4(base, 12, in->bone[k], v, 4 * row, c);
-				for (int i = 0; i < 4; i++)
-					m[4 * row + i] = vfmaq_f32(m[4 * row + i], w, c[i]);
-			}
+	float32x4_t m[12];
+	for (int i = 0; i < 12; i++)
+		m[i] = vdupq_n_f32(0.0f);
+	for (int k = 0; k < SKP_MAX_INFLUENCES; k++)
+		for (int row = 0; row < 3; row++) {
+			float32x4_t c[4];
+			gather4x4(base, 12, bt->bone[k], 4 * row, c);
+			for (int i = 0; i < 4; i++)
+				m[4 * row + i] = vfmaq_f32(m[4 * row + i], bt->w[k], c[i]);
 		}
-		int valid = end - v < NEON_LANES ? end - v : NEON_LANES;
-		v3x4 p = apply_rows(m, load3(in->px, in->py, in->pz, v), 1);
-		v3x4 n = normalize4(apply_rows(m, load3(in->nx, in->ny, in->nz, v), 0));
-		store_xyz4(out->pos + 3 * v, p, valid);
-		store_xyz4(out->nrm + 3 * v, n, valid);
-	}
+	*p = apply_rows(m, bt->p, 1);
+	*n = normalize4(apply_rows(m, bt->n, 0));
 }
 
 typedef struct dq4 {
 	float32x4_t rw, rx, ry, rz, dw, dx, dy, dz;
 } dq4;
 
-static dq4 gather_dq(const skin_bones *b, const uint16_t *bone, int v)
+static dq4 gather_dq(const skin_bones *b, const int bone[NEON_LANES])
 {
 	float32x4_t r[4], d[4];
-	gather4x4(&b->dq8[0][0], 8, bone, v, 0, r);
-	gather4x4(&b->dq8[0][0], 8, bone, v, 4, d);
+	gather4x4(&b->dq8[0][0], 8, bone, 0, r);
+	gather4x4(&b->dq8[0][0], 8, bone, 4, d);
 	dq4 q = { r[0], r[1], r[2], r[3], d[0], d[1], d[2], d[3] };
 	return q;
 }
@@ -130,21 +192,20 @@ static void dq_accumulate(dq4 *acc, const dq4 *d, float32x4_t w)
 
 /* Weighted sum with each influence's sign flipped when its real part points
  * away from the pivot (influence 0, the largest weight). */
-static dq4 dq_blend4(const skin_soa *in, const skin_bones *b, int v)
+static dq4 dq_blend4(const skin_bones *b, const batch4 *bt)
 {
 	const uint32x4_t sign = vdupq_n_u32(0x80000000u);
-	dq4 pivot = gather_dq(b, in->bone[0], v);
+	dq4 pivot = gather_dq(b, bt->bone[0]);
 	float32x4_t zero = vdupq_n_f32(0.0f);
 	dq4 acc = { zero, zero, zero, zero, zero, zero, zero, zero };
-	dq_accumulate(&acc, &pivot, vld1q_f32(in->weight[0] + v));
+	dq_accumulate(&acc, &pivot, bt->w[0]);
 	for (int k = 1; k < SKP_MAX_INFLUENCES; k++) {
-		dq4 d = gather_dq(b, in->bone[k], v);
+		dq4 d = gather_dq(b, bt->bone[k]);
 		float32x4_t dot = vmulq_f32(d.rw, pivot.rw);
 		dot = vfmaq_f32(dot, d.rx, pivot.rx);
 		dot = vfmaq_f32(dot, d.ry, pivot.ry);
 		dot = vfmaq_f32(dot, d.rz, pivot.rz);
-		uint32x4_t wbits = veorq_u32(vreinterpretq_u32_f32(vld1q_f32(in->weight[k] + v)),
-					     vandq_u32(vreinterpretq_u32_f32(dot), sign));
+		uint32x4_t wbits = veorq_u32(vreinterpretq_u32_f32(bt->w[k]), vandq_u32(vreinterpretq_u32_f32(dot), sign));
 		dq_accumulate(&acc, &d, vreinterpretq_f32_u32(wbits));
 	}
 	return acc;
@@ -165,34 +226,87 @@ static v3x4 madd4(v3x4 a, v3x4 b, float32x4_t s)
 	return r;
 }
 
-/* v + 2 r x (r x v + w v): rotation by the unit quaternion (w, r) */
-static v3x4 rotate4(float32x4_t w, v3x4 r, v3x4 v)
+/* The unnormalised blend moves v to v + s (r x (r x v + w v + dv) + w dv -
+ * dw r), s = 2 / |real|^2 (as the AVX2 kernel, skin_avx2_float.h); a
+ * normal takes the rotation only. */
+static v3x4 move4(const dq4 *d, float32x4_t s, v3x4 v, int with_dual)
 {
-	v3x4 t = madd4(cross4(r, v), v, w);
-	return madd4(v, cross4(r, t), vdupq_n_f32(2.0f));
+	v3x4 r = { d->rx, d->ry, d->rz }, dv = { d->dx, d->dy, d->dz };
+	v3x4 a = madd4(cross4(r, v), v, d->rw);
+	if (with_dual) {
+		a.x = vaddq_f32(a.x, dv.x);
+		a.y = vaddq_f32(a.y, dv.y);
+		a.z = vaddq_f32(a.z, dv.z);
+	}
+	v3x4 c = cross4(r, a);
+	if (with_dual)
+		c = madd4(madd4(c, dv, d->rw), r, vnegq_f32(d->dw));
+	return madd4(v, c, s);
 }
 
-void skin_dqbs_neon(const skin_soa *in, const skin_bones *b, int first, int end, const skin_out *out);
-void skin_dqbs_neon(const skin_soa *in, const skin_bones *b, int first, int end, const skin_out *out)
+static void dqbs4(const skin_bones *b, const batch4 *bt, v3x4 *p, v3x4 *n)
 {
-	const float32x4_t two = vdupq_n_f32(2.0f);
+	dq4 d = dq_blend4(b, bt);
+	float32x4_t n2 = vfmaq_f32(vfmaq_f32(vfmaq_f32(vmulq_f32(d.rz, d.rz), d.ry, d.ry), d.rx, d.rx), d.rw, d.rw);
+	/* 2 / n2: an estimate and two Newton steps (about 1e-7), cheaper than
+	 * the division on a Cortex-A72 */
+	float32x4_t y = vrecpeq_f32(n2);
+	y = vmulq_f32(y, vrecpsq_f32(n2, y));
+	y = vmulq_f32(y, vrecpsq_f32(n2, y));
+	float32x4_t s = vaddq_f32(y, y);
+	*p = move4(&d, s, bt->p, 1);
+	*n = move4(&d, s, bt->n, 0);
+}
+
+void skin_lbs_neon(const skin_soa *in, const skin_bones *b, int first, int end, const skin_out *out)
+{
 	for (int v = first; v < end; v += NEON_LANES) {
-		dq4 d = dq_blend4(in, b, v);
-		float32x4_t n2 = vfmaq_f32(vfmaq_f32(vfmaq_f32(vmulq_f32(d.rz, d.rz), d.ry, d.ry), d.rx, d.rx),
-					   d.rw, d.rw);
-		float32x4_t inv = vdivq_f32(vdupq_n_f32(1.0f), vsqrtq_f32(n2));
-		float32x4_t rw = vmulq_f32(d.rw, inv), dw = vmulq_f32(d.dw, inv);
-		v3x4 r = { vmulq_f32(d.rx, inv), vmulq_f32(d.ry, inv), vmulq_f32(d.rz, inv) };
-		v3x4 dv = { vmulq_f32(d.dx, inv), vmulq_f32(d.dy, inv), vmulq_f32(d.dz, inv) };
-		/* translation 2 (w_r d_v - w_d r_v + r_v x d_v) */
-		v3x4 t = cross4(r, dv);
-		t = madd4(t, dv, rw);
-		t = madd4(t, r, vnegq_f32(dw));
-		v3x4 p = madd4(rotate4(rw, r, load3(in->px, in->py, in->pz, v)), t, two);
-		v3x4 n = rotate4(rw, r, load3(in->nx, in->ny, in->nz, v));
+		batch4 bt;
+		v3x4 p, n;
+		load_float(in, v, &bt);
+		lbs4(b, &bt, &p, &n);
 		int valid = end - v < NEON_LANES ? end - v : NEON_LANES;
 		store_xyz4(out->pos + 3 * v, p, valid);
 		store_xyz4(out->nrm + 3 * v, n, valid);
+	}
+}
+
+void skin_dqbs_neon(const skin_soa *in, const skin_bones *b, int first, int end, const skin_out *out)
+{
+	for (int v = first; v < end; v += NEON_LANES) {
+		batch4 bt;
+		v3x4 p, n;
+		load_float(in, v, &bt);
+		dqbs4(b, &bt, &p, &n);
+		int valid = end - v < NEON_LANES ? end - v : NEON_LANES;
+		store_xyz4(out->pos + 3 * v, p, valid);
+		store_xyz4(out->nrm + 3 * v, n, valid);
+	}
+}
+
+void skin_lbs_compact_neon(const skin_compact *in, const skin_bones *b, int first, int end, const skin_out *out)
+{
+	for (int v = first; v < end; v += NEON_LANES) {
+		batch4 bt;
+		v3x4 p, n;
+		load_compact(in, v, &bt);
+		lbs4(b, &bt, &p, &n);
+		int valid = end - v < NEON_LANES ? end - v : NEON_LANES;
+		store_xyz4(out->pos + 3 * v, p, valid);
+		store_snorm4(out->nrm16 + 3 * v, n, valid);
+	}
+}
+
+void skin_dqbs_compact_neon(const skin_compact *in, const skin_bones *b, int first, int end, const skin_out *out)
+{
+	for (int v = first; v < end; v += NEON_LANES) {
+		batch4 bt;
+		v3x4 p, n;
+		load_compact(in, v, &bt);
+		dqbs4(b, &bt, &p, &n);
+		int valid = end - v < NEON_LANES ? end - v : NEON_LANES;
+		store_xyz4(out->pos + 3 * v, p, valid);
+		store_snorm4(out->nrm16 + 3 * v, n, valid);
 	}
 }
 
