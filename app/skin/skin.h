@@ -54,6 +54,16 @@ typedef struct skin_soa {
 	((6 + 3 + 3 + SKP_MAX_INFLUENCES) * SKIN_SOA_ALIGN_UP(SKIN_SOA_PADDED(count) * 4) + \
 	 2 * SKP_MAX_INFLUENCES * SKIN_SOA_ALIGN_UP(SKIN_SOA_PADDED(count) * 2))
 
+/* The next array of a block being carved into arrays (skin_soa_attach,
+ * skin_compact_attach): bytes long, the cursor moved past it to the next
+ * SKIN_ALIGN boundary. */
+static inline void *skin_carve(char **cursor, size_t bytes)
+{
+	void *p = *cursor;
+	*cursor += SKIN_SOA_ALIGN_UP(bytes);
+	return p;
+}
+
 /* SKIN_SOA_BYTES for a count known at run time. */
 size_t skin_soa_bytes(int count);
 

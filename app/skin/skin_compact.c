@@ -7,25 +7,18 @@ size_t skin_compact_bytes(int count)
 	return SKIN_COMPACT_BYTES(count);
 }
 
-static void *take(char **cursor, size_t bytes)
-{
-	void *p = *cursor;
-	*cursor += SKIN_SOA_ALIGN_UP(bytes);
-	return p;
-}
-
 void skin_compact_attach(skin_compact *c, void *mem, int count)
 {
 	char *at = mem;
 	size_t n = SKIN_SOA_PADDED(count);
 	c->count = count;
 	c->padded = (int)n;
-	c->qx = take(&at, n * 2); c->qy = take(&at, n * 2); c->qz = take(&at, n * 2);
-	c->ox = take(&at, n * 2); c->oy = take(&at, n * 2);
+	c->qx = skin_carve(&at, n * 2); c->qy = skin_carve(&at, n * 2); c->qz = skin_carve(&at, n * 2);
+	c->ox = skin_carve(&at, n * 2); c->oy = skin_carve(&at, n * 2);
 	for (int k = 0; k < SKP_MAX_INFLUENCES - 1; k++)
-		c->weight[k] = take(&at, n * 2);
+		c->weight[k] = skin_carve(&at, n * 2);
 	for (int k = 0; k < SKP_MAX_INFLUENCES; k++)
-		c->bone[k] = take(&at, n);
+		c->bone[k] = skin_carve(&at, n);
 }
 
 void skin_quant_bounds(const float *values, int count, int stride, float *origin, float *step)

@@ -9,27 +9,20 @@ size_t skin_soa_bytes(int count)
 	return SKIN_SOA_BYTES(count);
 }
 
-static void *take(char **cursor, size_t bytes)
-{
-	void *p = *cursor;
-	*cursor += SKIN_SOA_ALIGN_UP(bytes);
-	return p;
-}
-
 void skin_soa_attach(skin_soa *s, void *mem, int count)
 {
 	char *c = mem;
 	size_t n = SKIN_SOA_PADDED(count);
 	s->count = count;
 	s->padded = (int)n;
-	s->px = take(&c, n * 4); s->py = take(&c, n * 4); s->pz = take(&c, n * 4);
-	s->nx = take(&c, n * 4); s->ny = take(&c, n * 4); s->nz = take(&c, n * 4);
-	s->fpx = take(&c, n * 4); s->fpy = take(&c, n * 4); s->fpz = take(&c, n * 4);
-	s->fnx = take(&c, n * 4); s->fny = take(&c, n * 4); s->fnz = take(&c, n * 4);
+	s->px = skin_carve(&c, n * 4); s->py = skin_carve(&c, n * 4); s->pz = skin_carve(&c, n * 4);
+	s->nx = skin_carve(&c, n * 4); s->ny = skin_carve(&c, n * 4); s->nz = skin_carve(&c, n * 4);
+	s->fpx = skin_carve(&c, n * 4); s->fpy = skin_carve(&c, n * 4); s->fpz = skin_carve(&c, n * 4);
+	s->fnx = skin_carve(&c, n * 4); s->fny = skin_carve(&c, n * 4); s->fnz = skin_carve(&c, n * 4);
 	for (int k = 0; k < SKP_MAX_INFLUENCES; k++) {
-		s->weight[k] = take(&c, n * 4);
-		s->bone[k] = take(&c, n * 2);
-		s->fweight[k] = take(&c, n * 2);
+		s->weight[k] = skin_carve(&c, n * 4);
+		s->bone[k] = skin_carve(&c, n * 2);
+		s->fweight[k] = skin_carve(&c, n * 2);
 	}
 }
 

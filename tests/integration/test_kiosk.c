@@ -113,6 +113,26 @@ static char *read_log(void)
 	return text;
 }
 
+/* run() with a board config of the given text (dir/board.ini) and more
+ * options. */
+static int run_board(const char *out, const char *ini, const char *more, long frames)
+{
+	char board[128], extra[512];
+	snprintf(board, sizeof board, "%s/board.ini", dir);
+	write_text(board, ini);
+	snprintf(extra, sizeof extra, "--board %s %s", board, more);
+	return run(out, extra, frames);
+}
+
+/* The last run's stderr says needle. */
+static void expect_log(const char *needle)
+{
+	char *log = read_log();
+	if (!strstr(log, needle))
+		fail_msg("'%s' not in:\n%s", needle, log);
+	free(log);
+}
+
 static int count_lines(const char *text, const char *prefix)
 {
 	int n = 0;
@@ -266,33 +286,20 @@ static void test_report_timing(void **state)
 static void test_skinning_threads(void **state)
 {
 	(void)state;
-	char board[128], extra[256];
-	snprintf(board, sizeof board, "%s/threads.ini", dir);
-	write_text(board, "[skin]\nthreads = 2\nsplit_verts = 1\n");
-	snprintf(extra, sizeof extra, "--algo compare --board %s", board);
-	assert_int_equal(run("two", extra, 12), 0);
-	char *log = read_log();
-	if (!strstr(log, "CPU skinning on 2 threads)"))
-		fail_msg("no thread count in:\n%s", log);
-	free(log);
-	snprintf(extra, sizeof extra, "--algo compare --board %s --threads 1", board);
-	assert_int_equal(run("one", extra, 12), 0);
-	log = read_log();
-	assert_non_null(strstr(log, "CPU skinning)"));
-	free(log);
+	const char *ini = "[skin]\nthreads = 2\nsplit_verts = 1\n";
+	assert_int_equal(run_board("two", ini, "--algo compare", 12), 0);
+	expect_log("CPU skinning on 2 threads)");
+	assert_int_equal(run_board("one", ini, "--algo compare --threads 1", 12), 0);
+	expect_log("CPU skinning)");
 	for (int n = 1; n <= 12; n += 11) {
 		load("two", n, &a);
 		load("one", n, &b);
 		assert_int_equal(image_diff(&a, &b), 0);
 	}
 	assert_int_equal(run("auto", "--threads auto", 1), 0);
-	log = read_log();
-	assert_non_null(strstr(log, "CPU skinning)"));
-	free(log);
+	expect_log("CPU skinning)");
 	assert_int_equal(run("bad", "--threads 0", 1), 1);
-	log = read_log();
-	assert_non_null(strstr(log, "--threads expects auto or 1..16, got 0"));
-	free(log);
+	expect_log("--threads expects auto or 1..16, got 0");
 }
 
 /* --streams compact: LBS and DQBS read the 16-bit streams and upload
@@ -302,10 +309,7 @@ static void test_compact_streams(void **state)
 {
 	(void)state;
 	assert_int_equal(run("compact", "--algo compare --hud off --streams compact --start 200", 2), 0);
-	char *log = read_log();
-	if (!strstr(log, "CPU skinning, compact streams)"))
-		fail_msg("no streams in:\n%s", log);
-	free(log);
+	expect_log("CPU skinning, compact streams)");
 	assert_int_equal(run("float", "--algo compare --hud off --streams float --start 200", 2), 0);
 	for (int n = 1; n <= 2; n++) {
 		load("compact", n, &a);
@@ -315,9 +319,7 @@ static void test_compact_streams(void **state)
 		assert_true(d * 200 < W * H); /* under 0.5% */
 	}
 	assert_int_equal(run("bad", "--streams tiny", 1), 1);
-	log = read_log();
-	assert_non_null(strstr(log, "tiny"));
-	free(log);
+	expect_log("tiny");
 }
 
 /* Frames in an AMC: its lines that are a bare frame number. */
@@ -441,9 +443,7 @@ static void test_bad_board_config_names_file_line_key(void **state)
 	(void)state;
 	char board[128], extra[256];
 	snprintf(board, sizeof board, "%s/board.ini", dir);
-	write_text(board, "[display]\nsize = 640x480\n\n[button.play]\nline = 27\nbias = sideways\n");
-	snprintf(extra, sizeof extra, "--board %s", board);
-	assert_int_equal(run("bad", extra, 1), 1);
+	assert_int_equal(run_board("bad", "[display]\nsize = 640x480\n\n[button.play]\nline = 27\nbias = sideways\n", "", 1), 1);
 	char *log = read_log(), want[256];
 	snprintf(want, sizeof want, "%s:6: key 'bias' in [button.play]: expected as-is, disable, pull-up or pull-down",
 		 board);

@@ -548,30 +548,38 @@ static void test_header_copy(void **state)
 	assert_int_equal(err.block, 0);
 }
 
+/* An image an older writer made, from tests/data, opened, its skeleton
+ * and body (the box) loaded into s2, m2, w2. */
+static void open_old_image(const char *path, int version)
+{
+	static float bind2[SKP_MAX_DOF];
+	skp_error err;
+	long number;
+	size_t n;
+	load_inputs();
+	char *old = test_read_file(path, &n);
+	assert_non_null(old);
+	assert_true(n <= CAP);
+	memcpy(img, old, n);
+	img_size = n;
+	free(old);
+	assert_int_equal(open_image(img_size, &err), SKP_OK);
+	assert_int_equal(im.hdr.version, version);
+	assert_int_equal(skp_image_load_skel(&im, &s2, &err), SKP_OK);
+	assert_same_skel(&s, &s2);
+	assert_int_equal(skp_image_load_bind(&im, &s2, &m2, &w2, bind2, &number, &err), SKP_OK);
+	assert_int_equal(m2.vert_count, 8);
+	assert_int_equal(m2.tri_count, 12);
+}
+
 /* An image the version 1 writer made (tests/data/v1_tiny.skn: the tiny arm,
  * a box, tiny.amc; no parity, no copy, 104-byte header, no bone offsets)
  * opens and plays as it did: the skeleton, the body, every frame. */
 static void test_version_1_still_reads(void **state)
 {
 	(void)state;
-	static float bind2[SKP_MAX_DOF];
-	skp_error err;
-	long number;
-	size_t n;
-	load_inputs();
-	char *v1 = test_read_file("tests/data/v1_tiny.skn", &n);
-	assert_non_null(v1);
-	memcpy(img, v1, n);
-	img_size = n;
-	free(v1);
-	assert_int_equal(open_image(img_size, &err), SKP_OK);
-	assert_int_equal(im.hdr.version, 1);
+	open_old_image("tests/data/v1_tiny.skn", 1);
 	assert_int_equal(im.hdr.parity_blocks, 0);
-	assert_int_equal(skp_image_load_skel(&im, &s2, &err), SKP_OK);
-	assert_same_skel(&s, &s2);
-	assert_int_equal(skp_image_load_bind(&im, &s2, &m2, &w2, bind2, &number, &err), SKP_OK);
-	assert_int_equal(m2.vert_count, 8);
-	assert_int_equal(m2.tri_count, 12);
 	check_clip(0, frames, frame_count);
 }
 
@@ -582,23 +590,8 @@ static void test_version_1_still_reads(void **state)
 static void test_version_2_still_reads(void **state)
 {
 	(void)state;
-	static float bind2[SKP_MAX_DOF];
-	skp_error err;
-	long number;
-	size_t n;
-	load_inputs();
-	char *v2 = test_read_file("tests/data/v2_tiny.skn", &n);
-	assert_non_null(v2);
-	memcpy(img, v2, n);
-	img_size = n;
-	free(v2);
-	assert_int_equal(open_image(img_size, &err), SKP_OK);
-	assert_int_equal(im.hdr.version, 2);
+	open_old_image("tests/data/v2_tiny.skn", 2);
 	assert_true(im.hdr.parity_blocks > 0);
-	assert_int_equal(skp_image_load_skel(&im, &s2, &err), SKP_OK);
-	assert_same_skel(&s, &s2);
-	assert_int_equal(skp_image_load_bind(&im, &s2, &m2, &w2, bind2, &number, &err), SKP_OK);
-	assert_int_equal(m2.vert_count, 8);
 	assert_memory_equal(m.pos, m2.pos, sizeof(vec3) * 8);
 	assert_memory_equal(m.normal, m2.normal, sizeof(vec3) * 8);
 	for (int v = 0; v < 8; v++)

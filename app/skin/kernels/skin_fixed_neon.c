@@ -15,10 +15,7 @@
 
 #if defined(SKP_SIMD_NEON) && defined(__aarch64__)
 
-#include <arm_neon.h>
-#include <string.h>
-
-#define NEON_LANES 4
+#include "skin_neon.h"
 
 /* A signed 64-bit value per lane of an int32x4_t, in two registers. */
 typedef struct s64x4 {
@@ -83,17 +80,6 @@ static void blend_vertex(const skin_soa *in, const skin_bones *b, int v, int32x4
 	*dual = vcombine_s32(vqrshrn_n_s64(u0, 15), vqrshrn_n_s64(u1, 15));
 }
 
-/* r[j] = 4 values of vertex j  ->  r[c] = value c of the 4 vertices */
-static void transpose4(int32x4_t r[4])
-{
-	int32x4_t t0 = vtrn1q_s32(r[0], r[1]), t1 = vtrn2q_s32(r[0], r[1]);
-	int32x4_t t2 = vtrn1q_s32(r[2], r[3]), t3 = vtrn2q_s32(r[2], r[3]);
-	r[0] = vreinterpretq_s32_s64(vtrn1q_s64(vreinterpretq_s64_s32(t0), vreinterpretq_s64_s32(t2)));
-	r[1] = vreinterpretq_s32_s64(vtrn1q_s64(vreinterpretq_s64_s32(t1), vreinterpretq_s64_s32(t3)));
-	r[2] = vreinterpretq_s32_s64(vtrn2q_s64(vreinterpretq_s64_s32(t0), vreinterpretq_s64_s32(t2)));
-	r[3] = vreinterpretq_s32_s64(vtrn2q_s64(vreinterpretq_s64_s32(t1), vreinterpretq_s64_s32(t3)));
-}
-
 /* The blends of 4 vertices in lanes (d[0..3] real w x y z, d[4..7] dual)
  * and each one's 2 / |real|^2 as inv / 2^sh; 0 when a vertex's blend is
  * one fx_dq_transform_blend leaves alone (sh 0). */
@@ -112,8 +98,8 @@ static int blend4(const skin_soa *in, const skin_bones *b, int v, int32x4_t d[8]
 		inv[j] = (int32_t)y;
 		sh[j] = -s; /* vrshl shifts right by minus its count */
 	}
-	transpose4(real);
-	transpose4(dual);
+	skin_transpose4(real);
+	skin_transpose4(dual);
 	memcpy(d, real, sizeof real);
 	memcpy(d + 4, dual, sizeof dual);
 	return 1;
@@ -155,19 +141,6 @@ static void load3(const int32_t *const src[3], int v, int32x4_t out[3])
 		out[i] = vld1q_s32(src[i] + v);
 }
 
-/* The first `valid` of 4 xyz triples, interleaved, at dst. */
-static void store_xyz4(int32_t *dst, const int32x4_t a[3], int valid)
-{
-	int32x4x3_t t = { { a[0], a[1], a[2] } };
-	if (valid == NEON_LANES) {
-		vst3q_s32(dst, t);
-		return;
-	}
-	int32_t tmp[3 * NEON_LANES];
-	vst3q_s32(tmp, t);
-	memcpy(dst, tmp, sizeof(int32_t) * 3 * (size_t)valid);
-}
-
 void skin_dqbs_fixed_neon(const skin_soa *in, const skin_bones *b, int first, int end, const skin_out *out)
 {
 	_Static_assert(FX_POS_FRAC == 16, "the NEON fixed kernel writes fx_pos as Q16.16 directly");
@@ -191,8 +164,8 @@ void skin_dqbs_fixed_neon(const skin_soa *in, const skin_bones *b, int first, in
 		move4(d, NULL, n, vld1q_s32(inv), nsh, no);
 		for (int i = 0; i < 3; i++)
 			no[i] = vrshrq_n_s32(no[i], 14); /* Q30 to Q16 */
-		store_xyz4(out->fpos + 3 * v, po, valid);
-		store_xyz4(out->fnrm + 3 * v, no, valid);
+		skin_store_xyz4(out->fpos + 3 * v, po[0], po[1], po[2], valid);
+		skin_store_xyz4(out->fnrm + 3 * v, no[0], no[1], no[2], valid);
 	}
 }
 

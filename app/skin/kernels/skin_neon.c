@@ -10,10 +10,7 @@
 
 #if defined(SKP_SIMD_NEON) && defined(__aarch64__)
 
-#include <arm_neon.h>
-#include <string.h>
-
-#define NEON_LANES 4
+#include "skin_neon.h"
 
 typedef struct v3x4 {
 	float32x4_t x, y, z;
@@ -86,15 +83,14 @@ static void load_compact(const skin_compact *in, int v, batch4 *bt)
 	bt->n = normalize4(n);
 }
 
-/* r[j] = 4 values of vertex j  ->  r[c] = value c of the 4 vertices */
 static void transpose4(float32x4_t r[4])
 {
-	float32x4_t t0 = vtrn1q_f32(r[0], r[1]), t1 = vtrn2q_f32(r[0], r[1]);
-	float32x4_t t2 = vtrn1q_f32(r[2], r[3]), t3 = vtrn2q_f32(r[2], r[3]);
-	r[0] = vreinterpretq_f32_f64(vtrn1q_f64(vreinterpretq_f64_f32(t0), vreinterpretq_f64_f32(t2)));
-	r[1] = vreinterpretq_f32_f64(vtrn1q_f64(vreinterpretq_f64_f32(t1), vreinterpretq_f64_f32(t3)));
-	r[2] = vreinterpretq_f32_f64(vtrn2q_f64(vreinterpretq_f64_f32(t0), vreinterpretq_f64_f32(t2)));
-	r[3] = vreinterpretq_f32_f64(vtrn2q_f64(vreinterpretq_f64_f32(t1), vreinterpretq_f64_f32(t3)));
+	int32x4_t t[4];
+	for (int i = 0; i < 4; i++)
+		t[i] = vreinterpretq_s32_f32(r[i]);
+	skin_transpose4(t);
+	for (int i = 0; i < 4; i++)
+		r[i] = vreinterpretq_f32_s32(t[i]);
 }
 
 /* Four consecutive floats at offset `at` of each lane's bone row, in lanes. */
@@ -105,20 +101,12 @@ static void gather4x4(const float *base, int stride, const int bone[NEON_LANES],
 	transpose4(out);
 }
 
-/* The first `valid` of 4 xyz triples, interleaved, at dst. */
 static void store_xyz4(float *dst, v3x4 a, int valid)
 {
-	float32x4x3_t t = { { a.x, a.y, a.z } };
-	if (valid == NEON_LANES) {
-		vst3q_f32(dst, t);
-		return;
-	}
-	float tmp[3 * NEON_LANES];
-	vst3q_f32(tmp, t);
-	memcpy(dst, tmp, sizeof(float) * 3 * (size_t)valid);
+	skin_store_xyz4(dst, vreinterpretq_s32_f32(a.x), vreinterpretq_s32_f32(a.y), vreinterpretq_s32_f32(a.z), valid);
 }
 
-/* The same as 16-bit snorm (rounded to nearest even, as skin_snorm16_of) */
+/* 4 unit normals as 16-bit snorm (rounded to nearest even, as skin_snorm16_of) */
 static void store_snorm4(int16_t *dst, v3x4 a, int valid)
 {
 	const float32x4_t one = vdupq_n_f32(SKIN_COMPACT_NORMAL_ONE);
@@ -258,56 +246,48 @@ static void dqbs4(const skin_bones *b, const batch4 *bt, v3x4 *p, v3x4 *n)
 	*n = move4(&d, s, bt->n, 0);
 }
 
-void skin_lbs_neon(const skin_soa *in, const skin_bones *b, int first, int end, const skin_out *out)
+typedef void (*step_fn)(const skin_bones *b, const batch4 *bt, v3x4 *p, v3x4 *n);
+
+/* Steps of 4 vertices over either stream form (the other pointer NULL),
+ * inlined per kernel so that the choices fold away. */
+static inline __attribute__((always_inline)) void run4(step_fn step, const skin_soa *fl, const skin_compact *co,
+							 const skin_bones *b, int first, int end, const skin_out *out)
 {
 	for (int v = first; v < end; v += NEON_LANES) {
 		batch4 bt;
 		v3x4 p, n;
-		load_float(in, v, &bt);
-		lbs4(b, &bt, &p, &n);
+		if (co)
+			load_compact(co, v, &bt);
+		else
+			load_float(fl, v, &bt);
+		step(b, &bt, &p, &n);
 		int valid = end - v < NEON_LANES ? end - v : NEON_LANES;
 		store_xyz4(out->pos + 3 * v, p, valid);
-		store_xyz4(out->nrm + 3 * v, n, valid);
+		if (co)
+			store_snorm4(out->nrm16 + 3 * v, n, valid);
+		else
+			store_xyz4(out->nrm + 3 * v, n, valid);
 	}
+}
+
+void skin_lbs_neon(const skin_soa *in, const skin_bones *b, int first, int end, const skin_out *out)
+{
+	run4(lbs4, in, NULL, b, first, end, out);
 }
 
 void skin_dqbs_neon(const skin_soa *in, const skin_bones *b, int first, int end, const skin_out *out)
 {
-	for (int v = first; v < end; v += NEON_LANES) {
-		batch4 bt;
-		v3x4 p, n;
-		load_float(in, v, &bt);
-		dqbs4(b, &bt, &p, &n);
-		int valid = end - v < NEON_LANES ? end - v : NEON_LANES;
-		store_xyz4(out->pos + 3 * v, p, valid);
-		store_xyz4(out->nrm + 3 * v, n, valid);
-	}
+	run4(dqbs4, in, NULL, b, first, end, out);
 }
 
 void skin_lbs_compact_neon(const skin_compact *in, const skin_bones *b, int first, int end, const skin_out *out)
 {
-	for (int v = first; v < end; v += NEON_LANES) {
-		batch4 bt;
-		v3x4 p, n;
-		load_compact(in, v, &bt);
-		lbs4(b, &bt, &p, &n);
-		int valid = end - v < NEON_LANES ? end - v : NEON_LANES;
-		store_xyz4(out->pos + 3 * v, p, valid);
-		store_snorm4(out->nrm16 + 3 * v, n, valid);
-	}
+	run4(lbs4, NULL, in, b, first, end, out);
 }
 
 void skin_dqbs_compact_neon(const skin_compact *in, const skin_bones *b, int first, int end, const skin_out *out)
 {
-	for (int v = first; v < end; v += NEON_LANES) {
-		batch4 bt;
-		v3x4 p, n;
-		load_compact(in, v, &bt);
-		dqbs4(b, &bt, &p, &n);
-		int valid = end - v < NEON_LANES ? end - v : NEON_LANES;
-		store_xyz4(out->pos + 3 * v, p, valid);
-		store_snorm4(out->nrm16 + 3 * v, n, valid);
-	}
+	run4(dqbs4, NULL, in, b, first, end, out);
 }
 
 #else
