@@ -46,11 +46,11 @@ static void compute_flips(skin_bones *out)
 	}
 }
 
-static void split_halves(int16_t dst[16], const int32_t c[8])
+static void split_halves(int16_t dst[16], const int64_t c[8])
 {
 	for (int i = 0; i < 8; i++) {
-		int16_t lo = (int16_t)(uint16_t)((uint32_t)c[i] & 0xffff);
-		int16_t hi = (int16_t)(((int64_t)c[i] - lo) / 65536);
+		int16_t lo = (int16_t)(uint16_t)((uint64_t)c[i] & 0xffff);
+		int16_t hi = (int16_t)((c[i] - lo) / 65536);
 		dst[i / 4 * 8 + i % 4] = lo;
 		dst[i / 4 * 8 + 4 + i % 4] = hi;
 	}
@@ -63,10 +63,11 @@ static void compute_halves(skin_bones *out)
 		if (b >= out->count && b != SKIN_IDENTITY_BONE)
 			continue;
 		const fx_dq *d = &out->fdq[b];
-		int32_t c[8] = { d->real.w, d->real.x, d->real.y, d->real.z,
+		/* in 64 bits: a saturated dual component negates past int32 */
+		int64_t c[8] = { d->real.w, d->real.x, d->real.y, d->real.z,
 				 d->dual.w, d->dual.x, d->dual.y, d->dual.z };
 		/* within the limit, hi fits int16 too, negated or not (real
-		 * parts are at most 2^30 long) */
+		 * parts are at most 2^30 long); beyond it the halves go unused */
 		for (int i = 4; i < 8; i++)
 			if (c[i] >= SKIN_SIMD_DUAL_LIMIT || c[i] <= -SKIN_SIMD_DUAL_LIMIT)
 				out->simd_ok = 0;
