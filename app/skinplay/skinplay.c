@@ -132,9 +132,12 @@ static int setup(player *p)
 static const char *threads_note(const player *p)
 {
 	static char note[48];
-	int n = cli_skin_threads(&p->skin);
-	snprintf(note, sizeof note, "%s%.0d%s%s", n > 1 ? " on " : "", n > 1 ? n : 0, n > 1 ? " threads" : "",
-		 p->skin.use_compact ? ", compact streams" : "");
+	int n = cli_skin_threads(&p->skin), at = 0;
+	note[0] = '\0';
+	if (n > 1)
+		at = snprintf(note, sizeof note, " on %d threads", n);
+	if (p->skin.use_compact)
+		snprintf(note + at, sizeof note - (size_t)at, ", compact streams");
 	return note;
 }
 
