@@ -27,8 +27,9 @@ SKIN_INLINE v3x8 load_positions(const skin_compact *in, int v)
 	return p;
 }
 
-/* skin_oct_decode on 8 lanes, normalised */
-SKIN_INLINE v3x8 load_normals(const skin_compact *in, int v)
+/* skin_oct_decode on 8 lanes; normalised unless the caller normalises
+ * after (LBS: only the decoded normal's direction matters there) */
+SKIN_INLINE v3x8 load_normals(const skin_compact *in, int v, int normalise)
 {
 	const __m256 sign = _mm256_set1_ps(-0.0f), scale = _mm256_set1_ps(1.0f / SKIN_COMPACT_NORMAL_ONE);
 	__m256 x = _mm256_mul_ps(load_i16(in->ox + v), scale), y = _mm256_mul_ps(load_i16(in->oy + v), scale);
@@ -38,7 +39,7 @@ SKIN_INLINE v3x8 load_normals(const skin_compact *in, int v)
 	/* x - t with x's sign: x >= 0 moves down by t, x < 0 up */
 	v3x8 n = { _mm256_sub_ps(x, _mm256_or_ps(t, _mm256_and_ps(x, sign))),
 		   _mm256_sub_ps(y, _mm256_or_ps(t, _mm256_and_ps(y, sign))), z };
-	return normalize8_fast(n);
+	return normalise ? normalize8_fast(n) : n;
 }
 
 /* The batch's weights as floats in ws (the pivot's the rest of 65535),
@@ -68,27 +69,36 @@ SKIN_INLINE infl8 influences(const skin_compact *in, int v, float ws[SKP_MAX_INF
 }
 
 /* 8 unit normals as 24 interleaved snorm16 values at dst (the first
- * `valid` triples) */
+ * `valid` triples). Per 128-bit half (4 vertices): packed x|y and z|z,
+ * byte shuffles interleave them into 8 values (x0 y0 z0 x1 y1 z1 x2 y2)
+ * and 4 (z2 x3 y3 z3). */
 SKIN_INLINE void store_snorm8(int16_t *dst, v3x8 n, int valid)
 {
 	const __m256 one = _mm256_set1_ps(SKIN_COMPACT_NORMAL_ONE);
-	int32_t xyz[3 * SKIN_LANES] __attribute__((aligned(32)));
-	skin_store_xyz8(xyz, _mm256_castsi256_ps(_mm256_cvtps_epi32(_mm256_mul_ps(n.x, one))),
-			_mm256_castsi256_ps(_mm256_cvtps_epi32(_mm256_mul_ps(n.y, one))),
-			_mm256_castsi256_ps(_mm256_cvtps_epi32(_mm256_mul_ps(n.z, one))), SKIN_LANES);
-	const __m256i *src = (const __m256i *)xyz;
-	/* packs works within 128-bit halves: the 64-bit permute restores order */
-	__m256i a = _mm256_permute4x64_epi64(_mm256_packs_epi32(_mm256_load_si256(src), _mm256_load_si256(src + 1)), 0xD8);
-	__m256i b = _mm256_permute4x64_epi64(_mm256_packs_epi32(_mm256_load_si256(src + 2), _mm256_load_si256(src + 2)), 0xD8);
-	if (valid == SKIN_LANES) {
-		_mm256_storeu_si256((__m256i *)dst, a);
-		_mm_storeu_si128((__m128i *)(dst + 16), _mm256_castsi256_si128(b));
-		return;
-	}
+	__m256i xy = _mm256_packs_epi32(_mm256_cvtps_epi32(_mm256_mul_ps(n.x, one)),
+					_mm256_cvtps_epi32(_mm256_mul_ps(n.y, one)));
+	__m256i zz = _mm256_cvtps_epi32(_mm256_mul_ps(n.z, one));
+	zz = _mm256_packs_epi32(zz, zz);
+	/* int16 k of the source to each slot: bytes 2k, 2k + 1; -1 zero */
+#define W(k) (char)(2 * (k)), (char)(2 * (k) + 1)
+#define Z (char)-1, (char)-1
+	const __m256i a_xy = _mm256_setr_epi8(W(0), W(4), Z, W(1), W(5), Z, W(2), W(6),
+					      W(0), W(4), Z, W(1), W(5), Z, W(2), W(6));
+	const __m256i a_z = _mm256_setr_epi8(Z, Z, W(0), Z, Z, W(1), Z, Z, Z, Z, W(0), Z, Z, W(1), Z, Z);
+	const __m256i b_xy = _mm256_setr_epi8(Z, W(3), W(7), Z, Z, Z, Z, Z, Z, W(3), W(7), Z, Z, Z, Z, Z);
+	const __m256i b_z = _mm256_setr_epi8(W(2), Z, Z, W(3), Z, Z, Z, Z, W(2), Z, Z, W(3), Z, Z, Z, Z);
+#undef W
+#undef Z
+	__m256i a = _mm256_or_si256(_mm256_shuffle_epi8(xy, a_xy), _mm256_shuffle_epi8(zz, a_z));
+	__m256i b = _mm256_or_si256(_mm256_shuffle_epi8(xy, b_xy), _mm256_shuffle_epi8(zz, b_z));
 	int16_t tmp[3 * SKIN_LANES];
-	_mm256_storeu_si256((__m256i *)tmp, a);
-	_mm_storeu_si128((__m128i *)(tmp + 16), _mm256_castsi256_si128(b));
-	memcpy(dst, tmp, sizeof(int16_t) * 3 * (size_t)valid);
+	int16_t *to = valid == SKIN_LANES ? dst : tmp;
+	_mm_storeu_si128((__m128i *)to, _mm256_castsi256_si128(a));
+	_mm_storel_epi64((__m128i *)(to + 8), _mm256_castsi256_si128(b));
+	_mm_storeu_si128((__m128i *)(to + 12), _mm256_extracti128_si256(a, 1));
+	_mm_storel_epi64((__m128i *)(to + 20), _mm256_extracti128_si256(b, 1));
+	if (to == tmp)
+		memcpy(dst, tmp, sizeof(int16_t) * 3 * (size_t)valid);
 }
 
 void skin_lbs_compact_avx2(const skin_compact *in, const skin_bones *b, int first, int end, const skin_out *out)
@@ -100,7 +110,7 @@ void skin_lbs_compact_avx2(const skin_compact *in, const skin_bones *b, int firs
 		lbs_block(&s, b, m);
 		int valid = end - v < SKIN_LANES ? end - v : SKIN_LANES;
 		v3x8 p = apply_rows(m, load_positions(in, v), 1);
-		v3x8 n = normalize8_fast(apply_rows(m, load_normals(in, v), 0));
+		v3x8 n = normalize8_fast(apply_rows(m, load_normals(in, v, 0), 0));
 		skin_store_xyz8(out->pos + 3 * v, p.x, p.y, p.z, valid);
 		store_snorm8(out->nrm16 + 3 * v, n, valid);
 	}
@@ -114,7 +124,7 @@ void skin_dqbs_compact_avx2(const skin_compact *in, const skin_bones *b, int fir
 		dq8 d = dq_blend8(&s, b);
 		__m256 two_s = two_over_norm2(&d);
 		v3x8 p = move8(&d, two_s, load_positions(in, v), 1);
-		v3x8 n = move8(&d, two_s, load_normals(in, v), 0);
+		v3x8 n = move8(&d, two_s, load_normals(in, v, 1), 0);
 		int valid = end - v < SKIN_LANES ? end - v : SKIN_LANES;
 		skin_store_xyz8(out->pos + 3 * v, p.x, p.y, p.z, valid);
 		store_snorm8(out->nrm16 + 3 * v, n, valid);
