@@ -50,15 +50,14 @@ static void from_q16(const int32_t *in, float *out, int n)
 		out[i] = (float)in[i] * (1.0f / 65536.0f);
 }
 
-void cli_skin_use_workers(cli_skin *t, workers *pool, int split_min)
+void cli_skin_use_workers(cli_skin *t, workers *pool)
 {
 	t->pool = pool;
-	t->split_min = split_min;
 }
 
 int cli_skin_threads(const cli_skin *t)
 {
-	return t->pool && t->soa.count >= t->split_min ? workers_count(t->pool) : 1;
+	return t->pool ? workers_count(t->pool) : 1;
 }
 
 void cli_skin_use_compact(cli_skin *t)

@@ -19,7 +19,6 @@ typedef struct cli_skin {
 	skin_compact compact; /* LBS and DQBS read these when use_compact */
 	int use_compact;
 	workers *pool;        /* NULL: the caller's thread skins alone */
-	int split_min;        /* vertices from which the pool's threads share the mesh */
 } cli_skin;
 
 /* Lays the mesh and its weights out for the kernels (the mesh is bound in
@@ -35,11 +34,11 @@ void cli_skin_frame(cli_skin *t, const float *values);
 /* The same for a pose computed elsewhere (the synthetic scene). */
 void cli_skin_pose(cli_skin *t, const skel_pose *pose);
 
-/* After cli_skin_init (which leaves the pool out): from now on meshes of split_min vertices or more are skinned by every
- * thread of pool, each on its share (results identical to one thread's);
- * smaller ones on the caller's thread, where waking the pool would cost
- * more than it saves. pool NULL: always the caller's. */
-void cli_skin_use_workers(cli_skin *t, workers *pool, int split_min);
+/* After cli_skin_init (which leaves the pool out): from now on every
+ * thread of pool skins its share of the mesh (results identical to one
+ * thread's); pool NULL: the caller's thread alone. Worth it only for a
+ * mesh big enough to pay for waking the pool: the caller decides. */
+void cli_skin_use_workers(cli_skin *t, workers *pool);
 
 /* After cli_skin_init: LBS and DQBS read compact streams (skin_compact.h,
  * made here from the float ones) from now on, through cli_skin_run16. */

@@ -87,6 +87,14 @@ int board_hud_parse(const char *word)
 	return word ? pick(word, names, 3) : -1;
 }
 
+int board_threads_parse(const char *word)
+{
+	long n;
+	if (word && tok_ieq(word, "auto"))
+		return 0;
+	return word && tok_parse_long(word, &n) == 0 && n >= 1 && n <= BOARD_MAX_THREADS ? (int)n : -1;
+}
+
 int board_streams_parse(const char *word)
 {
 	static const char *const names[] = { "float", "compact" };
@@ -210,13 +218,8 @@ static skp_status skin_key(board_config *c, const ini_entry *e, skp_error *err)
 {
 	long v;
 	if (tok_ieq(e->key, "threads")) {
-		if (tok_ieq(e->value, "auto")) {
-			c->threads = 0;
-			return SKP_OK;
-		}
-		if (get_long(e, 1, BOARD_MAX_THREADS, &v, "auto or a thread count of 1.." STR(BOARD_MAX_THREADS), err) != SKP_OK)
-			return err->code;
-		c->threads = (int)v;
+		if ((c->threads = board_threads_parse(e->value)) < 0)
+			return bad(err, e, "auto or a thread count of 1.." STR(BOARD_MAX_THREADS));
 		return SKP_OK;
 	}
 	if (tok_ieq(e->key, "streams")) {

@@ -51,6 +51,10 @@ typedef enum board_hud { BOARD_HUD_OFF, BOARD_HUD_ENGINEER, BOARD_HUD_VISITOR } 
 /* What the CPU kernels read (skinplay --streams; app/skin/skin_compact.h). */
 typedef enum board_streams { BOARD_STREAMS_FLOAT, BOARD_STREAMS_COMPACT } board_streams;
 
+/* "auto" (0: one thread per core) or a count of 1..BOARD_MAX_THREADS;
+ * -1 for anything else. */
+int board_threads_parse(const char *word);
+
 /* "float", "compact"; -1 for another word. */
 int board_streams_parse(const char *word);
 

@@ -77,15 +77,14 @@ static int open_display(player *p)
 static void start_workers(player *p)
 {
 	int n = p->o.threads > 0 ? p->o.threads : workers_cpu_count();
-	int split = p->kiosk.board.split_verts;
-	if (n < 2 || p->skin.soa.count < split)
+	if (n < 2 || p->skin.soa.count < p->kiosk.board.split_verts)
 		return;
 	p->pool = workers_start(n);
 	if (!p->pool) {
 		fprintf(stderr, "skinplay: cannot start %d skinning threads: skinning on one\n", n);
 		return;
 	}
-	cli_skin_use_workers(&p->skin, p->pool, split);
+	cli_skin_use_workers(&p->skin, p->pool);
 }
 
 static int setup(player *p)

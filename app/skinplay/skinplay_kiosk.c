@@ -47,8 +47,6 @@ static void apply_board(const board_config *b, play_opts *o, int argc, char **ar
 		o->rotation = b->rotation;
 	if (b->hud >= 0 && o->hud < 0)
 		o->hud = b->hud;
-	if (o->threads < 0)
-		o->threads = b->threads;
 	if (b->width && !given(argc, argv, "--size")) {
 		o->width = b->width;
 		o->height = b->height;

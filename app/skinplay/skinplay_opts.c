@@ -100,14 +100,8 @@ static int take_number(const char *opt, const char *v, long *out, long min)
 
 static int take_threads(play_opts *o, const char *v)
 {
-	long n;
-	if (!strcmp(v, "auto"))
-		return o->threads = 0, 0;
-	if (cli_parse_long("--threads", v, &n) < 0)
-		return -1;
-	if (n < 1 || n > BOARD_MAX_THREADS)
-		return fprintf(stderr, PROG ": --threads expects auto or 1..%d, got %ld\n", BOARD_MAX_THREADS, n), -1;
-	o->threads = (int)n;
+	if ((o->threads = board_threads_parse(v)) < 0)
+		return fprintf(stderr, PROG ": --threads expects auto or 1..%d, got '%s'\n", BOARD_MAX_THREADS, v), -1;
 	return 0;
 }
 

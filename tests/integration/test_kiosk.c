@@ -299,7 +299,7 @@ static void test_skinning_threads(void **state)
 	assert_int_equal(run("auto", "--threads auto", 1), 0);
 	expect_log("CPU skinning)");
 	assert_int_equal(run("bad", "--threads 0", 1), 1);
-	expect_log("--threads expects auto or 1..16, got 0");
+	expect_log("--threads expects auto or 1..16, got '0'");
 }
 
 /* --streams compact: LBS and DQBS read the 16-bit streams and upload

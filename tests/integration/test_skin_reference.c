@@ -30,6 +30,7 @@
 #include "skin.h"
 #include "skin_compact.h"
 #include "skin_kernels.h"
+#include "test_diff.h"
 #include "skin_scene.h"
 #include "test_parse.h"
 #include "test_paths.h"
@@ -220,35 +221,19 @@ static void load_body(body *b)
 	b->poses = 0;
 }
 
-static double max_diff(const float *a, const float *b, int n)
-{
-	double d = 0;
-	for (int i = 0; i < n; i++)
-		d = fmax(d, fabs((double)a[i] - b[i]));
-	return d;
-}
-
-static double max_diff_fixed(const int32_t *a, const int32_t *b, int n)
-{
-	double d = 0;
-	for (int i = 0; i < n; i++)
-		d = fmax(d, fabs((double)a[i] - b[i]));
-	return d;
-}
-
 /* skin_run's kernels against the portable ones, into b->simd_err */
 static void compare_portable(body *b, int n)
 {
 	skin_out out = { spos, snrm, sfpos, sfnrm, NULL };
 	skin_lbs_scalar(&soa, &bones, 0, n, &out);
-	b->simd_err[SKIN_LBS] = fmax(b->simd_err[SKIN_LBS], fmax(max_diff(pos[SKIN_LBS], spos, 3 * n),
-								   max_diff(nrm[SKIN_LBS], snrm, 3 * n)));
+	b->simd_err[SKIN_LBS] = fmax(b->simd_err[SKIN_LBS], fmax(test_max_diff(pos[SKIN_LBS], spos, 3 * n),
+								   test_max_diff(nrm[SKIN_LBS], snrm, 3 * n)));
 	skin_dqbs_scalar(&soa, &bones, 0, n, &out);
-	b->simd_err[SKIN_DQBS] = fmax(b->simd_err[SKIN_DQBS], fmax(max_diff(pos[SKIN_DQBS], spos, 3 * n),
-								     max_diff(nrm[SKIN_DQBS], snrm, 3 * n)));
+	b->simd_err[SKIN_DQBS] = fmax(b->simd_err[SKIN_DQBS], fmax(test_max_diff(pos[SKIN_DQBS], spos, 3 * n),
+								     test_max_diff(nrm[SKIN_DQBS], snrm, 3 * n)));
 	skin_dqbs_fixed(&soa, &bones, 0, n, &out);
 	b->simd_err[SKIN_DQBS_FIXED] = fmax(b->simd_err[SKIN_DQBS_FIXED],
-					    fmax(max_diff_fixed(fpos, sfpos, 3 * n), max_diff_fixed(fnrm, sfnrm, 3 * n)));
+					    fmax(test_max_diff_i32(fpos, sfpos, 3 * n), test_max_diff_i32(fnrm, sfnrm, 3 * n)));
 }
 
 static double err3(const float *k, const double r[3])

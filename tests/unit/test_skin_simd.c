@@ -13,6 +13,7 @@
 
 #include "fixed_convert.h"
 #include "skin_kernels.h"
+#include "test_diff.h"
 
 #define N 1003
 
@@ -70,24 +71,6 @@ static void setup_scene(void)
 	skin_bones_compute(&bones, &s, &bind, &pose);
 }
 
-static double max_diff(const float *a, const float *b, int n)
-{
-	double d = 0;
-	for (int i = 0; i < n; i++)
-		d = fmax(d, fabs((double)a[i] - b[i]));
-	return d;
-}
-
-static long max_diff_fixed(const int32_t *a, const int32_t *b, int n)
-{
-	long d = 0;
-	for (int i = 0; i < n; i++) {
-		long e = labs((long)a[i] - b[i]);
-		d = e > d ? e : d;
-	}
-	return d;
-}
-
 /* skin_run in three slices (as worker threads split it) */
 static void run_sliced(skin_algo a, const skin_out *out)
 {
@@ -104,14 +87,14 @@ static void test_float_kernels_match_scalar(void **state)
 	skin_lbs_scalar(&soa, &bones, 0, N, &a);
 	memset(pos_b, 0, sizeof pos_b);
 	run_sliced(SKIN_LBS, &b);
-	double dp = max_diff(pos_a, pos_b, 3 * N), dn = max_diff(nrm_a, nrm_b, 3 * N);
+	double dp = test_max_diff(pos_a, pos_b, 3 * N), dn = test_max_diff(nrm_a, nrm_b, 3 * N);
 	print_message("%s LBS vs scalar: positions %.3g, normals %.3g\n", skin_simd_name(), dp, dn);
 	assert_true(dp < 1e-4 && dn < 1e-5);
 	skin_dqbs_scalar(&soa, &bones, 0, N, &a);
 	memset(pos_b, 0, sizeof pos_b);
 	run_sliced(SKIN_DQBS, &b);
-	dp = max_diff(pos_a, pos_b, 3 * N);
-	dn = max_diff(nrm_a, nrm_b, 3 * N);
+	dp = test_max_diff(pos_a, pos_b, 3 * N);
+	dn = test_max_diff(nrm_a, nrm_b, 3 * N);
 	print_message("%s DQBS vs scalar: positions %.3g, normals %.3g\n", skin_simd_name(), dp, dn);
 	assert_true(dp < 1e-4 && dn < 1e-5);
 }
@@ -124,7 +107,7 @@ static void test_fixed_kernel_matches_scalar(void **state)
 	skin_dqbs_fixed(&soa, &bones, 0, N, &a);
 	memset(fpos_b, 0, sizeof fpos_b);
 	run_sliced(SKIN_DQBS_FIXED, &b);
-	long dp = max_diff_fixed(fpos_a, fpos_b, 3 * N), dn = max_diff_fixed(fnrm_a, fnrm_b, 3 * N);
+	long dp = test_max_diff_i32(fpos_a, fpos_b, 3 * N), dn = test_max_diff_i32(fnrm_a, fnrm_b, 3 * N);
 	print_message("%s fixed DQBS vs scalar fixed: positions %ld LSB, normals %ld LSB (Q16)\n",
 		      skin_simd_name(), dp, dn);
 	assert_int_equal(dp, 0);
@@ -149,8 +132,8 @@ static void test_fixed_norm_just_below_one(void **state)
 	skin_out a = { NULL, NULL, fpos_a, fnrm_a, NULL }, b = { NULL, NULL, fpos_b, fnrm_b, NULL };
 	skin_dqbs_fixed(&soa, &bones, 0, N, &a);
 	run_sliced(SKIN_DQBS_FIXED, &b);
-	assert_int_equal(max_diff_fixed(fpos_a, fpos_b, 3 * N), 0);
-	assert_int_equal(max_diff_fixed(fnrm_a, fnrm_b, 3 * N), 0);
+	assert_int_equal(test_max_diff_i32(fpos_a, fpos_b, 3 * N), 0);
+	assert_int_equal(test_max_diff_i32(fnrm_a, fnrm_b, 3 * N), 0);
 }
 
 static void expect_fixed_same_as_scalar(void)
@@ -159,8 +142,8 @@ static void expect_fixed_same_as_scalar(void)
 	skin_dqbs_fixed(&soa, &bones, 0, N, &a);
 	memset(fpos_b, 0, sizeof fpos_b);
 	run_sliced(SKIN_DQBS_FIXED, &b);
-	assert_int_equal(max_diff_fixed(fpos_a, fpos_b, 3 * N), 0);
-	assert_int_equal(max_diff_fixed(fnrm_a, fnrm_b, 3 * N), 0);
+	assert_int_equal(test_max_diff_i32(fpos_a, fpos_b, 3 * N), 0);
+	assert_int_equal(test_max_diff_i32(fnrm_a, fnrm_b, 3 * N), 0);
 }
 
 /* Weights skin_soa_load never writes but a caller may (a full weight,
@@ -208,14 +191,6 @@ static void test_fixed_outside_envelope(void **state)
 	expect_fixed_same_as_scalar();
 }
 
-static long max_diff16(const int16_t *a, const int16_t *b, int n)
-{
-	long d = 0;
-	for (int i = 0; i < n; i++)
-		d = labs((long)a[i] - b[i]) > d ? labs((long)a[i] - b[i]) : d;
-	return d;
-}
-
 /* The compact kernels skin_run_compact picks agree with the portable
  * ones: positions to float rounding, snorm16 normals within a step. */
 static void test_compact_kernels_match_scalar(void **state)
@@ -235,8 +210,8 @@ static void test_compact_kernels_match_scalar(void **state)
 		memset(pos_b, 0, sizeof pos_b);
 		skin_run_compact((skin_algo)algo, &compact, &bones, 0, 512, &b);
 		skin_run_compact((skin_algo)algo, &compact, &bones, 512, N - 512, &b);
-		double dp = max_diff(pos_a, pos_b, 3 * N);
-		long dn = max_diff16(n16_a, n16_b, 3 * N);
+		double dp = test_max_diff(pos_a, pos_b, 3 * N);
+		long dn = test_max_diff_i16(n16_a, n16_b, 3 * N);
 		print_message("%s compact %s vs scalar compact: positions %.3g, normals %ld snorm16 steps\n",
 			      skin_simd_name(), algo == SKIN_LBS ? "LBS" : "DQBS", dp, dn);
 		assert_true(dp < 1e-4 && dn <= 2);
