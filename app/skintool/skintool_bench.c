@@ -1,4 +1,4 @@
-/* skintool bench [--verts N] [--threads T]: skinning throughput per
+/* skintool bench [--verts N] [--threads T] [--rounds R]: skinning throughput per
  * algorithm on a synthetic mesh, next to the memory-bandwidth bound for the
  * bytes each vertex reads and writes, measured in the same run. */
 #include <math.h>
@@ -145,13 +145,17 @@ static void run_slice(void *ctx, int slice, int slices)
 		skin_run(b->k->algo, &b->soa, &b->bones, first, count, &b->out);
 }
 
-/* Seconds per pass of one timed round: passes for at least 50 ms. */
+/* Seconds per pass of one timed round: passes for at least 50 ms, on the
+ * pool's threads or (w NULL) on the caller's alone. */
 static double round_seconds_per_pass(workers *w, bench *b)
 {
 	int passes = 0;
 	uint64_t t0 = clock_now_ns(), t1;
 	do {
-		workers_run(w, run_slice, b);
+		if (w)
+			workers_run(w, run_slice, b);
+		else
+			run_slice(b, 0, 1);
 		passes++;
 		t1 = clock_now_ns();
 	} while (t1 - t0 < 50000000u);
@@ -161,38 +165,62 @@ static double round_seconds_per_pass(workers *w, bench *b)
 /* Best of many short rounds per algorithm, the algorithms taking turns so
  * that a machine slowing down or speeding up (a shared VM) shifts all of
  * them alike and their ratios stay meaningful: short rounds give each
- * algorithm more chances to be timed in the machine's fast phases. */
-static void best_seconds_per_pass(workers *w, bench *b, double best[K_COUNT])
+ * algorithm more chances to be timed in the machine's fast phases. With
+ * more than one thread, each round times the caller's thread alone too
+ * (best[1]), so that the scaling is a ratio within the run. */
+static void best_seconds_per_pass(workers *w, bench *b, int rounds, double best[2][K_COUNT])
 {
 	static cli_progress pr;
-	for (int k = 0; k < K_COUNT; k++)
-		best[k] = 1e30;
-	cli_progress_start(&pr, "bench", "rounds", 20);
-	for (int round = 0; round < 20; round++) {
+	for (int p = 0; p < 2; p++)
+		for (int k = 0; k < K_COUNT; k++)
+			best[p][k] = 1e30;
+	cli_progress_start(&pr, "bench", "rounds", rounds);
+	for (int round = 0; round < rounds; round++) {
 		for (int k = 0; k < K_COUNT; k++) {
 			b->k = &kernels[k];
-			double s = round_seconds_per_pass(w, b);
-			if (s < best[k])
-				best[k] = s;
+			for (int p = 0; p < (workers_count(w) > 1 ? 2 : 1); p++) {
+				double s = round_seconds_per_pass(p == 0 ? w : NULL, b);
+				if (s < best[p][k])
+					best[p][k] = s;
+			}
 		}
 		cli_progress_step(&pr, round + 1);
 	}
 	cli_progress_end(&pr, " of the 5 kernels");
 }
 
+typedef struct copy_job {
+	char *dst;
+	const char *src;
+	size_t bytes;
+} copy_job;
+
+static void copy_slice(void *ctx, int slice, int slices)
+{
+	const copy_job *j = ctx;
+	size_t first = j->bytes / (size_t)slices * (size_t)slice;
+	size_t end = slice == slices - 1 ? j->bytes : first + j->bytes / (size_t)slices;
+	memcpy(j->dst + first, j->src + first, end - first);
+}
+
 /* Copy bandwidth (bytes read + written per second) over buffers the size
- * of the kernels' working set, best of several passes. */
-static double copy_bandwidth(size_t bytes)
+ * of the kernels' working set, on the kernels' threads, best of several
+ * passes. */
+static double copy_bandwidth(workers *w, size_t bytes)
 {
 	char *a = aligned_alloc(64, bytes), *c = aligned_alloc(64, bytes);
-	if (!a || !c)
+	if (!a || !c) {
+		free(a);
+		free(c);
 		return 0;
+	}
 	memset(a, 1, bytes);
 	memset(c, 2, bytes);
+	copy_job job = { c, a, bytes };
 	double best = 1e30;
 	for (int round = 0; round < 5; round++) {
 		uint64_t t0 = clock_now_ns();
-		memcpy(c, a, bytes);
+		workers_run(w, copy_slice, &job);
 		double s = (double)(clock_now_ns() - t0) * 1e-9;
 		if (s < best)
 			best = s;
@@ -204,49 +232,52 @@ static double copy_bandwidth(size_t bytes)
 }
 
 typedef struct bench_args {
-	long verts, threads;
+	long verts, threads, rounds;
 } bench_args;
 
-enum { OPT_VERTS = 1, OPT_THREADS };
+enum { OPT_VERTS = 1, OPT_THREADS, OPT_ROUNDS };
 
 static const cli_opt bench_opts[] = {
 	{ "verts", 0, "N", OPT_VERTS, "vertices to skin (default 1000000)" },
-	{ "threads", 0, "T", OPT_THREADS, "worker threads (default 1)" },
+	{ "threads", 0, "T", OPT_THREADS, "worker threads (default 1); with more than one, each round also\n"
+					   "times one thread, and the table gives the speed-up" },
+	{ "rounds", 0, "R", OPT_ROUNDS, "timed rounds of 50 ms per kernel; the best counts (default 20)" },
 	{ NULL, 0, NULL, 0, NULL },
 };
 
 static int bench_take(void *ctx, int id, const char *v)
 {
+	static const char *const names[] = { NULL, "--verts", "--threads", "--rounds" };
 	bench_args *a = ctx;
-	return id == OPT_VERTS ? cli_parse_long("--verts", v, &a->verts) : cli_parse_long("--threads", v, &a->threads);
+	long *const dst[] = { NULL, &a->verts, &a->threads, &a->rounds };
+	return cli_parse_long(names[id], v, dst[id]);
 }
 
 static const cli_command bench_command = {
 	.prog = "skintool bench",
-	.usage = "[--verts=N] [--threads=T]",
+	.usage = "[--verts=N] [--threads=T] [--rounds=R]",
 	.about = "Skinning speed of every kernel (LBS, DQBS, fixed-point DQBS; scalar and SIMD) on a synthetic\n"
 		 "mesh, against the memory-bandwidth bound measured in the same run.",
 	.opts = { bench_opts },
 	.take = bench_take,
 };
 
-static int parse(int argc, char **argv, long *verts, long *threads)
+static int parse(int argc, char **argv, bench_args *a)
 {
-	bench_args a = { *verts, *threads };
-	int rc = cli_parse(&bench_command, &a, argc, argv, 0);
+	int rc = cli_parse(&bench_command, a, argc, argv, 0);
 	if (rc != 0)
 		return rc;
-	*verts = a.verts;
-	*threads = a.threads;
-	if (*verts < SKIN_LANES || *verts > 50000000 || *threads < 1 || *threads > WORKERS_MAX) {
-		fprintf(stderr, "skintool bench: --verts must be 8..50000000 and --threads 1..%d\n", WORKERS_MAX);
+	if (a->verts < SKIN_LANES || a->verts > 50000000 || a->threads < 1 || a->threads > WORKERS_MAX ||
+	    a->rounds < 1 || a->rounds > 1000) {
+		fprintf(stderr, "skintool bench: --verts must be 8..50000000, --threads 1..%d and --rounds 1..1000\n",
+			WORKERS_MAX);
 		return -1;
 	}
 	return 0;
 }
 
 /* Copy bandwidth per working-set size, measured once for each */
-static double bandwidth_for(long verts, int bytes)
+static double bandwidth_for(workers *w, long verts, int bytes)
 {
 	static int sizes[K_COUNT];
 	static double bw[K_COUNT];
@@ -255,13 +286,13 @@ static double bandwidth_for(long verts, int bytes)
 			return bw[i];
 		if (!sizes[i]) {
 			sizes[i] = bytes;
-			return bw[i] = copy_bandwidth((size_t)verts * (size_t)bytes / 2);
+			return bw[i] = copy_bandwidth(w, (size_t)verts * (size_t)bytes / 2);
 		}
 	}
 	return 0;
 }
 
-static void print_ratios(int k, const double best[K_COUNT])
+static void print_ratios(int k, const double best[K_COUNT], const double one_thread[K_COUNT])
 {
 	if (k == K_DQBS || k == K_FIXED)
 		printf("   %.2fx LBS time", best[k] / best[K_LBS]);
@@ -271,47 +302,56 @@ static void print_ratios(int k, const double best[K_COUNT])
 		printf("   %.2fx float speed", best[k - K_LBS_COMPACT] / best[k]);
 	if (k == K_DQBS_COMPACT)
 		printf(", %.2fx compact LBS time", best[k] / best[K_LBS_COMPACT]);
+	if (one_thread)
+		printf("%s%.2fx one thread", k == K_LBS ? "   " : ", ", one_thread[k] / best[k]);
 	printf("\n");
+}
+
+static void print_table(workers *w, const bench_args *a, const double best[2][K_COUNT])
+{
+	printf("%-13s %10s %9s %11s %16s %9s\n", "algo", "Mverts/s", "ns/vert", "bytes/vert",
+	       "bw bound Mv/s", "of bound");
+	for (int k = 0; k < K_COUNT; k++) {
+		double rate = (double)a->verts / best[0][k];
+		double bound = bandwidth_for(w, a->verts, kernels[k].bytes) / kernels[k].bytes;
+		printf("%-13s %10.1f %9.2f %11d %16.1f %8.0f%%", kernels[k].name, rate * 1e-6,
+		       best[0][k] * 1e9 / (double)a->verts, kernels[k].bytes, bound * 1e-6, 100.0 * rate / bound);
+		print_ratios(k, best[0], workers_count(w) > 1 ? best[1] : NULL);
+	}
 }
 
 int cmd_bench(int argc, char **argv)
 {
 	static bench b;
-	long verts = 1000000, threads = 1;
+	bench_args a = { 1000000, 1, 20 };
 	void *block[2] = { NULL, NULL };
-	int rc = parse(argc, argv, &verts, &threads);
+	int rc = parse(argc, argv, &a);
 	if (rc != 0)
 		return rc < 0;
-	if (make_scene(&b, (int)verts, block) < 0) {
-		fprintf(stderr, "skintool bench: out of memory for %ld vertices\n", verts);
+	if (make_scene(&b, (int)a.verts, block) < 0) {
+		fprintf(stderr, "skintool bench: out of memory for %ld vertices\n", a.verts);
 		return 1;
 	}
 	make_bones(&b.bones);
-	workers *w = workers_start((int)threads);
+	workers *w = workers_start((int)a.threads);
 	if (!w) {
-		fprintf(stderr, "skintool bench: cannot start %ld threads\n", threads);
-		return 1;
+		fprintf(stderr, "skintool bench: cannot start %ld threads\n", a.threads);
+		rc = 1;
+		goto done;
 	}
-	printf("skinning %ld vertices, 4 influences, %d bones, %d thread(s), kernels: %s\n", verts,
+	printf("skinning %ld vertices, 4 influences, %d bones, %d thread(s), kernels: %s\n", a.verts,
 	       BENCH_BONES, workers_count(w), skin_simd_name());
-	printf("%-13s %10s %9s %11s %16s %9s\n", "algo", "Mverts/s", "ns/vert", "bytes/vert",
-	       "bw bound Mv/s", "of bound");
-	double best[K_COUNT];
-	best_seconds_per_pass(w, &b, best);
-	for (int k = 0; k < K_COUNT; k++) {
-		double rate = (double)verts / best[k];
-		double bound = bandwidth_for(verts, kernels[k].bytes) / kernels[k].bytes;
-		printf("%-13s %10.1f %9.2f %11d %16.1f %8.0f%%", kernels[k].name, rate * 1e-6,
-		       best[k] * 1e9 / (double)verts, kernels[k].bytes, bound * 1e-6, 100.0 * rate / bound);
-		print_ratios(k, best);
-	}
+	double best[2][K_COUNT];
+	best_seconds_per_pass(w, &b, (int)a.rounds, best);
+	print_table(w, &a, best);
 	printf("compact streams: positions within %.3g of the float ones (half a 16-bit step of the %.3g-unit box)\n",
 	       (double)skin_compact_position_bound(&b.compact), 2.0);
 	workers_stop(w);
+done:
 	free(block[0]);
 	free(block[1]);
 	free(b.out.pos);
 	free(b.out.fpos);
 	free(b.out.nrm16);
-	return 0;
+	return rc;
 }

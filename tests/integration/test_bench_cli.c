@@ -1,0 +1,123 @@
+/* `skintool bench` through the real command line: the table has a row per
+ * kernel whose figures agree with each other (M vertices/s against
+ * ns/vertex, the bytes each kernel moves), the ratios are printed, with
+ * more than one thread the speed-up over one thread measured in the same
+ * run, and bad options fail cleanly. No figure is checked against a speed:
+ * the machine decides those. */
+#include <stdarg.h>
+#include <stddef.h>
+#include <setjmp.h>
+#include <stdint.h>
+#include <cmocka.h>
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/wait.h>
+
+#include "test_paths.h"
+
+typedef struct expect_row {
+	const char *name;
+	int bytes;
+	const char *ratio; /* a ratio the row must print, or NULL */
+} expect_row;
+
+static const expect_row rows[] = {
+	{ "lbs", 72, NULL },
+	{ "dqbs", 72, "x LBS time" },
+	{ "dqbs-fixed", 64, "x float DQBS speed" },
+	{ "lbs-compact", 38, "x float speed" },
+	{ "dqbs-compact", 38, "x compact LBS time" },
+};
+#define ROWS (sizeof rows / sizeof rows[0])
+
+/* Runs skintool bench with args; stdout into out (size n), the exit status returned. */
+static int bench(const char *args, char *out, size_t n)
+{
+	char cmd[1024];
+	snprintf(cmd, sizeof cmd, "%s bench %s 2>/dev/null", test_tool_path("skintool"), args);
+	FILE *f = popen(cmd, "r");
+	assert_non_null(f);
+	size_t got = fread(out, 1, n - 1, f);
+	out[got] = 0;
+	int st = pclose(f);
+	assert_true(WIFEXITED(st));
+	return WEXITSTATUS(st);
+}
+
+static void check_table(char *text, int threads)
+{
+	char *save, *line = strtok_r(text, "\n", &save);
+	char first[128];
+	snprintf(first, sizeof first, "skinning 4000 vertices, 4 influences, 31 bones, %d thread(s), kernels: ",
+		 threads);
+	assert_non_null(line);
+	assert_memory_equal(line, first, strlen(first));
+	line = strtok_r(NULL, "\n", &save);
+	assert_non_null(line);
+	assert_memory_equal(line, "algo ", 5);
+	for (size_t r = 0; r < ROWS; r++) {
+		line = strtok_r(NULL, "\n", &save);
+		assert_non_null(line);
+		char name[32];
+		double rate, ns, bound, of;
+		int bytes;
+		if (sscanf(line, "%31s %lf %lf %d %lf %lf%%", name, &rate, &ns, &bytes, &bound, &of) != 6)
+			fail_msg("bad row '%s'", line);
+		assert_string_equal(name, rows[r].name);
+		assert_int_equal(bytes, rows[r].bytes);
+		assert_true(rate > 0 && ns > 0 && bound > 0);
+		/* M vertices/s times ns/vertex is 1000, to the printed digits */
+		assert_true(fabs(rate * ns - 1000) < 0.01 * 1000);
+		assert_true(fabs(100 * rate / bound - of) <= 1);
+		if (rows[r].ratio && !strstr(line, rows[r].ratio))
+			fail_msg("row '%s' lacks '%s'", line, rows[r].ratio);
+		const char *scaling = strstr(line, "x one thread");
+		if ((threads > 1) != (scaling != NULL))
+			fail_msg("row '%s' with %d thread(s)", line, threads);
+	}
+	line = strtok_r(NULL, "\n", &save);
+	assert_non_null(line);
+	assert_memory_equal(line, "compact streams: positions within ", 34);
+}
+
+static void test_table_one_thread(void **state)
+{
+	(void)state;
+	char out[4096];
+	assert_int_equal(bench("--verts=4000 --rounds=1", out, sizeof out), 0);
+	check_table(out, 1);
+}
+
+static void test_table_two_threads_with_scaling(void **state)
+{
+	(void)state;
+	char out[4096];
+	assert_int_equal(bench("--verts=4000 --threads=2 --rounds=2", out, sizeof out), 0);
+	check_table(out, 2);
+}
+
+static void test_bad_options(void **state)
+{
+	(void)state;
+	static const char *const bad[] = { "--rounds=0", "--verts=7", "--threads=17", "--verts=many",
+					   "--rounds", "--nosuch" };
+	char out[4096];
+	for (size_t i = 0; i < sizeof bad / sizeof bad[0]; i++) {
+		if (bench(bad[i], out, sizeof out) != 1)
+			fail_msg("'%s' did not exit 1", bad[i]);
+		assert_string_equal(out, "");
+	}
+}
+
+int main(void)
+{
+	const struct CMUnitTest tests[] = {
+		cmocka_unit_test(test_table_one_thread),
+		cmocka_unit_test(test_table_two_threads_with_scaling),
+		cmocka_unit_test(test_bad_options),
+	};
+	return cmocka_run_group_tests(tests, NULL, NULL);
+}
