@@ -5,7 +5,7 @@ PREFIX   ?= /usr/local
 DESTDIR  ?=
 
 .DEFAULT_GOAL := all
-VERSION  := 0.15.0
+VERSION  := 0.16.0
 GIT_REV  := $(or $(shell git describe --always --dirty --abbrev=12 2>/dev/null),unknown)
 
 include board/$(BOARD)/board.mk
@@ -292,7 +292,7 @@ help:
 	@echo "make size               code size and static RAM of skinplay"
 	@echo "make deps               check (and as root install) the Debian packages"
 	@echo "make install PREFIX=/usr/local DESTDIR="
-	@echo "make deb                skinplay_$(VERSION)_$(DEB_ARCH).deb (dpkg-deb; lintian when installed)"
+	@echo "make deb                skinplay and skinplay-tools_$(VERSION)_$(DEB_ARCH).deb (dpkg-deb; lintian when installed)"
 
 # fuzz, fuzz-smoke, lint, soak
 include tests/hardening.mk

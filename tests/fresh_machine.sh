@@ -2,10 +2,12 @@
 # The README's commands on a fresh machine: a Debian minbase root with only
 # git and make (debootstrap), a clone of this repository's HEAD, then
 # `make test` and `make run` exactly as the README has them, each timed.
-# With --deb it also builds the package there (`make deb`, lintian) and
-# installs it in a second, pristine root with `apt install ./skinplay_*.deb`,
-# plays the installed demo image headless to the end of its clip, runs
-# `skintool info` on it, purges the package and checks that nothing is left.
+# With --deb it also builds the packages there (`make deb`, lintian) and, in
+# a second, pristine root, installs skinplay alone (`apt install
+# ./skinplay_*.deb`: neither skintool nor Assimp may come with it), plays the
+# installed demo image headless to the end of its clip, installs
+# skinplay-tools and runs `skintool info` on the image, purges both and
+# checks that nothing is left.
 #
 #   tests/fresh_machine.sh [--suite=trixie|bookworm] [--deb] [--cross=rpi4]
 #                          [--keep] [--cache=DIR] [--mirror=URL] [--quiet]
@@ -164,37 +166,42 @@ if [ "$deb" = 1 ]; then
 	# what the build root wrote is in its overlay's upper layer (or the copy)
 	mkdir -p "$work/package-upper/root" "$work/package/root"
 	for d in build-upper build; do
-		for f in "$work/$d/root/work/main/build/"skinplay_*.deb; do
+		for f in "$work/$d/root/work/main/build/"skinplay*_*.deb; do
 			[ -f "$f" ] && cp "$f" "$work/package-upper/root/" && cp "$f" "$work/package/root/"
 		done
 	done
 	pkg=$(basename "$work/package-upper/root/"skinplay_*.deb)
-	say "$pkg: $(du -k "$work/package-upper/root/$pkg" | cut -f1) KiB"
+	tools=$(basename "$work/package-upper/root/"skinplay-tools_*.deb)
+	say "$pkg: $(du -k "$work/package-upper/root/$pkg" | cut -f1) KiB, $tools: $(du -k "$work/package-upper/root/$tools" | cut -f1) KiB"
 	# the file list of the untouched system, to compare after the purge (/run
 	# is a tmpfs on a booted system)
 	list='find / -xdev \( -path /proc -o -path /sys -o -path /dev -o -path /root -o -path /tmp -o -path /run -o -path /var/cache \
 		-o -path /var/lib/apt -o -path /var/lib/dpkg -o -path /var/log -o -path /src \) -prune -o -print | sort'
 	step package "package-install" "apt-get update -qq && $list > /root/before.txt &&
 		DEBIAN_FRONTEND=noninteractive apt-get install -y -qq ./root/$pkg >/dev/null &&
-		echo \"package: \$(dpkg-query -W -f='\${Package} \${Version} \${Architecture}' skinplay) installed\""
+		! command -v skintool >/dev/null && ! dpkg -l 'libassimp*' 2>/dev/null | grep -q '^ii' &&
+		echo \"package: \$(dpkg-query -W -f='\${Package} \${Version} \${Architecture}' skinplay) installed, without skintool or Assimp\""
 	step package "package-play" "skinplay --version | head -n 1 &&
 		skinplay --image /usr/share/skinplay/demo.skn --platform surfaceless --size 320x180 &&
+		test -f /usr/share/man/man1/skinplay.1.gz && echo 'package: played the demo to its end'"
+	step package "package-tools" "DEBIAN_FRONTEND=noninteractive apt-get install -y -qq ./root/$tools >/dev/null &&
 		skintool info /usr/share/skinplay/demo.skn | tail -n 1 &&
-		test -f /usr/share/man/man1/skinplay.1.gz && echo 'package: played the demo to its end; info: all good'"
+		test -f /usr/share/man/man1/skintool.1.gz &&
+		echo \"package: \$(dpkg-query -W -f='\${Package} \${Version}' skinplay-tools) installed; info: all good\""
 	# left behind: a path the purge did not take back that no installed package
 	# owns (what apt pulled in, adduser say, stays installed and owns its
 	# files), but for the shadow files' backups: the skinplay user and the
 	# gpio group stay, as Debian does with system users
-	step package "package-purge" "dpkg -L skinplay > /root/files.txt &&
-		DEBIAN_FRONTEND=noninteractive apt-get purge -y -qq skinplay >/dev/null &&
+	step package "package-purge" "dpkg -L skinplay skinplay-tools > /root/files.txt &&
+		DEBIAN_FRONTEND=noninteractive apt-get purge -y -qq skinplay skinplay-tools >/dev/null &&
 		DEBIAN_FRONTEND=noninteractive apt-get autoremove --purge -y -qq >/dev/null &&
 		$list > /root/after.txt && comm -13 /root/before.txt /root/after.txt > /root/new.txt &&
 		cat /var/lib/dpkg/info/*.list | sort -u > /root/owned.txt &&
 		comm -23 /root/new.txt /root/owned.txt | grep -vx -e /etc/passwd- -e /etc/group- -e /etc/shadow- \
 			-e /etc/gshadow- > /root/orphans.txt;
 		if [ -s /root/orphans.txt ]; then echo 'left behind:'; cat /root/orphans.txt; exit 1; fi;
-		! dpkg-query -W skinplay >/dev/null 2>&1 &&
-		echo \"package: purged, nothing left behind (\$(wc -l < /root/files.txt) paths were the package's)\""
+		! dpkg-query -W skinplay >/dev/null 2>&1 && ! dpkg-query -W skinplay-tools >/dev/null 2>&1 &&
+		echo \"package: purged, nothing left behind (\$(wc -l < /root/files.txt) paths were the packages')\""
 fi
 if [ -n "$cross" ]; then
 	step build "cross-$cross-deps" "cd /root/work/main && make deps BOARD=$cross"

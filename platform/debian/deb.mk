@@ -1,12 +1,15 @@
-# `make deb`: skinplay_VERSION_ARCH.deb for the board (host: amd64, rpi4:
-# arm64, cross-built), made with dpkg-deb from a `make install` tree:
-# objects rebuilt with Debian's hardening flags (dpkg-buildflags) in their
-# own directory, Depends computed from the binaries (dpkg-shlibdeps), so the
-# same recipe gives libgpiod2 on bookworm and libgpiod3 on trixie. lintian,
-# when installed, checks the result (errors fail the build).
+# `make deb`: two packages for the board (host: amd64, rpi4: arm64,
+# cross-built), skinplay (the device program, its demo, config, unit and
+# udev rule) and skinplay-tools (skintool: the host tool, which alone needs
+# Assimp), made with dpkg-deb from one `make install` tree: objects rebuilt
+# with Debian's hardening flags (dpkg-buildflags) in their own directory,
+# Depends computed from each package's binary (dpkg-shlibdeps), so the same
+# recipe gives libgpiod2 on bookworm and libgpiod3 on trixie. lintian, when
+# installed, checks both (errors fail the build).
 DEB_ARCH       ?= $(shell dpkg --print-architecture)
 DEB_MAINTAINER ?= skinplay developers <skinplay@example.org>
-DEB_FILE       := $(BUILD)/skinplay_$(VERSION)_$(DEB_ARCH).deb
+DEB_PACKAGES   := skinplay skinplay-tools
+DEB_FILES      := $(foreach p,$(DEB_PACKAGES),$(BUILD)/$(p)_$(VERSION)_$(DEB_ARCH).deb)
 DEB_DIR        := $(BUILD)/deb
 DEB_ENV        := DEB_HOST_ARCH=$(DEB_ARCH) DEB_BUILD_MAINT_OPTIONS=hardening=+all
 DEB_FLAGS       = $(shell $(DEB_ENV) dpkg-buildflags --get $(1))
@@ -16,36 +19,50 @@ DEB_LIBDIR      = $(if $(shell dpkg --compare-versions "$$(dpkg-query -W -f='$${
 
 .PHONY: deb deb-tree
 deb:
-	@$(MAKE) --no-print-directory BUILD=$(DEB_DIR)/build SKP_DEB_FILE=$(abspath $(DEB_FILE)) SKP_DEB_DIR=$(abspath $(DEB_DIR)) \
+	@$(MAKE) --no-print-directory BUILD=$(DEB_DIR)/build SKP_DEB_OUT=$(abspath $(BUILD)) SKP_DEB_DIR=$(abspath $(DEB_DIR)) \
 	  EXTRA_CFLAGS="$(call DEB_FLAGS,CFLAGS) $(call DEB_FLAGS,CPPFLAGS)" EXTRA_LDFLAGS="$(call DEB_FLAGS,LDFLAGS)" deb-tree
 	@if command -v lintian >/dev/null 2>&1; then \
-	  echo "deb: lintian $(notdir $(DEB_FILE))"; lintian --fail-on error $(DEB_FILE) && echo "deb: lintian: no errors"; \
+	  echo "deb: lintian $(notdir $(DEB_FILES))"; lintian --fail-on error $(DEB_FILES) && echo "deb: lintian: no errors"; \
 	else echo "deb: lintian is not installed: not checked"; fi
 
-# In the hardened build (BUILD=$(DEB_DIR)/build): the tree, its control
-# files, the archive.
-DEB_STAGE := $(SKP_DEB_DIR)/stage
+# In the hardened build (BUILD=$(DEB_DIR)/build): the installed tree split
+# in two, each package's control files, the archives.
+DEB_STAGE := $(SKP_DEB_DIR)/debian
 deb-tree:
 	@rm -rf $(DEB_STAGE)
-	@$(MAKE) --no-print-directory install DESTDIR=$(DEB_STAGE) PREFIX=/usr \
+	@$(MAKE) --no-print-directory install DESTDIR=$(DEB_STAGE)/skinplay PREFIX=/usr \
 	  UNITDIR=$(DEB_LIBDIR)/systemd/system UDEVDIR=$(DEB_LIBDIR)/udev/rules.d >/dev/null
-	@$(STRIP) --remove-section=.comment --remove-section=.note $(DEB_STAGE)/usr/bin/skinplay $(DEB_STAGE)/usr/bin/skintool
-	@install -d $(DEB_STAGE)/DEBIAN $(DEB_STAGE)/usr/share/doc/skinplay
-	@install -m 644 platform/debian/copyright $(DEB_STAGE)/usr/share/doc/skinplay/
-	@gzip -9n < platform/debian/changelog > $(DEB_STAGE)/usr/share/doc/skinplay/changelog.gz
-	@install -m 755 platform/debian/postinst platform/debian/prerm platform/debian/postrm $(DEB_STAGE)/DEBIAN/
-	@install -m 644 platform/debian/conffiles $(DEB_STAGE)/DEBIAN/
+	@install -d $(DEB_STAGE)/skinplay-tools/usr/bin $(DEB_STAGE)/skinplay-tools/usr/share/man/man1
+	@mv $(DEB_STAGE)/skinplay/usr/bin/skintool $(DEB_STAGE)/skinplay-tools/usr/bin/
+	@mv $(DEB_STAGE)/skinplay/usr/share/man/man1/skintool.1.gz $(DEB_STAGE)/skinplay-tools/usr/share/man/man1/
+	@install -m 755 platform/debian/postinst platform/debian/prerm platform/debian/postrm -D -t $(DEB_STAGE)/skinplay/DEBIAN/
+	@install -m 644 platform/debian/conffiles $(DEB_STAGE)/skinplay/DEBIAN/
 	@# dpkg-shlibdeps reads debian/control in the directory it runs in
 	@mkdir -p $(SKP_DEB_DIR)/debian
-	@printf 'Source: skinplay\n\nPackage: skinplay\nArchitecture: any\n' > $(SKP_DEB_DIR)/debian/control
-	@depends=$$(cd $(SKP_DEB_DIR) && $(DEB_ENV) dpkg-shlibdeps -O stage/usr/bin/skinplay stage/usr/bin/skintool | \
+	@printf 'Source: skinplay\n' > $(SKP_DEB_DIR)/debian/control
+	@for p in $(DEB_PACKAGES); do printf '\nPackage: %s\nArchitecture: any\n' $$p; done >> $(SKP_DEB_DIR)/debian/control
+	$(call deb_package,skinplay,skinplay)
+	$(call deb_package,skinplay-tools,skintool)
+
+# $(1) the package, $(2) its program: stripped, documented, its control file
+# (Depends from the program), md5sums, the archive (under a temporary name
+# until it is whole).
+define deb_package
+	@$(STRIP) --remove-section=.comment --remove-section=.note $(DEB_STAGE)/$(1)/usr/bin/$(2)
+	@install -d $(DEB_STAGE)/$(1)/DEBIAN $(DEB_STAGE)/$(1)/usr/share/doc/$(1)
+	@install -m 644 platform/debian/copyright $(DEB_STAGE)/$(1)/usr/share/doc/$(1)/
+	@gzip -9n < platform/debian/changelog > $(DEB_STAGE)/$(1)/usr/share/doc/$(1)/changelog.gz
+	@depends=$$(cd $(SKP_DEB_DIR) && $(DEB_ENV) dpkg-shlibdeps -O debian/$(1)/usr/bin/$(2) | \
 	    sed -n 's/^shlibs:Depends=//p'); \
-	  [ -n "$$depends" ] || { echo "deb: dpkg-shlibdeps found no dependencies"; exit 1; }; \
-	  size=$$(du -sk --exclude=DEBIAN $(DEB_STAGE) | cut -f1); \
+	  [ -n "$$depends" ] || { echo "deb: dpkg-shlibdeps found no dependencies of $(2)"; exit 1; }; \
+	  size=$$(du -sk --exclude=DEBIAN $(DEB_STAGE)/$(1) | cut -f1); \
 	  sed -e 's|@VERSION@|$(VERSION)|' -e 's|@ARCH@|$(DEB_ARCH)|' -e 's|@MAINTAINER@|$(DEB_MAINTAINER)|' \
 	      -e '$(if $(filter osmesa,$(DISPLAYS)),,/^Recommends: libosmesa6/d)' \
-	      -e "s|@SIZE@|$$size|" -e "s|@DEPENDS@|$$depends|" platform/debian/control.in > $(DEB_STAGE)/DEBIAN/control
-	@cd $(DEB_STAGE) && find . -type f ! -path './DEBIAN/*' -printf '%P\0' | sort -z | xargs -0 md5sum > DEBIAN/md5sums
-	@dpkg-deb --root-owner-group -Zxz --build $(DEB_STAGE) $(SKP_DEB_FILE).tmp >/dev/null
-	@mv $(SKP_DEB_FILE).tmp $(SKP_DEB_FILE)
-	@echo "deb: $(SKP_DEB_FILE) ($$(du -k $(SKP_DEB_FILE) | cut -f1) KiB), Depends: $$(dpkg-deb -f $(SKP_DEB_FILE) Depends)"
+	      -e "s|@SIZE@|$$size|" -e "s|@DEPENDS@|$$depends|" platform/debian/$(1).control.in \
+	      > $(DEB_STAGE)/$(1)/DEBIAN/control
+	@cd $(DEB_STAGE)/$(1) && find . -type f ! -path './DEBIAN/*' -printf '%P\0' | sort -z | xargs -0 md5sum > DEBIAN/md5sums
+	@dpkg-deb --root-owner-group -Zxz --build $(DEB_STAGE)/$(1) $(SKP_DEB_OUT)/$(1)_$(VERSION)_$(DEB_ARCH).deb.tmp >/dev/null
+	@mv $(SKP_DEB_OUT)/$(1)_$(VERSION)_$(DEB_ARCH).deb.tmp $(SKP_DEB_OUT)/$(1)_$(VERSION)_$(DEB_ARCH).deb
+	@f=$(SKP_DEB_OUT)/$(1)_$(VERSION)_$(DEB_ARCH).deb; \
+	  echo "deb: $$f ($$(du -k $$f | cut -f1) KiB), Depends: $$(dpkg-deb -f $$f Depends)"
+endef
