@@ -81,10 +81,12 @@ static skp_status parse_size(board_config *c, const ini_entry *e, skp_error *err
 	return SKP_OK;
 }
 
+const char *const board_streams_names[BOARD_STREAMS_KINDS] = { "float", "compact" };
+const char *const board_hud_names[BOARD_HUD_MODES] = { "off", "engineer", "visitor" };
+
 int board_hud_parse(const char *word)
 {
-	static const char *const names[] = { "off", "engineer", "visitor" };
-	return word ? pick(word, names, 3) : -1;
+	return word ? pick(word, board_hud_names, BOARD_HUD_MODES) : -1;
 }
 
 int board_threads_parse(const char *word)
@@ -97,8 +99,7 @@ int board_threads_parse(const char *word)
 
 int board_streams_parse(const char *word)
 {
-	static const char *const names[] = { "float", "compact" };
-	return word ? pick(word, names, 2) : -1;
+	return word ? pick(word, board_streams_names, BOARD_STREAMS_KINDS) : -1;
 }
 
 static skp_status display_key(board_config *c, const ini_entry *e, skp_error *err)

@@ -55,10 +55,13 @@ typedef enum board_streams { BOARD_STREAMS_FLOAT, BOARD_STREAMS_COMPACT } board_
  * -1 for anything else. */
 int board_threads_parse(const char *word);
 
-/* "float", "compact"; -1 for another word. */
+/* The words of board_streams and of the HUD modes, in enum order; each
+ * parse returns the word's index (any case), -1 for another word. */
+#define BOARD_STREAMS_KINDS 2
+#define BOARD_HUD_MODES 3
+extern const char *const board_streams_names[BOARD_STREAMS_KINDS]; /* "float", "compact" */
+extern const char *const board_hud_names[BOARD_HUD_MODES];         /* "off", "engineer", "visitor" */
 int board_streams_parse(const char *word);
-
-/* "off", "engineer", "visitor"; -1 for another word. */
 int board_hud_parse(const char *word);
 
 typedef struct board_button {

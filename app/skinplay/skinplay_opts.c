@@ -170,19 +170,15 @@ static int take(void *ctx, int id, const char *v)
 	case OPT_REPORT_TIMING: o->report_timing = 1; return 0;
 	case OPT_THREADS: return take_threads(o, v);
 	case OPT_STREAMS:
-		if ((o->streams = board_streams_parse(v)) < 0) {
-			static const char *const kinds[] = { "float", "compact" };
-			return cli_bad_choice(PROG, "streams", v, kinds, 2);
-		}
+		if ((o->streams = board_streams_parse(v)) < 0)
+			return cli_bad_choice(PROG, "streams", v, board_streams_names, BOARD_STREAMS_KINDS);
 		return 0;
 	case OPT_BOARD: o->board = v; return 0;
 	case OPT_INPUT: o->input = v; return 0;
 	case OPT_PRINT_PLATFORM: o->print_platform = 1; return 0;
 	case OPT_HUD:
-		if ((o->hud = board_hud_parse(v)) < 0) {
-			static const char *const modes[] = { "visitor", "engineer", "off" };
-			return cli_bad_choice(PROG, "hud", v, modes, 3);
-		}
+		if ((o->hud = board_hud_parse(v)) < 0)
+			return cli_bad_choice(PROG, "hud", v, board_hud_names, BOARD_HUD_MODES);
 		return 0;
 	}
 	return -1;
