@@ -239,8 +239,7 @@ enum { OPT_VERTS = 1, OPT_THREADS, OPT_ROUNDS };
 
 static const cli_opt bench_opts[] = {
 	{ "verts", 0, "N", OPT_VERTS, "vertices to skin (default 1000000)" },
-	{ "threads", 0, "T", OPT_THREADS, "worker threads (default 1); with more than one, each round also\n"
-					   "times one thread, and the table gives the speed-up" },
+	{ "threads", 0, "T", OPT_THREADS, "worker threads (default 1); above 1, one thread is timed too" },
 	{ "rounds", 0, "R", OPT_ROUNDS, "timed rounds of 50 ms per kernel; the best counts (default 20)" },
 	{ NULL, 0, NULL, 0, NULL },
 };
@@ -257,7 +256,8 @@ static const cli_command bench_command = {
 	.prog = "skintool bench",
 	.usage = "[--verts=N] [--threads=T] [--rounds=R]",
 	.about = "Skinning speed of every kernel (LBS, DQBS, fixed-point DQBS; scalar and SIMD) on a synthetic\n"
-		 "mesh, against the memory-bandwidth bound measured in the same run.",
+		 "mesh, against the memory-bandwidth bound measured in the same run on the same threads.\n"
+		 "With --threads above 1, every round also times one thread, and each row ends with the speed-up.",
 	.opts = { bench_opts },
 	.take = bench_take,
 };
