@@ -208,7 +208,7 @@ static void copy_slice(void *ctx, int slice, int slices)
  * passes. */
 static double copy_bandwidth(workers *w, size_t bytes)
 {
-	char *a = aligned_alloc(64, bytes), *c = aligned_alloc(64, bytes);
+	char *a = alloc_aligned(bytes), *c = alloc_aligned(bytes);
 	if (!a || !c) {
 		free(a);
 		free(c);
