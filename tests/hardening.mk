@@ -3,9 +3,10 @@
 #   make fuzz-smoke           the same for 10 s each (CI, when clang is there)
 #   make lint                 cppcheck and clang-tidy over app/ and platform/
 #   make soak [SOAK_FRAMES=1000000]   a long headless run of skinplay
+#   make import-sweep         every assimp-testmodels sample through skintool bind (ASan+UBSan)
 # None of them is part of `make test`; the fuzzers' regression inputs are
 # (tests/unit/test_fuzz_regressions.c).
-.PHONY: fuzz fuzz-smoke fuzz-build lint soak
+.PHONY: fuzz fuzz-smoke fuzz-build lint soak import-sweep
 
 FUZZ_CC      ?= clang
 SECONDS      ?= 60
@@ -67,6 +68,13 @@ fuzz-smoke:
 	@$(MAKE) --no-print-directory fuzz SECONDS=10
 
 -include $(wildcard $(FUZZ_OUT)/app/*/*.d $(FUZZ_OUT)/app/*/*/*.d $(FUZZ_OUT)/tests/fuzz/*.d)
+
+# Import sweep: tests/import_sweep.sh with the sanitizer build of skintool
+# and a CMU skeleton from the shared data (both skipped when absent).
+SKP_SHARED ?= ../shared
+import-sweep:
+	@$(MAKE) --no-print-directory SANITIZE=1 $(BUILD)/san/skintool
+	@sh tests/import_sweep.sh $(BUILD)/san/skintool $(SKP_SHARED)/data/mocap/cmu/02.asf
 
 # Soak: tests/soak.sh on the host build (not part of `make test`: about an
 # hour for the default million frames at 160x90).
