@@ -9,11 +9,14 @@
 # the built tools, are skipped as well. The rendering tests are always
 # skipped: under qemu-user there is no GPU and no aarch64 Mesa driver, and a
 # software rasteriser emulated instruction by instruction would take hours.
+# SKP_TEST_EMULATED names the emulator, for tests to skip what it cannot
+# run: threads (pthread_create in a dynamically linked aarch64 program never
+# returns under Debian 12's qemu-user 7.2; a static one's does).
 arch=$1; skip=$2; shift 2
 [ "$1" = "--" ] && shift
 qemu=qemu-$arch-static
 command -v "$qemu" >/dev/null 2>&1 || { echo "cross_run: $qemu not found (make deps BOARD=...)"; exit 1; }
-export QEMU_LD_PREFIX="${QEMU_LD_PREFIX:-/usr/$arch-linux-gnu}"
+export QEMU_LD_PREFIX="${QEMU_LD_PREFIX:-/usr/$arch-linux-gnu}" SKP_TEST_EMULATED="$qemu"
 
 binfmt=/proc/sys/fs/binfmt_misc
 if [ ! -e "$binfmt/qemu-$arch" ] && [ "$(id -u)" = 0 ] && command -v update-binfmts >/dev/null 2>&1; then

@@ -69,8 +69,10 @@ static void check_table(char *text, int threads)
 		assert_string_equal(name, rows[r].name);
 		assert_int_equal(bytes, rows[r].bytes);
 		assert_true(rate > 0 && ns > 0 && bound > 0);
-		/* M vertices/s times ns/vertex is 1000, to the printed digits */
-		assert_true(fabs(rate * ns - 1000) < 0.01 * 1000);
+		/* M vertices/s times ns/vertex is 1000, to the printed digits
+		 * (one decimal for the rate, two for the time) */
+		if (fabs(rate * ns - 1000) > 0.05 * ns + 0.005 * rate + 0.01)
+			fail_msg("row '%s': %g M/s and %g ns/vertex disagree", line, rate, ns);
 		assert_true(fabs(100 * rate / bound - of) <= 1);
 		if (rows[r].ratio && !strstr(line, rows[r].ratio))
 			fail_msg("row '%s' lacks '%s'", line, rows[r].ratio);
@@ -94,6 +96,13 @@ static void test_table_one_thread(void **state)
 static void test_table_two_threads_with_scaling(void **state)
 {
 	(void)state;
+	/* tests/cross_run.sh says so: a dynamically linked aarch64 program's
+	 * pthread_create never returns under Debian 12's qemu-user 7.2 */
+	const char *emulator = getenv("SKP_TEST_EMULATED");
+	if (emulator && *emulator) {
+		print_message("skipped: threads under %s\n", emulator);
+		skip();
+	}
 	char out[4096];
 	assert_int_equal(bench("--verts=4000 --threads=2 --rounds=2", out, sizeof out), 0);
 	check_table(out, 2);
