@@ -1,8 +1,10 @@
 #include "cli_skin.h"
 
 #include <stdio.h>
+#include <string.h>
 
 #include "cli_common.h"
+#include "clock.h"
 
 static _Alignas(SKIN_ALIGN) unsigned char block[SKIN_SOA_BYTES(SKP_MAX_VERTS)];
 static _Alignas(SKIN_ALIGN) unsigned char compact_block[SKIN_COMPACT_BYTES(SKP_MAX_VERTS)];
@@ -21,6 +23,8 @@ int cli_skin_init(cli_skin *t, const skel *s, const skel_pose *bind, const mesh 
 	t->skel = s;
 	t->bind = bind;
 	t->pool = NULL;
+	memset(&t->tune, 0, sizeof t->tune);
+	t->tune.choice = -1;
 	t->use_compact = 0;
 	skin_soa_attach(&t->soa, block, m->vert_count);
 	if (skin_soa_load(&t->soa, m, w, s->count, &err) != SKP_OK) {
@@ -55,9 +59,64 @@ void cli_skin_use_workers(cli_skin *t, workers *pool)
 	t->pool = pool;
 }
 
+void cli_skin_measure_workers(cli_skin *t, workers *pool)
+{
+	cli_skin_use_workers(t, pool);
+	memset(&t->tune, 0, sizeof t->tune);
+	t->tune.choice = -1;
+	t->tune.on = pool != NULL && workers_count(pool) > 1;
+}
+
+int cli_skin_measured(const cli_skin *t, double *one_ms, double *pool_ms)
+{
+	*one_ms = t->tune.one_ms;
+	*pool_ms = t->tune.pool_ms;
+	return t->tune.choice;
+}
+
+int cli_skin_tune_pick(const uint64_t ns[][2], const int runs[][2], int algos, double *one_ms,
+		       double *pool_ms)
+{
+	double mean[2] = { 0, 0 };
+	int both = 0;
+	for (int a = 0; a < algos; a++) {
+		if (!runs[a][0] || !runs[a][1])
+			continue;
+		both++;
+		for (int m = 0; m < 2; m++)
+			mean[m] += (double)ns[a][m] * 1e-6 / runs[a][m];
+	}
+	*one_ms = mean[0];
+	*pool_ms = mean[1];
+	return both ? mean[1] <= 0.9 * mean[0] : -1;
+}
+
 int cli_skin_threads(const cli_skin *t)
 {
-	return t->pool ? workers_count(t->pool) : 1;
+	return t->pool && t->tune.choice != 0 ? workers_count(t->pool) : 1;
+}
+
+/* While measuring: whether this run of algo goes to the pool (-1: the
+ * algorithm's first, unmeasured, on one thread). */
+static int tune_mode(const cli_skin_tune *u, skin_algo algo)
+{
+	if (u->seen[algo] == 0)
+		return -1;
+	return u->runs[algo][0] > u->runs[algo][1];
+}
+
+static void tune_note(cli_skin_tune *u, skin_algo algo, int mode, uint64_t ns)
+{
+	u->seen[algo]++;
+	if (mode < 0)
+		return;
+	u->runs[algo][mode]++;
+	u->ns[algo][mode] += ns;
+	if (++u->total < CLI_SKIN_TUNE_RUNS)
+		return;
+	u->choice = cli_skin_tune_pick((const uint64_t (*)[2])u->ns, (const int (*)[2])u->runs, SKIN_ALGO_COUNT,
+				       &u->one_ms, &u->pool_ms);
+	u->on = 0;
 }
 
 void cli_skin_use_compact(cli_skin *t)
@@ -98,10 +157,14 @@ static void run_share(void *ctx, int slice, int slices)
 static void run_kernel(cli_skin *t, skin_algo algo, int compact, const skin_out *out)
 {
 	skin_job job = { t, algo, compact, *out };
-	if (cli_skin_threads(t) > 1)
+	int mode = t->tune.on ? tune_mode(&t->tune, algo) : cli_skin_threads(t) > 1;
+	uint64_t t0 = t->tune.on ? clock_now_ns() : 0;
+	if (mode > 0)
 		workers_run(t->pool, run_share, &job);
 	else
 		run_part(&job, 0, t->soa.count);
+	if (t->tune.on)
+		tune_note(&t->tune, algo, mode, clock_now_ns() - t0);
 }
 
 void cli_skin_run16(cli_skin *t, skin_algo algo, float *pos, int16_t *nrm16)

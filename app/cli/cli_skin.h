@@ -10,6 +10,17 @@
 #include "skin_compact.h"
 #include "workers.h"
 
+/* Measuring whether the pool pays (cli_skin_measure_workers). */
+typedef struct cli_skin_tune {
+	int on;                                /* still measuring */
+	int choice;                            /* -1 none yet, 1 the pool kept, 0 one thread */
+	int total;                             /* runs measured */
+	int seen[SKIN_ALGO_COUNT];             /* runs per algorithm, the unmeasured first too */
+	int runs[SKIN_ALGO_COUNT][2];          /* [algorithm][0 one thread, 1 the pool] */
+	uint64_t ns[SKIN_ALGO_COUNT][2];
+	double one_ms, pool_ms;                /* mean of a run, summed over the algorithms */
+} cli_skin_tune;
+
 typedef struct cli_skin {
 	const skel *skel;
 	const skel_pose *bind;
@@ -19,6 +30,7 @@ typedef struct cli_skin {
 	skin_compact compact; /* LBS and DQBS read these when use_compact */
 	int use_compact;
 	workers *pool;        /* NULL: the caller's thread skins alone */
+	cli_skin_tune tune;
 } cli_skin;
 
 /* Lays the mesh and its weights out for the kernels (the mesh is bound in
@@ -40,6 +52,27 @@ void cli_skin_pose(cli_skin *t, const skel_pose *pose);
  * mesh big enough to pay for waking the pool: the caller decides. */
 void cli_skin_use_workers(cli_skin *t, workers *pool);
 
+/* As cli_skin_use_workers, for a board where nobody measured the mesh
+ * size from which threads pay: the first CLI_SKIN_TUNE_RUNS kernel runs
+ * alternate, per algorithm, between the pool and the caller's thread alone
+ * (each algorithm's first run, with cold caches, left out), and the pool
+ * stays only if its runs took at most 0.9x as long (cli_skin_tune_pick).
+ * Either way the results are the same. */
+#define CLI_SKIN_TUNE_RUNS 48
+void cli_skin_measure_workers(cli_skin *t, workers *pool);
+
+/* What the measurement chose: -1 while it runs (or none was asked for), 1
+ * the pool, 0 one thread; the mean ms of a kernel run each way in *one_ms,
+ * *pool_ms. */
+int cli_skin_measured(const cli_skin *t, double *one_ms, double *pool_ms);
+
+/* The choice from each algorithm's totals (runs[a][1] on the pool), over
+ * the algorithms measured both ways: 1 when the pool's mean runs, summed,
+ * took at most 0.9x one thread's, 0 when not, -1 when no algorithm was
+ * measured both ways; the sums of the means in *one_ms, *pool_ms. */
+int cli_skin_tune_pick(const uint64_t ns[][2], const int runs[][2], int algos, double *one_ms,
+		       double *pool_ms);
+
 /* After cli_skin_init: LBS and DQBS read compact streams (skin_compact.h,
  * made here from the float ones) from now on, through cli_skin_run16. */
 void cli_skin_use_compact(cli_skin *t);
@@ -53,7 +86,7 @@ int cli_skin_compact(const cli_skin *t, skin_algo algo);
 void cli_skin_run16(cli_skin *t, skin_algo algo, float *pos, int16_t *nrm16);
 
 /* Whether cli_skin_run splits the current mesh across threads: their
- * count, 1 when it does not. */
+ * count (also while it measures whether to), 1 when it does not. */
 int cli_skin_threads(const cli_skin *t);
 
 /* Skins every vertex with algo in the current pose: 3 floats per vertex

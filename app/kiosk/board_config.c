@@ -229,7 +229,11 @@ static skp_status skin_key(board_config *c, const ini_entry *e, skp_error *err)
 		return SKP_OK;
 	}
 	if (tok_ieq(e->key, "split_verts")) {
-		if (get_long(e, 1, 100000000, &v, "a vertex count of 1..100000000", err) != SKP_OK)
+		if (tok_ieq(e->value, "auto")) {
+			c->split_verts = BOARD_SPLIT_AUTO;
+			return SKP_OK;
+		}
+		if (get_long(e, 1, 100000000, &v, "auto or a vertex count of 1..100000000", err) != SKP_OK)
 			return err->code;
 		c->split_verts = (int)v;
 		return SKP_OK;

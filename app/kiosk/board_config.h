@@ -9,9 +9,10 @@
  *   [storage]  slot = PATH   (one line per image slot)
  *   [limits]   max_fps = 60   (frame-rate cap on a display; the watchdog
  *              period is the unit's WatchdogSec)
- *   [skin]     threads = auto | N   split_verts = 50000   (skinplay --threads:
- *              CPU skinning on N threads, auto one per core, for meshes
- *              of split_verts vertices or more)
+ *   [skin]     threads = auto | N   split_verts = 50000 | auto   (skinplay
+ *              --threads: CPU skinning on N threads, auto one per core, for
+ *              meshes of split_verts vertices or more; auto: the threads
+ *              are tried against one and kept if they are faster)
  *              streams = float | compact   (skinplay --streams)
  *
  * Unknown sections and keys are errors naming the line and the key. */
@@ -85,7 +86,7 @@ typedef struct board_config {
 	int slot_count;
 	int max_fps;             /* 0: no cap beyond the display's */
 	int threads;             /* skinning threads; 0: one per core */
-	int split_verts;         /* meshes this big or bigger use them */
+	int split_verts;         /* meshes this big or bigger use them; BOARD_SPLIT_AUTO: measured */
 	int streams;             /* board_streams */
 } board_config;
 
@@ -96,6 +97,7 @@ typedef struct board_config {
  * more than they save (skintool bench --verts=N --threads=2 on the
  * development machine: two threads win from about 50,000). */
 #define BOARD_SPLIT_VERTS 50000
+#define BOARD_SPLIT_AUTO 0
 
 void board_config_defaults(board_config *c);
 

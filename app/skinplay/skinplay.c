@@ -72,19 +72,36 @@ static int open_display(player *p)
 }
 
 /* Skinning threads when the board has the cores and the mesh the size for
- * them to pay (the board's [skin] split_verts); otherwise, or when they
- * cannot start, the frame loop's thread skins alone. */
+ * them to pay (the board's [skin] split_verts; auto: the first frames try
+ * them against one thread); otherwise, or when they cannot start, the
+ * frame loop's thread skins alone. */
 static void start_workers(player *p)
 {
 	int n = p->o.threads > 0 ? p->o.threads : workers_cpu_count();
-	if (n < 2 || p->skin.soa.count < p->kiosk.board.split_verts)
+	int split = p->kiosk.board.split_verts;
+	if (n < 2 || (split != BOARD_SPLIT_AUTO && p->skin.soa.count < split))
 		return;
 	p->pool = workers_start(n);
 	if (!p->pool) {
 		fprintf(stderr, "skinplay: cannot start %d skinning threads: skinning on one\n", n);
 		return;
 	}
-	cli_skin_use_workers(&p->skin, p->pool);
+	if (split == BOARD_SPLIT_AUTO)
+		cli_skin_measure_workers(&p->skin, p->pool);
+	else
+		cli_skin_use_workers(&p->skin, p->pool);
+}
+
+/* Once, when the measurement of start_workers has chosen: what it chose. */
+static void log_measured_threads(player *p)
+{
+	double one, pool;
+	if (p->threads_logged || cli_skin_measured(&p->skin, &one, &pool) < 0)
+		return;
+	p->threads_logged = 1;
+	int kept = cli_skin_threads(&p->skin) > 1;
+	fprintf(stderr, "skinplay: a kernel run took %.3f ms on %d threads, %.3f on one: skinning on %s\n", pool,
+		workers_count(p->pool), one, kept ? "all of them" : "one");
 }
 
 static int setup(player *p)
@@ -166,6 +183,7 @@ static void skin_panels(player *p, render_frame *f)
 			stage_add(&p->stages, STAGE_SKIN, clock_now_ns() - t3);
 		}
 	}
+	log_measured_threads(p);
 	f->pose = &p->skin.pose;
 	f->bones = &p->skin.bones;
 }

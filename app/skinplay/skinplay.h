@@ -21,6 +21,7 @@ typedef struct player {
 	bound_body body;
 	cli_skin skin;
 	workers *pool;           /* skinning threads (--threads), NULL: one */
+	int threads_logged;      /* what measuring them chose is in the log */
 	cli_motion motion;
 	show_source show;  /* --image: frames from a packed image instead */
 	amc_frame frame;

@@ -282,14 +282,14 @@ static void test_report_timing(void **state)
 /* The board's [skin] threads share the mesh between threads (here from
  * one vertex on, as a big mesh would): every frame the same pixels as one
  * thread's, and the summary says how many skinned. A small mesh under the
- * default split_verts stays on one thread. */
+ * default split_verts stays on one thread; split_verts = auto measures. */
 static void test_skinning_threads(void **state)
 {
 	(void)state;
 	const char *ini = "[skin]\nthreads = 2\nsplit_verts = 1\n";
 	assert_int_equal(run_board("two", ini, "--algo compare", 12), 0);
 	expect_log("CPU skinning on 2 threads)");
-	assert_int_equal(run_board("one", ini, "--algo compare --threads 1", 12), 0);
+	assert_int_equal(run_board("one", ini, "--algo compare --threads 1", 30), 0);
 	expect_log("CPU skinning)");
 	for (int n = 1; n <= 12; n += 11) {
 		load("two", n, &a);
@@ -298,6 +298,18 @@ static void test_skinning_threads(void **state)
 	}
 	assert_int_equal(run("auto", "--threads auto", 1), 0);
 	expect_log("CPU skinning)");
+	/* split_verts = auto: the first frames measure two threads against
+	 * one, the log says what they chose, and the frames are the same */
+	const char *tuned = "[skin]\nthreads = 2\nsplit_verts = auto\n";
+	assert_int_equal(run_board("tuned", tuned, "--algo compare", 30), 0);
+	expect_log("skinplay: a kernel run took ");
+	expect_log(" on 2 threads, ");
+	static const int frames[] = { 1, 12, 30 };
+	for (int i = 0; i < 3; i++) {
+		load("tuned", frames[i], &a);
+		load("one", frames[i], &b);
+		assert_int_equal(image_diff(&a, &b), 0);
+	}
 	assert_int_equal(run("bad", "--threads 0", 1), 1);
 	expect_log("--threads expects auto or 1..16, got '0'");
 }

@@ -58,7 +58,7 @@ static void test_rpi4_board(void **state)
 	assert_string_equal(cfg.slot[2], "/usr/share/skinplay/demo.skn");
 	assert_int_equal(cfg.max_fps, 60);
 	assert_int_equal(cfg.threads, 0);
-	assert_int_equal(cfg.split_verts, BOARD_SPLIT_VERTS);
+	assert_int_equal(cfg.split_verts, BOARD_SPLIT_AUTO);
 	assert_int_equal(cfg.streams, BOARD_STREAMS_COMPACT);
 }
 
@@ -84,6 +84,8 @@ static void test_skin_section(void **state)
 	assert_int_equal(parse("[Skin]\nthreads = AUTO\n", &err), SKP_OK);
 	assert_int_equal(cfg.threads, 0);
 	assert_int_equal(cfg.split_verts, BOARD_SPLIT_VERTS);
+	assert_int_equal(parse("[skin]\nsplit_verts = Auto\n", &err), SKP_OK);
+	assert_int_equal(cfg.split_verts, BOARD_SPLIT_AUTO);
 }
 
 static void test_inheritance_and_syntax(void **state)
@@ -143,7 +145,7 @@ static void test_errors_name_line_and_key(void **state)
 		{ "[input]\ndebounce_ms = -5\n", 2, "key 'debounce_ms'" },
 		{ "[limits]\nmax_fps = fast\n", 2, "key 'max_fps' in [limits]" },
 		{ "[skin]\nthreads = 0\n", 2, "key 'threads' in [skin]: expected auto or a thread count of 1..16, found '0'" },
-		{ "[skin]\nsplit_verts = many\n", 2, "key 'split_verts' in [skin]: expected a vertex count" },
+		{ "[skin]\nsplit_verts = many\n", 2, "key 'split_verts' in [skin]: expected auto or a vertex count" },
 		{ "[skin]\ncores = 4\n", 2, "unknown key 'cores' in [skin] (threads, split_verts, streams)" },
 		{ "[skin]\nstreams = tiny\n", 2, "key 'streams' in [skin]: expected float or compact, found 'tiny'" },
 		{ "[storage]\nslot = a\nslot = b\nslot = c\nslot = d\n", 5, "SKP_MAX_SLOTS" },
