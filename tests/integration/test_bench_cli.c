@@ -17,6 +17,7 @@
 #include <sys/wait.h>
 
 #include "test_paths.h"
+#include "test_run.h"
 
 typedef struct expect_row {
 	const char *name;
@@ -96,13 +97,7 @@ static void test_table_one_thread(void **state)
 static void test_table_two_threads_with_scaling(void **state)
 {
 	(void)state;
-	/* tests/cross_run.sh says so: a dynamically linked aarch64 program's
-	 * pthread_create never returns under Debian 12's qemu-user 7.2 */
-	const char *emulator = getenv("SKP_TEST_EMULATED");
-	if (emulator && *emulator) {
-		print_message("skipped: threads under %s\n", emulator);
-		skip();
-	}
+	test_skip_threads_if_emulated();
 	char out[4096];
 	assert_int_equal(bench("--verts=4000 --threads=2 --rounds=2", out, sizeof out), 0);
 	check_table(out, 2);

@@ -1,6 +1,11 @@
 #include "test_run.h"
 
 #include <stdarg.h>
+#include <stddef.h>
+#include <setjmp.h>
+#include <stdint.h>
+#include <cmocka.h>
+
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -46,4 +51,13 @@ int test_run(const char *fmt, ...)
 	va_end(ap);
 	int st = system(cmd);
 	return WIFEXITED(st) ? WEXITSTATUS(st) : -1;
+}
+
+void test_skip_threads_if_emulated(void)
+{
+	const char *emulator = getenv("SKP_TEST_EMULATED");
+	if (emulator && *emulator) {
+		print_message("skipped: threads under %s\n", emulator);
+		skip();
+	}
 }

@@ -8,11 +8,11 @@
 #include <stdint.h>
 #include <cmocka.h>
 
-#include <stdlib.h>
 #include <string.h>
 
 #include "cli_bind_args.h"
 #include "cli_skin.h"
+#include "test_run.h"
 
 enum { ONE, POOL };
 
@@ -63,12 +63,7 @@ static void load_body(cli_skin *t)
 static void test_measuring_alternates_and_decides(void **state)
 {
 	(void)state;
-	/* tests/cross_run.sh: no threads under qemu-user */
-	const char *emulator = getenv("SKP_TEST_EMULATED");
-	if (emulator && *emulator) {
-		print_message("skipped: threads under %s\n", emulator);
-		skip();
-	}
+	test_skip_threads_if_emulated();
 	static cli_skin t, ref;
 	load_body(&ref);
 	cli_skin_run(&ref, SKIN_DQBS, pos[0], nrm[0]);
