@@ -11,6 +11,13 @@ static _Alignas(SKIN_ALIGN) unsigned char compact_block[SKIN_COMPACT_BYTES(SKP_M
 /* The fixed-point kernel's output before conversion. */
 static int32_t fpos[3 * SKP_MAX_VERTS], fnrm[3 * SKP_MAX_VERTS];
 
+static void tune_reset(cli_skin_tune *u, int on)
+{
+	memset(u, 0, sizeof *u);
+	u->choice = -1;
+	u->on = on;
+}
+
 int cli_skin_init(cli_skin *t, const skel *s, const skel_pose *bind, const mesh *m,
 		   const skin_weights *w, const char *what)
 {
@@ -23,8 +30,7 @@ int cli_skin_init(cli_skin *t, const skel *s, const skel_pose *bind, const mesh 
 	t->skel = s;
 	t->bind = bind;
 	t->pool = NULL;
-	memset(&t->tune, 0, sizeof t->tune);
-	t->tune.choice = -1;
+	tune_reset(&t->tune, 0);
 	t->use_compact = 0;
 	skin_soa_attach(&t->soa, block, m->vert_count);
 	if (skin_soa_load(&t->soa, m, w, s->count, &err) != SKP_OK) {
@@ -62,9 +68,7 @@ void cli_skin_use_workers(cli_skin *t, workers *pool)
 void cli_skin_measure_workers(cli_skin *t, workers *pool)
 {
 	cli_skin_use_workers(t, pool);
-	memset(&t->tune, 0, sizeof t->tune);
-	t->tune.choice = -1;
-	t->tune.on = pool != NULL && workers_count(pool) > 1;
+	tune_reset(&t->tune, pool != NULL && workers_count(pool) > 1);
 }
 
 int cli_skin_measured(const cli_skin *t, double *one_ms, double *pool_ms)
