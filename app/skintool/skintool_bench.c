@@ -13,6 +13,7 @@
 #include "skin.h"
 #include "skin_compact.h"
 #include "skintool_cmds.h"
+#include "tool_args.h"
 #include "workers.h"
 
 #define BENCH_BONES 31
@@ -73,18 +74,40 @@ static void *alloc_aligned(size_t bytes)
 	return aligned_alloc(SKIN_ALIGN, (bytes + SKIN_ALIGN - 1) / SKIN_ALIGN * SKIN_ALIGN);
 }
 
-/* A mesh of n vertices in a 2-unit box, 4 influences on random bones, in
- * float and compact streams. */
-static int make_scene(bench *b, int n, void *block[2])
+/* The float and compact streams of n vertices and the outputs, in
+ * blocks[0..1] and b->out (freed by free_streams). */
+static int alloc_streams(bench *b, int n, void *block[2])
 {
 	block[0] = alloc_aligned(skin_soa_bytes(n));
 	block[1] = alloc_aligned(skin_compact_bytes(n));
 	float *outp = alloc_aligned(sizeof(float) * 3 * (size_t)(n + SKIN_LANES) * 2);
 	int32_t *outf = alloc_aligned(sizeof(int32_t) * 3 * (size_t)(n + SKIN_LANES) * 2);
 	int16_t *out16 = alloc_aligned(sizeof(int16_t) * 3 * (size_t)(n + SKIN_LANES));
+	b->out.pos = outp;
+	b->out.nrm = outp ? outp + 3 * (size_t)(n + SKIN_LANES) : NULL;
+	b->out.fpos = outf;
+	b->out.fnrm = outf ? outf + 3 * (size_t)(n + SKIN_LANES) : NULL;
+	b->out.nrm16 = out16;
 	if (!block[0] || !block[1] || !outp || !outf || !out16)
 		return -1;
 	skin_soa_attach(&b->soa, block[0], n);
+	skin_compact_attach(&b->compact, block[1], n);
+	return 0;
+}
+
+static void free_streams(bench *b, void *block[2])
+{
+	free(block[0]);
+	free(block[1]);
+	free(b->out.pos);
+	free(b->out.fpos);
+	free(b->out.nrm16);
+}
+
+/* A mesh of n vertices in a 2-unit box, 4 influences on random bones, in
+ * float and compact streams. */
+static void make_scene(bench *b)
+{
 	for (int v = 0; v < b->soa.padded; v++) {
 		vec3 p = vec3_make(2 * frand() - 1, 2 * frand() - 1, 2 * frand() - 1);
 		vec3 nn = vec3_normalize(vec3_make(frand() - 0.5f, frand() - 0.5f, frand() - 0.5f));
@@ -110,14 +133,7 @@ static int make_scene(bench *b, int n, void *block[2])
 		}
 		b->soa.fweight[3][v] = (fx_w15)left;
 	}
-	b->out.pos = outp;
-	b->out.nrm = outp + 3 * (size_t)(n + SKIN_LANES);
-	b->out.fpos = outf;
-	b->out.fnrm = outf + 3 * (size_t)(n + SKIN_LANES);
-	b->out.nrm16 = out16;
-	skin_compact_attach(&b->compact, block[1], n);
 	skin_compact_load(&b->compact, &b->soa);
-	return 0;
 }
 
 static void make_bones(skin_bones *bones)
@@ -132,6 +148,46 @@ static void make_bones(skin_bones *bones)
 		pose.head[i] = vec3_make(frand(), frand(), frand());
 	}
 	skin_bones_compute(bones, &s, &bind, &pose);
+}
+
+/* The user's body (SKELETON [MESH], bound as `skintool bind` binds it),
+ * posed in the motion's first frame, or in the skeleton's rest pose when
+ * no motion is given; *pose_name says which. */
+static int load_body(bench *b, const tool_common *c, void *block[2], const char **pose_name)
+{
+	static bound_body body;
+	static skel_pose pose;
+	if (bind_args_load(&c->bind, c->asf, c->mesh, &body) < 0)
+		return -1;
+	if (alloc_streams(b, body.mesh.vert_count, block) < 0) {
+		fprintf(stderr, "skintool bench: out of memory for %d vertices\n", body.mesh.vert_count);
+		return -1;
+	}
+	skp_error err;
+	if (skin_soa_load(&b->soa, &body.mesh, &body.weights, body.skel.count, &err) != SKP_OK) {
+		cli_error(c->mesh ? c->mesh : "generated body", &err);
+		return -1;
+	}
+	skin_compact_load(&b->compact, &b->soa);
+	fk_pose(&body.skel, NULL, &pose);
+	*pose_name = "the skeleton's rest pose";
+	if (c->amc) {
+		static cli_motion mo;
+		static amc_frame f;
+		if (cli_motion_open(&mo, c->amc, &body.skel) < 0)
+			return -1;
+		int rc = cli_motion_next(&mo, &f);
+		cli_motion_close(&mo);
+		if (rc <= 0) {
+			if (rc == 0)
+				fprintf(stderr, "%s: no frames\n", c->amc);
+			return -1;
+		}
+		fk_pose(&body.skel, f.value, &pose);
+		*pose_name = "the motion's first frame";
+	}
+	skin_bones_compute(&b->bones, &body.skel, &body.pose, &pose);
+	return 0;
 }
 
 static void run_slice(void *ctx, int slice, int slices)
@@ -232,7 +288,9 @@ static double copy_bandwidth(workers *w, size_t bytes)
 }
 
 typedef struct bench_args {
+	tool_common c; /* first: tool_files_skel_mesh reads it */
 	long verts, threads, rounds;
+	int verts_given;
 } bench_args;
 
 enum { OPT_VERTS = 1, OPT_THREADS, OPT_ROUNDS };
@@ -248,25 +306,41 @@ static int bench_take(void *ctx, int id, const char *v)
 {
 	static const char *const names[] = { NULL, "--verts", "--threads", "--rounds" };
 	bench_args *a = ctx;
+	int r = tool_common_take(&a->c, id, v);
+	if (r <= 0)
+		return r;
 	long *const dst[] = { NULL, &a->verts, &a->threads, &a->rounds };
+	a->verts_given |= id == OPT_VERTS;
 	return cli_parse_long(names[id], v, dst[id]);
 }
 
 static const cli_command bench_command = {
 	.prog = "skintool bench",
-	.usage = "[--verts=N] [--threads=T] [--rounds=R]",
+	.usage = "[--verts=N] [--threads=T] [--rounds=R]\n"
+		 "  or:  skintool bench SKELETON [MESH] [--motion=M.amc] [OPTION]...",
 	.about = "Skinning speed of every kernel (LBS, DQBS, fixed-point DQBS; scalar and SIMD) on a synthetic\n"
 		 "mesh, against the memory-bandwidth bound measured in the same run on the same threads.\n"
-		 "With --threads above 1, every round also times one thread, and each row ends with the speed-up.",
-	.opts = { bench_opts },
+		 "With --threads above 1, every round also times one thread, and each row ends with the speed-up.\n"
+		 "Given SKELETON (and MESH: else the generated body), the body is bound as skintool bind binds\n"
+		 "it and skinned in the motion's first frame (or the rest pose) instead of the synthetic mesh.",
+	.opts = { bench_opts, tool_opt_skeleton, tool_opt_motion, tool_opt_mesh, bind_opts },
 	.take = bench_take,
+	.positional = tool_files_skel_mesh,
 };
 
 static int parse(int argc, char **argv, bench_args *a)
 {
+	tool_common_init(&a->c, bench_command.prog);
 	int rc = cli_parse(&bench_command, a, argc, argv, 0);
 	if (rc != 0)
 		return rc;
+	cli_bvh_slots(&a->c.asf, &a->c.amc, &a->c.mesh);
+	if (!a->c.asf && (a->c.mesh || a->c.amc))
+		return -tool_missing(&a->c, "SKELETON with MESH or --motion");
+	if (a->c.asf && a->verts_given) {
+		fprintf(stderr, "skintool bench: --verts is for the synthetic mesh, not SKELETON [MESH]\n");
+		return -1;
+	}
 	if (a->verts < SKIN_LANES || a->verts > 50000000 || a->threads < 1 || a->threads > WORKERS_MAX ||
 	    a->rounds < 1 || a->rounds > 1000) {
 		fprintf(stderr, "skintool bench: --verts must be 8..50000000, --threads 1..%d and --rounds 1..1000\n",
@@ -320,38 +394,66 @@ static void print_table(workers *w, const bench_args *a, const double best[2][K_
 	}
 }
 
+/* The synthetic mesh (a->verts vertices) or the user's body; says which
+ * on stdout. */
+static int prepare(bench *b, bench_args *a, void *block[2], int threads)
+{
+	if (!a->c.asf) {
+		if (alloc_streams(b, (int)a->verts, block) < 0) {
+			fprintf(stderr, "skintool bench: out of memory for %ld vertices\n", a->verts);
+			return -1;
+		}
+		make_scene(b);
+		make_bones(&b->bones);
+		printf("skinning %ld vertices, 4 influences, %d bones, %d thread(s), kernels: %s\n", a->verts,
+		       BENCH_BONES, threads, skin_simd_name());
+		return 0;
+	}
+	const char *pose;
+	if (load_body(b, &a->c, block, &pose) < 0)
+		return -1;
+	a->verts = b->soa.count;
+	printf("skinning %s: %d vertices, %d bones, in %s, %d thread(s), kernels: %s\n",
+	       a->c.mesh ? a->c.mesh : "the generated body", b->soa.count, b->bones.count, pose, threads,
+	       skin_simd_name());
+	return 0;
+}
+
+/* The largest side of the box the compact positions are quantised over */
+static double compact_box(const skin_compact *c)
+{
+	double side = 0;
+	for (int i = 0; i < 3; i++)
+		side = fmax(side, (double)c->step[i] * 65535.0);
+	return side;
+}
+
 int cmd_bench(int argc, char **argv)
 {
 	static bench b;
-	bench_args a = { 1000000, 1, 20 };
+	static bench_args a;
 	void *block[2] = { NULL, NULL };
+	a.verts = 1000000;
+	a.threads = 1;
+	a.rounds = 20;
 	int rc = parse(argc, argv, &a);
 	if (rc != 0)
 		return rc < 0;
-	if (make_scene(&b, (int)a.verts, block) < 0) {
-		fprintf(stderr, "skintool bench: out of memory for %ld vertices\n", a.verts);
-		return 1;
-	}
-	make_bones(&b.bones);
 	workers *w = workers_start((int)a.threads);
 	if (!w) {
 		fprintf(stderr, "skintool bench: cannot start %ld threads\n", a.threads);
-		rc = 1;
-		goto done;
+		return 1;
 	}
-	printf("skinning %ld vertices, 4 influences, %d bones, %d thread(s), kernels: %s\n", a.verts,
-	       BENCH_BONES, workers_count(w), skin_simd_name());
-	double best[2][K_COUNT];
-	best_seconds_per_pass(w, &b, (int)a.rounds, best);
-	print_table(w, &a, best);
-	printf("compact streams: positions within %.3g of the float ones (half a 16-bit step of the %.3g-unit box)\n",
-	       (double)skin_compact_position_bound(&b.compact), 2.0);
+	rc = 1;
+	if (prepare(&b, &a, block, workers_count(w)) == 0) {
+		double best[2][K_COUNT];
+		best_seconds_per_pass(w, &b, (int)a.rounds, best);
+		print_table(w, &a, best);
+		printf("compact streams: positions within %.3g of the float ones (half a 16-bit step of the "
+		       "%.3g-unit box)\n", (double)skin_compact_position_bound(&b.compact), compact_box(&b.compact));
+		rc = 0;
+	}
 	workers_stop(w);
-done:
-	free(block[0]);
-	free(block[1]);
-	free(b.out.pos);
-	free(b.out.fpos);
-	free(b.out.nrm16);
+	free_streams(&b, block);
 	return rc;
 }

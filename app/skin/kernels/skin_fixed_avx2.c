@@ -118,10 +118,15 @@ static inline __m256i mul_round(__m256i a, __m256i b, int s)
 }
 
 /* fx_blend_scale on 4 lanes (fx_recip_q60 step for step the same
- * integers) for squared norms in [2^56, 2^60 + 2^32]: every blend with the
+ * integers) for squared norms in [2^56, 2^60 + 2^55]: every blend with the
  * sign fix whose weights sum to at most 1 (its real part is at least the
- * pivot's weight, 1/4, and at most 1 plus rounding long; the bound above
- * also keeps move4's intermediates in int32). In stages (seed, Newton
+ * pivot's weight, 1/4, and at most as long as the longest bone's). A
+ * bone's quaternion comes from float and may be longer than 1 by float's
+ * rounding (|q|^2 = 1 + 2^-22 is 2^60 + 2^38 here): a vertex on one bone
+ * has exactly that blend, so the bound must leave room for it (at 2^60 +
+ * 2^32 a third of a real body's batches fell to the scalar kernel). Up to
+ * |real| < 1.016 the vector norms bound move4's intermediates below 2^30.82
+ * (|r x v + w v| <= |real| |v|), still in int32. In stages (seed, Newton
  * steps, scale) so that chunk_norms can run each stage over a whole
  * chunk: one reciprocal is a chain of dependent multiplies, and the core
  * only overlaps chains that are close together in the instruction stream.
@@ -134,7 +139,7 @@ static inline __attribute__((always_inline)) __m256i recip_seed4(__m256i *x, __m
 	for (int bit = 57; bit <= 60; bit++)
 		below = _mm256_add_epi64(below, _mm256_cmpgt_epi64(epi64(1ll << bit), *x));
 	*bad = _mm256_or_si256(_mm256_cmpgt_epi64(epi64(1ll << 56), *x),
-			       _mm256_cmpgt_epi64(*x, epi64((1ll << 60) + (1ll << 32))));
+			       _mm256_cmpgt_epi64(*x, epi64((1ll << 60) + (1ll << 55))));
 	__m256i e = _mm256_sub_epi64(_mm256_setzero_si256(), below); /* x 2^e in [2^60, 2^61) */
 	__m256i xq = _mm256_srli_epi64(_mm256_sllv_epi64(*x, e), 30);
 	*x = xq;
