@@ -10,6 +10,7 @@
 #include "cli_common.h"
 #include "cli_opts.h"
 #include "cli_progress.h"
+#include "cli_skin.h"
 #include "skin.h"
 #include "skin_compact.h"
 #include "skintool_cmds.h"
@@ -74,12 +75,9 @@ static void *alloc_aligned(size_t bytes)
 	return aligned_alloc(SKIN_ALIGN, (bytes + SKIN_ALIGN - 1) / SKIN_ALIGN * SKIN_ALIGN);
 }
 
-/* The float and compact streams of n vertices and the outputs, in
- * blocks[0..1] and b->out (freed by free_streams). */
-static int alloc_streams(bench *b, int n, void *block[2])
+/* The kernels' outputs for n vertices in b->out (freed by free_streams). */
+static int alloc_outputs(bench *b, int n)
 {
-	block[0] = alloc_aligned(skin_soa_bytes(n));
-	block[1] = alloc_aligned(skin_compact_bytes(n));
 	float *outp = alloc_aligned(sizeof(float) * 3 * (size_t)(n + SKIN_LANES) * 2);
 	int32_t *outf = alloc_aligned(sizeof(int32_t) * 3 * (size_t)(n + SKIN_LANES) * 2);
 	int16_t *out16 = alloc_aligned(sizeof(int16_t) * 3 * (size_t)(n + SKIN_LANES));
@@ -88,7 +86,16 @@ static int alloc_streams(bench *b, int n, void *block[2])
 	b->out.fpos = outf;
 	b->out.fnrm = outf ? outf + 3 * (size_t)(n + SKIN_LANES) : NULL;
 	b->out.nrm16 = out16;
-	if (!block[0] || !block[1] || !outp || !outf || !out16)
+	return outp && outf && out16 ? 0 : -1;
+}
+
+/* The float and compact streams of n vertices in blocks[0..1], and the
+ * outputs (freed by free_streams). */
+static int alloc_streams(bench *b, int n, void *block[2])
+{
+	block[0] = alloc_aligned(skin_soa_bytes(n));
+	block[1] = alloc_aligned(skin_compact_bytes(n));
+	if (alloc_outputs(b, n) < 0 || !block[0] || !block[1])
 		return -1;
 	skin_soa_attach(&b->soa, block[0], n);
 	skin_compact_attach(&b->compact, block[1], n);
@@ -151,42 +158,29 @@ static void make_bones(skin_bones *bones)
 }
 
 /* The user's body (SKELETON [MESH], bound as `skintool bind` binds it),
- * posed in the motion's first frame, or in the skeleton's rest pose when
- * no motion is given; *pose_name says which. */
-static int load_body(bench *b, const tool_common *c, void *block[2], const char **pose_name)
+ * laid out and posed as the other commands do (cli_skin), in the motion's
+ * first frame, or in the skeleton's rest pose when no motion is given;
+ * *pose_name says which. */
+static int load_body(bench *b, const tool_common *c, const char **pose_name)
 {
 	static bound_body body;
-	static skel_pose pose;
-	if (bind_args_load(&c->bind, c->asf, c->mesh, &body) < 0)
+	static cli_skin sk;
+	static amc_frame f;
+	if (bind_args_load(&c->bind, c->asf, c->mesh, &body) < 0 ||
+	    (c->amc && cli_read_frame(c->amc, &body.skel, -1, &f) < 0) ||
+	    cli_skin_init(&sk, &body.skel, &body.pose, &body.mesh, &body.weights,
+			  c->mesh ? c->mesh : "generated body") < 0)
 		return -1;
-	if (alloc_streams(b, body.mesh.vert_count, block) < 0) {
-		fprintf(stderr, "skintool bench: out of memory for %d vertices\n", body.mesh.vert_count);
+	cli_skin_use_compact(&sk);
+	cli_skin_frame(&sk, c->amc ? f.value : NULL);
+	*pose_name = c->amc ? "the motion's first frame" : "the skeleton's rest pose";
+	b->soa = sk.soa;
+	b->compact = sk.compact;
+	b->bones = sk.bones;
+	if (alloc_outputs(b, sk.soa.count) < 0) {
+		fprintf(stderr, "skintool bench: out of memory for %d vertices\n", sk.soa.count);
 		return -1;
 	}
-	skp_error err;
-	if (skin_soa_load(&b->soa, &body.mesh, &body.weights, body.skel.count, &err) != SKP_OK) {
-		cli_error(c->mesh ? c->mesh : "generated body", &err);
-		return -1;
-	}
-	skin_compact_load(&b->compact, &b->soa);
-	fk_pose(&body.skel, NULL, &pose);
-	*pose_name = "the skeleton's rest pose";
-	if (c->amc) {
-		static cli_motion mo;
-		static amc_frame f;
-		if (cli_motion_open(&mo, c->amc, &body.skel) < 0)
-			return -1;
-		int rc = cli_motion_next(&mo, &f);
-		cli_motion_close(&mo);
-		if (rc <= 0) {
-			if (rc == 0)
-				fprintf(stderr, "%s: no frames\n", c->amc);
-			return -1;
-		}
-		fk_pose(&body.skel, f.value, &pose);
-		*pose_name = "the motion's first frame";
-	}
-	skin_bones_compute(&b->bones, &body.skel, &body.pose, &pose);
 	return 0;
 }
 
@@ -227,6 +221,7 @@ static double round_seconds_per_pass(workers *w, bench *b)
 static void best_seconds_per_pass(workers *w, bench *b, int rounds, double best[2][K_COUNT])
 {
 	static cli_progress pr;
+	const int pools = workers_count(w) > 1 ? 2 : 1;
 	for (int p = 0; p < 2; p++)
 		for (int k = 0; k < K_COUNT; k++)
 			best[p][k] = 1e30;
@@ -234,7 +229,7 @@ static void best_seconds_per_pass(workers *w, bench *b, int rounds, double best[
 	for (int round = 0; round < rounds; round++) {
 		for (int k = 0; k < K_COUNT; k++) {
 			b->k = &kernels[k];
-			for (int p = 0; p < (workers_count(w) > 1 ? 2 : 1); p++) {
+			for (int p = 0; p < pools; p++) {
 				double s = round_seconds_per_pass(p == 0 ? w : NULL, b);
 				if (s < best[p][k])
 					best[p][k] = s;
@@ -410,7 +405,7 @@ static int prepare(bench *b, bench_args *a, void *block[2], int threads)
 		return 0;
 	}
 	const char *pose;
-	if (load_body(b, &a->c, block, &pose) < 0)
+	if (load_body(b, &a->c, &pose) < 0)
 		return -1;
 	a->verts = b->soa.count;
 	printf("skinning %s: %d vertices, %d bones, in %s, %d thread(s), kernels: %s\n",
