@@ -9,9 +9,10 @@
 # the built tools, are skipped as well. The rendering tests are always
 # skipped: under qemu-user there is no GPU and no aarch64 Mesa driver, and a
 # software rasteriser emulated instruction by instruction would take hours.
-# SKP_TEST_EMULATED names the emulator, for tests to skip what it cannot
-# run: threads (pthread_create in a dynamically linked aarch64 program never
-# returns under Debian 12's qemu-user 7.2; a static one's does).
+# SKP_TEST_EMULATED names the emulator, for tests to probe what it may not
+# run and skip it: threads (pthread_create in a dynamically linked aarch64
+# program never returns under qemu-user 7.2 or 10.0 on some hosts; a static
+# one's does).
 arch=$1; skip=$2; shift 2
 [ "$1" = "--" ] && shift
 qemu=qemu-$arch-static

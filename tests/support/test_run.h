@@ -17,10 +17,11 @@ const char *test_scratch(const char *name);
  * when it did not exit normally (a crash). */
 int test_run(const char *fmt, ...) __attribute__((format(printf, 1, 2)));
 
-/* Skips the running cmocka test, saying why, under the emulator
- * tests/cross_run.sh names in SKP_TEST_EMULATED: it cannot run threads
- * (pthread_create of a dynamically linked aarch64 program never returns
- * under Debian 12's qemu-user 7.2). */
+/* Skips the running cmocka test, saying why, when under the emulator
+ * tests/cross_run.sh names in SKP_TEST_EMULATED a probe thread does not
+ * start: pthread_create of a dynamically linked aarch64 program never
+ * returns under qemu-user on some hosts (7.2 and 10.0 on a 6.18 kernel;
+ * static programs' threads run). Natively nothing is probed. */
 void test_skip_threads_if_emulated(void);
 
 #endif
