@@ -167,6 +167,13 @@ static skp_status get_float_vertices(skp_image *im, mesh *m, skp_error *err)
 /* Version 3: positions in 16-bit steps over the bounds, octahedral
  * normals. Every q of 0..65535 decodes inside the envelope once the
  * bounds' two ends do. */
+/* A compact position record: three u16 steps from the mesh's origin */
+static vec3 dequantise(const uint8_t rec[6], const float origin[3], const float step[3])
+{
+	return vec3_make(origin[0] + (float)le_get16(rec) * step[0], origin[1] + (float)le_get16(rec + 2) * step[1],
+			 origin[2] + (float)le_get16(rec + 4) * step[2]);
+}
+
 static skp_status get_compact_vertices(skp_image *im, mesh *m, skp_error *err)
 {
 	float origin[3], step[3];
@@ -181,9 +188,8 @@ static skp_status get_compact_vertices(skp_image *im, mesh *m, skp_error *err)
 	for (int v = 0; v < m->vert_count && !rc; v++) {
 		uint8_t rec[6];
 		rc = sec_get(im, rec, sizeof rec, err);
-		float *p = &m->pos[v].x;
-		for (int i = 0; i < 3 && !rc; i++)
-			p[i] = origin[i] + (float)le_get16(rec + 2 * i) * step[i];
+		if (!rc)
+			m->pos[v] = dequantise(rec, origin, step);
 	}
 	for (int v = 0; v < m->vert_count && !rc; v++) {
 		uint8_t rec[4];

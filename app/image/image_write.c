@@ -269,7 +269,7 @@ static skp_status put_mesh(skp_image_writer *w, const mesh *m, skp_error *err)
 	if (!rc) rc = put_floats(w, step, 3, err);
 	for (int v = 0; v < m->vert_count && !rc; v++) {
 		uint8_t rec[6];
-		const float *p = &m->pos[v].x;
+		const float p[3] = { m->pos[v].x, m->pos[v].y, m->pos[v].z };
 		for (int i = 0; i < 3; i++)
 			le_put16(rec + 2 * i, skin_quantise(p[i], origin[i], step[i]));
 		rc = put(w, rec, sizeof rec, err);

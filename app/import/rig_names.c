@@ -59,7 +59,7 @@ static void normalise(const char *name, char *out)
 		if (*c == ':' || *c == '|')
 			s = c + 1;
 	size_t n = 0;
-	for (; s[n] && n < NAME_MAX_LEN - 1; n++)
+	for (; n < NAME_MAX_LEN - 1 && s[n]; n++)
 		out[n] = (char)tolower((unsigned char)s[n]);
 	out[n] = '\0';
 	static const char *const prefixes[] = { "def-", "def_", "org-", "mch-" };

@@ -213,7 +213,7 @@ static skp_status read_motion_header(bvh_state *st)
 		return rc;
 	st->lay->frames = (long)frames;
 	st->lay->frame_time = dt;
-	return rc;
+	return SKP_OK;
 }
 
 /* A bone's segment: to the first child joint, else to the End Site. */

@@ -167,10 +167,11 @@ void compare_pick_stills(compare_run *c, int want)
 	r->still_count = 0;
 	while (r->still_count < want) {
 		int best_g = -1, best_k = -1;
+		float best = 0.0f;
 		for (int g = 0; g < REGION_COUNT; g++) {
 			int k = done[g] ? -1 : worst_kept(c, sep, g);
-			if (k >= 0 && (best_k < 0 || c->rel_region[g][k] < c->rel_region[best_g][best_k]))
-				best_g = g, best_k = k;
+			if (k >= 0 && (best_k < 0 || c->rel_region[g][k] < best))
+				best_g = g, best_k = k, best = c->rel_region[g][k];
 		}
 		if (best_k < 0)
 			break;

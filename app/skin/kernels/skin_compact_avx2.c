@@ -68,6 +68,15 @@ SKIN_INLINE infl8 influences(const skin_compact *in, int v, float ws[SKP_MAX_INF
 	return s;
 }
 
+/* The 24 values of store_snorm8: a's halves hold 8 each, b's low quarters 4 */
+SKIN_INLINE void store_halves(int16_t *to, __m256i a, __m256i b)
+{
+	_mm_storeu_si128((__m128i *)to, _mm256_castsi256_si128(a));
+	_mm_storel_epi64((__m128i *)(to + 8), _mm256_castsi256_si128(b));
+	_mm_storeu_si128((__m128i *)(to + 12), _mm256_extracti128_si256(a, 1));
+	_mm_storel_epi64((__m128i *)(to + 20), _mm256_extracti128_si256(b, 1));
+}
+
 /* 8 unit normals as 24 interleaved snorm16 values at dst (the first
  * `valid` triples). Per 128-bit half (4 vertices): packed x|y and z|z,
  * byte shuffles interleave them into 8 values (x0 y0 z0 x1 y1 z1 x2 y2)
@@ -91,14 +100,13 @@ SKIN_INLINE void store_snorm8(int16_t *dst, v3x8 n, int valid)
 #undef Z
 	__m256i a = _mm256_or_si256(_mm256_shuffle_epi8(xy, a_xy), _mm256_shuffle_epi8(zz, a_z));
 	__m256i b = _mm256_or_si256(_mm256_shuffle_epi8(xy, b_xy), _mm256_shuffle_epi8(zz, b_z));
+	if (valid == SKIN_LANES) {
+		store_halves(dst, a, b);
+		return;
+	}
 	int16_t tmp[3 * SKIN_LANES];
-	int16_t *to = valid == SKIN_LANES ? dst : tmp;
-	_mm_storeu_si128((__m128i *)to, _mm256_castsi256_si128(a));
-	_mm_storel_epi64((__m128i *)(to + 8), _mm256_castsi256_si128(b));
-	_mm_storeu_si128((__m128i *)(to + 12), _mm256_extracti128_si256(a, 1));
-	_mm_storel_epi64((__m128i *)(to + 20), _mm256_extracti128_si256(b, 1));
-	if (to == tmp)
-		memcpy(dst, tmp, sizeof(int16_t) * 3 * (size_t)valid);
+	store_halves(tmp, a, b);
+	memcpy(dst, tmp, sizeof(int16_t) * 3 * (size_t)valid);
 }
 
 void skin_lbs_compact_avx2(const skin_compact *in, const skin_bones *b, int first, int end, const skin_out *out)

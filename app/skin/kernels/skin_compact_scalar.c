@@ -35,7 +35,10 @@ static void run(int dqbs, const skin_compact *in, const skin_bones *b, int first
 		float w[SKP_MAX_INFLUENCES];
 		vec3 p, n, pp, nn;
 		decode(in, v, idx, w, &p, &n);
-		(dqbs ? skin_dqbs_vertex : skin_lbs_vertex)(b, idx, w, p, n, &pp, &nn);
+		if (dqbs)
+			skin_dqbs_vertex(b, idx, w, p, n, &pp, &nn);
+		else
+			skin_lbs_vertex(b, idx, w, p, n, &pp, &nn);
 		float *po = out->pos + 3 * v;
 		int16_t *no = out->nrm16 + 3 * v;
 		po[0] = pp.x; po[1] = pp.y; po[2] = pp.z;
