@@ -4,9 +4,11 @@
 # memory stays flat after warm-up, and that every injected fault was logged.
 # Usage: soak.sh BUILD_DIR FRAMES [SAMPLE_SECONDS]      (make soak)
 #
-# Faults: three blocks of the clip get a corrupted byte (a CRC mismatch,
-# persistent like a worn flash page). skinplay must log each of them once
-# ("image: block N bad") and hold the last good frame over it on every loop.
+# Faults, each a corrupted byte (a CRC mismatch, persistent like a worn
+# flash page) in a block of the clip: three blocks alone in their parity
+# groups, which skinplay must rebuild from parity ("block N rebuilt from
+# parity"), and two blocks of one group, beyond repair, which it must log
+# ("image: block N bad") and hold the last good frame over on every loop.
 # Buttons: 500 random presses of ALGO/PLAY/NEXT/VIEW (short and long) from a
 # fixed seed, spread over the expected run time, from 20 s on: the first loop
 # of the clip plays through every damaged block.
@@ -25,7 +27,16 @@ range=$("$tool" info "$dir/show.skn" | sed -n 's/^ *clip 0 .* blocks \([0-9]*\)\
 set -- $range
 [ -n "$bs" ] && [ $# = 2 ] || { echo "soak: cannot read the image layout"; exit 1; }
 first=$1; last=$2
-faults="$((first + 1)) $(((first + last) / 2)) $((last - 1))"
+groups=$("$tool" info "$dir/show.skn" | sed -n 's/^ *parity .*: \([0-9]*\) groups .*/\1/p')
+[ -n "$groups" ] || { echo "soak: the image has no parity"; exit 1; }
+# block b is in group b mod groups: the three rebuilt ones and the lost
+# pair's group must all differ, and the pair must lie inside the clip
+rebuilt="$((first + 1)) $(((first + last) / 2)) $((last - 1))"
+lost="$((first + 2)) $((first + 2 + groups))"
+faults="$rebuilt $lost"
+distinct=$(for b in $rebuilt $((first + 2)); do echo $((b % groups)); done | sort -u | wc -l)
+[ "$distinct" = 4 ] && [ $((first + 2 + groups)) -le "$last" ] ||
+	{ echo "soak: cannot place the faults in clip blocks $first..$last with $groups parity groups"; exit 1; }
 cp "$dir/show.skn" "$dir/damaged.skn"
 for b in $faults; do
 	off=$((b * bs + 100))
@@ -47,7 +58,7 @@ awk -v n=500 -v span="$span_ms" 'BEGIN {
 	}
 }' >"$dir/buttons.txt"
 
-echo "soak: $frames frames, image $dir/damaged.skn (bad blocks: $faults), buttons $dir/buttons.txt"
+echo "soak: $frames frames, image $dir/damaged.skn (bad blocks: $rebuilt rebuilt from parity, $lost beyond repair), buttons $dir/buttons.txt"
 start=$(date +%s)
 "$play" --image "$dir/damaged.skn" --platform surfaceless --size 160x90 --frames "$frames" \
 	--hud-fps off --input "script:$dir/buttons.txt" >"$dir/skinplay.log" 2>&1 &
@@ -65,11 +76,18 @@ fail=0
 grep '^played' "$dir/skinplay.log"
 [ "$rc" = 0 ] || { echo "soak: FAILED: skinplay exited with status $rc (log $dir/skinplay.log)"; fail=1; }
 grep -q "^played $frames frames" "$dir/skinplay.log" || { echo "soak: FAILED: did not play $frames frames"; fail=1; }
-for b in $faults; do
-	n=$(grep -c "^image: block $b bad" "$dir/skinplay.log")
-	[ "$n" -ge 1 ] || { echo "soak: FAILED: injected fault in block $b was not logged"; fail=1; }
+for b in $rebuilt; do
+	grep -q "^image: .*: block $b rebuilt from parity" "$dir/skinplay.log" ||
+		{ echo "soak: FAILED: block $b (alone in its parity group) was not rebuilt"; fail=1; }
 done
-echo "soak: injected faults in blocks $faults: $(grep -c '^image: block [0-9]* bad' "$dir/skinplay.log") logged, playback survived"
+for b in $lost; do
+	grep -q "^image: block $b bad" "$dir/skinplay.log" ||
+		{ echo "soak: FAILED: block $b (beyond repair) was not logged"; fail=1; }
+done
+grep -Eq "clip .*: [1-9][0-9]* frames? held over bad blocks" "$dir/skinplay.log" ||
+	{ echo "soak: FAILED: no frame was held over the blocks beyond repair"; fail=1; }
+echo "soak: faults: $(grep -c ' rebuilt from parity' "$dir/skinplay.log") rebuilt from parity," \
+	"$(grep -c '^image: block [0-9]* bad' "$dir/skinplay.log") logged beyond repair, playback survived"
 echo "soak: input events handled: $(grep -c '^input:' "$dir/skinplay.log")"
 # Flat: views and skinning modes come and go with the buttons, so RSS moves
 # by a few MiB (llvmpipe's buffers); a leak is a level that keeps rising.

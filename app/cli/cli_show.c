@@ -278,8 +278,8 @@ static void pass_summary(show_source *s)
 {
 	unsigned long rebuilt = s->slot[s->active].im.rebuilt - s->pass_rebuilt;
 	if (s->pass_lost || rebuilt)
-		fprintf(stderr, "image: clip %s: %lu frames held over bad blocks, %lu blocks rebuilt this pass\n",
-			s->player.c.name, s->pass_lost, rebuilt);
+		fprintf(stderr, "image: clip %s: %lu frame%s held over bad blocks, %lu block%s rebuilt this pass\n",
+			s->player.c.name, s->pass_lost, s->pass_lost == 1 ? "" : "s", rebuilt, rebuilt == 1 ? "" : "s");
 	s->pass_lost = 0;
 	s->pass_rebuilt = s->slot[s->active].im.rebuilt;
 }
