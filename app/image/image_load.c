@@ -164,9 +164,6 @@ static skp_status get_float_vertices(skp_image *im, mesh *m, skp_error *err)
 	return rc;
 }
 
-/* Version 3: positions in 16-bit steps over the bounds, octahedral
- * normals. Every q of 0..65535 decodes inside the envelope once the
- * bounds' two ends do. */
 /* A compact position record: three u16 steps from the mesh's origin */
 static vec3 dequantise(const uint8_t rec[6], const float origin[3], const float step[3])
 {
@@ -174,6 +171,9 @@ static vec3 dequantise(const uint8_t rec[6], const float origin[3], const float 
 			 origin[2] + (float)le_get16(rec + 4) * step[2]);
 }
 
+/* Version 3: positions in 16-bit steps over the bounds, octahedral
+ * normals. Every q of 0..65535 decodes inside the envelope once the
+ * bounds' two ends do. */
 static skp_status get_compact_vertices(skp_image *im, mesh *m, skp_error *err)
 {
 	float origin[3], step[3];
