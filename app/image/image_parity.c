@@ -3,6 +3,8 @@
  * an image is written or repaired. Fixed memory: the caller's block buffers. */
 #include "image_parity.h"
 
+#include "image_section.h"
+
 #include <string.h>
 
 #include "image_read.h"
@@ -54,15 +56,6 @@ uint32_t skp_parity_blocks(uint32_t data_blocks, uint32_t group)
 	return (data_blocks + group - 1) / group;
 }
 
-/* fmt names the block with one %lu */
-static skp_status io_fail(skp_error *err, uint32_t block, const char *fmt)
-{
-	skp_fail(err, SKP_ERR_IO, 0, fmt, (unsigned long)block);
-	if (err)
-		err->block = (long)block;
-	return SKP_ERR_IO;
-}
-
 skp_status skp_parity_write(const skp_blockdev *dev, const skp_image_header *h, const uint8_t *block0,
 			    uint8_t *acc, uint8_t *tmp, skp_error *err)
 {
@@ -72,12 +65,14 @@ skp_status skp_parity_write(const skp_blockdev *dev, const skp_image_header *h, 
 		for (uint32_t b = g; b < h->data_blocks; b += p) {
 			const uint8_t *src = b == 0 && block0 ? block0 : tmp;
 			if (src == tmp && dev->read(dev->ctx, b, tmp) != (int)bs)
-				return io_fail(err, b, "cannot read block %lu back for its parity");
+				return image_block_fail(err, SKP_ERR_IO, b, "cannot read block %lu back for its parity",
+							(unsigned long)b);
 			xor_into(acc, src, bs);
 		}
 		uint32_t parity_block = h->data_blocks + g;
 		if (dev->write(dev->ctx, parity_block, acc) < 0)
-			return io_fail(err, parity_block, "cannot write parity block %lu");
+			return image_block_fail(err, SKP_ERR_IO, parity_block, "cannot write parity block %lu",
+						(unsigned long)parity_block);
 	}
 	return SKP_OK;
 }

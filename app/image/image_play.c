@@ -1,5 +1,7 @@
 #include "image_play.h"
 
+#include "image_section.h"
+
 #include <string.h>
 
 static void ring_clear(skp_player *p)
@@ -74,9 +76,7 @@ int skp_player_next(skp_player *p, amc_frame *f, skp_error *err)
 	prefetch(p, b);
 	if (state == SKP_BLOCK_OK)
 		return 1;
-	skp_fail(err, state == SKP_BLOCK_IO ? SKP_ERR_IO : SKP_ERR_CORRUPT, 0, "%s",
-		 skp_block_state_name((skp_block_state)state));
-	if (err)
-		err->block = (long)(p->c.frames_first + b);
+	image_block_fail(err, state == SKP_BLOCK_IO ? SKP_ERR_IO : SKP_ERR_CORRUPT, p->c.frames_first + b, "%s",
+			 skp_block_state_name((skp_block_state)state));
 	return SKP_PLAYER_LOST;
 }

@@ -1,11 +1,14 @@
 #include "image_section.h"
 
+#include <stdarg.h>
 #include <string.h>
 
-skp_status image_block_fail(skp_error *err, skp_status code, uint32_t block, const char *fmt,
-			    const char *what, const char *why)
+skp_status image_block_fail(skp_error *err, skp_status code, uint32_t block, const char *fmt, ...)
 {
-	skp_fail(err, code, 0, fmt, what, why);
+	va_list ap;
+	va_start(ap, fmt);
+	skp_vfail(err, code, 0, fmt, ap);
+	va_end(ap);
 	if (err)
 		err->block = (long)block;
 	return code;

@@ -5,6 +5,7 @@
 
 #include "crc32.h"
 #include "image_parity.h"
+#include "image_section.h"
 #include "skin_compact.h"
 
 void skp_clip_range_init(skp_clip_range *r, const skel *s)
@@ -50,12 +51,8 @@ static skp_status flush_block(skp_image_writer *w, skp_error *err)
 	b[9] = 0;
 	le_put16(b + 10, w->item);
 	skp_block_seal(b, w->bs);
-	if (w->dev->write(w->dev->ctx, index, b) < 0) {
-		skp_fail(err, SKP_ERR_IO, 0, "cannot write block %lu", (unsigned long)index);
-		if (err)
-			err->block = (long)index;
-		return SKP_ERR_IO;
-	}
+	if (w->dev->write(w->dev->ctx, index, b) < 0)
+		return image_block_fail(err, SKP_ERR_IO, index, "cannot write block %lu", (unsigned long)index);
 	memset(b, 0, w->bs);
 	w->fill = 0;
 	return SKP_OK;
