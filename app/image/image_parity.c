@@ -65,14 +65,12 @@ skp_status skp_parity_write(const skp_blockdev *dev, const skp_image_header *h, 
 		for (uint32_t b = g; b < h->data_blocks; b += p) {
 			const uint8_t *src = b == 0 && block0 ? block0 : tmp;
 			if (src == tmp && dev->read(dev->ctx, b, tmp) != (int)bs)
-				return image_block_fail(err, SKP_ERR_IO, b, "cannot read block %lu back for its parity",
-							(unsigned long)b);
+				return image_block_fail(err, SKP_ERR_IO, b, "cannot read it back to compute parity");
 			xor_into(acc, src, bs);
 		}
 		uint32_t parity_block = h->data_blocks + g;
 		if (dev->write(dev->ctx, parity_block, acc) < 0)
-			return image_block_fail(err, SKP_ERR_IO, parity_block, "cannot write parity block %lu",
-						(unsigned long)parity_block);
+			return image_block_fail(err, SKP_ERR_IO, parity_block, "cannot write this parity block");
 	}
 	return SKP_OK;
 }

@@ -78,15 +78,14 @@ static skp_status check_header(const skp_image *im, const uint8_t *p, int n, int
 	const skp_image_header *h = &im->hdr;
 	uint32_t bs = im->dev->block_size;
 	if (memcmp(p, SKP_IMAGE_MAGIC, 8))
-		return image_block_fail(err, SKP_ERR_CORRUPT, 0, "%s%s", "not a skinplay image ",
-					"(no SKPIMAGE magic in block 0)");
+		return image_block_fail(err, SKP_ERR_CORRUPT, 0, "not a skinplay image (no SKPIMAGE magic)");
 	if (valid && h->block_size != bs)
 		return skp_fail(err, SKP_ERR_RANGE, 0, "image block size %lu, storage opened with %lu",
 				(unsigned long)h->block_size, (unsigned long)bs);
 	if ((uint32_t)n < bs)
-		return image_block_fail(err, SKP_ERR_CORRUPT, 0, "%s%s", "header block: ", "short read");
+		return image_block_fail(err, SKP_ERR_CORRUPT, 0, "header block: short read");
 	if (!skp_block_crc_ok(im->buf, bs))
-		return image_block_fail(err, SKP_ERR_CORRUPT, 0, "%s%s", "header block: ", "CRC mismatch");
+		return image_block_fail(err, SKP_ERR_CORRUPT, 0, "header block: CRC mismatch");
 	if (h->version < 1 || h->version > SKP_IMAGE_VERSION)
 		return skp_fail(err, SKP_ERR_CORRUPT, 0, "image format version %u, this build reads versions 1 to %d",
 				(unsigned)h->version, SKP_IMAGE_VERSION);
@@ -94,7 +93,7 @@ static skp_status check_header(const skp_image *im, const uint8_t *p, int n, int
 	if (h->header_size != size)
 		return skp_fail(err, SKP_ERR_CORRUPT, 0, "header size %u, expected %u", (unsigned)h->header_size, size);
 	if (!valid)
-		return image_block_fail(err, SKP_ERR_CORRUPT, 0, "%s%s", "header ", "CRC mismatch");
+		return image_block_fail(err, SKP_ERR_CORRUPT, 0, "header CRC mismatch");
 	return SKP_OK;
 }
 
@@ -191,9 +190,9 @@ static skp_status header_from_block0(skp_image *im, skp_error *err)
 	if (n == SKP_BD_ERANGE)
 		n = 0; /* empty storage */
 	if (n < 0)
-		return image_block_fail(err, SKP_ERR_IO, 0, "%s%s", "header: ", "I/O error");
+		return image_block_fail(err, SKP_ERR_IO, 0, "header: I/O error");
 	if ((uint32_t)n < SKP_IMAGE_BLOCK_HDR + SKP_IMAGE_HEADER_V1)
-		return image_block_fail(err, SKP_ERR_CORRUPT, 0, "%s%s", "header: ", "short read (empty or truncated image)");
+		return image_block_fail(err, SKP_ERR_CORRUPT, 0, "header: short read (empty or truncated image)");
 	const uint8_t *p = im->buf + SKP_IMAGE_BLOCK_HDR;
 	int valid = skp_image_header_get(p, (uint32_t)n - SKP_IMAGE_BLOCK_HDR, &im->hdr);
 	skp_status rc = check_header(im, p, n, valid, err);

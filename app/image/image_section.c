@@ -34,11 +34,11 @@ skp_status sec_get(skp_image *im, void *out, uint32_t n, skp_error *err)
 	uint32_t payload = im->hdr.block_size - SKP_IMAGE_BLOCK_EXTRA;
 	const char *what = kind_names[im->s_kind];
 	if (n > im->s_left)
-		return image_block_fail(err, SKP_ERR_CORRUPT, im->s_block, "%s section ends early%s", what, "");
+		return image_block_fail(err, SKP_ERR_CORRUPT, im->s_block, "%s section ends early", what);
 	while (n > 0) {
 		if (im->s_pos == payload) {
 			if (im->s_block >= im->s_end)
-				return image_block_fail(err, SKP_ERR_CORRUPT, im->s_block, "%s section ends early%s", what, "");
+				return image_block_fail(err, SKP_ERR_CORRUPT, im->s_block, "%s section ends early", what);
 			skp_block_state st = skp_image_read_block(im, im->s_block, im->s_kind, im->s_item, im->buf);
 			if (st != SKP_BLOCK_OK)
 				return image_block_fail(err, st == SKP_BLOCK_IO ? SKP_ERR_IO : SKP_ERR_CORRUPT, im->s_block,

@@ -52,7 +52,7 @@ static skp_status flush_block(skp_image_writer *w, skp_error *err)
 	le_put16(b + 10, w->item);
 	skp_block_seal(b, w->bs);
 	if (w->dev->write(w->dev->ctx, index, b) < 0)
-		return image_block_fail(err, SKP_ERR_IO, index, "cannot write block %lu", (unsigned long)index);
+		return image_block_fail(err, SKP_ERR_IO, index, "cannot write it");
 	memset(b, 0, w->bs);
 	w->fill = 0;
 	return SKP_OK;

@@ -613,6 +613,8 @@ static void test_writer_errors(void **state)
 	/* header and skeleton fill the storage: no room for the body */
 	assert_int_equal(skp_image_write_bind(&wr, &m, &w, NULL, 0, &err), SKP_ERR_IO);
 	assert_int_equal(err.block, 2);
+	/* callers print "block 2: " before the message: it must not say it again */
+	assert_string_equal(err.msg, "cannot write it");
 	dev = skp_mem_blockdev_init(&mb, img, CAP, 100);
 	assert_int_equal(skp_image_write_begin(&wr, &dev, 1, &s, &err), SKP_ERR_RANGE);
 	assert_non_null(strstr(err.msg, "block size 100"));
