@@ -89,18 +89,19 @@ typedef struct skin_bones {
 	/* flat copies for SIMD gathers: 3x4 row-major, and real|dual */
 	float lbs12[SKP_MAX_BONES + 1][12];
 	float dq8[SKP_MAX_BONES + 1][8];
-#ifdef SKP_SIMD_AVX2
+#if defined(SKP_SIMD_AVX2) || defined(SKP_SIMD_NEON)
 	/* The DQBS sign fix depends only on the pair (pivot bone, bone): the
 	 * decision for every pair, computed once per frame with the dot
 	 * product the scalar kernel uses, so the SIMD kernels look it up per
 	 * vertex and bone (as they load the bone's row) instead of
 	 * recomputing it. flip_f (float) holds the sign bit, -0.0f (flip) or
-	 * 0.0f, which the float kernel xors into the row; flip_x (fixed
-	 * point) 1 (flip) or 0, which picks the negated or the plain row of
-	 * fdq_halves. Only the AVX2 kernels read them, so other boards
-	 * neither store nor compute them. */
+	 * 0.0f, which the float kernels xor into the row or the weight; flip_x
+	 * (fixed point) 1 (flip) or 0. Only the SIMD kernels read them, so
+	 * scalar boards neither store nor compute them. */
 	float flip_f[SKP_MAX_BONES + 1][SKP_MAX_BONES + 1];
 	uint8_t flip_x[SKP_MAX_BONES + 1][SKP_MAX_BONES + 1];
+#endif
+#ifdef SKP_SIMD_AVX2
 	/* fdq ([0]) and its negation ([1]) with every component c split as
 	 * c = hi * 2^16 + lo, lo and hi signed 16-bit halves, laid out as lo
 	 * of components 0-3, hi of 0-3, lo of 4-7, hi of 4-7: a 16-bit unpack

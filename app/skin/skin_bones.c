@@ -28,7 +28,7 @@ static void set_bone(skin_bones *out, int b, quat q, vec3 t)
 	flatten(out, b);
 }
 
-#ifdef SKP_SIMD_AVX2
+#if defined(SKP_SIMD_AVX2) || defined(SKP_SIMD_NEON)
 /* Only the bones in use (and the identity slot) get entries. */
 static void compute_flips(skin_bones *out)
 {
@@ -45,7 +45,9 @@ static void compute_flips(skin_bones *out)
 		}
 	}
 }
+#endif
 
+#ifdef SKP_SIMD_AVX2
 static void split_halves(int16_t dst[16], const int64_t c[8])
 {
 	for (int i = 0; i < 8; i++) {
@@ -94,10 +96,13 @@ void skin_bones_compute(skin_bones *out, const skel *s, const skel_pose *bind,
 
 void skin_bones_derive(skin_bones *out)
 {
-#ifdef SKP_SIMD_AVX2
+#if defined(SKP_SIMD_AVX2) || defined(SKP_SIMD_NEON)
 	compute_flips(out);
+#endif
+#ifdef SKP_SIMD_AVX2
 	compute_halves(out);
-#else
+#endif
+#if !defined(SKP_SIMD_AVX2) && !defined(SKP_SIMD_NEON)
 	(void)out;
 #endif
 }

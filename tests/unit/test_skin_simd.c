@@ -161,6 +161,20 @@ static void test_fixed_weights_outside_invariants(void **state)
 	expect_fixed_same_as_scalar();
 }
 
+/* Blends far shorter than a unit quaternion (weights summing to a few
+ * LSB: squared norms from 2^34 down to 0, the range where the reciprocal's
+ * scaling shift is largest, and below it, where fx_dq_transform_blend
+ * leaves the vertex as it is): the SIMD kernel must agree there too. */
+static void test_fixed_short_blends(void **state)
+{
+	(void)state;
+	setup_scene();
+	for (int v = 0; v < N; v++)
+		for (int k = 0; k < SKP_MAX_INFLUENCES; k++)
+			soa.fweight[k][v] = (fx_w15)(v % 7 > k ? 1 + v % 3 : 0);
+	expect_fixed_same_as_scalar();
+}
+
 /* A bone whose translation saturated the dual part (|t| beyond the Q16
  * range): its components do not split into 16-bit halves, so the SIMD
  * kernel must fall back, not wrap. */
@@ -225,6 +239,7 @@ int main(void)
 		cmocka_unit_test(test_fixed_kernel_matches_scalar),
 		cmocka_unit_test(test_fixed_norm_just_below_one),
 		cmocka_unit_test(test_fixed_weights_outside_invariants),
+		cmocka_unit_test(test_fixed_short_blends),
 		cmocka_unit_test(test_fixed_saturated_dual),
 		cmocka_unit_test(test_fixed_outside_envelope),
 		cmocka_unit_test(test_compact_kernels_match_scalar),

@@ -8,9 +8,10 @@
  * saturates where the scalar kernel does. The blend runs per vertex (its
  * four bones' rows times signed weights into int64 lanes), one transpose
  * turns four blends into lanes, and the reciprocal of each blend's norm
- * is the scalar fx_blend_scale (a chain of 64-bit steps NEON has no clz
- * for). No floating-point instruction: `make test` disassembles this
- * object to check (tests/check_simd_integer.sh). */
+ * runs in lanes too, as fx_blend_scale would (the rare norm outside its
+ * range sends the step to the scalar kernel). No floating-point
+ * instruction: `make test` disassembles this object to check
+ * (tests/check_simd_integer.sh). */
 #include "skin_kernels.h"
 
 #if defined(SKP_SIMD_NEON) && defined(__aarch64__)
@@ -22,54 +23,56 @@ typedef struct s64x4 {
 	int64x2_t lo, hi;
 } s64x4;
 
-static inline s64x4 mul4(int32x4_t a, int32x4_t b)
+NEON_INLINE s64x4 mul4(int32x4_t a, int32x4_t b)
 {
 	s64x4 r = { vmull_s32(vget_low_s32(a), vget_low_s32(b)), vmull_high_s32(a, b) };
 	return r;
 }
 
-static inline s64x4 mla4(s64x4 acc, int32x4_t a, int32x4_t b)
+NEON_INLINE s64x4 mla4(s64x4 acc, int32x4_t a, int32x4_t b)
 {
 	s64x4 r = { vmlal_s32(acc.lo, vget_low_s32(a), vget_low_s32(b)), vmlal_high_s32(acc.hi, a, b) };
 	return r;
 }
 
-static inline s64x4 mls4(s64x4 acc, int32x4_t a, int32x4_t b)
+NEON_INLINE s64x4 mls4(s64x4 acc, int32x4_t a, int32x4_t b)
 {
 	s64x4 r = { vmlsl_s32(acc.lo, vget_low_s32(a), vget_low_s32(b)), vmlsl_high_s32(acc.hi, a, b) };
 	return r;
 }
 
 /* fx_sat32(fx_shr_round(x, 30)) and fx_sat32(x >> 30) per lane */
-static inline int32x4_t narrow_round30(s64x4 x)
+NEON_INLINE int32x4_t narrow_round30(s64x4 x)
 {
 	return vcombine_s32(vqrshrn_n_s64(x.lo, 30), vqrshrn_n_s64(x.hi, 30));
 }
 
-static inline int32x4_t narrow_cut30(s64x4 x)
+NEON_INLINE int32x4_t narrow_cut30(s64x4 x)
 {
 	return vcombine_s32(vqshrn_n_s64(x.lo, 30), vqshrn_n_s64(x.hi, 30));
 }
 
 /* fx_sat32(x + v) per lane */
-static inline int32x4_t add_narrow(s64x4 x, int32x4_t v)
+NEON_INLINE int32x4_t add_narrow(s64x4 x, int32x4_t v)
 {
 	return vcombine_s32(vqmovn_s64(vaddw_s32(x.lo, vget_low_s32(v))), vqmovn_s64(vaddw_high_s32(x.hi, v)));
 }
 
-/* fx_dq_blend of one vertex: each influence's weight negated when its
- * real part points away from the pivot's (the exact int64 dot product, as
- * fx_quat_dot), the sums in int64 and rounded once by 15 bits. */
-static void blend_vertex(const skin_soa *in, const skin_bones *b, int v, int32x4_t *real, int32x4_t *dual)
+/* fx_dq_blend of one vertex: each influence's weight negated where the
+ * sign fix (flip_x: the exact int64 dot product with the pivot's real part,
+ * as fx_dq_blend tests it, once per bone pair and frame) says, the sums in
+ * int64 and rounded once by 15 bits. */
+NEON_INLINE void blend_vertex(const skin_soa *in, const skin_bones *b, int v, int32x4_t *real, int32x4_t *dual)
 {
-	const int32x4_t pivot = vld1q_s32(&b->fdq[in->bone[0][v]].real.w);
+	const uint8_t *flip = b->flip_x[in->bone[0][v]];
 	int64x2_t r0 = vdupq_n_s64(0), r1 = r0, u0 = r0, u1 = r0;
+#pragma GCC unroll 12
 	for (int k = 0; k < SKP_MAX_INFLUENCES; k++) {
-		const fx_dq *d = &b->fdq[in->bone[k][v]];
+		int bone = in->bone[k][v];
+		const fx_dq *d = &b->fdq[bone];
 		int32x4_t qr = vld1q_s32(&d->real.w), qd = vld1q_s32(&d->dual.w);
-		int64x2_t dot = vmlal_high_s32(vmull_s32(vget_low_s32(qr), vget_low_s32(pivot)), qr, pivot);
 		int32_t w = in->fweight[k][v];
-		if (vaddvq_s64(dot) < 0)
+		if (flip[bone])
 			w = -w;
 		r0 = vmlal_n_s32(r0, vget_low_s32(qr), w);
 		r1 = vmlal_high_n_s32(r1, qr, w);
@@ -80,38 +83,85 @@ static void blend_vertex(const skin_soa *in, const skin_bones *b, int v, int32x4
 	*dual = vcombine_s32(vqrshrn_n_s64(u0, 15), vqrshrn_n_s64(u1, 15));
 }
 
-/* The blends of 4 vertices in lanes (d[0..3] real w x y z, d[4..7] dual)
- * and each one's 2 / |real|^2 as inv / 2^sh; 0 when a vertex's blend is
- * one fx_dq_transform_blend leaves alone (sh 0). */
-static int blend4(const skin_soa *in, const skin_bones *b, int v, int32x4_t d[8], int32_t inv[NEON_LANES],
-		  int64_t sh[NEON_LANES])
+/* (a * b + 2^(s-1)) >> s per lane, for products whose result fits 32 bits */
+#define MUL_ROUND(a, b, s) vrshrn_high_n_u64(vrshrn_n_u64(vmull_u32(vget_low_u32(a), vget_low_u32(b)), s), \
+					      vmull_high_u32(a, b), s)
+
+/* A 32-bit table entry per lane: lane value s picks bytes 4s..4s+3. */
+NEON_INLINE uint32x4_t lookup8(const uint32_t table[8], uint32x4_t s)
+{
+	const uint8x16x2_t t = { { vld1q_u8((const uint8_t *)table), vld1q_u8((const uint8_t *)table + 16) } };
+	uint32x4_t bytes = vmlaq_n_u32(vdupq_n_u32(0x03020100u), s, 0x04040404u);
+	return vreinterpretq_u32_u8(vqtbl2q_u8(t, vreinterpretq_u8_u32(bytes)));
+}
+
+/* fx_blend_scale on 4 lanes, step for step the same integers, for squared
+ * norms x in [2^32, 2^61): there clz(x) is clz of x's high half (NEON
+ * counts leading zeros of 32-bit lanes only) and every value below fits
+ * 32 bits. inv / 2^-nsh is each lane's 2 / |real|^2. Returns 0 when a lane
+ * is outside (a blend that all but cancelled, or weights summing past 1):
+ * the caller takes the scalar kernel. */
+NEON_INLINE int blend_scale4(const int32x4_t d[4], int32x4_t *inv, int64x2_t nsh[2])
+{
+	int64x2_t lo = vmull_s32(vget_low_s32(d[0]), vget_low_s32(d[0])), hi = vmull_high_s32(d[0], d[0]);
+#pragma GCC unroll 4
+	for (int c = 1; c < 4; c++) {
+		lo = vmlal_s32(lo, vget_low_s32(d[c]), vget_low_s32(d[c]));
+		hi = vmlal_high_s32(hi, d[c], d[c]);
+	}
+	/* unsigned: four squares of int32 wrap only when all are 2^62, to 0 */
+	uint64x2_t xl = vreinterpretq_u64_s64(lo), xh = vreinterpretq_u64_s64(hi);
+	const uint64x2_t min = vdupq_n_u64((uint64_t)1 << 32), max = vdupq_n_u64((uint64_t)1 << 61);
+	uint64x2_t ok_l = vandq_u64(vcgeq_u64(xl, min), vcltq_u64(xl, max));
+	uint64x2_t ok_h = vandq_u64(vcgeq_u64(xh, min), vcltq_u64(xh, max));
+	if (vminvq_u32(vuzp1q_u32(vreinterpretq_u32_u64(ok_l), vreinterpretq_u32_u64(ok_h))) == 0)
+		return 0;
+	/* fx_recip_q60: e = clz(x) - 3 puts x 2^e in [2^60, 2^61); X in Q30 */
+	uint32x4_t top = vshrn_high_n_u64(vshrn_n_u64(xl, 32), xh, 32);
+	int32x4_t e = vsubq_s32(vreinterpretq_s32_u32(vclzq_u32(top)), vdupq_n_s32(3));
+	xl = vshlq_u64(xl, vmovl_s32(vget_low_s32(e)));
+	xh = vshlq_u64(xh, vmovl_high_s32(e));
+	uint32x4_t xq = vshrn_high_n_u64(vshrn_n_u64(xl, 30), xh, 30);
+	uint32x4_t seg = vsubq_u32(vshrq_n_u32(xq, 27), vdupq_n_u32(8));
+	uint32x4_t y = vsubq_u32(lookup8(fx_recip_seed_a, seg), MUL_ROUND(lookup8(fx_recip_seed_b, seg), xq, 30));
+#pragma GCC unroll 4
+	for (int i = 0; i < FX_RECIP_STEPS; i++) {
+		uint32x4_t xy = MUL_ROUND(xq, y, 30);
+		y = MUL_ROUND(y, vsubq_u32(vdupq_n_u32(0), xy), 31); /* 2^32 - xy */
+	}
+	/* fx_blend_scale: inv = (y + 1) / 2, sh = 29 - e (vrshl shifts right
+	 * by minus its count) */
+	*inv = vreinterpretq_s32_u32(vrshrq_n_u32(y, 1));
+	int32x4_t neg = vsubq_s32(e, vdupq_n_s32(29));
+	nsh[0] = vmovl_s32(vget_low_s32(neg));
+	nsh[1] = vmovl_high_s32(neg);
+	return 1;
+}
+
+/* The blends of 4 vertices in lanes (d[0..3] real w x y z, d[4..7] dual). */
+NEON_INLINE void blend4(const skin_soa *in, const skin_bones *b, int v, int32x4_t d[8])
 {
 	int32x4_t real[NEON_LANES], dual[NEON_LANES];
-	for (int j = 0; j < NEON_LANES; j++) {
+#pragma GCC unroll 12
+	for (int j = 0; j < NEON_LANES; j++)
 		blend_vertex(in, b, v + j, &real[j], &dual[j]);
-		fx_quat q;
-		vst1q_s32(&q.w, real[j]);
-		uint32_t y;
-		int s = fx_blend_scale(q, &y);
-		if (s == 0)
-			return 0;
-		inv[j] = (int32_t)y;
-		sh[j] = -s; /* vrshl shifts right by minus its count */
-	}
 	skin_transpose4(real);
 	skin_transpose4(dual);
-	memcpy(d, real, sizeof real);
-	memcpy(d + 4, dual, sizeof dual);
-	return 1;
+#pragma GCC unroll 4
+	for (int c = 0; c < 4; c++) {
+		d[c] = real[c];
+		d[4 + c] = dual[c];
+	}
 }
 
 /* move_blended (fixed.c) on 4 lanes: v + (2 / s) (r x (r x v + w v + dv) +
  * w dv - dw r), dual = d + 4, or NULL for a normal, whose shifts cut. */
-static void move4(const int32x4_t d[8], const int32x4_t *dual, const int32x4_t v[3], int32x4_t inv,
+NEON_INLINE void move4(const int32x4_t d[8], const int32x4_t *dual, const int32x4_t v[3], int32x4_t inv,
 		  const int64x2_t nsh[2], int32x4_t out[3])
 {
 	const int32x4_t w = d[0], *r = d + 1;
 	int32x4_t a[3];
+#pragma GCC unroll 12
 	for (int i = 0; i < 3; i++) {
 		int j = (i + 1) % 3, k = (i + 2) % 3;
 		s64x4 sum = mla4(mls4(mul4(r[j], v[k]), r[k], v[j]), w, v[i]);
@@ -122,6 +172,7 @@ static void move4(const int32x4_t d[8], const int32x4_t *dual, const int32x4_t v
 			a[i] = narrow_cut30(sum);
 		}
 	}
+#pragma GCC unroll 12
 	for (int i = 0; i < 3; i++) {
 		int j = (i + 1) % 3, k = (i + 2) % 3;
 		s64x4 sum = mls4(mul4(r[j], a[k]), r[k], a[j]);
@@ -135,8 +186,9 @@ static void move4(const int32x4_t d[8], const int32x4_t *dual, const int32x4_t v
 	}
 }
 
-static void load3(const int32_t *const src[3], int v, int32x4_t out[3])
+NEON_INLINE void load3(const int32_t *const src[3], int v, int32x4_t out[3])
 {
+#pragma GCC unroll 12
 	for (int i = 0; i < 3; i++)
 		out[i] = vld1q_s32(src[i] + v);
 }
@@ -147,21 +199,19 @@ void skin_dqbs_fixed_neon(const skin_soa *in, const skin_bones *b, int first, in
 	const int32_t *const pos_in[3] = { in->fpx, in->fpy, in->fpz }, *const nrm_in[3] = { in->fnx, in->fny, in->fnz };
 	for (int v = first; v < end; v += NEON_LANES) {
 		int valid = end - v < NEON_LANES ? end - v : NEON_LANES;
-		int32x4_t d[8];
-		int32_t inv[NEON_LANES];
-		int64_t sh[NEON_LANES];
-		if (!blend4(in, b, v, d, inv, sh)) {
-			/* a blend left as it is (all but cancelled): the scalar
-			 * kernel says how */
+		int32x4_t d[8], inv;
+		int64x2_t nsh[2];
+		blend4(in, b, v, d);
+		if (!blend_scale4(d, &inv, nsh)) {
 			skin_dqbs_fixed(in, b, v, v + valid, out);
 			continue;
 		}
-		const int64x2_t nsh[2] = { vld1q_s64(sh), vld1q_s64(sh + 2) };
 		int32x4_t p[3], n[3], po[3], no[3];
 		load3(pos_in, v, p);
 		load3(nrm_in, v, n);
-		move4(d, d + 4, p, vld1q_s32(inv), nsh, po);
-		move4(d, NULL, n, vld1q_s32(inv), nsh, no);
+		move4(d, d + 4, p, inv, nsh, po);
+		move4(d, NULL, n, inv, nsh, no);
+#pragma GCC unroll 12
 		for (int i = 0; i < 3; i++)
 			no[i] = vrshrq_n_s32(no[i], 14); /* Q30 to Q16 */
 		skin_store_xyz4(out->fpos + 3 * v, po[0], po[1], po[2], valid);

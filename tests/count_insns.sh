@@ -1,0 +1,53 @@
+#!/bin/sh
+# Instructions a vertex of each SIMD kernel of an aarch64 build, counted
+# under qemu-user: `skintool bench` runs one instruction per translation
+# block (-singlestep) with every block executed inside the kernels' objects
+# logged, and each logged instruction counts for the kernel entered last.
+# A count, not a timing: the Cortex-A72 retires up to three a cycle, and
+# loads and divisions cost more than one. Usage:
+#   sh tests/count_insns.sh [BUILD_DIR] [VERTICES]   (default build/rpi4, 4096)
+set -eu
+build=${1:-build/rpi4}
+verts=${2:-4096}
+nm=${NM:-aarch64-linux-gnu-nm}
+size=${SIZE:-aarch64-linux-gnu-size}
+qemu=${QEMU:-qemu-aarch64-static}
+export QEMU_LD_PREFIX=${QEMU_LD_PREFIX:-/usr/aarch64-linux-gnu}
+tool=$build/skintool
+# qemu-user loads an aarch64 PIE program at this address
+base=${QEMU_PIE_BASE:-0x5500000000}
+for need in "$nm" "$size" "$qemu"; do
+	command -v "$need" >/dev/null || { echo "count_insns: $need not found" >&2; exit 1; }
+done
+[ -x "$tool" ] || { echo "count_insns: $tool not built (make BOARD=rpi4)" >&2; exit 1; }
+log=$(mktemp) && trap 'rm -f "$log"' EXIT
+
+# An object's code is contiguous in the program: its start is where one of
+# its symbols landed, less that symbol's offset in the object.
+range() { # object symbol
+	at_obj=$("$nm" "$build/$1" | awk -v s="$2" '$3 == s { print $1 }')
+	at_bin=$("$nm" "$tool" | awk -v s="$2" '$3 == s { print $1 }')
+	len=$("$size" -A "$build/$1" | awk '$1 == ".text" { print $2 }')
+	lo=$((base + 0x$at_bin - 0x$at_obj))
+	printf '0x%x..0x%x' "$lo" $((lo + len - 1))
+}
+k=app/skin/kernels
+ranges="$(range $k/skin_neon.o skin_lbs_neon),$(range $k/skin_fixed_neon.o skin_dqbs_fixed_neon)"
+ranges="$ranges,$(range $k/skin_fixed.o skin_dqbs_fixed),$(range app/math/fixed.o fx_blend_scale)"
+entries=""
+for s in skin_lbs_neon skin_dqbs_neon skin_dqbs_fixed_neon skin_lbs_compact_neon skin_dqbs_compact_neon; do
+	entries="$entries $(printf '%x' $((base + 0x$("$nm" "$tool" | awk -v s="$s" '$3 == s { print $1 }'))))=$s"
+done
+
+"$qemu" -singlestep -d exec,nochain -dfilter "$ranges" -D "$log" "$tool" bench --verts="$verts" --rounds=1 -q >/dev/null
+awk -v entries="$entries" -v verts="$verts" '
+BEGIN { n = split(entries, e, " "); for (i = 1; i <= n; i++) { split(e[i], kv, "="); name[kv[1]] = kv[2]; order[i] = kv[2] } }
+/^Trace/ {
+	split($0, f, "/"); pc = f[2]; sub(/^0+/, "", pc)
+	if (pc in name) { cur = name[pc]; calls[cur]++ }
+	if (cur != "") insns[cur]++
+}
+END {
+	printf "%-24s %8s %18s\n", "kernel (aarch64)", "calls", "instructions/vertex"
+	for (i = 1; i <= n; i++) { k = order[i]; if (calls[k]) printf "%-24s %8d %18.1f\n", k, calls[k], insns[k] / (calls[k] * verts) }
+}' "$log"
