@@ -48,6 +48,15 @@ BEGIN { n = split(entries, e, " "); for (i = 1; i <= n; i++) { split(e[i], kv, "
 	if (cur != "") insns[cur]++
 }
 END {
-	printf "%-24s %8s %18s\n", "kernel (aarch64)", "calls", "instructions/vertex"
-	for (i = 1; i <= n; i++) { k = order[i]; if (calls[k]) printf "%-24s %8d %18.1f\n", k, calls[k], insns[k] / (calls[k] * verts) }
+	printf "%-24s %6s %20s  %s\n", "kernel (aarch64)", "calls", "instructions/vertex", "ratio"
+	base["skin_dqbs_neon"] = "skin_lbs_neon"; base["skin_dqbs_fixed_neon"] = "skin_dqbs_neon"
+	base["skin_lbs_compact_neon"] = "skin_lbs_neon"; base["skin_dqbs_compact_neon"] = "skin_dqbs_neon"
+	for (i = 1; i <= n; i++) {
+		k = order[i]
+		if (!calls[k]) { printf "%-24s not called\n", k; bad = 1; continue }
+		per[k] = insns[k] / (calls[k] * verts)
+		ratio = (k in base && per[base[k]] > 0) ? sprintf("%.2fx %s", per[k] / per[base[k]], base[k]) : ""
+		printf "%-24s %6d %20.1f  %s\n", k, calls[k], per[k], ratio
+	}
+	exit bad
 }' "$log"
