@@ -39,7 +39,10 @@ for s in skin_lbs_neon skin_dqbs_neon skin_dqbs_fixed_neon skin_lbs_compact_neon
 	entries="$entries $(printf '%x' $((base + 0x$("$nm" "$tool" | awk -v s="$s" '$3 == s { print $1 }'))))=$s"
 done
 
-"$qemu" -singlestep -d exec,nochain -dfilter "$ranges" -D "$log" "$tool" bench --verts="$verts" --rounds=1 -q >/dev/null
+# -singlestep was renamed -one-insn-per-tb in qemu 8.1
+step=-singlestep
+"$qemu" -h | grep -q -- -one-insn-per-tb && step=-one-insn-per-tb
+"$qemu" $step -d exec,nochain -dfilter "$ranges" -D "$log" "$tool" bench --verts="$verts" --rounds=1 -q >/dev/null
 awk -v entries="$entries" -v verts="$verts" '
 BEGIN { n = split(entries, e, " "); for (i = 1; i <= n; i++) { split(e[i], kv, "="); name[kv[1]] = kv[2]; order[i] = kv[2] } }
 /^Trace/ {
