@@ -58,20 +58,30 @@ NEON_INLINE int32x4_t add_narrow(s64x4 x, int32x4_t v)
 	return vcombine_s32(vqmovn_s64(vaddw_s32(x.lo, vget_low_s32(v))), vqmovn_s64(vaddw_high_s32(x.hi, v)));
 }
 
+/* What the blends read, in locals for the whole run (through skin_soa
+ * and skin_bones, every step reloaded the pointers: the stores might have
+ * changed them). */
+typedef struct blend_src {
+	const uint16_t *bone[SKP_MAX_INFLUENCES];
+	const fx_w15 *weight[SKP_MAX_INFLUENCES];
+	const fx_dq *fdq;
+	const uint8_t (*flip)[SKP_MAX_BONES + 1];
+} blend_src;
+
 /* fx_dq_blend of one vertex: each influence's weight negated where the
  * sign fix (flip_x: the exact int64 dot product with the pivot's real part,
  * as fx_dq_blend tests it, once per bone pair and frame) says, the sums in
  * int64 and rounded once by 15 bits. */
-NEON_INLINE void blend_vertex(const skin_soa *in, const skin_bones *b, int v, int32x4_t *real, int32x4_t *dual)
+NEON_INLINE void blend_vertex(const blend_src *in, int v, int32x4_t *real, int32x4_t *dual)
 {
-	const uint8_t *flip = b->flip_x[in->bone[0][v]];
+	const uint8_t *flip = in->flip[in->bone[0][v]];
 	int64x2_t r0 = vdupq_n_s64(0), r1 = r0, u0 = r0, u1 = r0;
 #pragma GCC unroll 12
 	for (int k = 0; k < SKP_MAX_INFLUENCES; k++) {
 		int bone = in->bone[k][v];
-		const fx_dq *d = &b->fdq[bone];
+		const fx_dq *d = &in->fdq[bone];
 		int32x4_t qr = vld1q_s32(&d->real.w), qd = vld1q_s32(&d->dual.w);
-		int32_t w = in->fweight[k][v];
+		int32_t w = in->weight[k][v];
 		if (flip[bone])
 			w = -w;
 		r0 = vmlal_n_s32(r0, vget_low_s32(qr), w);
@@ -139,12 +149,12 @@ NEON_INLINE int blend_scale4(const int32x4_t d[4], int32x4_t *inv, int64x2_t nsh
 }
 
 /* The blends of 4 vertices in lanes (d[0..3] real w x y z, d[4..7] dual). */
-NEON_INLINE void blend4(const skin_soa *in, const skin_bones *b, int v, int32x4_t d[8])
+NEON_INLINE void blend4(const blend_src *in, int v, int32x4_t d[8])
 {
 	int32x4_t real[NEON_LANES], dual[NEON_LANES];
 #pragma GCC unroll 12
 	for (int j = 0; j < NEON_LANES; j++)
-		blend_vertex(in, b, v + j, &real[j], &dual[j]);
+		blend_vertex(in, v + j, &real[j], &dual[j]);
 	skin_transpose4(real);
 	skin_transpose4(dual);
 #pragma GCC unroll 4
@@ -197,11 +207,17 @@ void skin_dqbs_fixed_neon(const skin_soa *in, const skin_bones *b, int first, in
 {
 	_Static_assert(FX_POS_FRAC == 16, "the NEON fixed kernel writes fx_pos as Q16.16 directly");
 	const int32_t *const pos_in[3] = { in->fpx, in->fpy, in->fpz }, *const nrm_in[3] = { in->fnx, in->fny, in->fnz };
+	blend_src src = { .fdq = b->fdq, .flip = b->flip_x };
+	for (int k = 0; k < SKP_MAX_INFLUENCES; k++) {
+		src.bone[k] = in->bone[k];
+		src.weight[k] = in->fweight[k];
+	}
+	int32_t *fpos = out->fpos, *fnrm = out->fnrm;
 	for (int v = first; v < end; v += NEON_LANES) {
 		int valid = end - v < NEON_LANES ? end - v : NEON_LANES;
 		int32x4_t d[8], inv;
 		int64x2_t nsh[2];
-		blend4(in, b, v, d);
+		blend4(&src, v, d);
 		if (!blend_scale4(d, &inv, nsh)) {
 			skin_dqbs_fixed(in, b, v, v + valid, out);
 			continue;
@@ -214,8 +230,8 @@ void skin_dqbs_fixed_neon(const skin_soa *in, const skin_bones *b, int first, in
 #pragma GCC unroll 12
 		for (int i = 0; i < 3; i++)
 			no[i] = vrshrq_n_s32(no[i], 14); /* Q30 to Q16 */
-		skin_store_xyz4(out->fpos + 3 * v, po[0], po[1], po[2], valid);
-		skin_store_xyz4(out->fnrm + 3 * v, no[0], no[1], no[2], valid);
+		skin_store_xyz4(fpos + 3 * v, po[0], po[1], po[2], valid);
+		skin_store_xyz4(fnrm + 3 * v, no[0], no[1], no[2], valid);
 	}
 }
 

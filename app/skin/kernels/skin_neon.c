@@ -157,6 +157,16 @@ NEON_INLINE v3x4 apply_rows(const float32x4_t m[12], v3x4 p, int with_translatio
 	return r;
 }
 
+/* The bone tables the steps read. Held in locals for the whole run: read
+ * through skin_bones (or the streams through their struct) in every step,
+ * each row address cost a constant materialised again and each stream
+ * pointer a reload, as the stores might have changed them. */
+typedef struct tables {
+	const float (*lbs12)[12];
+	const float (*dq8)[8];
+	const float (*flip)[SKP_MAX_BONES + 1];
+} tables;
+
 /* sum over the influences of w[k] times the 4 floats at row[k]; the lane
  * of a multiply by lane must be a constant, hence no loop over k */
 NEON_INLINE float32x4_t blend_row(const float *const row[SKP_MAX_INFLUENCES], float32x4_t w)
@@ -169,7 +179,7 @@ NEON_INLINE float32x4_t blend_row(const float *const row[SKP_MAX_INFLUENCES], fl
 }
 
 /* Each vertex's blended 3x4 matrix, then m[i] = element i in lanes. */
-NEON_INLINE void lbs_block(const skin_bones *b, const batch4 *bt, float32x4_t m[12])
+NEON_INLINE void lbs_block(const tables *b, const batch4 *bt, float32x4_t m[12])
 {
 	float32x4_t w[NEON_LANES], r[3][NEON_LANES];
 	weights_per_vertex(bt, w);
@@ -196,7 +206,7 @@ NEON_INLINE void lbs_block(const skin_bones *b, const batch4 *bt, float32x4_t m[
 	}
 }
 
-NEON_INLINE void lbs4(const skin_bones *b, const batch4 *bt, v3x4 *p, v3x4 *n)
+NEON_INLINE void lbs4(const tables *b, const batch4 *bt, v3x4 *p, v3x4 *n)
 {
 	float32x4_t m[12];
 	lbs_block(b, bt, m);
@@ -212,7 +222,7 @@ typedef struct dq4 {
  * points away from the pivot (influence 0, the largest weight): the flip
  * per bone pair is looked up (flip_f, the scalar kernel's own test) and
  * xored into the vertex's weights, three lane loads per vertex. */
-NEON_INLINE dq4 dq_blend4(const skin_bones *b, const batch4 *bt)
+NEON_INLINE dq4 dq_blend4(const tables *b, const batch4 *bt)
 {
 	float32x4_t w[NEON_LANES], re[NEON_LANES], du[NEON_LANES];
 	weights_per_vertex(bt, w);
@@ -225,7 +235,7 @@ NEON_INLINE dq4 dq_blend4(const skin_bones *b, const batch4 *bt)
 			bone[k] = batch_bone(bt, k, j);
 			row[k] = b->dq8[bone[k]];
 		}
-		const float *flip = b->flip_f[bone[0]];
+		const float *flip = b->flip[bone[0]];
 		float32x4_t sign = vdupq_n_f32(0.0f);
 		sign = vld1q_lane_f32(flip + bone[1], sign, 1);
 		sign = vld1q_lane_f32(flip + bone[2], sign, 2);
@@ -276,7 +286,7 @@ NEON_INLINE v3x4 move4(const dq4 *d, float32x4_t s, v3x4 v, int with_dual)
 	return madd4(v, c, s);
 }
 
-NEON_INLINE void dqbs4(const skin_bones *b, const batch4 *bt, v3x4 *p, v3x4 *n)
+NEON_INLINE void dqbs4(const tables *b, const batch4 *bt, v3x4 *p, v3x4 *n)
 {
 	dq4 d = dq_blend4(b, bt);
 	float32x4_t n2 = vfmaq_f32(vfmaq_f32(vfmaq_f32(vmulq_f32(d.rz, d.rz), d.ry, d.ry), d.rx, d.rx), d.rw, d.rw);
@@ -295,24 +305,32 @@ NEON_INLINE void dqbs4(const skin_bones *b, const batch4 *bt, v3x4 *p, v3x4 *n)
 NEON_INLINE void run4(int dual, const skin_soa *fl, const skin_compact *co, const skin_bones *b, int first, int end,
 		      const skin_out *out)
 {
-#pragma GCC unroll 12
+	const tables t = { b->lbs12, b->dq8, b->flip_f };
+	skin_soa fs;
+	skin_compact cs;
+	if (co)
+		cs = *co;
+	else
+		fs = *fl;
+	float *pos = out->pos, *nrm = out->nrm;
+	int16_t *nrm16 = out->nrm16;
 	for (int v = first; v < end; v += NEON_LANES) {
 		batch4 bt;
 		v3x4 p, n;
 		if (co)
-			load_compact(co, v, &bt);
+			load_compact(&cs, v, &bt);
 		else
-			load_float(fl, v, &bt);
+			load_float(&fs, v, &bt);
 		if (dual)
-			dqbs4(b, &bt, &p, &n);
+			dqbs4(&t, &bt, &p, &n);
 		else
-			lbs4(b, &bt, &p, &n);
+			lbs4(&t, &bt, &p, &n);
 		int valid = end - v < NEON_LANES ? end - v : NEON_LANES;
-		store_xyz4(out->pos + 3 * v, p, valid);
+		store_xyz4(pos + 3 * v, p, valid);
 		if (co)
-			store_snorm4(out->nrm16 + 3 * v, n, valid);
+			store_snorm4(nrm16 + 3 * v, n, valid);
 		else
-			store_xyz4(out->nrm + 3 * v, n, valid);
+			store_xyz4(nrm + 3 * v, n, valid);
 	}
 }
 
