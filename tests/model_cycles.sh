@@ -1,0 +1,54 @@
+#!/bin/sh
+# Cycles a vertex of each NEON kernel on a Cortex-A72 by llvm-mca's model
+# (LLVM's scheduling model for the core: pipelines, latencies, one load a
+# cycle), from the main loop of each kernel in an aarch64 build: one step
+# of 4 vertices. A model, not a measurement: every load hits L1, branches
+# cost nothing and the loop's rarely taken code (the tail's partial stores,
+# the fixed kernel's hand-over to the scalar one) counts as if it ran each
+# time, so the figures lean high. Usage:
+#   sh tests/model_cycles.sh [BUILD_DIR]   (default build/rpi4; needs llvm-mca)
+set -eu
+build=${1:-build/rpi4}
+objdump=${OBJDUMP:-aarch64-linux-gnu-objdump}
+mca=${LLVM_MCA:-llvm-mca}
+for need in "$objdump" "$mca"; do
+	command -v "$need" >/dev/null || { echo "model_cycles: $need not found (Debian: llvm, binutils-aarch64-linux-gnu)" >&2; exit 1; }
+done
+loop=$(mktemp) && trap 'rm -f "$loop"' EXIT
+k=$build/app/skin/kernels
+
+# The function's instructions from the target of its longest backward
+# branch to that branch; calls and branches become nops (mca models no
+# control flow).
+main_loop() { # object function
+	"$objdump" -d --no-show-raw-insn "$1" | awk -v f="<$2>:" '
+	function hex(s,  i, n) { n = 0; s = tolower(s); for (i = 1; i <= length(s); i++) n = n * 16 + index("0123456789abcdef", substr(s, i, 1)) - 1; return n }
+	$2 == f { on = 1; next }
+	on && NF == 0 { exit }
+	on && $1 ~ /^[0-9a-f]+:$/ {
+		n++; at[n] = hex(substr($1, 1, length($1) - 1)); line = $0
+		sub(/^[^:]*:[ \t]*/, "", line); sub(/[ \t]*\/\/.*$/, "", line); sub(/[ \t]*<.*$/, "", line)
+		op = line; sub(/[ \t].*$/, "", op)
+		if (op ~ /^(b|bl|b\.[a-z]+|cbz|cbnz|tbz|tbnz)$/) {
+			t = line; sub(/^.*[ \t,]/, "", t); t = hex(t)
+			if (op != "bl" && t < at[n] && at[n] - t > best) { best = at[n] - t; from = t; to = at[n] }
+			line = "nop"
+		}
+		ins[n] = line
+	}
+	END { for (i = 1; i <= n; i++) if (at[i] >= from && at[i] <= to) print ins[i] }'
+}
+
+printf '%-24s %10s %14s %13s  %s\n' "kernel" "loop insns" "cycles/4 verts" "cycles/vertex" "ratio (time)"
+for f in skin_lbs_neon skin_dqbs_neon skin_dqbs_fixed_neon skin_lbs_compact_neon skin_dqbs_compact_neon; do
+	obj=$k/skin_neon.o
+	[ "$f" = skin_dqbs_fixed_neon ] && obj=$k/skin_fixed_neon.o
+	main_loop "$obj" "$f" > "$loop"
+	"$mca" -mtriple=aarch64 -mcpu=cortex-a72 -iterations=300 "$loop" 2>/dev/null |
+		awk -v f="$f" -v n="$(wc -l < "$loop")" '/^Iterations:/ { it = $2 } /^Total Cycles:/ { c = $3 }
+			END { if (!it) exit 1; print f, n, c / it }'
+done | awk '
+	BEGIN { base["skin_dqbs_neon"] = "skin_lbs_neon"; base["skin_dqbs_fixed_neon"] = "skin_dqbs_neon"
+		base["skin_lbs_compact_neon"] = "skin_lbs_neon"; base["skin_dqbs_compact_neon"] = "skin_dqbs_neon" }
+	{ cyc[$1] = $3; r = ($1 in base) ? sprintf("%.2fx %s", $3 / cyc[base[$1]], base[$1]) : ""
+	  printf "%-24s %10d %14.1f %13.1f  %s\n", $1, $2, $3, $3 / 4, r }'
