@@ -80,6 +80,11 @@ skp_status skin_soa_load(skin_soa *s, const mesh *m, const skin_weights *w, int 
 /* See skin_bones.simd_ok. */
 #define SKIN_SIMD_DUAL_LIMIT ((int32_t)1 << 26)
 
+/* The SIMD boards' kernels look the DQBS sign fix up (see flip_f). */
+#if defined(SKP_SIMD_AVX2) || defined(SKP_SIMD_NEON)
+#define SKIN_SIMD_FLIPS 1
+#endif
+
 /* Per-frame transforms of every bone, in the forms the kernels read. */
 typedef struct skin_bones {
 	int count;
@@ -89,7 +94,7 @@ typedef struct skin_bones {
 	/* flat copies for SIMD gathers: 3x4 row-major, and real|dual */
 	float lbs12[SKP_MAX_BONES + 1][12];
 	float dq8[SKP_MAX_BONES + 1][8];
-#if defined(SKP_SIMD_AVX2) || defined(SKP_SIMD_NEON)
+#ifdef SKIN_SIMD_FLIPS
 	/* The DQBS sign fix depends only on the pair (pivot bone, bone): the
 	 * decision for every pair, computed once per frame with the dot
 	 * product the scalar kernel uses, so the SIMD kernels look it up per

@@ -28,7 +28,7 @@ static void set_bone(skin_bones *out, int b, quat q, vec3 t)
 	flatten(out, b);
 }
 
-#if defined(SKP_SIMD_AVX2) || defined(SKP_SIMD_NEON)
+#ifdef SKIN_SIMD_FLIPS
 /* Only the bones in use (and the identity slot) get entries. */
 static void compute_flips(skin_bones *out)
 {
@@ -96,13 +96,11 @@ void skin_bones_compute(skin_bones *out, const skel *s, const skel_pose *bind,
 
 void skin_bones_derive(skin_bones *out)
 {
-#if defined(SKP_SIMD_AVX2) || defined(SKP_SIMD_NEON)
+	(void)out; /* scalar boards derive nothing */
+#ifdef SKIN_SIMD_FLIPS
 	compute_flips(out);
 #endif
 #ifdef SKP_SIMD_AVX2
 	compute_halves(out);
-#endif
-#if !defined(SKP_SIMD_AVX2) && !defined(SKP_SIMD_NEON)
-	(void)out;
 #endif
 }

@@ -173,19 +173,19 @@ typedef struct tables {
 	const float (*flip)[SKP_MAX_BONES + 1];
 } tables;
 
-/* sum over the influences of w[k] times the 4 floats at row[k]; the lane
- * of a multiply by lane must be a constant, hence no loop over k */
-NEON_INLINE float32x4_t blend_row(const float *const row[SKP_MAX_INFLUENCES], float32x4_t w)
+/* sum over the influences of w[k] times the 4 floats at row[k] + at; the
+ * lane of a multiply by lane must be a constant, hence no loop over k */
+NEON_INLINE float32x4_t blend_row(const float *const row[SKP_MAX_INFLUENCES], int at, float32x4_t w)
 {
 	_Static_assert(SKP_MAX_INFLUENCES == 4, "blend_row takes four influences");
-	float32x4_t acc = vmulq_laneq_f32(vld1q_f32(row[0]), w, 0);
-	acc = vfmaq_laneq_f32(acc, vld1q_f32(row[1]), w, 1);
-	acc = vfmaq_laneq_f32(acc, vld1q_f32(row[2]), w, 2);
-	return vfmaq_laneq_f32(acc, vld1q_f32(row[3]), w, 3);
+	float32x4_t acc = vmulq_laneq_f32(vld1q_f32(row[0] + at), w, 0);
+	acc = vfmaq_laneq_f32(acc, vld1q_f32(row[1] + at), w, 1);
+	acc = vfmaq_laneq_f32(acc, vld1q_f32(row[2] + at), w, 2);
+	return vfmaq_laneq_f32(acc, vld1q_f32(row[3] + at), w, 3);
 }
 
 /* Each vertex's blended 3x4 matrix, then m[i] = element i in lanes. */
-NEON_INLINE void lbs_block(const tables *b, const batch4 *bt, float32x4_t m[12])
+NEON_INLINE void lbs_block(const tables *t, const batch4 *bt, float32x4_t m[12])
 {
 	float32x4_t w[NEON_LANES], r[3][NEON_LANES];
 	weights_per_vertex(bt, w);
@@ -194,14 +194,10 @@ NEON_INLINE void lbs_block(const tables *b, const batch4 *bt, float32x4_t m[12])
 		const float *row[SKP_MAX_INFLUENCES];
 #pragma GCC unroll 12
 		for (int k = 0; k < SKP_MAX_INFLUENCES; k++)
-			row[k] = b->lbs12[batch_bone(bt, k, j)];
+			row[k] = t->lbs12[batch_bone(bt, k, j)];
 #pragma GCC unroll 12
-		for (int i = 0; i < 3; i++) {
-			r[i][j] = blend_row(row, w[j]);
-#pragma GCC unroll 12
-			for (int k = 0; k < SKP_MAX_INFLUENCES; k++)
-				row[k] += 4;
-		}
+		for (int i = 0; i < 3; i++)
+			r[i][j] = blend_row(row, 4 * i, w[j]);
 	}
 #pragma GCC unroll 12
 	for (int i = 0; i < 3; i++) {
@@ -212,10 +208,10 @@ NEON_INLINE void lbs_block(const tables *b, const batch4 *bt, float32x4_t m[12])
 	}
 }
 
-NEON_INLINE void lbs4(const tables *b, const batch4 *bt, v3x4 *p, v3x4 *n)
+NEON_INLINE void lbs4(const tables *t, const batch4 *bt, v3x4 *p, v3x4 *n)
 {
 	float32x4_t m[12];
-	lbs_block(b, bt, m);
+	lbs_block(t, bt, m);
 	*p = apply_rows(m, bt->p, 1);
 	*n = normalize4(apply_rows(m, bt->n, 0));
 }
@@ -228,7 +224,7 @@ typedef struct dq4 {
  * points away from the pivot (influence 0, the largest weight): the flip
  * per bone pair is looked up (flip_f, the scalar kernel's own test) and
  * xored into the vertex's weights, three lane loads per vertex. */
-NEON_INLINE dq4 dq_blend4(const tables *b, const batch4 *bt)
+NEON_INLINE dq4 dq_blend4(const tables *t, const batch4 *bt)
 {
 	float32x4_t w[NEON_LANES], re[NEON_LANES], du[NEON_LANES];
 	weights_per_vertex(bt, w);
@@ -239,19 +235,16 @@ NEON_INLINE dq4 dq_blend4(const tables *b, const batch4 *bt)
 #pragma GCC unroll 12
 		for (int k = 0; k < SKP_MAX_INFLUENCES; k++) {
 			bone[k] = batch_bone(bt, k, j);
-			row[k] = b->dq8[bone[k]];
+			row[k] = t->dq8[bone[k]];
 		}
-		const float *flip = b->flip[bone[0]];
+		const float *flip = t->flip[bone[0]];
 		float32x4_t sign = vdupq_n_f32(0.0f);
 		sign = vld1q_lane_f32(flip + bone[1], sign, 1);
 		sign = vld1q_lane_f32(flip + bone[2], sign, 2);
 		sign = vld1q_lane_f32(flip + bone[3], sign, 3);
 		float32x4_t ws = vreinterpretq_f32_u32(veorq_u32(vreinterpretq_u32_f32(w[j]), vreinterpretq_u32_f32(sign)));
-		re[j] = blend_row(row, ws);
-#pragma GCC unroll 12
-		for (int k = 0; k < SKP_MAX_INFLUENCES; k++)
-			row[k] += 4;
-		du[j] = blend_row(row, ws);
+		re[j] = blend_row(row, 0, ws);
+		du[j] = blend_row(row, 4, ws);
 	}
 	transpose4(re);
 	transpose4(du);
@@ -292,9 +285,9 @@ NEON_INLINE v3x4 move4(const dq4 *d, float32x4_t s, v3x4 v, int with_dual)
 	return madd4(v, c, s);
 }
 
-NEON_INLINE void dqbs4(const tables *b, const batch4 *bt, v3x4 *p, v3x4 *n)
+NEON_INLINE void dqbs4(const tables *t, const batch4 *bt, v3x4 *p, v3x4 *n)
 {
-	dq4 d = dq_blend4(b, bt);
+	dq4 d = dq_blend4(t, bt);
 	float32x4_t n2 = vfmaq_f32(vfmaq_f32(vfmaq_f32(vmulq_f32(d.rz, d.rz), d.ry, d.ry), d.rx, d.rx), d.rw, d.rw);
 	/* 2 / n2: an estimate and two Newton steps (about 1e-7), cheaper than
 	 * the division on a Cortex-A72 */
