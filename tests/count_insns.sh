@@ -14,13 +14,14 @@ size=${SIZE:-aarch64-linux-gnu-size}
 qemu=${QEMU:-qemu-aarch64-static}
 export QEMU_LD_PREFIX=${QEMU_LD_PREFIX:-/usr/aarch64-linux-gnu}
 tool=$build/skintool
+. "$(dirname "$0")/neon_kernels.sh"
 # qemu-user loads an aarch64 PIE program at this address
 base=${QEMU_PIE_BASE:-0x5500000000}
 for need in "$nm" "$size" "$qemu"; do
 	command -v "$need" >/dev/null || { echo "count_insns: $need not found" >&2; exit 1; }
 done
 [ -x "$tool" ] || { echo "count_insns: $tool not built (make BOARD=rpi4)" >&2; exit 1; }
-log=$(mktemp) && trap 'rm -f "$log"' EXIT
+log=$(mktemp) && trap 'rm -f "$log" "$log.rows"' EXIT
 
 # An object's code is contiguous in the program: its start is where one of
 # its symbols landed, less that symbol's offset in the object.
@@ -35,7 +36,7 @@ k=app/skin/kernels
 ranges="$(range $k/skin_neon.o skin_lbs_neon),$(range $k/skin_fixed_neon.o skin_dqbs_fixed_neon)"
 ranges="$ranges,$(range $k/skin_fixed.o skin_dqbs_fixed),$(range app/math/fixed.o fx_blend_scale)"
 entries=""
-for s in skin_lbs_neon skin_dqbs_neon skin_dqbs_fixed_neon skin_lbs_compact_neon skin_dqbs_compact_neon; do
+for s in $NEON_KERNELS; do
 	entries="$entries $(printf '%x' $((base + 0x$("$nm" "$tool" | awk -v s="$s" '$3 == s { print $1 }'))))=$s"
 done
 
@@ -51,15 +52,10 @@ BEGIN { n = split(entries, e, " "); for (i = 1; i <= n; i++) { split(e[i], kv, "
 	if (cur != "") insns[cur]++
 }
 END {
-	printf "%-24s %6s %20s  %s\n", "kernel (aarch64)", "calls", "instructions/vertex", "ratio"
-	base["skin_dqbs_neon"] = "skin_lbs_neon"; base["skin_dqbs_fixed_neon"] = "skin_dqbs_neon"
-	base["skin_lbs_compact_neon"] = "skin_lbs_neon"; base["skin_dqbs_compact_neon"] = "skin_dqbs_neon"
 	for (i = 1; i <= n; i++) {
 		k = order[i]
-		if (!calls[k]) { printf "%-24s not called\n", k; bad = 1; continue }
-		per[k] = insns[k] / (calls[k] * verts)
-		ratio = (k in base && per[base[k]] > 0) ? sprintf("%.2fx %s", per[k] / per[base[k]], base[k]) : ""
-		printf "%-24s %6d %20.1f  %s\n", k, calls[k], per[k], ratio
+		if (!calls[k]) { print "count_insns: " k " was not called" > "/dev/stderr"; exit 1 }
+		print k, calls[k], insns[k] / (calls[k] * verts)
 	}
-	exit bad
-}' "$log"
+}' "$log" > "$log.rows" || exit 1
+neon_table "$(printf '%-24s %6s %20s  %s' "kernel (aarch64)" "calls" "instructions/vertex" "ratio")" "%-24s %6d %20.1f" < "$log.rows"

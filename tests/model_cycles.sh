@@ -14,8 +14,9 @@ mca=${LLVM_MCA:-llvm-mca}
 for need in "$objdump" "$mca"; do
 	command -v "$need" >/dev/null || { echo "model_cycles: $need not found (Debian: llvm, binutils-aarch64-linux-gnu)" >&2; exit 1; }
 done
-loop=$(mktemp) && trap 'rm -f "$loop"' EXIT
+loop=$(mktemp) && trap 'rm -f "$loop" "$loop.rows"' EXIT
 k=$build/app/skin/kernels
+. "$(dirname "$0")/neon_kernels.sh"
 
 # The function's instructions from the target of its longest backward
 # branch to that branch; calls and branches become nops (mca models no
@@ -39,16 +40,13 @@ main_loop() { # object function
 	END { for (i = 1; i <= n; i++) if (at[i] >= from && at[i] <= to) print ins[i] }'
 }
 
-printf '%-24s %10s %14s %13s  %s\n' "kernel" "loop insns" "cycles/4 verts" "cycles/vertex" "ratio (time)"
-for f in skin_lbs_neon skin_dqbs_neon skin_dqbs_fixed_neon skin_lbs_compact_neon skin_dqbs_compact_neon; do
+for f in $NEON_KERNELS; do
 	obj=$k/skin_neon.o
 	[ "$f" = skin_dqbs_fixed_neon ] && obj=$k/skin_fixed_neon.o
 	main_loop "$obj" "$f" > "$loop"
 	"$mca" -mtriple=aarch64 -mcpu=cortex-a72 -iterations=300 "$loop" 2>/dev/null |
 		awk -v f="$f" -v n="$(wc -l < "$loop")" '/^Iterations:/ { it = $2 } /^Total Cycles:/ { c = $3 }
-			END { if (!it) exit 1; print f, n, c / it }'
-done | awk '
-	BEGIN { base["skin_dqbs_neon"] = "skin_lbs_neon"; base["skin_dqbs_fixed_neon"] = "skin_dqbs_neon"
-		base["skin_lbs_compact_neon"] = "skin_lbs_neon"; base["skin_dqbs_compact_neon"] = "skin_dqbs_neon" }
-	{ cyc[$1] = $3; r = ($1 in base) ? sprintf("%.2fx %s", $3 / cyc[base[$1]], base[$1]) : ""
-	  printf "%-24s %10d %14.1f %13.1f  %s\n", $1, $2, $3, $3 / 4, r }'
+			END { if (!it) exit 1; print f, n, c / it / 4 }' >> "$loop.rows" ||
+		{ echo "model_cycles: llvm-mca gave no figure for $f" >&2; exit 1; }
+done
+neon_table "$(printf '%-24s %10s %13s  %s' "kernel" "loop insns" "cycles/vertex" "ratio (time)")" "%-24s %10d %13.1f" < "$loop.rows"
