@@ -81,6 +81,29 @@ static void compute_halves(skin_bones *out)
 }
 #endif
 
+#ifdef SKP_SIMD_NEON
+static void compute_signed(skin_bones *out)
+{
+	out->simd_ok = 1;
+	for (int b = 0; b <= SKP_MAX_BONES; b++) {
+		if (b >= out->count && b != SKIN_IDENTITY_BONE)
+			continue;
+		const fx_dq *d = &out->fdq[b];
+		const int32_t c[8] = { d->real.w, d->real.x, d->real.y, d->real.z,
+				       d->dual.w, d->dual.x, d->dual.y, d->dual.z };
+		int32_t neg[8];
+		for (int i = 0; i < 8; i++) {
+			if (c[i] == INT32_MIN)
+				out->simd_ok = 0;
+			neg[i] = c[i] == INT32_MIN ? INT32_MAX : -c[i];
+		}
+		fx_dq n = { { neg[0], neg[1], neg[2], neg[3] }, { neg[4], neg[5], neg[6], neg[7] } };
+		out->fdq_signed[b][0] = out->fdq[b];
+		out->fdq_signed[b][1] = n;
+	}
+}
+#endif
+
 void skin_bones_compute(skin_bones *out, const skel *s, const skel_pose *bind,
 			const skel_pose *pose)
 {
@@ -102,5 +125,8 @@ void skin_bones_derive(skin_bones *out)
 #endif
 #ifdef SKP_SIMD_AVX2
 	compute_halves(out);
+#endif
+#ifdef SKP_SIMD_NEON
+	compute_signed(out);
 #endif
 }

@@ -4,12 +4,14 @@
  * need: 32x32->64 multiply-accumulates (vmlal), rounding shifts and the
  * saturating narrow to int32 in one instruction (vqrshrn is
  * fx_sat32(fx_shr_round(x, n))), and per-lane variable rounding shifts
- * (vrshl). So unlike the AVX2 kernel no envelope is needed: every lane
- * saturates where the scalar kernel does. The blend runs per vertex (its
- * four bones' rows times signed weights into int64 lanes), one transpose
- * turns four blends into lanes, and the reciprocal of each blend's norm
- * runs in lanes too, as fx_blend_scale would (the rare norm outside its
- * range sends the step to the scalar kernel). No floating-point
+ * (vrshl). So unlike the AVX2 kernel it needs no envelope for positions
+ * and normals: every lane saturates where the scalar kernel does. The
+ * blend runs per vertex (its four bones' rows, negated by the sign fix,
+ * times one lane of the weights into int64 lanes), one transpose turns
+ * four blends into lanes, and the reciprocal of each blend's norm runs in
+ * lanes too, as fx_blend_scale would (the rare norm outside its range
+ * sends the step to the scalar kernel; a frame whose bone rows cannot be
+ * negated, the whole call: see skin_bones.fdq_signed). No floating-point
  * instruction: `make test` disassembles this object to check
  * (tests/check_simd_integer.sh). */
 #include "skin_kernels.h"
@@ -44,18 +46,18 @@ NEON_INLINE s64x4 mls4(s64x4 acc, int32x4_t a, int32x4_t b)
 /* fx_sat32(fx_shr_round(x, 30)) and fx_sat32(x >> 30) per lane */
 NEON_INLINE int32x4_t narrow_round30(s64x4 x)
 {
-	return vcombine_s32(vqrshrn_n_s64(x.lo, 30), vqrshrn_n_s64(x.hi, 30));
+	return vqrshrn_high_n_s64(vqrshrn_n_s64(x.lo, 30), x.hi, 30);
 }
 
 NEON_INLINE int32x4_t narrow_cut30(s64x4 x)
 {
-	return vcombine_s32(vqshrn_n_s64(x.lo, 30), vqshrn_n_s64(x.hi, 30));
+	return vqshrn_high_n_s64(vqshrn_n_s64(x.lo, 30), x.hi, 30);
 }
 
 /* fx_sat32(x + v) per lane */
 NEON_INLINE int32x4_t add_narrow(s64x4 x, int32x4_t v)
 {
-	return vcombine_s32(vqmovn_s64(vaddw_s32(x.lo, vget_low_s32(v))), vqmovn_s64(vaddw_high_s32(x.hi, v)));
+	return vqmovn_high_s64(vqmovn_s64(vaddw_s32(x.lo, vget_low_s32(v))), vaddw_high_s32(x.hi, v));
 }
 
 /* What the blends read, in locals for the whole run (through skin_soa
@@ -64,54 +66,67 @@ NEON_INLINE int32x4_t add_narrow(s64x4 x, int32x4_t v)
 typedef struct blend_src {
 	const uint16_t *bone[SKP_MAX_INFLUENCES];
 	const fx_w15 *weight[SKP_MAX_INFLUENCES];
-	const fx_dq *fdq;
+	const fx_dq (*rows)[2];
 	const uint8_t (*flip)[SKP_MAX_BONES + 1];
 } blend_src;
 
-/* fx_dq_blend of one vertex: each influence's weight negated where the
- * sign fix (flip_x: the exact int64 dot product with the pivot's real part,
- * as fx_dq_blend tests it, once per bone pair and frame) says, the sums in
- * int64 and rounded once by 15 bits. */
-NEON_INLINE void blend_vertex(const blend_src *in, int v, int32x4_t *real, int32x4_t *dual)
+/* The weights of influence k of vertices v..v+3, one per lane. */
+NEON_INLINE void load_weights(const blend_src *in, int v, int32x4_t w[SKP_MAX_INFLUENCES])
 {
-	const uint8_t *flip = in->flip[in->bone[0][v]];
-	int64x2_t r0 = vdupq_n_s64(0), r1 = r0, u0 = r0, u1 = r0;
 #pragma GCC unroll 12
-	for (int k = 0; k < SKP_MAX_INFLUENCES; k++) {
-		int bone = in->bone[k][v];
-		const fx_dq *d = &in->fdq[bone];
-		int32x4_t qr = vld1q_s32(&d->real.w), qd = vld1q_s32(&d->dual.w);
-		int32_t w = in->weight[k][v];
-		if (flip[bone])
-			w = -w;
-		r0 = vmlal_n_s32(r0, vget_low_s32(qr), w);
-		r1 = vmlal_high_n_s32(r1, qr, w);
-		u0 = vmlal_n_s32(u0, vget_low_s32(qd), w);
-		u1 = vmlal_high_n_s32(u1, qd, w);
+	for (int k = 0; k < SKP_MAX_INFLUENCES; k++)
+		w[k] = vreinterpretq_s32_u32(vmovl_u16(vld1_u16(in->weight[k] + v)));
+}
+
+/* fx_dq_blend of vertex v + j (its weights in lane j of w): each
+ * influence's row taken negated where the sign fix (flip_x: the exact int64
+ * dot product with the pivot's real part, as fx_dq_blend tests it, once per
+ * bone pair and frame) says, the sums in int64 and rounded once by 15
+ * bits. Influence 0 is the pivot, which never flips. */
+NEON_INLINE void blend_vertex(const blend_src *in, int v, int j, const int32x4_t w[SKP_MAX_INFLUENCES],
+			      int32x4_t *real, int32x4_t *dual)
+{
+	int pivot = in->bone[0][v + j];
+	const uint8_t *flip = in->flip[pivot];
+	int32x4_t qr = vld1q_s32(&in->rows[pivot][0].real.w), qd = vld1q_s32(&in->rows[pivot][0].dual.w);
+	int64x2_t r0 = vmull_laneq_s32(vget_low_s32(qr), w[0], j), r1 = vmull_high_laneq_s32(qr, w[0], j);
+	int64x2_t u0 = vmull_laneq_s32(vget_low_s32(qd), w[0], j), u1 = vmull_high_laneq_s32(qd, w[0], j);
+#pragma GCC unroll 12
+	for (int k = 1; k < SKP_MAX_INFLUENCES; k++) {
+		int bone = in->bone[k][v + j];
+		const fx_dq *d = &in->rows[bone][flip[bone]];
+		qr = vld1q_s32(&d->real.w);
+		qd = vld1q_s32(&d->dual.w);
+		r0 = vmlal_laneq_s32(r0, vget_low_s32(qr), w[k], j);
+		r1 = vmlal_high_laneq_s32(r1, qr, w[k], j);
+		u0 = vmlal_laneq_s32(u0, vget_low_s32(qd), w[k], j);
+		u1 = vmlal_high_laneq_s32(u1, qd, w[k], j);
 	}
-	*real = vcombine_s32(vqrshrn_n_s64(r0, 15), vqrshrn_n_s64(r1, 15));
-	*dual = vcombine_s32(vqrshrn_n_s64(u0, 15), vqrshrn_n_s64(u1, 15));
+	*real = vqrshrn_high_n_s64(vqrshrn_n_s64(r0, 15), r1, 15);
+	*dual = vqrshrn_high_n_s64(vqrshrn_n_s64(u0, 15), u1, 15);
 }
 
 /* (a * b + 2^(s-1)) >> s per lane, for products whose result fits 32 bits */
 #define MUL_ROUND(a, b, s) vrshrn_high_n_u64(vrshrn_n_u64(vmull_u32(vget_low_u32(a), vget_low_u32(b)), s), \
 					      vmull_high_u32(a, b), s)
 
-/* A 32-bit table entry per lane: lane value s picks bytes 4s..4s+3. */
+/* A 32-bit table entry per lane: lane value s picks bytes 4s..4s+3. Two
+ * one-register lookups (entries 0-3, then 4-7, whose out-of-range bytes
+ * keep the first's) rather than one over a register pair, which GCC 12
+ * builds in memory every step. */
 NEON_INLINE uint32x4_t lookup8(const uint32_t table[8], uint32x4_t s)
 {
-	const uint8x16x2_t t = { { vld1q_u8((const uint8_t *)table), vld1q_u8((const uint8_t *)table + 16) } };
-	uint32x4_t bytes = vmlaq_n_u32(vdupq_n_u32(0x03020100u), s, 0x04040404u);
-	return vreinterpretq_u32_u8(vqtbl2q_u8(t, vreinterpretq_u8_u32(bytes)));
+	uint8x16_t bytes = vreinterpretq_u8_u32(vmlaq_n_u32(vdupq_n_u32(0x03020100u), s, 0x04040404u));
+	uint8x16_t r = vqtbl1q_u8(vld1q_u8((const uint8_t *)table), bytes);
+	return vreinterpretq_u32_u8(vqtbx1q_u8(r, vld1q_u8((const uint8_t *)table + 16), vsubq_u8(bytes, vdupq_n_u8(16))));
 }
 
-/* fx_blend_scale on 4 lanes, step for step the same integers, for squared
- * norms x in [2^32, 2^61): there clz(x) is clz of x's high half (NEON
- * counts leading zeros of 32-bit lanes only) and every value below fits
- * 32 bits. inv / 2^-nsh is each lane's 2 / |real|^2. Returns 0 when a lane
- * is outside (a blend that all but cancelled, or weights summing past 1):
- * the caller takes the scalar kernel. */
-NEON_INLINE int blend_scale4(const int32x4_t d[4], int32x4_t *inv, int64x2_t nsh[2])
+/* The squared norms of the blends' real parts (d[0..3]) in Q60, two
+ * lanes each in n[0], n[1], and whether every lane is in [2^32, 2^61),
+ * the range where recip4 gives fx_blend_scale's results: outside it (a
+ * blend that all but cancelled, or weights summing past 1) the caller
+ * takes the scalar kernel. */
+NEON_INLINE int norms4(const int32x4_t d[4], uint64x2_t n[2])
 {
 	int64x2_t lo = vmull_s32(vget_low_s32(d[0]), vget_low_s32(d[0])), hi = vmull_high_s32(d[0], d[0]);
 #pragma GCC unroll 4
@@ -120,12 +135,21 @@ NEON_INLINE int blend_scale4(const int32x4_t d[4], int32x4_t *inv, int64x2_t nsh
 		hi = vmlal_high_s32(hi, d[c], d[c]);
 	}
 	/* unsigned: four squares of int32 wrap only when all are 2^62, to 0 */
-	uint64x2_t xl = vreinterpretq_u64_s64(lo), xh = vreinterpretq_u64_s64(hi);
+	n[0] = vreinterpretq_u64_s64(lo);
+	n[1] = vreinterpretq_u64_s64(hi);
 	const uint64x2_t min = vdupq_n_u64((uint64_t)1 << 32), max = vdupq_n_u64((uint64_t)1 << 61);
-	uint64x2_t ok_l = vandq_u64(vcgeq_u64(xl, min), vcltq_u64(xl, max));
-	uint64x2_t ok_h = vandq_u64(vcgeq_u64(xh, min), vcltq_u64(xh, max));
-	if (vminvq_u32(vuzp1q_u32(vreinterpretq_u32_u64(ok_l), vreinterpretq_u32_u64(ok_h))) == 0)
-		return 0;
+	uint64x2_t ok_l = vandq_u64(vcgeq_u64(n[0], min), vcltq_u64(n[0], max));
+	uint64x2_t ok_h = vandq_u64(vcgeq_u64(n[1], min), vcltq_u64(n[1], max));
+	return vminvq_u32(vuzp1q_u32(vreinterpretq_u32_u64(ok_l), vreinterpretq_u32_u64(ok_h))) != 0;
+}
+
+/* fx_blend_scale on 4 lanes, step for step the same integers, for squared
+ * norms x (from norms4) in [2^32, 2^61): there clz(x) is clz of x's high
+ * half (NEON counts leading zeros of 32-bit lanes only) and every value
+ * below fits 32 bits. inv / 2^-nsh is each lane's 2 / |real|^2. */
+NEON_INLINE void recip4(const uint64x2_t n[2], int32x4_t *inv, int64x2_t nsh[2])
+{
+	uint64x2_t xl = n[0], xh = n[1];
 	/* fx_recip_q60: e = clz(x) - 3 puts x 2^e in [2^60, 2^61); X in Q30 */
 	uint32x4_t top = vshrn_high_n_u64(vshrn_n_u64(xl, 32), xh, 32);
 	int32x4_t e = vsubq_s32(vreinterpretq_s32_u32(vclzq_u32(top)), vdupq_n_s32(3));
@@ -145,16 +169,16 @@ NEON_INLINE int blend_scale4(const int32x4_t d[4], int32x4_t *inv, int64x2_t nsh
 	int32x4_t neg = vsubq_s32(e, vdupq_n_s32(29));
 	nsh[0] = vmovl_s32(vget_low_s32(neg));
 	nsh[1] = vmovl_high_s32(neg);
-	return 1;
 }
 
 /* The blends of 4 vertices in lanes (d[0..3] real w x y z, d[4..7] dual). */
 NEON_INLINE void blend4(const blend_src *in, int v, int32x4_t d[8])
 {
-	int32x4_t real[NEON_LANES], dual[NEON_LANES];
+	int32x4_t real[NEON_LANES], dual[NEON_LANES], w[SKP_MAX_INFLUENCES];
+	load_weights(in, v, w);
 #pragma GCC unroll 12
 	for (int j = 0; j < NEON_LANES; j++)
-		blend_vertex(in, v + j, &real[j], &dual[j]);
+		blend_vertex(in, v, j, w, &real[j], &dual[j]);
 	skin_transpose4(real);
 	skin_transpose4(dual);
 #pragma GCC unroll 4
@@ -203,25 +227,32 @@ NEON_INLINE void load3(const int32_t *const src[3], int v, int32x4_t out[3])
 		out[i] = vld1q_s32(src[i] + v);
 }
 
-void skin_dqbs_fixed_neon(const skin_soa *in, const skin_bones *b, int first, int end, const skin_out *out)
+/* The kernel's loop over whole steps of 4 vertices, from v until a step
+ * fails norms4's range or fewer than 4 vertices are left; returns where it
+ * stopped. Apart, without calls, so that nothing it keeps in registers has
+ * to be saved around the scalar kernel's call (AArch64 calls keep only the
+ * low halves of v8-v15): with the call in the loop, the loop held 70
+ * stack loads and stores a step, now 18. noclone keeps the name that
+ * tests/model_cycles.sh looks for. */
+__attribute__((noinline, noclone))
+static int fixed_neon_run(const skin_soa *in, const skin_bones *b, int v, int end, const skin_out *out)
 {
 	_Static_assert(FX_POS_FRAC == 16, "the NEON fixed kernel writes fx_pos as Q16.16 directly");
 	const int32_t *const pos_in[3] = { in->fpx, in->fpy, in->fpz }, *const nrm_in[3] = { in->fnx, in->fny, in->fnz };
-	blend_src src = { .fdq = b->fdq, .flip = b->flip_x };
+	blend_src src = { .rows = b->fdq_signed, .flip = b->flip_x };
 	for (int k = 0; k < SKP_MAX_INFLUENCES; k++) {
 		src.bone[k] = in->bone[k];
 		src.weight[k] = in->fweight[k];
 	}
 	int32_t *fpos = out->fpos, *fnrm = out->fnrm;
-	for (int v = first; v < end; v += NEON_LANES) {
-		int valid = end - v < NEON_LANES ? end - v : NEON_LANES;
+	for (; end - v >= NEON_LANES; v += NEON_LANES) {
 		int32x4_t d[8], inv;
 		int64x2_t nsh[2];
+		uint64x2_t norm[2];
 		blend4(&src, v, d);
-		if (!blend_scale4(d, &inv, nsh)) {
-			skin_dqbs_fixed(in, b, v, v + valid, out);
-			continue;
-		}
+		if (!norms4(d, norm))
+			break;
+		recip4(norm, &inv, nsh);
 		int32x4_t p[3], n[3], po[3], no[3];
 		load3(pos_in, v, p);
 		load3(nrm_in, v, n);
@@ -230,8 +261,25 @@ void skin_dqbs_fixed_neon(const skin_soa *in, const skin_bones *b, int first, in
 #pragma GCC unroll 12
 		for (int i = 0; i < 3; i++)
 			no[i] = vrshrq_n_s32(no[i], 14); /* Q30 to Q16 */
-		skin_store_xyz4(fpos + 3 * v, po[0], po[1], po[2], valid);
-		skin_store_xyz4(fnrm + 3 * v, no[0], no[1], no[2], valid);
+		vst3q_s32(fpos + 3 * v, (int32x4x3_t){ { po[0], po[1], po[2] } });
+		vst3q_s32(fnrm + 3 * v, (int32x4x3_t){ { no[0], no[1], no[2] } });
+	}
+	return v;
+}
+
+/* The steps fixed_neon_run leaves (a norm out of norms4's range, the
+ * last 1-3 vertices) go to the scalar kernel, which gives the same bits. */
+void skin_dqbs_fixed_neon(const skin_soa *in, const skin_bones *b, int first, int end, const skin_out *out)
+{
+	if (!b->simd_ok) {
+		skin_dqbs_fixed(in, b, first, end, out);
+		return;
+	}
+	int v = first;
+	while ((v = fixed_neon_run(in, b, v, end, out)) < end) {
+		int stop = end - v < NEON_LANES ? end : v + NEON_LANES;
+		skin_dqbs_fixed(in, b, v, stop, out);
+		v = stop;
 	}
 }
 
