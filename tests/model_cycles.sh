@@ -2,11 +2,12 @@
 # Cycles a vertex of each NEON kernel on a Cortex-A72 by llvm-mca's model
 # (LLVM's scheduling model for the core: pipelines, latencies, one load a
 # cycle), from the main loop of each kernel in an aarch64 build: one step
-# of 4 vertices. A model, not a measurement: every load hits L1, branches
-# cost nothing and the loop's rarely taken code (the float kernels' partial
-# stores for the last vertices) counts as if it ran each time, so the
-# figures lean high. The fixed kernel's loop is a function of its own
-# (fixed_neon_run), apart from its hand-over to the scalar kernel. Usage:
+# of 4 vertices (8 for the fixed kernel). A model, not a measurement:
+# every load hits L1, branches cost nothing and the loop's rarely taken
+# code (the float kernels' partial stores for the last vertices) counts as
+# if it ran each time, so the figures lean high. The fixed kernel's loop
+# is a function of its own (fixed_neon_run), apart from its hand-over to
+# the scalar kernel. Usage:
 #   sh tests/model_cycles.sh [BUILD_DIR]   (default build/rpi4; needs llvm-mca)
 set -eu
 build=${1:-build/rpi4}
@@ -42,12 +43,12 @@ main_loop() { # object function
 }
 
 for f in $NEON_KERNELS; do
-	obj=$k/skin_neon.o fn=$f
-	[ "$f" = skin_dqbs_fixed_neon ] && obj=$k/skin_fixed_neon.o fn=fixed_neon_run
+	obj=$k/skin_neon.o fn=$f verts=4
+	[ "$f" = skin_dqbs_fixed_neon ] && obj=$k/skin_fixed_neon.o fn=fixed_neon_run verts=8
 	main_loop "$obj" "$fn" > "$loop"
 	"$mca" -mtriple=aarch64 -mcpu=cortex-a72 -iterations=300 "$loop" 2>/dev/null |
-		awk -v f="$f" -v n="$(wc -l < "$loop")" '/^Iterations:/ { it = $2 } /^Total Cycles:/ { c = $3 }
-			END { if (!it) exit 1; print f, n, c / it / 4 }' >> "$loop.rows" ||
+		awk -v f="$f" -v n="$(wc -l < "$loop")" -v verts=$verts '/^Iterations:/ { it = $2 } /^Total Cycles:/ { c = $3 }
+			END { if (!it) exit 1; print f, n, c / it / verts }' >> "$loop.rows" ||
 		{ echo "model_cycles: llvm-mca gave no figure for $f" >&2; exit 1; }
 done
 neon_table "$(printf '%-24s %10s %13s  %s' "kernel" "loop insns" "cycles/vertex" "ratio (time)")" "%-24s %10d %13.1f" < "$loop.rows"

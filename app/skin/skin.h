@@ -121,11 +121,15 @@ typedef struct skin_bones {
 #endif
 #ifdef SKP_SIMD_NEON
 	/* fdq ([0]) and its negation ([1]): the NEON fixed kernel's sign fix
-	 * picks the row (flip_x as the offset) instead of negating the
-	 * weight. simd_ok is 0 when a dual component saturated to INT32_MIN
-	 * (a translation of 65536 units or more), whose negation int32 cannot
-	 * hold: the kernel takes the scalar path for the frame. */
+	 * picks the row (see fdq_at) instead of negating the weight. simd_ok
+	 * is 0 when a dual component saturated to INT32_MIN (a translation of
+	 * 65536 units or more), whose negation int32 cannot hold: the kernel
+	 * takes the scalar path for the frame. */
 	fx_dq fdq_signed[SKP_MAX_BONES + 1][2];
+	/* fdq_at[pivot][bone]: the byte offset in fdq_signed of the row that
+	 * bone takes in a blend around pivot (flip_x picking [0] or [1]),
+	 * one load per influence instead of the flip's and the address's */
+	uint16_t fdq_at[SKP_MAX_BONES + 1][SKP_MAX_BONES + 1];
 	int simd_ok;
 #endif
 } skin_bones;
@@ -133,7 +137,7 @@ typedef struct skin_bones {
 void skin_bones_compute(skin_bones *out, const skel *s, const skel_pose *bind,
 			const skel_pose *pose);
 
-/* Recomputes the kernels' lookup tables (flip_x, fdq_halves and fdq_signed from fdq,
+/* Recomputes the kernels' lookup tables (flip_x, fdq_halves, fdq_signed and fdq_at from fdq,
  * flip_f from dq), for a caller that set fdq or dq itself. */
 void skin_bones_derive(skin_bones *out);
 

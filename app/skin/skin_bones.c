@@ -28,14 +28,27 @@ static void set_bone(skin_bones *out, int b, quat q, vec3 t)
 	flatten(out, b);
 }
 
-#ifdef SKIN_SIMD_FLIPS
-/* Only the bones in use (and the identity slot) get entries. */
-static void compute_flips(skin_bones *out)
+/* The skeleton's bones and the identity slot: the tables below have
+ * entries for these only. */
+static inline int bone_in_use(const skin_bones *out, int b)
 {
-	int slots[SKP_MAX_BONES + 1], n = 0;
+	return b < out->count || b == SKIN_IDENTITY_BONE;
+}
+
+#ifdef SKIN_SIMD_FLIPS
+/* The slots bone_in_use lists, into slots; returns how many. */
+static int used_slots(const skin_bones *out, int slots[SKP_MAX_BONES + 1])
+{
+	int n = 0;
 	for (int i = 0; i < out->count; i++)
 		slots[n++] = i;
 	slots[n++] = SKIN_IDENTITY_BONE;
+	return n;
+}
+
+static void compute_flips(skin_bones *out)
+{
+	int slots[SKP_MAX_BONES + 1], n = used_slots(out, slots);
 	for (int a = 0; a < n; a++) {
 		int p = slots[a];
 		for (int c = 0; c < n; c++) {
@@ -62,7 +75,7 @@ static void compute_halves(skin_bones *out)
 {
 	out->simd_ok = 1;
 	for (int b = 0; b <= SKP_MAX_BONES; b++) {
-		if (b >= out->count && b != SKIN_IDENTITY_BONE)
+		if (!bone_in_use(out, b))
 			continue;
 		const fx_dq *d = &out->fdq[b];
 		/* in 64 bits: a saturated dual component negates past int32 */
@@ -86,7 +99,7 @@ static void compute_signed(skin_bones *out)
 {
 	out->simd_ok = 1;
 	for (int b = 0; b <= SKP_MAX_BONES; b++) {
-		if (b >= out->count && b != SKIN_IDENTITY_BONE)
+		if (!bone_in_use(out, b))
 			continue;
 		const fx_dq *d = &out->fdq[b];
 		const int32_t c[8] = { d->real.w, d->real.x, d->real.y, d->real.z,
@@ -101,6 +114,19 @@ static void compute_signed(skin_bones *out)
 		out->fdq_signed[b][0] = out->fdq[b];
 		out->fdq_signed[b][1] = n;
 	}
+}
+
+/* After compute_flips: fdq_at from flip_x. */
+static void compute_row_offsets(skin_bones *out)
+{
+	_Static_assert(sizeof out->fdq_signed <= UINT16_MAX, "fdq_at offsets fit 16 bits");
+	int slots[SKP_MAX_BONES + 1], n = used_slots(out, slots);
+	for (int a = 0; a < n; a++)
+		for (int c = 0; c < n; c++) {
+			int p = slots[a], b = slots[c];
+			out->fdq_at[p][b] = (uint16_t)(sizeof out->fdq_signed[0] * (size_t)b +
+						       sizeof out->fdq_signed[0][0] * out->flip_x[p][b]);
+		}
 }
 #endif
 
@@ -128,5 +154,6 @@ void skin_bones_derive(skin_bones *out)
 #endif
 #ifdef SKP_SIMD_NEON
 	compute_signed(out);
+	compute_row_offsets(out);
 #endif
 }

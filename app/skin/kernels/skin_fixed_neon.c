@@ -66,8 +66,8 @@ NEON_INLINE int32x4_t add_narrow(s64x4 x, int32x4_t v)
 typedef struct blend_src {
 	const uint16_t *bone[SKP_MAX_INFLUENCES];
 	const fx_w15 *weight[SKP_MAX_INFLUENCES];
-	const fx_dq (*rows)[2];
-	const uint8_t (*flip)[SKP_MAX_BONES + 1];
+	const char *rows;                        /* skin_bones.fdq_signed */
+	const uint16_t (*at)[SKP_MAX_BONES + 1]; /* skin_bones.fdq_at */
 } blend_src;
 
 /* The weights of influence k of vertices v..v+3, one per lane. */
@@ -81,22 +81,17 @@ NEON_INLINE void load_weights(const blend_src *in, int v, int32x4_t w[SKP_MAX_IN
 /* fx_dq_blend of vertex v + j (its weights in lane j of w): each
  * influence's row taken negated where the sign fix (flip_x: the exact int64
  * dot product with the pivot's real part, as fx_dq_blend tests it, once per
- * bone pair and frame) says, the sums in int64 and rounded once by 15
- * bits. Influence 0 is the pivot, which never flips. */
+ * bone pair and frame) says, as fdq_at points, the sums in int64 and
+ * rounded once by 15 bits. */
 NEON_INLINE void blend_vertex(const blend_src *in, int v, int j, const int32x4_t w[SKP_MAX_INFLUENCES],
 			      int32x4_t *real, int32x4_t *dual)
 {
-	int pivot = in->bone[0][v + j];
-	const uint8_t *flip = in->flip[pivot];
-	int32x4_t qr = vld1q_s32(&in->rows[pivot][0].real.w), qd = vld1q_s32(&in->rows[pivot][0].dual.w);
-	int64x2_t r0 = vmull_laneq_s32(vget_low_s32(qr), w[0], j), r1 = vmull_high_laneq_s32(qr, w[0], j);
-	int64x2_t u0 = vmull_laneq_s32(vget_low_s32(qd), w[0], j), u1 = vmull_high_laneq_s32(qd, w[0], j);
+	const uint16_t *at = in->at[in->bone[0][v + j]];
+	int64x2_t r0 = vdupq_n_s64(0), r1 = r0, u0 = r0, u1 = r0;
 #pragma GCC unroll 12
-	for (int k = 1; k < SKP_MAX_INFLUENCES; k++) {
-		int bone = in->bone[k][v + j];
-		const fx_dq *d = &in->rows[bone][flip[bone]];
-		qr = vld1q_s32(&d->real.w);
-		qd = vld1q_s32(&d->dual.w);
+	for (int k = 0; k < SKP_MAX_INFLUENCES; k++) {
+		const int32_t *row = (const int32_t *)(in->rows + at[in->bone[k][v + j]]);
+		int32x4_t qr = vld1q_s32(row), qd = vld1q_s32(row + 4);
 		r0 = vmlal_laneq_s32(r0, vget_low_s32(qr), w[k], j);
 		r1 = vmlal_high_laneq_s32(r1, qr, w[k], j);
 		u0 = vmlal_laneq_s32(u0, vget_low_s32(qd), w[k], j);
@@ -122,11 +117,12 @@ NEON_INLINE uint32x4_t lookup8(const uint32_t table[8], uint32x4_t s)
 }
 
 /* The squared norms of the blends' real parts (d[0..3]) in Q60, two
- * lanes each in n[0], n[1], and whether every lane is in [2^32, 2^61),
- * the range where recip4 gives fx_blend_scale's results: outside it (a
- * blend that all but cancelled, or weights summing past 1) the caller
- * takes the scalar kernel. */
-NEON_INLINE int norms4(const int32x4_t d[4], uint64x2_t n[2])
+ * lanes each in n[0], n[1], their high halves in *top, and whether every
+ * lane is in [2^32, 2^61) (its high half in [1, 2^29)), the range where
+ * recip4x2 gives fx_blend_scale's results: outside it (a blend that all but
+ * cancelled, or weights summing past 1) the caller takes the scalar
+ * kernel. */
+NEON_INLINE int norms4(const int32x4_t d[4], uint64x2_t n[2], uint32x4_t *top)
 {
 	int64x2_t lo = vmull_s32(vget_low_s32(d[0]), vget_low_s32(d[0])), hi = vmull_high_s32(d[0], d[0]);
 #pragma GCC unroll 4
@@ -137,38 +133,49 @@ NEON_INLINE int norms4(const int32x4_t d[4], uint64x2_t n[2])
 	/* unsigned: four squares of int32 wrap only when all are 2^62, to 0 */
 	n[0] = vreinterpretq_u64_s64(lo);
 	n[1] = vreinterpretq_u64_s64(hi);
-	const uint64x2_t min = vdupq_n_u64((uint64_t)1 << 32), max = vdupq_n_u64((uint64_t)1 << 61);
-	uint64x2_t ok_l = vandq_u64(vcgeq_u64(n[0], min), vcltq_u64(n[0], max));
-	uint64x2_t ok_h = vandq_u64(vcgeq_u64(n[1], min), vcltq_u64(n[1], max));
-	return vminvq_u32(vuzp1q_u32(vreinterpretq_u32_u64(ok_l), vreinterpretq_u32_u64(ok_h))) != 0;
+	*top = vuzp2q_u32(vreinterpretq_u32_s64(lo), vreinterpretq_u32_s64(hi));
+	uint32x4_t ok = vcltq_u32(vsubq_u32(*top, vdupq_n_u32(1)), vdupq_n_u32((1u << 29) - 1));
+	return vminvq_u32(ok) != 0;
 }
 
-/* fx_blend_scale on 4 lanes, step for step the same integers, for squared
- * norms x (from norms4) in [2^32, 2^61): there clz(x) is clz of x's high
- * half (NEON counts leading zeros of 32-bit lanes only) and every value
- * below fits 32 bits. inv / 2^-nsh is each lane's 2 / |real|^2. */
-NEON_INLINE void recip4(const uint64x2_t n[2], int32x4_t *inv, int64x2_t nsh[2])
+/* fx_blend_scale on two sets of 4 lanes, step for step the same integers,
+ * for squared norms x (from norms4) in [2^32, 2^61): there clz(x) is clz of
+ * x's high half (NEON counts leading zeros of 32-bit lanes only) and every
+ * value below fits 32 bits. inv / 2^-nsh is each lane's 2 / |real|^2. Two
+ * sets stage by stage: the reciprocal is a chain of dependent multiplies
+ * (a step's 4 vertices alone left the core waiting on it for a quarter of
+ * the loop's cycles, by the Cortex-A72 model), so two chains side by side. */
+NEON_INLINE void recip4x2(const uint64x2_t n[2][2], const uint32x4_t top[2], int32x4_t inv[2], int64x2_t nsh[2][2])
 {
-	uint64x2_t xl = n[0], xh = n[1];
-	/* fx_recip_q60: e = clz(x) - 3 puts x 2^e in [2^60, 2^61); X in Q30 */
-	uint32x4_t top = vshrn_high_n_u64(vshrn_n_u64(xl, 32), xh, 32);
-	int32x4_t e = vsubq_s32(vreinterpretq_s32_u32(vclzq_u32(top)), vdupq_n_s32(3));
-	xl = vshlq_u64(xl, vmovl_s32(vget_low_s32(e)));
-	xh = vshlq_u64(xh, vmovl_high_s32(e));
-	uint32x4_t xq = vshrn_high_n_u64(vshrn_n_u64(xl, 30), xh, 30);
-	uint32x4_t seg = vsubq_u32(vshrq_n_u32(xq, 27), vdupq_n_u32(8));
-	uint32x4_t y = vsubq_u32(lookup8(fx_recip_seed_a, seg), MUL_ROUND(lookup8(fx_recip_seed_b, seg), xq, 30));
+	uint32x4_t xq[2], y[2];
+	int32x4_t e[2];
+#pragma GCC unroll 2
+	for (int g = 0; g < 2; g++) {
+		/* fx_recip_q60: e = clz(x) - 3 puts x 2^e in [2^60, 2^61); X in Q30 */
+		e[g] = vsubq_s32(vreinterpretq_s32_u32(vclzq_u32(top[g])), vdupq_n_s32(3));
+		uint64x2_t xl = vshlq_u64(n[g][0], vmovl_s32(vget_low_s32(e[g])));
+		uint64x2_t xh = vshlq_u64(n[g][1], vmovl_high_s32(e[g]));
+		xq[g] = vshrn_high_n_u64(vshrn_n_u64(xl, 30), xh, 30);
+		uint32x4_t seg = vsubq_u32(vshrq_n_u32(xq[g], 27), vdupq_n_u32(8));
+		y[g] = vsubq_u32(lookup8(fx_recip_seed_a, seg), MUL_ROUND(lookup8(fx_recip_seed_b, seg), xq[g], 30));
+	}
 #pragma GCC unroll 4
 	for (int i = 0; i < FX_RECIP_STEPS; i++) {
-		uint32x4_t xy = MUL_ROUND(xq, y, 30);
-		y = MUL_ROUND(y, vsubq_u32(vdupq_n_u32(0), xy), 31); /* 2^32 - xy */
+#pragma GCC unroll 2
+		for (int g = 0; g < 2; g++) {
+			uint32x4_t xy = MUL_ROUND(xq[g], y[g], 30);
+			y[g] = MUL_ROUND(y[g], vsubq_u32(vdupq_n_u32(0), xy), 31); /* 2^32 - xy */
+		}
 	}
-	/* fx_blend_scale: inv = (y + 1) / 2, sh = 29 - e (vrshl shifts right
-	 * by minus its count) */
-	*inv = vreinterpretq_s32_u32(vrshrq_n_u32(y, 1));
-	int32x4_t neg = vsubq_s32(e, vdupq_n_s32(29));
-	nsh[0] = vmovl_s32(vget_low_s32(neg));
-	nsh[1] = vmovl_high_s32(neg);
+#pragma GCC unroll 2
+	for (int g = 0; g < 2; g++) {
+		/* fx_blend_scale: inv = (y + 1) / 2, sh = 29 - e (vrshl shifts
+		 * right by minus its count) */
+		inv[g] = vreinterpretq_s32_u32(vrshrq_n_u32(y[g], 1));
+		int32x4_t neg = vsubq_s32(e[g], vdupq_n_s32(29));
+		nsh[g][0] = vmovl_s32(vget_low_s32(neg));
+		nsh[g][1] = vmovl_high_s32(neg);
+	}
 }
 
 /* The blends of 4 vertices in lanes (d[0..3] real w x y z, d[4..7] dual). */
@@ -198,13 +205,18 @@ NEON_INLINE void move4(const int32x4_t d[8], const int32x4_t *dual, const int32x
 #pragma GCC unroll 12
 	for (int i = 0; i < 3; i++) {
 		int j = (i + 1) % 3, k = (i + 2) % 3;
-		s64x4 sum = mla4(mls4(mul4(r[j], v[k]), r[k], v[j]), w, v[i]);
+		/* a point's sum starts at dv 2^30: rounded by 30 bits, that is
+		 * round(sum / 2^30) + dv exactly, saturated as fx_sat32 would
+		 * (|sum| < 2^61.8 and |dv 2^30| < 2^61: no int64 overflow) */
+		s64x4 sum;
 		if (dual) {
-			s64x4 t = { vrshrq_n_s64(sum.lo, 30), vrshrq_n_s64(sum.hi, 30) };
-			a[i] = add_narrow(t, dual[i + 1]);
+			s64x4 start = { vshll_n_s32(vget_low_s32(dual[i + 1]), 30), vshll_high_n_s32(dual[i + 1], 30) };
+			sum = mla4(start, r[j], v[k]);
 		} else {
-			a[i] = narrow_cut30(sum);
+			sum = mul4(r[j], v[k]);
 		}
+		sum = mla4(mls4(sum, r[k], v[j]), w, v[i]);
+		a[i] = dual ? narrow_round30(sum) : narrow_cut30(sum);
 	}
 #pragma GCC unroll 12
 	for (int i = 0; i < 3; i++) {
@@ -227,48 +239,57 @@ NEON_INLINE void load3(const int32_t *const src[3], int v, int32x4_t out[3])
 		out[i] = vld1q_s32(src[i] + v);
 }
 
-/* The kernel's loop over whole steps of 4 vertices, from v until a step
- * fails norms4's range or fewer than 4 vertices are left; returns where it
- * stopped. Apart, without calls, so that nothing it keeps in registers has
- * to be saved around the scalar kernel's call (AArch64 calls keep only the
- * low halves of v8-v15): with the call in the loop, the loop held 70
- * stack loads and stores a step, now 18. noclone keeps the name that
- * tests/model_cycles.sh looks for. */
+/* Vertices a step of the kernel's loop: two sets of 4 (see recip4x2). */
+#define FIXED_STEP (2 * NEON_LANES)
+
+/* The kernel's loop over whole steps, from v until a step has a norm out
+ * of norms4's range or fewer than FIXED_STEP vertices are left; returns
+ * where it stopped. Apart, without calls, so that nothing it keeps in
+ * registers has to be saved around the scalar kernel's call (AArch64 calls
+ * keep only the low halves of v8-v15): with the call inside, the loop
+ * made 70 stack loads and stores per 4 vertices (gcc 12). noclone keeps the name
+ * that tests/model_cycles.sh looks for. */
 __attribute__((noinline, noclone))
 static int fixed_neon_run(const skin_soa *in, const skin_bones *b, int v, int end, const skin_out *out)
 {
 	_Static_assert(FX_POS_FRAC == 16, "the NEON fixed kernel writes fx_pos as Q16.16 directly");
 	const int32_t *const pos_in[3] = { in->fpx, in->fpy, in->fpz }, *const nrm_in[3] = { in->fnx, in->fny, in->fnz };
-	blend_src src = { .rows = b->fdq_signed, .flip = b->flip_x };
+	blend_src src = { .rows = (const char *)b->fdq_signed, .at = b->fdq_at };
 	for (int k = 0; k < SKP_MAX_INFLUENCES; k++) {
 		src.bone[k] = in->bone[k];
 		src.weight[k] = in->fweight[k];
 	}
 	int32_t *fpos = out->fpos, *fnrm = out->fnrm;
-	for (; end - v >= NEON_LANES; v += NEON_LANES) {
-		int32x4_t d[8], inv;
-		int64x2_t nsh[2];
-		uint64x2_t norm[2];
-		blend4(&src, v, d);
-		if (!norms4(d, norm))
+	for (; end - v >= FIXED_STEP; v += FIXED_STEP) {
+		int32x4_t d[2][8], inv[2];
+		int64x2_t nsh[2][2];
+		uint64x2_t norm[2][2];
+		uint32x4_t top[2];
+		blend4(&src, v, d[0]);
+		blend4(&src, v + NEON_LANES, d[1]);
+		if (!(norms4(d[0], norm[0], &top[0]) & norms4(d[1], norm[1], &top[1])))
 			break;
-		recip4(norm, &inv, nsh);
-		int32x4_t p[3], n[3], po[3], no[3];
-		load3(pos_in, v, p);
-		load3(nrm_in, v, n);
-		move4(d, d + 4, p, inv, nsh, po);
-		move4(d, NULL, n, inv, nsh, no);
+		recip4x2(norm, top, inv, nsh);
+#pragma GCC unroll 2
+		for (int g = 0; g < 2; g++) {
+			int at = v + g * NEON_LANES;
+			int32x4_t p[3], n[3], po[3], no[3];
+			load3(pos_in, at, p);
+			load3(nrm_in, at, n);
+			move4(d[g], d[g] + 4, p, inv[g], nsh[g], po);
+			move4(d[g], NULL, n, inv[g], nsh[g], no);
 #pragma GCC unroll 12
-		for (int i = 0; i < 3; i++)
-			no[i] = vrshrq_n_s32(no[i], 14); /* Q30 to Q16 */
-		vst3q_s32(fpos + 3 * v, (int32x4x3_t){ { po[0], po[1], po[2] } });
-		vst3q_s32(fnrm + 3 * v, (int32x4x3_t){ { no[0], no[1], no[2] } });
+			for (int i = 0; i < 3; i++)
+				no[i] = vrshrq_n_s32(no[i], 14); /* Q30 to Q16 */
+			vst3q_s32(fpos + 3 * at, (int32x4x3_t){ { po[0], po[1], po[2] } });
+			vst3q_s32(fnrm + 3 * at, (int32x4x3_t){ { no[0], no[1], no[2] } });
+		}
 	}
 	return v;
 }
 
-/* The steps fixed_neon_run leaves (a norm out of norms4's range, the
- * last 1-3 vertices) go to the scalar kernel, which gives the same bits. */
+/* The steps fixed_neon_run leaves (a norm out of norms4's range, the last
+ * 1-7 vertices) go to the scalar kernel, which gives the same bits. */
 void skin_dqbs_fixed_neon(const skin_soa *in, const skin_bones *b, int first, int end, const skin_out *out)
 {
 	if (!b->simd_ok) {
@@ -277,7 +298,7 @@ void skin_dqbs_fixed_neon(const skin_soa *in, const skin_bones *b, int first, in
 	}
 	int v = first;
 	while ((v = fixed_neon_run(in, b, v, end, out)) < end) {
-		int stop = end - v < NEON_LANES ? end : v + NEON_LANES;
+		int stop = end - v < FIXED_STEP ? end : v + FIXED_STEP;
 		skin_dqbs_fixed(in, b, v, stop, out);
 		v = stop;
 	}
