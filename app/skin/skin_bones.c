@@ -28,15 +28,9 @@ static void set_bone(skin_bones *out, int b, quat q, vec3 t)
 	flatten(out, b);
 }
 
-/* The skeleton's bones and the identity slot: the tables below have
- * entries for these only. */
-static inline int bone_in_use(const skin_bones *out, int b)
-{
-	return b < out->count || b == SKIN_IDENTITY_BONE;
-}
-
 #ifdef SKIN_SIMD_FLIPS
-/* The slots bone_in_use lists, into slots; returns how many. */
+/* The skeleton's bones and the identity slot, into slots; returns how
+ * many. The tables below have entries for these only. */
 static int used_slots(const skin_bones *out, int slots[SKP_MAX_BONES + 1])
 {
 	int n = 0;
@@ -44,6 +38,16 @@ static int used_slots(const skin_bones *out, int slots[SKP_MAX_BONES + 1])
 		slots[n++] = i;
 	slots[n++] = SKIN_IDENTITY_BONE;
 	return n;
+}
+
+/* real w x y z, dual w x y z, in 64 bits: a saturated dual component
+ * negates past int32 */
+static void fdq_components(const fx_dq *d, int64_t c[8])
+{
+	const int32_t src[8] = { d->real.w, d->real.x, d->real.y, d->real.z,
+				 d->dual.w, d->dual.x, d->dual.y, d->dual.z };
+	for (int i = 0; i < 8; i++)
+		c[i] = src[i];
 }
 
 static void compute_flips(skin_bones *out)
@@ -73,14 +77,12 @@ static void split_halves(int16_t dst[16], const int64_t c[8])
 
 static void compute_halves(skin_bones *out)
 {
+	int slots[SKP_MAX_BONES + 1], n = used_slots(out, slots);
 	out->simd_ok = 1;
-	for (int b = 0; b <= SKP_MAX_BONES; b++) {
-		if (!bone_in_use(out, b))
-			continue;
-		const fx_dq *d = &out->fdq[b];
-		/* in 64 bits: a saturated dual component negates past int32 */
-		int64_t c[8] = { d->real.w, d->real.x, d->real.y, d->real.z,
-				 d->dual.w, d->dual.x, d->dual.y, d->dual.z };
+	for (int a = 0; a < n; a++) {
+		int b = slots[a];
+		int64_t c[8];
+		fdq_components(&out->fdq[b], c);
 		/* within the limit, hi fits int16 too, negated or not (real
 		 * parts are at most 2^30 long); beyond it the halves go unused */
 		for (int i = 4; i < 8; i++)
@@ -97,22 +99,21 @@ static void compute_halves(skin_bones *out)
 #ifdef SKP_SIMD_NEON
 static void compute_signed(skin_bones *out)
 {
+	int slots[SKP_MAX_BONES + 1], n = used_slots(out, slots);
 	out->simd_ok = 1;
-	for (int b = 0; b <= SKP_MAX_BONES; b++) {
-		if (!bone_in_use(out, b))
-			continue;
-		const fx_dq *d = &out->fdq[b];
-		const int32_t c[8] = { d->real.w, d->real.x, d->real.y, d->real.z,
-				       d->dual.w, d->dual.x, d->dual.y, d->dual.z };
+	for (int a = 0; a < n; a++) {
+		int b = slots[a];
+		int64_t c[8];
 		int32_t neg[8];
+		fdq_components(&out->fdq[b], c);
 		for (int i = 0; i < 8; i++) {
 			if (c[i] == INT32_MIN)
 				out->simd_ok = 0;
-			neg[i] = c[i] == INT32_MIN ? INT32_MAX : -c[i];
+			neg[i] = fx_sat32(-c[i]);
 		}
-		fx_dq n = { { neg[0], neg[1], neg[2], neg[3] }, { neg[4], neg[5], neg[6], neg[7] } };
+		fx_dq negated = { { neg[0], neg[1], neg[2], neg[3] }, { neg[4], neg[5], neg[6], neg[7] } };
 		out->fdq_signed[b][0] = out->fdq[b];
-		out->fdq_signed[b][1] = n;
+		out->fdq_signed[b][1] = negated;
 	}
 }
 
