@@ -3,11 +3,10 @@
 # (LLVM's scheduling model for the core: pipelines, latencies, one load a
 # cycle), from the main loop of each kernel in an aarch64 build: one step
 # of 4 vertices (8 for the fixed kernel). A model, not a measurement:
-# every load hits L1, branches cost nothing and the loop's rarely taken
-# code (the float kernels' partial stores for the last vertices) counts as
-# if it ran each time, so the figures lean high. The fixed kernel's loop
-# is a function of its own (fixed_neon_run), apart from its hand-over to
-# the scalar kernel. Usage:
+# every load hits L1 and branches cost nothing. The loops hold whole steps
+# only (the last vertices of a call are handled after the loop), so no
+# rarely taken code is counted as if it ran each step. The fixed kernel's
+# loop is a function of its own (fixed_neon_run). Usage:
 #   sh tests/model_cycles.sh [BUILD_DIR]   (default build/rpi4; needs llvm-mca)
 set -eu
 build=${1:-build/rpi4}
@@ -21,8 +20,10 @@ k=$build/app/skin/kernels
 . "$(dirname "$0")/neon_kernels.sh"
 
 # The function's instructions from the target of its longest backward
-# branch to that branch; calls and branches become nops (mca models no
-# control flow).
+# conditional branch (a rotated loop's back edge; an unconditional one may
+# be a jump back from code after the loop, as GCC 14 places a kernel's
+# last partial step) to that branch; calls and branches become nops (mca
+# models no control flow).
 main_loop() { # object function
 	"$objdump" -d --no-show-raw-insn "$1" | awk -v f="<$2>:" '
 	function hex(s,  i, n) { n = 0; s = tolower(s); for (i = 1; i <= length(s); i++) n = n * 16 + index("0123456789abcdef", substr(s, i, 1)) - 1; return n }
@@ -34,7 +35,7 @@ main_loop() { # object function
 		op = line; sub(/[ \t].*$/, "", op)
 		if (op ~ /^(b|bl|b\.[a-z]+|cbz|cbnz|tbz|tbnz)$/) {
 			t = line; sub(/^.*[ \t,]/, "", t); t = hex(t)
-			if (op != "bl" && t < at[n] && at[n] - t > best) { best = at[n] - t; from = t; to = at[n] }
+			if (op != "bl" && op != "b" && t < at[n] && at[n] - t > best) { best = at[n] - t; from = t; to = at[n] }
 			line = "nop"
 		}
 		ins[n] = line

@@ -299,38 +299,53 @@ NEON_INLINE void dqbs4(const tables *t, const batch4 *bt, v3x4 *p, v3x4 *n)
 	*n = move4(&d, s, bt->n, 0);
 }
 
+/* What the steps read and write, in locals for the whole run. */
+typedef struct run_ctx {
+	tables t;
+	skin_soa fs;
+	skin_compact cs;
+	float *pos, *nrm;
+	int16_t *nrm16;
+} run_ctx;
+
+/* One step of 4 vertices from v, the first `valid` of them stored. */
+NEON_INLINE void step4(int dual, int compact, const run_ctx *c, int v, int valid)
+{
+	batch4 bt;
+	v3x4 p, n;
+	if (compact)
+		load_compact(&c->cs, v, &bt);
+	else
+		load_float(&c->fs, v, &bt);
+	if (dual)
+		dqbs4(&c->t, &bt, &p, &n);
+	else
+		lbs4(&c->t, &bt, &p, &n);
+	store_xyz4(c->pos + 3 * v, p, valid);
+	if (compact)
+		store_snorm4(c->nrm16 + 3 * v, n, valid);
+	else
+		store_xyz4(c->nrm + 3 * v, n, valid);
+}
+
 /* Steps of 4 vertices over either stream form (the other pointer NULL),
- * LBS or (dual 1) DQBS; inlined into each kernel so the choices fold. */
+ * LBS or (dual 1) DQBS; inlined into each kernel so the choices fold. The
+ * last 1-3 vertices take a step of their own after the loop: with its
+ * partial stores (a memcpy call) inside, the loop kept values on the
+ * stack across the call. */
 NEON_INLINE void run4(int dual, const skin_soa *fl, const skin_compact *co, const skin_bones *b, int first, int end,
 		      const skin_out *out)
 {
-	const tables t = { b->lbs12, b->dq8, b->flip_f };
-	skin_soa fs;
-	skin_compact cs;
+	run_ctx c = { .t = { b->lbs12, b->dq8, b->flip_f }, .pos = out->pos, .nrm = out->nrm, .nrm16 = out->nrm16 };
 	if (co)
-		cs = *co;
+		c.cs = *co;
 	else
-		fs = *fl;
-	float *pos = out->pos, *nrm = out->nrm;
-	int16_t *nrm16 = out->nrm16;
-	for (int v = first; v < end; v += NEON_LANES) {
-		batch4 bt;
-		v3x4 p, n;
-		if (co)
-			load_compact(&cs, v, &bt);
-		else
-			load_float(&fs, v, &bt);
-		if (dual)
-			dqbs4(&t, &bt, &p, &n);
-		else
-			lbs4(&t, &bt, &p, &n);
-		int valid = end - v < NEON_LANES ? end - v : NEON_LANES;
-		store_xyz4(pos + 3 * v, p, valid);
-		if (co)
-			store_snorm4(nrm16 + 3 * v, n, valid);
-		else
-			store_xyz4(nrm + 3 * v, n, valid);
-	}
+		c.fs = *fl;
+	int v = first;
+	for (; end - v >= NEON_LANES; v += NEON_LANES)
+		step4(dual, co != NULL, &c, v, NEON_LANES);
+	if (v < end)
+		step4(dual, co != NULL, &c, v, end - v);
 }
 
 void skin_lbs_neon(const skin_soa *in, const skin_bones *b, int first, int end, const skin_out *out)
