@@ -100,9 +100,10 @@ typedef struct skin_bones {
 	 * product the scalar kernel uses, so the SIMD kernels look it up per
 	 * vertex and bone (as they load the bone's row) instead of
 	 * recomputing it. flip_f (float) holds the sign bit, -0.0f (flip) or
-	 * 0.0f, which the float kernels xor into the row or the weight; flip_x
-	 * (fixed point) 1 (flip) or 0. Only the SIMD kernels read them, so
-	 * scalar boards neither store nor compute them. */
+	 * 0.0f, which the AVX2 float kernels xor into the row or the weight;
+	 * flip_x (fixed point) 1 (flip) or 0. The NEON kernels read them
+	 * through dq8_at and fdq_at (below). Only the SIMD boards store and
+	 * compute them. */
 	float flip_f[SKP_MAX_BONES + 1][SKP_MAX_BONES + 1];
 	uint8_t flip_x[SKP_MAX_BONES + 1][SKP_MAX_BONES + 1];
 #endif
@@ -130,6 +131,10 @@ typedef struct skin_bones {
 	 * bone takes in a blend around pivot (flip_x picking [0] or [1]),
 	 * one load per influence instead of the flip's and the address's */
 	uint16_t fdq_at[SKP_MAX_BONES + 1][SKP_MAX_BONES + 1];
+	/* the same for the float DQBS kernels (plain and compact streams):
+	 * dq8 and its negation, and the byte offset of the row flip_f picks */
+	float dq8_signed[SKP_MAX_BONES + 1][2][8];
+	uint16_t dq8_at[SKP_MAX_BONES + 1][SKP_MAX_BONES + 1];
 	int simd_ok;
 #endif
 } skin_bones;
@@ -137,7 +142,7 @@ typedef struct skin_bones {
 void skin_bones_compute(skin_bones *out, const skel *s, const skel_pose *bind,
 			const skel_pose *pose);
 
-/* Recomputes the kernels' lookup tables (flip_x, fdq_halves, fdq_signed and fdq_at from fdq,
+/* Recomputes the kernels' lookup tables (flip_x, fdq_halves, fdq_signed, fdq_at from fdq,
  * flip_f from dq), for a caller that set fdq or dq itself. */
 void skin_bones_derive(skin_bones *out);
 

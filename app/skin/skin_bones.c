@@ -1,5 +1,7 @@
 #include "skin.h"
 
+#include <math.h>
+
 #include "fixed_convert.h"
 
 static void flatten(skin_bones *out, int b)
@@ -97,6 +99,7 @@ static void compute_halves(skin_bones *out)
 #endif
 
 #ifdef SKP_SIMD_NEON
+/* The NEON kernels' rows: each bone's fdq and dq8 and their negations. */
 static void compute_signed(skin_bones *out)
 {
 	int slots[SKP_MAX_BONES + 1], n = used_slots(out, slots);
@@ -114,19 +117,27 @@ static void compute_signed(skin_bones *out)
 		fx_dq negated = { { neg[0], neg[1], neg[2], neg[3] }, { neg[4], neg[5], neg[6], neg[7] } };
 		out->fdq_signed[b][0] = out->fdq[b];
 		out->fdq_signed[b][1] = negated;
+		for (int i = 0; i < 8; i++) {
+			out->dq8_signed[b][0][i] = out->dq8[b][i];
+			out->dq8_signed[b][1][i] = -out->dq8[b][i];
+		}
 	}
 }
 
-/* After compute_flips: fdq_at from flip_x. */
+/* After compute_flips: fdq_at from flip_x, dq8_at from flip_f. */
 static void compute_row_offsets(skin_bones *out)
 {
 	_Static_assert(sizeof out->fdq_signed <= UINT16_MAX, "fdq_at offsets fit 16 bits");
+	_Static_assert(sizeof out->dq8_signed <= UINT16_MAX, "dq8_at offsets fit 16 bits");
 	int slots[SKP_MAX_BONES + 1], n = used_slots(out, slots);
 	for (int a = 0; a < n; a++)
 		for (int c = 0; c < n; c++) {
 			int p = slots[a], b = slots[c];
+			size_t flip_f = signbit(out->flip_f[p][b]) != 0;
 			out->fdq_at[p][b] = (uint16_t)(sizeof out->fdq_signed[0] * (size_t)b +
 						       sizeof out->fdq_signed[0][0] * out->flip_x[p][b]);
+			out->dq8_at[p][b] = (uint16_t)(sizeof out->dq8_signed[0] * (size_t)b +
+						       sizeof out->dq8_signed[0][0] * flip_f);
 		}
 }
 #endif

@@ -169,8 +169,8 @@ NEON_INLINE v3x4 apply_rows(const float32x4_t m[12], v3x4 p, int with_translatio
  * pointer a reload, as the stores might have changed them. */
 typedef struct tables {
 	const float (*lbs12)[12];
-	const float (*dq8)[8];
-	const float (*flip)[SKP_MAX_BONES + 1];
+	const char *dq8_rows;                     /* skin_bones.dq8_signed */
+	const uint16_t (*dq8_at)[SKP_MAX_BONES + 1];
 } tables;
 
 /* sum over the influences of w[k] times the 4 floats at row[k] + at; the
@@ -222,29 +222,21 @@ typedef struct dq4 {
 
 /* Weighted sum with each influence's sign flipped when its real part
  * points away from the pivot (influence 0, the largest weight): the flip
- * per bone pair is looked up (flip_f, the scalar kernel's own test) and
- * xored into the vertex's weights, three lane loads per vertex. */
+ * per bone pair (flip_f, the scalar kernel's own test) picks the bone's
+ * negated row, one 16-bit offset per influence (dq8_at). */
 NEON_INLINE dq4 dq_blend4(const tables *t, const batch4 *bt)
 {
 	float32x4_t w[NEON_LANES], re[NEON_LANES], du[NEON_LANES];
 	weights_per_vertex(bt, w);
 #pragma GCC unroll 12
 	for (int j = 0; j < NEON_LANES; j++) {
-		int bone[SKP_MAX_INFLUENCES];
+		const uint16_t *at = t->dq8_at[batch_bone(bt, 0, j)];
 		const float *row[SKP_MAX_INFLUENCES];
 #pragma GCC unroll 12
-		for (int k = 0; k < SKP_MAX_INFLUENCES; k++) {
-			bone[k] = batch_bone(bt, k, j);
-			row[k] = t->dq8[bone[k]];
-		}
-		const float *flip = t->flip[bone[0]];
-		float32x4_t sign = vdupq_n_f32(0.0f);
-		sign = vld1q_lane_f32(flip + bone[1], sign, 1);
-		sign = vld1q_lane_f32(flip + bone[2], sign, 2);
-		sign = vld1q_lane_f32(flip + bone[3], sign, 3);
-		float32x4_t ws = vreinterpretq_f32_u32(veorq_u32(vreinterpretq_u32_f32(w[j]), vreinterpretq_u32_f32(sign)));
-		re[j] = blend_row(row, 0, ws);
-		du[j] = blend_row(row, 4, ws);
+		for (int k = 0; k < SKP_MAX_INFLUENCES; k++)
+			row[k] = (const float *)(t->dq8_rows + at[batch_bone(bt, k, j)]);
+		re[j] = blend_row(row, 0, w[j]);
+		du[j] = blend_row(row, 4, w[j]);
 	}
 	transpose4(re);
 	transpose4(du);
@@ -336,7 +328,7 @@ NEON_INLINE void step4(int dual, int compact, const run_ctx *c, int v, int valid
 NEON_INLINE void run4(int dual, const skin_soa *fl, const skin_compact *co, const skin_bones *b, int first, int end,
 		      const skin_out *out)
 {
-	run_ctx c = { .t = { b->lbs12, b->dq8, b->flip_f }, .pos = out->pos, .nrm = out->nrm, .nrm16 = out->nrm16 };
+	run_ctx c = { .t = { b->lbs12, (const char *)b->dq8_signed, b->dq8_at }, .pos = out->pos, .nrm = out->nrm, .nrm16 = out->nrm16 };
 	if (co)
 		c.cs = *co;
 	else
