@@ -142,8 +142,9 @@ typedef struct skin_bones {
 void skin_bones_compute(skin_bones *out, const skel *s, const skel_pose *bind,
 			const skel_pose *pose);
 
-/* Recomputes the kernels' lookup tables (flip_x, fdq_halves, fdq_signed, fdq_at from fdq,
- * flip_f from dq), for a caller that set fdq or dq itself. */
+/* Recomputes the SIMD kernels' tables (flip_x, fdq_halves, fdq_signed and
+ * fdq_at from fdq; flip_f, dq8_signed and dq8_at from dq and dq8), for a
+ * caller that set fdq or dq itself. */
 void skin_bones_derive(skin_bones *out);
 
 /* Where a kernel writes: float kernels xyz triples in pos/nrm, the

@@ -207,7 +207,8 @@ NEON_INLINE void move4(const int32x4_t d[8], const int32x4_t *dual, const int32x
 		int j = (i + 1) % 3, k = (i + 2) % 3;
 		/* a point's sum starts at dv 2^30: rounded by 30 bits, that is
 		 * round(sum / 2^30) + dv exactly, saturated as fx_sat32 would
-		 * (|sum| < 2^61.8 and |dv 2^30| < 2^61: no int64 overflow) */
+		 * (|sum| < 2^62.3 for norms below 2^61 and |dv 2^30| <= 2^61:
+		 * no int64 overflow) */
 		s64x4 sum;
 		if (dual) {
 			s64x4 start = { vshll_n_s32(vget_low_s32(dual[i + 1]), 30), vshll_high_n_s32(dual[i + 1], 30) };
@@ -245,10 +246,10 @@ NEON_INLINE void load3(const int32_t *const src[3], int v, int32x4_t out[3])
 /* The kernel's loop over whole steps, from v until a step has a norm out
  * of norms4's range or fewer than FIXED_STEP vertices are left; returns
  * where it stopped. Apart, without calls, so that nothing it keeps in
- * registers has to be saved around the scalar kernel's call (AArch64 calls
- * keep only the low halves of v8-v15): with the call inside, the loop
- * made 70 stack loads and stores per 4 vertices (gcc 12). noclone keeps the name
- * that tests/model_cycles.sh looks for. */
+ * registers has to be saved around the scalar kernel's call (AArch64
+ * calls keep only the low halves of v8-v15): with the call inside, the
+ * loop made 70 stack loads and stores per 4 vertices (GCC 12). noclone
+ * keeps the name that tests/model_cycles.sh looks for. */
 __attribute__((noinline, noclone))
 static int fixed_neon_run(const skin_soa *in, const skin_bones *b, int v, int end, const skin_out *out)
 {

@@ -322,13 +322,13 @@ NEON_INLINE void step4(int dual, int compact, const run_ctx *c, int v, int valid
 
 /* Steps of 4 vertices over either stream form (the other pointer NULL),
  * LBS or (dual 1) DQBS; inlined into each kernel so the choices fold. The
- * last 1-3 vertices take a step of their own after the loop: with its
- * partial stores (a memcpy call) inside, the loop kept values on the
- * stack across the call. */
+ * last 1-3 vertices take a step of their own after the loop, so that the
+ * loop holds whole steps only, without the partial stores' memcpy call. */
 NEON_INLINE void run4(int dual, const skin_soa *fl, const skin_compact *co, const skin_bones *b, int first, int end,
 		      const skin_out *out)
 {
-	run_ctx c = { .t = { b->lbs12, (const char *)b->dq8_signed, b->dq8_at }, .pos = out->pos, .nrm = out->nrm, .nrm16 = out->nrm16 };
+	run_ctx c = { .t = { b->lbs12, (const char *)b->dq8_signed, b->dq8_at },
+		      .pos = out->pos, .nrm = out->nrm, .nrm16 = out->nrm16 };
 	if (co)
 		c.cs = *co;
 	else
