@@ -80,7 +80,7 @@ skp_status skin_soa_load(skin_soa *s, const mesh *m, const skin_weights *w, int 
 /* See skin_bones.simd_ok. */
 #define SKIN_SIMD_DUAL_LIMIT ((int32_t)1 << 26)
 
-/* The SIMD boards' kernels look the DQBS sign fix up (see flip_f). */
+/* The SIMD boards' kernels look the DQBS sign fix up (see skin_bones). */
 #if defined(SKP_SIMD_AVX2) || defined(SKP_SIMD_NEON)
 #define SKIN_SIMD_FLIPS 1
 #endif
@@ -97,17 +97,18 @@ typedef struct skin_bones {
 #ifdef SKIN_SIMD_FLIPS
 	/* The DQBS sign fix depends only on the pair (pivot bone, bone): the
 	 * decision for every pair, computed once per frame with the dot
-	 * product the scalar kernel uses, so the SIMD kernels look it up per
-	 * vertex and bone (as they load the bone's row) instead of
-	 * recomputing it. flip_f (float) holds the sign bit, -0.0f (flip) or
-	 * 0.0f, which the AVX2 float kernels xor into the row or the weight;
-	 * flip_x (fixed point) 1 (flip) or 0. The NEON kernels read them
-	 * through dq8_at and fdq_at (below). Only the SIMD boards store and
-	 * compute them. */
-	float flip_f[SKP_MAX_BONES + 1][SKP_MAX_BONES + 1];
-	uint8_t flip_x[SKP_MAX_BONES + 1][SKP_MAX_BONES + 1];
+	 * product the scalar kernel uses (float for the float kernels, the
+	 * exact int64 one for the fixed-point kernels), so the SIMD kernels
+	 * look it up per vertex and bone (as they load the bone's row) instead
+	 * of recomputing it. AVX2 keeps the decisions (flip_f, flip_x), NEON
+	 * the row offsets they lead to (dq8_at, fdq_at). */
 #endif
 #ifdef SKP_SIMD_AVX2
+	/* flip_f holds the sign bit, -0.0f (flip) or 0.0f, which the float
+	 * kernels xor into the row as they load it; flip_x 1 (flip) or 0,
+	 * which picks fdq_halves[bone][flip_x]. */
+	float flip_f[SKP_MAX_BONES + 1][SKP_MAX_BONES + 1];
+	uint8_t flip_x[SKP_MAX_BONES + 1][SKP_MAX_BONES + 1];
 	/* fdq ([0]) and its negation ([1]) with every component c split as
 	 * c = hi * 2^16 + lo, lo and hi signed 16-bit halves, laid out as lo
 	 * of components 0-3, hi of 0-3, lo of 4-7, hi of 4-7: a 16-bit unpack
@@ -121,20 +122,18 @@ typedef struct skin_bones {
 	int simd_ok;
 #endif
 #ifdef SKP_SIMD_NEON
-	/* fdq ([0]) and its negation ([1]): the NEON fixed kernel's sign fix
-	 * picks the row (see fdq_at) instead of negating the weight. simd_ok
-	 * is 0 when a dual component saturated to INT32_MIN (a translation of
-	 * 65536 units or more), whose negation int32 cannot hold: the kernel
-	 * takes the scalar path for the frame. */
-	fx_dq fdq_signed[SKP_MAX_BONES + 1][2];
-	/* fdq_at[pivot][bone]: the byte offset in fdq_signed of the row that
-	 * bone takes in a blend around pivot (flip_x picking [0] or [1]),
-	 * one load per influence instead of the flip's and the address's */
-	uint16_t fdq_at[SKP_MAX_BONES + 1][SKP_MAX_BONES + 1];
-	/* the same for the float DQBS kernels (plain and compact streams):
-	 * dq8 and its negation, and the byte offset of the row flip_f picks */
+	/* dq8 and fdq ([0]) with their negations ([1]), and at [pivot][bone]
+	 * the byte offset of the row bone takes in a blend around pivot: the
+	 * sign fix picks a row instead of negating the weight, one load per
+	 * influence (on AVX2 the xor measured faster: there the row's load
+	 * would wait on the offset's). simd_ok is 0 when a dual component of
+	 * fdq saturated to INT32_MIN (a translation of 65536 units or more),
+	 * whose negation int32 cannot hold: the fixed kernel then takes the
+	 * scalar path for the frame. */
 	float dq8_signed[SKP_MAX_BONES + 1][2][8];
+	fx_dq fdq_signed[SKP_MAX_BONES + 1][2];
 	uint16_t dq8_at[SKP_MAX_BONES + 1][SKP_MAX_BONES + 1];
+	uint16_t fdq_at[SKP_MAX_BONES + 1][SKP_MAX_BONES + 1];
 	int simd_ok;
 #endif
 } skin_bones;
@@ -142,9 +141,8 @@ typedef struct skin_bones {
 void skin_bones_compute(skin_bones *out, const skel *s, const skel_pose *bind,
 			const skel_pose *pose);
 
-/* Recomputes the SIMD kernels' tables (flip_x, fdq_halves, fdq_signed and
- * fdq_at from fdq; flip_f, dq8_signed and dq8_at from dq and dq8), for a
- * caller that set fdq or dq itself. */
+/* Recomputes the SIMD kernels' tables (the sign fix's and the rows' from
+ * dq, dq8 and fdq), for a caller that set fdq or dq itself. */
 void skin_bones_derive(skin_bones *out);
 
 /* Where a kernel writes: float kernels xyz triples in pos/nrm, the

@@ -1,7 +1,5 @@
 #include "skin.h"
 
-#include <math.h>
-
 #include "fixed_convert.h"
 
 static void flatten(skin_bones *out, int b)
@@ -52,6 +50,17 @@ static void fdq_components(const fx_dq *d, int64_t c[8])
 		c[i] = src[i];
 }
 
+#ifdef SKP_SIMD_NEON
+/* The byte offset of bone's row, or of its negation (flip), in a table of
+ * pairs of rows pair_bytes long. */
+static uint16_t row_offset(size_t pair_bytes, int bone, int flip)
+{
+	return (uint16_t)(pair_bytes * (size_t)bone + pair_bytes / 2 * (size_t)flip);
+}
+#endif
+
+/* The sign fix for every pair of used slots, as the board's kernels read
+ * it (see skin_bones). */
 static void compute_flips(skin_bones *out)
 {
 	int slots[SKP_MAX_BONES + 1], n = used_slots(out, slots);
@@ -59,8 +68,17 @@ static void compute_flips(skin_bones *out)
 		int p = slots[a];
 		for (int c = 0; c < n; c++) {
 			int k = slots[c];
-			out->flip_x[p][k] = fx_quat_dot(out->fdq[k].real, out->fdq[p].real) < 0;
-			out->flip_f[p][k] = quat_dot(out->dq[k].real, out->dq[p].real) < 0.0f ? -0.0f : 0.0f;
+			int flip_f = quat_dot(out->dq[k].real, out->dq[p].real) < 0.0f;
+			int flip_x = fx_quat_dot(out->fdq[k].real, out->fdq[p].real) < 0;
+#ifdef SKP_SIMD_AVX2
+			out->flip_f[p][k] = flip_f ? -0.0f : 0.0f;
+			out->flip_x[p][k] = (uint8_t)flip_x;
+#else
+			_Static_assert(sizeof out->dq8_signed <= UINT16_MAX && sizeof out->fdq_signed <= UINT16_MAX,
+				       "row offsets fit 16 bits");
+			out->dq8_at[p][k] = row_offset(sizeof out->dq8_signed[0], k, flip_f);
+			out->fdq_at[p][k] = row_offset(sizeof out->fdq_signed[0], k, flip_x);
+#endif
 		}
 	}
 }
@@ -124,22 +142,6 @@ static void compute_signed(skin_bones *out)
 	}
 }
 
-/* After compute_flips: fdq_at from flip_x, dq8_at from flip_f. */
-static void compute_row_offsets(skin_bones *out)
-{
-	_Static_assert(sizeof out->fdq_signed <= UINT16_MAX, "fdq_at offsets fit 16 bits");
-	_Static_assert(sizeof out->dq8_signed <= UINT16_MAX, "dq8_at offsets fit 16 bits");
-	int slots[SKP_MAX_BONES + 1], n = used_slots(out, slots);
-	for (int a = 0; a < n; a++)
-		for (int c = 0; c < n; c++) {
-			int p = slots[a], b = slots[c];
-			size_t flip_f = signbit(out->flip_f[p][b]) != 0;
-			out->fdq_at[p][b] = (uint16_t)(sizeof out->fdq_signed[0] * (size_t)b +
-						       sizeof out->fdq_signed[0][0] * out->flip_x[p][b]);
-			out->dq8_at[p][b] = (uint16_t)(sizeof out->dq8_signed[0] * (size_t)b +
-						       sizeof out->dq8_signed[0][0] * flip_f);
-		}
-}
 #endif
 
 void skin_bones_compute(skin_bones *out, const skel *s, const skel_pose *bind,
@@ -166,6 +168,5 @@ void skin_bones_derive(skin_bones *out)
 #endif
 #ifdef SKP_SIMD_NEON
 	compute_signed(out);
-	compute_row_offsets(out);
 #endif
 }
