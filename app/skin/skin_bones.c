@@ -63,6 +63,10 @@ static uint16_t row_offset(size_t pair_bytes, int bone, int flip)
  * it (see skin_bones). */
 static void compute_flips(skin_bones *out)
 {
+#ifdef SKP_SIMD_NEON
+	_Static_assert(sizeof out->dq8_signed <= UINT16_MAX && sizeof out->fdq_signed <= UINT16_MAX,
+		       "row offsets fit 16 bits");
+#endif
 	int slots[SKP_MAX_BONES + 1], n = used_slots(out, slots);
 	for (int a = 0; a < n; a++) {
 		int p = slots[a];
@@ -73,9 +77,8 @@ static void compute_flips(skin_bones *out)
 #ifdef SKP_SIMD_AVX2
 			out->flip_f[p][k] = flip_f ? -0.0f : 0.0f;
 			out->flip_x[p][k] = (uint8_t)flip_x;
-#else
-			_Static_assert(sizeof out->dq8_signed <= UINT16_MAX && sizeof out->fdq_signed <= UINT16_MAX,
-				       "row offsets fit 16 bits");
+#endif
+#ifdef SKP_SIMD_NEON
 			out->dq8_at[p][k] = row_offset(sizeof out->dq8_signed[0], k, flip_f);
 			out->fdq_at[p][k] = row_offset(sizeof out->fdq_signed[0], k, flip_x);
 #endif
@@ -141,7 +144,6 @@ static void compute_signed(skin_bones *out)
 		}
 	}
 }
-
 #endif
 
 void skin_bones_compute(skin_bones *out, const skel *s, const skel_pose *bind,

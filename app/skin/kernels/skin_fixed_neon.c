@@ -282,8 +282,8 @@ static int fixed_neon_run(const skin_soa *in, const skin_bones *b, int v, int en
 #pragma GCC unroll 12
 			for (int i = 0; i < 3; i++)
 				no[i] = vrshrq_n_s32(no[i], 14); /* Q30 to Q16 */
-			vst3q_s32(fpos + 3 * at, (int32x4x3_t){ { po[0], po[1], po[2] } });
-			vst3q_s32(fnrm + 3 * at, (int32x4x3_t){ { no[0], no[1], no[2] } });
+			skin_store_xyz4(fpos + 3 * at, po[0], po[1], po[2], NEON_LANES);
+			skin_store_xyz4(fnrm + 3 * at, no[0], no[1], no[2], NEON_LANES);
 		}
 	}
 	return v;

@@ -221,9 +221,10 @@ typedef struct dq4 {
 } dq4;
 
 /* Weighted sum with each influence's sign flipped when its real part
- * points away from the pivot (influence 0, the largest weight): the flip
- * per bone pair (flip_f, the scalar kernel's own test) picks the bone's
- * negated row, one 16-bit offset per influence (dq8_at). */
+ * points away from the pivot (influence 0, the largest weight): the
+ * decision per bone pair (the scalar kernel's own test, made once a frame)
+ * is the offset of the bone's row or of its negated copy (dq8_at), one
+ * 16-bit load per influence. */
 NEON_INLINE dq4 dq_blend4(const tables *t, const batch4 *bt)
 {
 	float32x4_t w[NEON_LANES], re[NEON_LANES], du[NEON_LANES];
