@@ -100,15 +100,18 @@ typedef struct skin_bones {
 	 * product the scalar kernel uses (float for the float kernels, the
 	 * exact int64 one for the fixed-point kernels), so the SIMD kernels
 	 * look it up per vertex and bone (as they load the bone's row) instead
-	 * of recomputing it. AVX2 keeps the decisions (flip_f, flip_x), NEON
-	 * the row offsets they lead to (dq8_at, fdq_at). */
+	 * of recomputing it: as the sign bit the float kernels xor into a row
+	 * (flip_f, AVX2) or as the byte offset of the row to load, the bone's
+	 * or its negation (the *_at tables). */
 #endif
 #ifdef SKP_SIMD_AVX2
 	/* flip_f holds the sign bit, -0.0f (flip) or 0.0f, which the float
-	 * kernels xor into the row as they load it; flip_x 1 (flip) or 0,
-	 * which picks fdq_halves[bone][flip_x]. */
+	 * kernels xor into the row as they load it (a row picked by offset
+	 * measured slower here: its load waits on the offset's); fdq_at
+	 * [pivot][bone] the byte offset in fdq_halves of the row bone takes
+	 * in a blend around pivot, [bone][0] or [bone][1]. */
 	float flip_f[SKP_MAX_BONES + 1][SKP_MAX_BONES + 1];
-	uint8_t flip_x[SKP_MAX_BONES + 1][SKP_MAX_BONES + 1];
+	uint16_t fdq_at[SKP_MAX_BONES + 1][SKP_MAX_BONES + 1];
 	/* fdq ([0]) and its negation ([1]) with every component c split as
 	 * c = hi * 2^16 + lo, lo and hi signed 16-bit halves, laid out as lo
 	 * of components 0-3, hi of 0-3, lo of 4-7, hi of 4-7: a 16-bit unpack

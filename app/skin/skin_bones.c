@@ -50,19 +50,20 @@ static void fdq_components(const fx_dq *d, int64_t c[8])
 		c[i] = src[i];
 }
 
-#ifdef SKP_SIMD_NEON
 /* The byte offset of bone's row, or of its negation (flip), in a table of
  * pairs of rows pair_bytes long. */
 static uint16_t row_offset(size_t pair_bytes, int bone, int flip)
 {
 	return (uint16_t)(pair_bytes * (size_t)bone + pair_bytes / 2 * (size_t)flip);
 }
-#endif
 
 /* The sign fix for every pair of used slots, as the board's kernels read
  * it (see skin_bones). */
 static void compute_flips(skin_bones *out)
 {
+#ifdef SKP_SIMD_AVX2
+	_Static_assert(sizeof out->fdq_halves <= UINT16_MAX, "row offsets fit 16 bits");
+#endif
 #ifdef SKP_SIMD_NEON
 	_Static_assert(sizeof out->dq8_signed <= UINT16_MAX && sizeof out->fdq_signed <= UINT16_MAX,
 		       "row offsets fit 16 bits");
@@ -76,7 +77,7 @@ static void compute_flips(skin_bones *out)
 			int flip_x = fx_quat_dot(out->fdq[k].real, out->fdq[p].real) < 0;
 #ifdef SKP_SIMD_AVX2
 			out->flip_f[p][k] = flip_f ? -0.0f : 0.0f;
-			out->flip_x[p][k] = (uint8_t)flip_x;
+			out->fdq_at[p][k] = row_offset(sizeof out->fdq_halves[0], k, flip_x);
 #endif
 #ifdef SKP_SIMD_NEON
 			out->dq8_at[p][k] = row_offset(sizeof out->dq8_signed[0], k, flip_f);

@@ -79,7 +79,7 @@ static inline __attribute__((always_inline)) __m256i blend_vertex(const int16_t 
 }
 
 /* The blend of one batch from its weights (see blend_weights), each
- * bone's row negated where the sign fix (flip_x, per bone pair) says: the
+ * bone's row negated where the sign fix says (fdq_at, per bone pair): the
  * same integers as the scalar kernel's negated weight, as w (-c) = (-w) c,
  * looked up per vertex where gathering the flips into lanes cost more. */
 static inline __attribute__((always_inline)) void blend(const skin_soa *in, const skin_bones *b, int v,
@@ -91,12 +91,11 @@ static inline __attribute__((always_inline)) void blend(const skin_soa *in, cons
 	for (int j = 0; j < SKIN_LANES; j++) {
 		const int16_t *row[SKP_MAX_INFLUENCES];
 		int pivot = in->bone[0][v + j];
+		const uint16_t *at = b->fdq_at[pivot];
 		row[0] = b->fdq_halves[pivot][0];
 #pragma GCC unroll 8
-		for (int k = 1; k < SKP_MAX_INFLUENCES; k++) {
-			int bone = in->bone[k][v + j];
-			row[k] = b->fdq_halves[bone][b->flip_x[pivot][bone]];
-		}
+		for (int k = 1; k < SKP_MAX_INFLUENCES; k++)
+			row[k] = (const int16_t *)((const char *)b->fdq_halves + at[in->bone[k][v + j]]);
 		r[j] = _mm256_castsi256_ps(blend_vertex(row, &b->fdq[in->bone[0][v + j]], w01[j], w23[j]));
 	}
 	skin_transpose8(r);
