@@ -78,8 +78,9 @@ PC_input_gpio          := libgpiod
 PC_input_keyboard      :=
 PC_input_script        :=
 PC_platform            := libpng
-# The host tool's importer (app/import): the Open Asset Import Library.
-PC_import              := assimp
+# The host tool's importer (app/import): the Open Asset Import Library, and
+# json-c for MakeHuman's rig files.
+PC_import              := assimp json-c
 # What platform code may include from app/: base, and the modules of the
 # port headers it implements (image: blockdev.h; kiosk: the button port,
 # input_port.h; render: the GL entry points, gl_api.h).

@@ -18,7 +18,8 @@ FUZZ_BIN     := $(addprefix $(FUZZ_OUT)/fuzz_,$(FUZZ_NAMES))
 # only (no SIMD defines), no GL.
 FUZZ_MODULES := $(filter-out render,$(CORE_MODULES))
 FUZZ_CORE    := $(foreach m,$(FUZZ_MODULES),$(filter-out app/skin/kernels/%,$(SRC_$(m)))) \
-                $(KERNELS_scalar:%=app/skin/kernels/%.c) app/import/rig_map_file.c
+                $(KERNELS_scalar:%=app/skin/kernels/%.c) app/import/rig_map_file.c \
+                $(addprefix app/import/,rig_json.c rig_makehuman.c rig_scene.c)
 FUZZ_SAN     := -fsanitize=address,undefined -fno-sanitize-recover=undefined
 FUZZ_CFLAGS  := -std=c11 -g -O1 -Wall -Wextra -Werror -Wno-unused-command-line-argument \
                 -fsanitize=fuzzer-no-link $(FUZZ_SAN) $(sort $(foreach m,$(FUZZ_MODULES),$(call mod_inc,$(m)))) \
@@ -30,7 +31,7 @@ $(FUZZ_OUT)/%.o: %.c
 $(FUZZ_OUT)/libskp.a: $(FUZZ_CORE:%.c=$(FUZZ_OUT)/%.o)
 	rm -f $@ && ar rcs $@ $^
 $(FUZZ_OUT)/fuzz_%: $(FUZZ_OUT)/tests/fuzz/fuzz_%.o $(FUZZ_OUT)/tests/fuzz/fuzz_harness.o $(FUZZ_OUT)/libskp.a
-	$(FUZZ_CC) -fsanitize=fuzzer $(FUZZ_SAN) -o $@ $^ -lm
+	$(FUZZ_CC) -fsanitize=fuzzer $(FUZZ_SAN) -o $@ $^ $(shell $(PKG_CONFIG) --libs json-c) -lm
 
 # keep the targets' objects (make would delete them as intermediates)
 .SECONDARY: $(FUZZ_SRC:%.c=$(FUZZ_OUT)/%.o)
@@ -46,6 +47,7 @@ FUZZ_SEEDS_ini := board/host board/rpi4
 FUZZ_SEEDS_board_config := board/host board/rpi4
 FUZZ_SEEDS_image := tests/fuzz/seeds/image
 FUZZ_SEEDS_joint_map := tests/fuzz/seeds/joint_map
+FUZZ_SEEDS_makehuman := tests/fuzz/seeds/makehuman
 
 # Each target runs SECONDS on a corpus kept in the build directory. A crash
 # leaves its input in $(FUZZ_OUT)/crash/<target>/: fix the parser, copy the

@@ -22,7 +22,7 @@ void bind_args_init(bind_args *a)
 	a->balance = -1;
 }
 
-enum { OPT_GROUP = BIND_OPT_FIRST, OPT_FIT, OPT_NO_FIT, OPT_BIND_POSE, OPT_WEIGHTS, OPT_JOINT_MAP, OPT_BALANCE };
+enum { OPT_GROUP = BIND_OPT_FIRST, OPT_FIT, OPT_NO_FIT, OPT_BIND_POSE, OPT_WEIGHTS, OPT_JOINT_MAP, OPT_RIG, OPT_BALANCE };
 
 const cli_opt bind_opts[] = {
 	{ "group", 0, "NAME", OPT_GROUP, "bind only the OBJ group/object or glTF mesh NAME (default: the body)" },
@@ -31,6 +31,7 @@ const cli_opt bind_opts[] = {
 	{ "bind-pose", 0, "P.amc[:F]", OPT_BIND_POSE, "bind in frame F of P, or 'rest' (default: the mesh's own pose)" },
 	{ "weights", 0, "W.csv|mesh", OPT_WEIGHTS, "read the weights, or keep a rigged mesh's own (default: computed)" },
 	{ "joint-map", 0, "FILE", OPT_JOINT_MAP, "a rigged mesh's joints onto skeleton bones (JOINT = BONE lines)" },
+	{ "rig", 0, "FILE.mhskel", OPT_RIG, "the OBJ's MakeHuman skeleton, with the weights file it names" },
 	{ "balance", 0, "on|off", OPT_BALANCE, "volume-balance computed weights (default: on for the generated body)" },
 	{ NULL, 0, NULL, 0, NULL },
 };
@@ -72,6 +73,7 @@ int bind_args_take(bind_args *a, const char *prog, int id, const char *value)
 		a->weights_path = a->weights_mesh ? NULL : value;
 		return 0;
 	case OPT_JOINT_MAP: a->joint_map = value; return 0;
+	case OPT_RIG: a->rig = value; return 0;
 	case OPT_BALANCE:
 		if ((k = cli_choice(prog, "balance", value, onoff, 2)) < 0)
 			return -1;
@@ -168,8 +170,8 @@ static int generate_body(const bind_args *a, const char *asf, bound_body *body)
 {
 	manq_work *work = &cli_scratch_area()->manq;
 	skp_error err;
-	if (a->pose_path || a->fit || a->group || a->weights_path || a->weights_mesh || a->joint_map) {
-		fprintf(stderr, "%s: --bind-pose, --fit, --group, --weights and --joint-map need a mesh\n", asf);
+	if (a->pose_path || a->fit || a->group || a->weights_path || a->weights_mesh || a->joint_map || a->rig) {
+		fprintf(stderr, "%s: --bind-pose, --fit, --group, --weights, --joint-map and --rig need a mesh\n", asf);
 		return -1;
 	}
 	if (manq_build(&body->skel, 0, work, &body->mesh, &err) != SKP_OK) {
@@ -202,16 +204,17 @@ int bind_args_load(const bind_args *a, const char *asf, const char *obj, bound_b
 		return -1;
 	if (!obj)
 		return generate_body(a, asf, body) < 0 ? -1 : bind_args_auto_weights(a, 1, asf, body);
-	if (bind_args_is_interchange(obj)) {
+	if (bind_args_is_interchange(obj) || a->rig) {
 		if (mesh_importer)
 			return mesh_importer(a, obj, body);
 		fprintf(stderr, "%s: this program reads OBJ meshes and packed images: pack the rigged mesh into an "
-			"image first (skintool pack SKELETON MOTION --mesh %s -o SHOW.skn), then play that\n", obj, obj);
+			"image first (skintool pack SKELETON MOTION --mesh %s%s%s -o SHOW.skn), then play that\n", obj,
+			obj, a->rig ? " --rig " : "", a->rig ? a->rig : "");
 		return -1;
 	}
 	if (a->weights_mesh || a->joint_map) {
 		fprintf(stderr, "%s: an OBJ has no joints or weights of its own: --weights mesh and --joint-map need "
-			"a rigged mesh (glTF 2.0, FBX, COLLADA)\n", obj);
+			"a rigged mesh (glTF 2.0, FBX, COLLADA) or the OBJ's MakeHuman rig (--rig FILE.mhskel)\n", obj);
 		return -1;
 	}
 	if (cli_pick_mesh(obj, a->group, &body->mesh) < 0)
@@ -223,8 +226,12 @@ int bind_args_load(const bind_args *a, const char *asf, const char *obj, bound_b
 	}
 	if (cli_place_mesh(a, obj, body) < 0)
 		return -1;
+	return bind_args_weights(a, cli_obj_is_generated(obj), obj, body);
+}
+
+int bind_args_weights(const bind_args *a, int generated, const char *name, bound_body *body)
+{
 	if (a->weights_path)
-		return cli_load_weights(a->weights_path, &body->skel, body->mesh.vert_count,
-					 &body->weights);
-	return bind_args_auto_weights(a, cli_obj_is_generated(obj), obj, body);
+		return cli_load_weights(a->weights_path, &body->skel, body->mesh.vert_count, &body->weights);
+	return bind_args_auto_weights(a, generated, name, body);
 }

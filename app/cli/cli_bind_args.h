@@ -10,6 +10,8 @@
  *   --weights W.csv         read the weights instead of computing them (bind.h);
  *   --weights mesh          a rigged mesh's own (glTF, FBX, COLLADA: the importer)
  *   --joint-map FILE        a rigged mesh's joints -> skeleton bones (rig_map_file.h)
+ *   --rig FILE.mhskel       an OBJ's MakeHuman skeleton and the weights file it
+ *                           names (rig_makehuman.h): the OBJ binds as a rigged mesh
  *   --balance on|off        volume balancing of computed weights (bind_balance.h);
  *                           default on for the generated body (also as the OBJ
  *                           `skintool mannequin` writes), off for a mesh of
@@ -37,6 +39,7 @@ typedef struct bind_args {
 	const char *weights_path;   /* NULL: automatic weights */
 	int weights_mesh;           /* --weights mesh: a rigged mesh's own */
 	const char *joint_map;      /* --joint-map FILE */
+	const char *rig;            /* --rig FILE.mhskel: the OBJ's MakeHuman rig */
 	int balance;                /* -1 default, 0 off, 1 on (bind_balance) */
 	char pose_buf[1024];        /* pose_path without its :F */
 } bind_args;
@@ -82,7 +85,8 @@ typedef struct bound_body {
  * Returns 0, or -1 after reporting the error on stderr. */
 int bind_args_load(const bind_args *a, const char *asf, const char *obj, bound_body *body);
 
-/* Meshes other than OBJ (glTF, FBX, COLLADA) go to this loader, which
+/* Meshes other than OBJ (glTF, FBX, COLLADA), and an OBJ with --rig, go
+ * to this loader, which
  * skintool sets (its importer links the asset library; skinplay reads OBJ
  * and packed images only). It fills body->mesh, the bind pose and the
  * weights (bind_args_auto_weights for computed ones) as bind_args_load
@@ -98,6 +102,10 @@ int bind_args_is_interchange(const char *path);
  * generated body) on body->mesh in body->pose. Returns 0, or -1 after
  * reporting the error. */
 int bind_args_auto_weights(const bind_args *a, int generated, const char *name, bound_body *body);
+
+/* The weights file's (--weights W.csv) when given, else as
+ * bind_args_auto_weights. Returns 0, or -1 after reporting the error. */
+int bind_args_weights(const bind_args *a, int generated, const char *name, bound_body *body);
 
 /* The bind pose's values, or NULL when it is the rest pose. */
 const float *bound_pose_values(const bound_body *body);

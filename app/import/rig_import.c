@@ -12,14 +12,6 @@
 #include "mesh_normals.h"
 #include "rig_weld.h"
 
-int rig_find_joint(const rig_scene *r, const char *name)
-{
-	for (int j = 0; j < r->joint_count; j++)
-		if (strcmp(r->joint[j].name, name) == 0)
-			return j;
-	return -1;
-}
-
 static void copy_name(char *dst, const struct aiString *s)
 {
 	size_t n = s->length < RIG_NAME - 1 ? s->length : RIG_NAME - 1;
@@ -66,23 +58,6 @@ static skp_status add_joint(import_walk *w, const struct aiBone *b, const struct
 	return SKP_OK;
 }
 
-static void add_influence(rig_scene *r, int v, int joint, float weight)
-{
-	int n = r->infl_count[v];
-	for (int k = 0; k < n; k++)
-		if (r->infl_joint[v][k] == joint) {
-			r->infl_weight[v][k] += weight;
-			return;
-		}
-	if (n == RIG_MAX_INFLUENCES) {
-		r->dropped_influences++;
-		return;
-	}
-	r->infl_joint[v][n] = (uint16_t)joint;
-	r->infl_weight[v][n] = weight;
-	r->infl_count[v] = (uint8_t)(n + 1);
-}
-
 static skp_status add_bones(import_walk *w, const struct aiMesh *am, const struct aiMatrix4x4 *node_m,
 			    int base)
 {
@@ -96,7 +71,7 @@ static skp_status add_bones(import_walk *w, const struct aiMesh *am, const struc
 			const struct aiVertexWeight *vw = &bone->mWeights[k];
 			if (vw->mVertexId >= am->mNumVertices || !(vw->mWeight > 0.0f))
 				continue;
-			add_influence(w->out, base + (int)vw->mVertexId, j, vw->mWeight);
+			rig_add_influence(w->out, base + (int)vw->mVertexId, j, vw->mWeight);
 			w->out->joint[j].weighted++;
 		}
 	}

@@ -4,11 +4,13 @@
 #include <string.h>
 #include <strings.h>
 
+#include "cli_mesh_io.h"
 #include "cli_mesh_place.h"
 #include "cli_common.h"
 #include "clock.h"
 #include "mesh_normals.h"
 #include "rig_align.h"
+#include "rig_makehuman.h"
 #include "rig_map_file.h"
 #include "rig_pose.h"
 #include "rig_proportions.h"
@@ -19,10 +21,70 @@ static rig_scene scene;
 static rig_map map;
 static rig_map_file map_file;
 
+/* The .mhw beside the .mhskel that names it. */
+static const char *weights_beside(const char *rig, const char *name)
+{
+	static char path[4096];
+	const char *slash = strrchr(rig, '/');
+	int dir = name[0] == '/' || !slash ? 0 : (int)(slash - rig + 1);
+	if (snprintf(path, sizeof path, "%.*s%s", dir, rig, name) >= (int)sizeof path)
+		return NULL;
+	return path;
+}
+
+static json_object *load_json(const char *path)
+{
+	skp_error err;
+	json_object *v = rig_json_load(path, &err);
+	if (!v)
+		cli_error(path, &err);
+	return v;
+}
+
+/* --rig: the OBJ's MakeHuman group (--group, default "body"), joints and
+ * weights from the rig's two files. */
+static int import_makehuman(const bind_args *a, const char *path, bound_body *body)
+{
+	const char *group = a->group ? a->group : "body", *wname = NULL, *wpath = NULL;
+	int missing, rc = -1;
+	skp_error err;
+	const obj_work *w = cli_load_obj(path, group, &body->mesh, &missing);
+	if (!w) {
+		if (missing)
+			fprintf(stderr, "%s: --rig: no faces in group '%s', the MakeHuman body (--group NAME picks "
+				"another)\n", path, group);
+		return -1;
+	}
+	json_object *sk = load_json(a->rig), *wt = NULL;
+	if (!sk)
+		return -1;
+	if (rig_mh_skeleton(sk, w, &scene, &wname, &err) != SKP_OK)
+		fprintf(stderr, "%s: %s\n", a->rig, err.msg);
+	else if (!wname || !(wpath = weights_beside(a->rig, wname)))
+		fprintf(stderr, "%s: expected \"weights_file\": the name of its .mhw weights file\n", a->rig);
+	else if ((wt = load_json(wpath)) && rig_mh_weights(wt, w, &scene, &err) != SKP_OK)
+		fprintf(stderr, "%s: %s\n", wpath, err.msg);
+	else
+		rc = wt ? 0 : -1;
+	if (rc == 0)
+		fprintf(stderr, "%s: group '%s', %d vertices, %d triangles; %s: %d bones, weights from %s\n", path,
+			group, body->mesh.vert_count, body->mesh.tri_count, a->rig, scene.joint_count, wpath);
+	json_object_put(wt);
+	json_object_put(sk);
+	return rc;
+}
+
 static int import_scene(const bind_args *a, const char *path, bound_body *body)
 {
 	skp_error err;
 	scene.mesh = &body->mesh;
+	if (a->rig && bind_args_is_interchange(path)) {
+		fprintf(stderr, "%s: --rig gives an OBJ its MakeHuman rig; this mesh has its own joints (leave "
+			"--rig out)\n", path);
+		return -1;
+	}
+	if (a->rig)
+		return import_makehuman(a, path, body);
 	uint64_t t0 = clock_now_ns();
 	if (rig_import(path, a->group, &scene, &err) != SKP_OK) {
 		const char *dot = strrchr(path, '.');
@@ -216,7 +278,7 @@ static int bind_unrigged(const bind_args *a, const char *path, bound_body *body)
 			"them): bound like an OBJ, weights computed\n", path);
 	if (cli_place_mesh(a, path, body) < 0)
 		return -1;
-	return bind_args_auto_weights(a, 0, path, body);
+	return bind_args_weights(a, 0, path, body);
 }
 
 int rig_load_mesh(const bind_args *a, const char *path, bound_body *body)
@@ -234,5 +296,5 @@ int rig_load_mesh(const bind_args *a, const char *path, bound_body *body)
 	pose_skeleton(a, path, body);
 	if (a->weights_mesh)
 		return mesh_weights(a, path, body);
-	return bind_args_auto_weights(a, 0, path, body);
+	return bind_args_weights(a, 0, path, body);
 }

@@ -48,4 +48,9 @@ skp_status rig_import(const char *path, const char *group, rig_scene *out, skp_e
 /* Index of the joint named name, or -1. */
 int rig_find_joint(const rig_scene *r, const char *name);
 
+/* Adds weight to vertex v's influence of joint (summed when it has one
+ * already); beyond RIG_MAX_INFLUENCES the influence is counted as
+ * dropped. */
+void rig_add_influence(rig_scene *r, int v, int joint, float weight);
+
 #endif

@@ -398,5 +398,9 @@ int compare_other_weights(compare_run *main_run, const compare_args *a)
 	main_run->rep.other_weights = other.rep.weights;
 	main_run->rep.other_csv = oa.csv_name;
 	main_run->rep.other_algo = other.rep.algo;
-	return 0;
+	/* cli_skin keeps one body's vertices (a static block), now the other
+	 * weights': the renders and the rest of the report are the main run's */
+	const compare_run *m = main_run;
+	return cli_skin_init(&main_run->sk, &m->body.skel, &m->body.pose, &m->body.mesh, &m->body.weights,
+			     m->rep.mesh_name);
 }

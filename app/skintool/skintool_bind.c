@@ -107,12 +107,14 @@ static const cli_command bind_command = {
 	.about = "Binds a mesh to a skeleton (ASF or BVH) and writes its skin weights as CSV rows\n"
 		 "vertex,bone,weight (at most 4 per vertex; -o - writes to stdout). The weights are computed\n"
 		 "(the paper's rule, volume-balanced by default for the generated body), read from a CSV, or\n"
-		 "a rigged mesh's own. Every choice made for the mesh is said on stderr.",
+		 "a rigged mesh's own (glTF, FBX, COLLADA, or an OBJ with its MakeHuman rig). Every choice\n"
+		 "made for the mesh is said on stderr.",
 	.opts = { tool_opt_skeleton, tool_opt_mesh, tool_opt_output, bind_cmd_opts, bind_opts },
 	.take = bind_take,
 	.positional = tool_files_skel_mesh,
 	.more = "Examples:\n  skintool bind 02.asf base.obj -o w.csv\n"
-		"  skintool bind 02.asf male_base_mesh.glb --weights=mesh -o w.csv\n",
+		"  skintool bind 02.asf male_base_mesh.glb --weights=mesh -o w.csv\n"
+		"  skintool bind 02.asf base.obj --rig=default.mhskel --weights=mesh -o w.csv\n",
 };
 
 int cmd_bind(int argc, char **argv)

@@ -12,5 +12,5 @@ SIMD          ?= avx2
 # the tools the tests run (Xvfb: the X11 display test; chromium: the report
 # page) and the packaging tools (`make deb`).
 DEB_PKGS      := gcc libc6-dev make pkg-config libcmocka-dev libegl-dev libgles-dev libosmesa6-dev \
-                 libgbm-dev libdrm-dev libgpiod-dev libpng-dev libx11-dev libassimp-dev xvfb chromium assimp-testmodels \
+                 libgbm-dev libdrm-dev libgpiod-dev libpng-dev libx11-dev libassimp-dev libjson-c-dev xvfb chromium assimp-testmodels \
                  dpkg-dev help2man lintian

@@ -15,6 +15,7 @@
 #include "image_read.h"
 #include "ini.h"
 #include "obj.h"
+#include "rig_makehuman.h"
 #include "rig_map_file.h"
 #include "skel_tpose.h"
 #include "skp_reader.h"
@@ -182,6 +183,52 @@ int fuzz_joint_map(const uint8_t *data, size_t size)
 	return 0;
 }
 
+/* MakeHuman's JSON over a fixed mesh (nine vertices of ten in the file):
+ * the input read as a skeleton, then as the weights of a fixed two-bone
+ * skeleton; what reads must name existing joints with weights in [0, 1]. */
+static const char mh_skeleton[] =
+	"{\"bones\": {\"root\": {\"head\": \"r\", \"parent\": null}, \"spine05\": {\"head\": \"s\", "
+	"\"parent\": \"root\"}}, \"joints\": {\"r\": [0, 1], \"s\": [9]}, \"weights_file\": \"w.mhw\"}";
+
+static void mh_check(const rig_scene *r)
+{
+	for (int v = 0; v < r->mesh->vert_count; v++)
+		for (int k = 0; k < r->infl_count[v]; k++)
+			if (r->infl_joint[v][k] >= r->joint_count || !(r->infl_weight[v][k] >= 0.0f))
+				__builtin_trap();
+	for (int j = 0; j < r->joint_count; j++)
+		if (r->joint[j].parent >= r->joint_count)
+			__builtin_trap();
+}
+
+int fuzz_makehuman(const uint8_t *data, size_t size)
+{
+	static obj_work w;
+	static mesh m;
+	static rig_scene r;
+	const char *wf;
+	w.file_verts = 10;
+	for (int i = 0; i < 10; i++) {
+		w.pos[i] = vec3_make((float)(i % 3), (float)(i / 3), 0.0f);
+		w.source[i] = (uint32_t)i;
+	}
+	m.vert_count = 9;
+	r.mesh = &m;
+	json_object *in = rig_json_parse((const char *)data, size, &err);
+	if (!in)
+		return 0;
+	if (rig_mh_skeleton(in, &w, &r, &wf, &err) == SKP_OK)
+		mh_check(&r);
+	json_object *sk_json = rig_json_parse(mh_skeleton, sizeof mh_skeleton - 1, &err);
+	if (!sk_json || rig_mh_skeleton(sk_json, &w, &r, &wf, &err) != SKP_OK)
+		__builtin_trap();
+	if (rig_mh_weights(in, &w, &r, &err) == SKP_OK)
+		mh_check(&r);
+	json_object_put(sk_json);
+	json_object_put(in);
+	return 0;
+}
+
 const fuzz_target fuzz_targets[] = {
 	{ "asf", fuzz_asf },
 	{ "amc", fuzz_amc },
@@ -191,5 +238,6 @@ const fuzz_target fuzz_targets[] = {
 	{ "board_config", fuzz_board_config },
 	{ "image", fuzz_image },
 	{ "joint_map", fuzz_joint_map },
+	{ "makehuman", fuzz_makehuman },
 	{ NULL, NULL },
 };

@@ -25,6 +25,7 @@
 #include "png_writer.h"
 #include "render_font.h"
 #include "test_paths.h"
+#include "test_run.h"
 
 #define W 320
 #define H 240
@@ -53,14 +54,6 @@ static int teardown(void **state)
 	char cmd[128];
 	snprintf(cmd, sizeof cmd, "rm -rf %s", dir);
 	return system(cmd) == 0 ? 0 : -1;
-}
-
-static void write_text(const char *path, const char *text)
-{
-	FILE *f = fopen(path, "w");
-	assert_non_null(f);
-	fputs(text, f);
-	fclose(f);
 }
 
 /* Runs skinplay headless on the demo into dir/out (frames 1..n). */
@@ -119,7 +112,7 @@ static int run_board(const char *out, const char *ini, const char *more, long fr
 {
 	char board[128], extra[512];
 	snprintf(board, sizeof board, "%s/board.ini", dir);
-	write_text(board, ini);
+	test_write_text(board, ini);
 	snprintf(extra, sizeof extra, "--board %s %s", board, more);
 	return run(out, extra, frames);
 }
@@ -149,7 +142,7 @@ static void test_script_switches_algorithm_at_its_frames(void **state)
 {
 	(void)state;
 	char extra[256];
-	write_text(script_path, "# two ALGO presses\n"
+	test_write_text(script_path, "# two ALGO presses\n"
 				"100 ALGO press\n"
 				"130 ALGO release\n"
 				"250 ALGO press\n"
@@ -192,7 +185,7 @@ static void test_play_pause_and_view(void **state)
 {
 	(void)state;
 	char extra[256];
-	write_text(script_path, "50 PLAY press\n60 PLAY release\n"
+	test_write_text(script_path, "50 PLAY press\n60 PLAY release\n"
 				"100 PLAY press\n110 PLAY release\n"
 				"120 VIEW press\n130 VIEW release\n");
 	snprintf(extra, sizeof extra, "--input script:%s", script_path);
@@ -234,7 +227,7 @@ static void test_visitor_hud(void **state)
 {
 	(void)state;
 	char extra[256];
-	write_text(script_path, "50 PLAY press\n60 PLAY release\n");
+	test_write_text(script_path, "50 PLAY press\n60 PLAY release\n");
 	snprintf(extra, sizeof extra, "--algo compare --hud=visitor --input script:%s", script_path);
 	assert_int_equal(run("v", extra, 12), 0);
 	assert_int_equal(run("e", "--algo compare --hud engineer", 12), 0);
@@ -356,7 +349,7 @@ static void test_headless_pause_ends(void **state)
 	char cmd[2048], amc[512], out[128];
 	snprintf(amc, sizeof amc, "%s", test_tool_path("assets/demo.amc"));
 	snprintf(out, sizeof out, "%s/held", dir);
-	write_text(script_path, "50 PLAY press\n60 PLAY release\n");
+	test_write_text(script_path, "50 PLAY press\n60 PLAY release\n");
 	snprintf(cmd, sizeof cmd,
 		 "timeout 300 %s --asf assets/demo.asf --amc %s --platform surfaceless --size %dx%d --hud-fps off "
 		 "--input=script:%s --output=%s 2>%s", test_tool_path("skinplay"), amc, W, H, script_path, out, log_path);
@@ -463,7 +456,7 @@ static void test_bad_board_config_names_file_line_key(void **state)
 		fail_msg("log: %s\nwant: %s", log, want);
 	free(log);
 	/* a good one applies its display size unless --size says otherwise */
-	write_text(board, "[display]\nsize = 64x48\n[input]\nbackend = none\n");
+	test_write_text(board, "[display]\nsize = 64x48\n[input]\nbackend = none\n");
 	char cmd[1024], amc[512];
 	snprintf(amc, sizeof amc, "%s", test_tool_path("assets/demo.amc"));
 	snprintf(cmd, sizeof cmd, "ASAN_OPTIONS=detect_leaks=0 %s --asf assets/demo.asf --amc %s --platform surfaceless "

@@ -23,6 +23,7 @@
 #include "rig_map.h"
 #include "test_paths.h"
 #include "test_run.h"
+#include "test_weights.h"
 
 #define GLB "mesh/orange_juice_male_base/male_base_mesh.glb"
 #define SAMPLES "/usr/share/assimp/models"
@@ -37,15 +38,6 @@ static const char *data(const char *rel, char *buf, size_t n)
 		return NULL;
 	snprintf(buf, n, "%s", p);
 	return buf;
-}
-
-static int contains(const char *path, const char *text)
-{
-	size_t size = 0;
-	char *d = test_read_file(path, &size);
-	int found = d && strstr(d, text) != NULL;
-	free(d);
-	return found;
 }
 
 /* Imports the shared glb into scene; 0 when the shared data is absent. */
@@ -150,51 +142,6 @@ static void test_glb_maps(void **state)
 	check_map("mocap/cmu_bvh/131_01.bvh", bvh, sizeof bvh / sizeof bvh[0]);
 }
 
-/* Weights CSV (vertex,bone,weight rows): dominant bone per vertex. */
-static int load_dominant(const char *path, char (*bone)[64], int n)
-{
-	FILE *f = fopen(path, "r");
-	assert_non_null(f);
-	static float best[4096];
-	char line[256], name[64];
-	int rows = 0;
-	for (int v = 0; v < n; v++)
-		best[v] = -1.0f;
-	assert_non_null(fgets(line, sizeof line, f));
-	while (fgets(line, sizeof line, f)) {
-		long v;
-		float w;
-		assert_int_equal(sscanf(line, "%ld,%63[^,],%f", &v, name, &w), 3);
-		assert_true(v >= 0 && v < n);
-		if (w > best[v]) {
-			best[v] = w;
-			memcpy(bone[v], name, sizeof name);
-		}
-		rows++;
-	}
-	fclose(f);
-	for (int v = 0; v < n; v++)
-		assert_true(best[v] > 0.0f);
-	return rows;
-}
-
-/* Body parts as skinning sees them: a hand with its fingers is one part
- * (the artist's fingers follow the hand, the computed weights give CMU's
- * finger bones theirs), so is the trunk. */
-static const char *body_part(const char *bone)
-{
-	static const char *const hand[] = { "hand", "fingers", "thumb", "wrist" };
-	static const char *const trunk[] = { "root", "lowerback", "upperback", "thorax", "lowerneck", "upperneck",
-					     "head", "lhipjoint", "rhipjoint" };
-	for (size_t i = 0; i < sizeof trunk / sizeof trunk[0]; i++)
-		if (!strcmp(bone, trunk[i]))
-			return "trunk";
-	for (size_t i = 0; i < sizeof hand / sizeof hand[0]; i++)
-		if (!strcmp(bone + 1, hand[i]))
-			return bone[0] == 'l' ? "left hand" : "right hand";
-	return bone;
-}
-
 static void test_bind_own_and_computed(void **state)
 {
 	(void)state;
@@ -205,22 +152,15 @@ static void test_bind_own_and_computed(void **state)
 	const char *log = test_scratch("bind.log");
 	assert_int_equal(test_run("%s bind %s %s --weights mesh -o %s 2> %s", test_tool_path("skintool"), asf, glb,
 				  own, log), 0);
-	assert_true(contains(log, "22 of 56 joints mapped onto the skeleton (names: Rigify"));
-	assert_true(contains(log, "upper_arm.L=lhumerus"));
-	assert_true(contains(log, "34 joints unmapped, moving with their nearest mapped parent"));
-	assert_true(contains(log, "turned 180 degrees (a quarter-turn combination)"));
-	assert_true(contains(log, "skeleton posed as the mesh stands"));
-	assert_true(contains(log, "the mesh's own weights"));
+	assert_true(test_file_contains(log, "22 of 56 joints mapped onto the skeleton (names: Rigify"));
+	assert_true(test_file_contains(log, "upper_arm.L=lhumerus"));
+	assert_true(test_file_contains(log, "34 joints unmapped, moving with their nearest mapped parent"));
+	assert_true(test_file_contains(log, "turned 180 degrees (a quarter-turn combination)"));
+	assert_true(test_file_contains(log, "skeleton posed as the mesh stands"));
+	assert_true(test_file_contains(log, "the mesh's own weights"));
 	assert_int_equal(test_run("%s bind %s %s -o %s 2> %s", test_tool_path("skintool"), asf, glb, computed, log),
 			 0);
-	static char own_bone[904][64], comp_bone[904][64];
-	load_dominant(own, own_bone, 904);
-	load_dominant(computed, comp_bone, 904);
-	int same = 0, same_part = 0;
-	for (int v = 0; v < 904; v++) {
-		same += strcmp(own_bone[v], comp_bone[v]) == 0;
-		same_part += strcmp(body_part(own_bone[v]), body_part(comp_bone[v])) == 0;
-	}
+	int same, same_part = test_same_part(own, computed, 904, &same);
 	printf("dominant bone: the artist's and the computed weights agree on %d of 904 vertices (%.1f%%), "
 	       "on the body part on %d (%.1f%%)\n", same, 100.0 * same / 904, same_part, 100.0 * same_part / 904);
 	/* measured 855 (94.6%): the two differ where parts meet */
@@ -271,6 +211,21 @@ static void test_pack_and_render(void **state)
 	}
 }
 
+/* The first render's caption of the report in dir (the ratios at its
+ * vertex, measured as it renders), into buf. */
+static void first_caption(const char *dir, char *buf, size_t n)
+{
+	char path[4200];
+	snprintf(path, sizeof path, "%s/index.html", dir);
+	size_t size = 0;
+	char *html = test_read_file(path, &size);
+	assert_non_null(html);
+	const char *a = strstr(html, "<figcaption>Frame"), *b = a ? strstr(a, "</figcaption>") : NULL;
+	assert_true(a && b && (size_t)(b - a) < n);
+	snprintf(buf, n, "%.*s", (int)(b - a), a);
+	free(html);
+}
+
 static void test_compare_side_by_side(void **state)
 {
 	(void)state;
@@ -278,14 +233,26 @@ static void test_compare_side_by_side(void **state)
 	if (!data(GLB, glb, sizeof glb) || !data("mocap/cmu/02.asf", asf, sizeof asf) ||
 	    !data("mocap/cmu/02_01.amc", amc, sizeof amc))
 		skip();
-	const char *dir = test_scratch("glb_report");
+	const char *dir = test_scratch("glb_report"), *own = test_scratch("glb_own.csv");
 	assert_int_equal(test_run("%s compare %s %s --mesh %s --weights mesh --renders 1 -o %s > /dev/null 2>&1",
 				  test_tool_path("skintool"), asf, amc, glb, dir), 0);
+	/* the renders are the main run's weights', not those of the side-by-side
+	 * pass after it: the same as a report on the same weights from a file,
+	 * which has no second pass */
+	const char *dir2 = test_scratch("glb_report_csv");
+	assert_int_equal(test_run("%s bind %s %s --weights mesh -o %s 2> /dev/null", test_tool_path("skintool"), asf,
+				  glb, own), 0);
+	assert_int_equal(test_run("%s compare %s %s --mesh %s --weights %s --renders 1 -o %s > /dev/null 2>&1",
+				  test_tool_path("skintool"), asf, amc, glb, own, dir2), 0);
+	char cap[512], cap2[512];
+	first_caption(dir, cap, sizeof cap);
+	first_caption(dir2, cap2, sizeof cap2);
+	assert_string_equal(cap, cap2);
 	char path[4200];
 	snprintf(path, sizeof path, "%s/index.html", dir);
-	assert_true(contains(path, "<table id=\"weights\">"));
-	assert_true(contains(path, "the mesh&#39;s own") || contains(path, "the mesh's own"));
-	assert_true(contains(path, "automatic (the paper"));
+	assert_true(test_file_contains(path, "<table id=\"weights\">"));
+	assert_true(test_file_contains(path, "the mesh&#39;s own") || test_file_contains(path, "the mesh's own"));
+	assert_true(test_file_contains(path, "automatic (the paper"));
 	snprintf(path, sizeof path, "%s/metrics_weights_computed.csv", dir);
 	size_t size = 0;
 	char *csv = test_read_file(path, &size);
@@ -297,6 +264,35 @@ static void test_compare_side_by_side(void **state)
 	assert_int_equal(lines, 1 + 343 * 3);
 }
 
+/* --weights W.csv on a rigged mesh: the file's weights, as read */
+static void test_weights_file_on_rig(void **state)
+{
+	(void)state;
+	char glb[4096], asf[4096];
+	if (!data(GLB, glb, sizeof glb) || !data("mocap/cmu/02.asf", asf, sizeof asf))
+		skip();
+	const char *own = test_scratch("file_own.csv"), *again = test_scratch("file_again.csv");
+	assert_int_equal(test_run("%s bind %s %s --weights mesh -o %s 2> /dev/null", test_tool_path("skintool"), asf,
+				  glb, own), 0);
+	assert_int_equal(test_run("%s bind %s %s --weights %s -o %s 2> /dev/null", test_tool_path("skintool"), asf,
+				  glb, own, again), 0);
+	FILE *a = fopen(own, "r"), *b = fopen(again, "r");
+	assert_true(a && b);
+	char la[256], lb[256];
+	long rows = 0;
+	while (fgets(la, sizeof la, a)) {
+		assert_non_null(fgets(lb, sizeof lb, b));
+		char *ca = strrchr(la, ','), *cb = strrchr(lb, ',');
+		assert_true(ca && cb && ca - la == cb - lb && memcmp(la, lb, (size_t)(ca - la)) == 0);
+		if (rows++)
+			assert_true(fabs(atof(ca + 1) - atof(cb + 1)) < 1e-6);
+	}
+	assert_null(fgets(lb, sizeof lb, b));
+	fclose(a);
+	fclose(b);
+	assert_true(rows > 904);
+}
+
 static void test_unmapped_and_unskinned(void **state)
 {
 	(void)state;
@@ -306,16 +302,16 @@ static void test_unmapped_and_unskinned(void **state)
 	const char *log = test_scratch("unmapped.log"), *w = test_scratch("unmapped.csv");
 	assert_int_equal(test_run("%s bind %s " SAMPLES "/FBX/animation_with_skeleton.fbx --weights mesh -o %s 2> %s",
 				  test_tool_path("skintool"), asf, w, log), 1);
-	assert_true(contains(log, "none of its 14 joints is named as the built-in maps know"));
-	assert_true(contains(log, "Bone Bone.001"));
-	assert_true(contains(log, "--joint-map FILE"));
+	assert_true(test_file_contains(log, "none of its 14 joints is named as the built-in maps know"));
+	assert_true(test_file_contains(log, "Bone Bone.001"));
+	assert_true(test_file_contains(log, "--joint-map FILE"));
 	assert_int_not_equal(access(w, F_OK), 0);
 	assert_int_equal(test_run("%s bind %s " SAMPLES "/FBX/animation_with_skeleton.fbx -o %s 2> %s",
 				  test_tool_path("skintool"), asf, w, log), 0);
-	assert_true(contains(log, "bound like an OBJ, weights computed"));
+	assert_true(test_file_contains(log, "bound like an OBJ, weights computed"));
 	assert_int_equal(test_run("%s bind %s " SAMPLES "/glTF2/BoxTextured-glTF-Binary/BoxTextured.glb --weights mesh "
 				  "-o %s 2> %s", test_tool_path("skintool"), asf, w, log), 1);
-	assert_true(contains(log, "the mesh has no skin"));
+	assert_true(test_file_contains(log, "the mesh has no skin"));
 }
 
 static void test_broken_files(void **state)
@@ -332,26 +328,18 @@ static void test_broken_files(void **state)
 	fclose(f);
 	assert_int_equal(test_run("%s bind %s %s -o %s 2> %s", test_tool_path("skintool"), asf, fbx,
 				  test_scratch("x.csv"), log), 1);
-	assert_true(contains(log, "broken.fbx: "));
-	assert_true(contains(log, "export the character as glTF 2.0 (.glb)"));
+	assert_true(test_file_contains(log, "broken.fbx: "));
+	assert_true(test_file_contains(log, "export the character as glTF 2.0 (.glb)"));
 	assert_int_equal(test_run("%s bind %s %s -o %s 2> %s", test_tool_path("skintool"), asf,
 				  test_scratch("missing.glb"), test_scratch("x.csv"), log), 1);
-	assert_true(contains(log, "missing.glb: "));
+	assert_true(test_file_contains(log, "missing.glb: "));
 	/* the device program reads packed images, never the interchange files */
 	assert_int_equal(test_run("%s --asf %s --amc %s --mesh %s --platform surfaceless --frames 1 2> %s",
 				  test_tool_path("skinplay"), asf, amc, glb, log), 1);
-	assert_true(contains(log, "pack the rigged mesh into an image first"));
+	assert_true(test_file_contains(log, "pack the rigged mesh into an image first"));
 	assert_int_equal(test_run("%s bind %s %s --group nosuch -o %s 2> %s", test_tool_path("skintool"), asf, glb,
 				  test_scratch("x.csv"), log), 1);
-	assert_true(contains(log, "no mesh named 'nosuch'; there are: 'Cube.001'"));
-}
-
-static void write_text(const char *path, const char *text)
-{
-	FILE *f = fopen(path, "w");
-	assert_non_null(f);
-	fputs(text, f);
-	fclose(f);
+	assert_true(test_file_contains(log, "no mesh named 'nosuch'; there are: 'Cube.001'"));
 }
 
 static void test_joint_map_file(void **state)
@@ -362,14 +350,14 @@ static void test_joint_map_file(void **state)
 		skip();
 	const char *map = test_scratch("fingers.map"), *w = test_scratch("fingers.csv");
 	const char *log = test_scratch("map.log");
-	write_text(map, "# Rigify fingers onto CMU's finger bones\nf_index.01.L = lfingers\nthumb.01.L = lthumb\n"
+	test_write_text(map, "# Rigify fingers onto CMU's finger bones\nf_index.01.L = lfingers\nthumb.01.L = lthumb\n"
 		   "shoulder.R = -\n");
 	assert_int_equal(test_run("%s bind %s %s --weights mesh --joint-map %s -o %s 2> %s",
 				  test_tool_path("skintool"), asf, glb, map, w, log), 0);
-	assert_true(contains(log, "and the joint map"));
-	assert_true(contains(log, "f_index.01.L=lfingers"));
-	assert_true(contains(w, ",lfingers,") && contains(w, ",lthumb,"));
-	assert_false(contains(w, ",rclavicle,"));
+	assert_true(test_file_contains(log, "and the joint map"));
+	assert_true(test_file_contains(log, "f_index.01.L=lfingers"));
+	assert_true(test_file_contains(w, ",lfingers,") && test_file_contains(w, ",lthumb,"));
+	assert_false(test_file_contains(w, ",rclavicle,"));
 	static const struct {
 		const char *text, *error;
 	} bad[] = {
@@ -379,10 +367,10 @@ static void test_joint_map_file(void **state)
 	};
 	const char *bad_map = test_scratch("bad.map");
 	for (size_t i = 0; i < sizeof bad / sizeof bad[0]; i++) {
-		write_text(bad_map, bad[i].text);
+		test_write_text(bad_map, bad[i].text);
 		assert_int_equal(test_run("%s bind %s %s --joint-map %s -o %s 2> %s", test_tool_path("skintool"), asf,
 					  glb, bad_map, w, log), 1);
-		if (!contains(log, bad[i].error))
+		if (!test_file_contains(log, bad[i].error))
 			fail_msg("'%s': no '%s' in the message", bad[i].text, bad[i].error);
 	}
 }
@@ -395,6 +383,7 @@ int main(void)
 		cmocka_unit_test(test_bind_own_and_computed),
 		cmocka_unit_test(test_pack_and_render),
 		cmocka_unit_test(test_compare_side_by_side),
+		cmocka_unit_test(test_weights_file_on_rig),
 		cmocka_unit_test(test_unmapped_and_unskinned),
 		cmocka_unit_test(test_broken_files),
 		cmocka_unit_test(test_joint_map_file),

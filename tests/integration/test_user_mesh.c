@@ -17,13 +17,14 @@
 
 #include "test_paths.h"
 #include "test_run.h"
+#include "test_weights.h"
 
 #define MH_VERTS 13380
 #define MAX_BONES 64
 
 /* Dense weights: w[vertex][bone], bones by name in first-seen order. */
 typedef struct dense {
-	char bone[MAX_BONES][64];
+	char bone[MAX_BONES][TEST_BONE_NAME];
 	int bones;
 	float w[MH_VERTS][MAX_BONES];
 } dense;
@@ -40,21 +41,16 @@ static int bone_index(dense *d, const char *name)
 	return d->bones++;
 }
 
+static void dense_row(void *ctx, long v, const char *bone, float w)
+{
+	dense *d = ctx;
+	d->w[v][bone_index(d, bone)] = w;
+}
+
 static void load_dense(const char *path, dense *d)
 {
-	FILE *f = fopen(path, "r");
-	assert_non_null(f);
 	memset(d, 0, sizeof *d);
-	char line[256], name[64];
-	assert_non_null(fgets(line, sizeof line, f));
-	while (fgets(line, sizeof line, f)) {
-		long v;
-		float w;
-		assert_int_equal(sscanf(line, "%ld,%63[^,],%f", &v, name, &w), 3);
-		assert_true(v >= 0 && v < MH_VERTS);
-		d->w[v][bone_index(d, name)] = w;
-	}
-	fclose(f);
+	test_weights_rows(path, MH_VERTS, dense_row, d);
 }
 
 static int dominant(const dense *d, long v)

@@ -2,6 +2,7 @@
 
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 #include <sys/stat.h>
 
 const char *test_data_path(const char *rel)
@@ -49,4 +50,13 @@ char *test_read_file(const char *path, size_t *size)
 			*size = (size_t)n;
 	}
 	return data;
+}
+
+int test_file_contains(const char *path, const char *text)
+{
+	size_t size = 0;
+	char *d = test_read_file(path, &size);
+	int found = d && strstr(d, text) != NULL;
+	free(d);
+	return found;
 }

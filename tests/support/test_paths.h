@@ -11,6 +11,9 @@ const char *test_data_path(const char *rel);
 /* "<SKP_BUILD or build>/<tool>" in a static buffer. */
 const char *test_tool_path(const char *tool);
 
+/* 1 when the file at path holds text (0 also when it cannot be read). */
+int test_file_contains(const char *path, const char *text);
+
 /* Reads a whole file into a static-per-call heap buffer the caller frees. */
 char *test_read_file(const char *path, size_t *size);
 

@@ -17,6 +17,14 @@
 
 static char dir[64];
 
+void test_write_text(const char *path, const char *text)
+{
+	FILE *f = fopen(path, "w");
+	assert_non_null(f);
+	assert_true(fputs(text, f) >= 0);
+	assert_int_equal(fclose(f), 0);
+}
+
 int test_scratch_setup(void **state)
 {
 	(void)state;

@@ -13,6 +13,9 @@ const char *test_scratch_dir(void);
 /* "<scratch>/<name>" in one of 64 rotating static buffers */
 const char *test_scratch(const char *name);
 
+/* Writes text to path (the test fails when it cannot). */
+void test_write_text(const char *path, const char *text);
+
 /* Runs a shell command built like printf; returns its exit status, or -1
  * when it did not exit normally (a crash). */
 int test_run(const char *fmt, ...) __attribute__((format(printf, 1, 2)));
