@@ -1,8 +1,10 @@
 /* skintool bind SKELETON.asf MESH.obj [--group G] [--fit|--no-fit] [--bind-pose P.amc[:F]|rest]
  *               [--weights IN.csv] [--balance on|off] [--report] -o weights.csv
  * Binds the mesh to the skeleton (automatic weights, bind.h, balanced by
- * bind_balance.h with --balance on (the default for the generated body), or the given CSV after validation) and writes the weights CSV (-o - for stdout). The
- * report always goes to stderr, so it never mixes with a CSV on stdout. */
+ * bind_balance.h with --balance on (the default for the generated body);
+ * the given CSV after validation; or a rigged mesh's own) and writes the
+ * weights CSV (-o - for stdout). The report always goes to stderr, so it
+ * never mixes with a CSV on stdout. */
 #include <stdio.h>
 #include <string.h>
 
@@ -15,6 +17,16 @@
 
 static void report_pose(FILE *to, const bind_args *a, const bound_body *b)
 {
+	if (b->rigged) {
+		/* the importer said each step (turn, scale, proportions, pose) above */
+		if (!a->pose_path && !a->rest_pose)
+			fprintf(to, "bind pose: the skeleton posed as the mesh stands, by its joints\n");
+		if (b->fitted)
+			fprintf(to, "fit: the mesh put on the skeleton by its joints, the skeleton given its "
+				"proportions\n");
+		if (!a->pose_path && !a->rest_pose)
+			return;
+	}
 	if (b->guess.turned)
 		fprintf(to, "bind pose: the mesh's own, found from its shape (%d limb%s turned)\n", b->guess.turned,
 			b->guess.turned == 1 ? "" : "s");
@@ -25,7 +37,7 @@ static void report_pose(FILE *to, const bind_args *a, const bound_body *b)
 		fprintf(to, "bind pose: rest pose\n");
 	else
 		fprintf(to, "bind pose: %s frame %ld\n", a->pose_path, b->pose_frame);
-	if (b->fitted)
+	if (b->fitted && !b->rigged)
 		fprintf(to, "fit: scale %.6g, offset %.6g %.6g %.6g (mesh height %.6g -> skeleton height %.6g)\n",
 			(double)b->fit.scale, (double)b->fit.offset.x, (double)b->fit.offset.y,
 			(double)b->fit.offset.z, (double)b->fit.mesh_height, (double)b->fit.skel_height);
@@ -68,8 +80,10 @@ static void report(FILE *to, const bind_args *a, const bound_body *b)
 		fprintf(to, "weights: automatic, %.3f ms\n", (double)b->bind_ns / 1e6);
 		fprintf(to, "fallback to nearest bone: %d vertices\n", b->info.fallback);
 		report_balance(to, b);
-	} else {
+	} else if (a->weights_path) {
 		fprintf(to, "weights: read from %s\n", a->weights_path);
+	} else {
+		fprintf(to, "weights: the mesh's own\n");
 	}
 	fprintf(to, "largest influence count: %d\n", st.max_influences);
 	fprintf(to, "smoothness (mean weight difference across %ld triangle edges): %.6g\n",

@@ -43,8 +43,12 @@ static void test_base_mesh_binds(void **state)
 		skip();
 	const char *own = test_scratch("mh_own.csv"), *computed = test_scratch("mh_computed.csv");
 	const char *log = test_scratch("mh_bind.log");
-	assert_int_equal(test_run("%s bind %s %s --rig=%s --weights=mesh -o %s 2> %s", test_tool_path("skintool"),
-				  asf, obj, rig, own, log), 0);
+	assert_int_equal(test_run("%s bind %s %s --rig=%s --weights=mesh --report -o %s 2> %s",
+				  test_tool_path("skintool"), asf, obj, rig, own, log), 0);
+	/* --report says what the importer did, not the OBJ path's fit and pose */
+	assert_true(test_file_contains(log, "\nbind pose: the skeleton posed as the mesh stands, by its joints\n"));
+	assert_true(test_file_contains(log, "\nfit: the mesh put on the skeleton by its joints"));
+	assert_true(test_file_contains(log, "\nweights: the mesh's own\n"));
 	assert_true(test_file_contains(log, "group 'body', 13380 vertices, 26756 triangles"));
 	assert_true(test_file_contains(log, "163 bones, weights from"));
 	assert_true(test_file_contains(log, "24 of 163 joints mapped onto the skeleton (names: MakeHuman default)"));
