@@ -84,6 +84,12 @@ skp_status skin_soa_load(skin_soa *s, const mesh *m, const skin_weights *w, int 
 #if defined(SKP_SIMD_AVX2) || defined(SKP_SIMD_NEON)
 #define SKIN_SIMD_FLIPS 1
 #endif
+/* The SIMD fixed kernel's rows, which skin_bones.fdq_at points into. */
+#if defined(SKP_SIMD_AVX2)
+#define SKIN_FIXED_ROWS fdq_halves
+#elif defined(SKP_SIMD_NEON)
+#define SKIN_FIXED_ROWS fdq_signed
+#endif
 
 /* Per-frame transforms of every bone, in the forms the kernels read. */
 typedef struct skin_bones {
@@ -102,16 +108,19 @@ typedef struct skin_bones {
 	 * look it up per vertex and bone (as they load the bone's row) instead
 	 * of recomputing it: as the sign bit the float kernels xor into a row
 	 * (flip_f, AVX2) or as the byte offset of the row to load, the bone's
-	 * or its negation (the *_at tables). */
+	 * or its negation (the *_at tables). fdq_at [pivot][bone] is that
+	 * offset in the fixed kernel's rows, SKIN_FIXED_ROWS (the bone's
+	 * [bone][0], its negation [bone][1]). simd_ok is 0 when the frame's
+	 * bones do not fit what the SIMD fixed kernel's rows can hold (see
+	 * there): it then takes the scalar path for the frame. */
+	uint16_t fdq_at[SKP_MAX_BONES + 1][SKP_MAX_BONES + 1];
+	int simd_ok;
 #endif
 #ifdef SKP_SIMD_AVX2
 	/* flip_f holds the sign bit, -0.0f (flip) or 0.0f, which the float
 	 * kernels xor into the row as they load it (a row picked by offset
-	 * measured slower here: its load waits on the offset's); fdq_at
-	 * [pivot][bone] the byte offset in fdq_halves of the row bone takes
-	 * in a blend around pivot, [bone][0] or [bone][1]. */
+	 * measured slower here: its load waits on the offset's). */
 	float flip_f[SKP_MAX_BONES + 1][SKP_MAX_BONES + 1];
-	uint16_t fdq_at[SKP_MAX_BONES + 1][SKP_MAX_BONES + 1];
 	/* fdq ([0]) and its negation ([1]) with every component c split as
 	 * c = hi * 2^16 + lo, lo and hi signed 16-bit halves, laid out as lo
 	 * of components 0-3, hi of 0-3, lo of 4-7, hi of 4-7: a 16-bit unpack
@@ -119,10 +128,8 @@ typedef struct skin_bones {
 	 * component, and the AVX2 fixed kernel blends them with 16-bit
 	 * multiply-adds. simd_ok is 0 when a dual component is 2^26 (1024
 	 * units) or longer: beyond that the kernel's 32-bit intermediates
-	 * could overflow where the scalar kernel saturates, so it takes the
-	 * scalar path for the frame. */
+	 * could overflow where the scalar kernel saturates. */
 	int16_t fdq_halves[SKP_MAX_BONES + 1][2][16];
-	int simd_ok;
 #endif
 #ifdef SKP_SIMD_NEON
 	/* dq8 and fdq ([0]) with their negations ([1]), and at [pivot][bone]
@@ -131,13 +138,10 @@ typedef struct skin_bones {
 	 * influence (on AVX2 the xor measured faster: there the row's load
 	 * would wait on the offset's). simd_ok is 0 when a dual component of
 	 * fdq saturated to INT32_MIN (a translation of 65536 units or more),
-	 * whose negation int32 cannot hold: the fixed kernel then takes the
-	 * scalar path for the frame. */
+	 * whose negation int32 cannot hold. */
 	float dq8_signed[SKP_MAX_BONES + 1][2][8];
 	fx_dq fdq_signed[SKP_MAX_BONES + 1][2];
 	uint16_t dq8_at[SKP_MAX_BONES + 1][SKP_MAX_BONES + 1];
-	uint16_t fdq_at[SKP_MAX_BONES + 1][SKP_MAX_BONES + 1];
-	int simd_ok;
 #endif
 } skin_bones;
 

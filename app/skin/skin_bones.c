@@ -61,12 +61,9 @@ static uint16_t row_offset(size_t pair_bytes, int bone, int flip)
  * it (see skin_bones). */
 static void compute_flips(skin_bones *out)
 {
-#ifdef SKP_SIMD_AVX2
-	_Static_assert(sizeof out->fdq_halves <= UINT16_MAX, "row offsets fit 16 bits");
-#endif
+	_Static_assert(sizeof out->SKIN_FIXED_ROWS <= UINT16_MAX, "row offsets fit 16 bits");
 #ifdef SKP_SIMD_NEON
-	_Static_assert(sizeof out->dq8_signed <= UINT16_MAX && sizeof out->fdq_signed <= UINT16_MAX,
-		       "row offsets fit 16 bits");
+	_Static_assert(sizeof out->dq8_signed <= UINT16_MAX, "row offsets fit 16 bits");
 #endif
 	int slots[SKP_MAX_BONES + 1], n = used_slots(out, slots);
 	for (int a = 0; a < n; a++) {
@@ -75,13 +72,12 @@ static void compute_flips(skin_bones *out)
 			int k = slots[c];
 			int flip_f = quat_dot(out->dq[k].real, out->dq[p].real) < 0.0f;
 			int flip_x = fx_quat_dot(out->fdq[k].real, out->fdq[p].real) < 0;
+			out->fdq_at[p][k] = row_offset(sizeof out->SKIN_FIXED_ROWS[0], k, flip_x);
 #ifdef SKP_SIMD_AVX2
 			out->flip_f[p][k] = flip_f ? -0.0f : 0.0f;
-			out->fdq_at[p][k] = row_offset(sizeof out->fdq_halves[0], k, flip_x);
 #endif
 #ifdef SKP_SIMD_NEON
 			out->dq8_at[p][k] = row_offset(sizeof out->dq8_signed[0], k, flip_f);
-			out->fdq_at[p][k] = row_offset(sizeof out->fdq_signed[0], k, flip_x);
 #endif
 		}
 	}

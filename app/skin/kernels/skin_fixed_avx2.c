@@ -96,7 +96,7 @@ static inline __attribute__((always_inline)) void blend(const skin_soa *in, cons
 #pragma GCC unroll 8
 		for (int k = 1; k < SKP_MAX_INFLUENCES; k++)
 			row[k] = (const int16_t *)((const char *)b->fdq_halves + at[in->bone[k][v + j]]);
-		r[j] = _mm256_castsi256_ps(blend_vertex(row, &b->fdq[in->bone[0][v + j]], w01[j], w23[j]));
+		r[j] = _mm256_castsi256_ps(blend_vertex(row, &b->fdq[pivot], w01[j], w23[j]));
 	}
 	skin_transpose8(r);
 #pragma GCC unroll 8

@@ -79,8 +79,8 @@ NEON_INLINE void load_weights(const blend_src *in, int v, int32x4_t w[SKP_MAX_IN
 }
 
 /* fx_dq_blend of vertex v + j (its weights in lane j of w): each
- * influence's row taken negated where the sign fix (flip_x: the exact int64
- * dot product with the pivot's real part, as fx_dq_blend tests it, once per
+ * influence's row taken negated where the sign fix (the exact int64 dot
+ * product with the pivot's real part, as fx_dq_blend tests it, once per
  * bone pair and frame) says, as fdq_at points, the sums in int64 and
  * rounded once by 15 bits. */
 NEON_INLINE void blend_vertex(const blend_src *in, int v, int j, const int32x4_t w[SKP_MAX_INFLUENCES],
