@@ -1,6 +1,7 @@
 #include "rig_json.h"
 
 #include <errno.h>
+#include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -21,9 +22,11 @@ static int only_space(const char *s, size_t n)
 	return 1;
 }
 
+_Static_assert(RIG_JSON_MAX_BYTES <= INT32_MAX, "json-c takes the length as an int");
+
 json_object *rig_json_parse(const char *text, size_t len, skp_error *err)
 {
-	if (len > (size_t)RIG_JSON_MAX_BYTES || len > (size_t)INT32_MAX) {
+	if (len > (size_t)RIG_JSON_MAX_BYTES) {
 		skp_fail(err, SKP_ERR_LIMIT, 0, "larger than %ld bytes", RIG_JSON_MAX_BYTES);
 		return NULL;
 	}

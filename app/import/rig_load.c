@@ -58,17 +58,24 @@ static int import_makehuman(const bind_args *a, const char *path, bound_body *bo
 	json_object *sk = load_json(a->rig), *wt = NULL;
 	if (!sk)
 		return -1;
-	if (rig_mh_skeleton(sk, w, &scene, &wname, &err) != SKP_OK)
-		fprintf(stderr, "%s: %s\n", a->rig, err.msg);
-	else if (!wname || !(wpath = weights_beside(a->rig, wname)))
+	if (rig_mh_skeleton(sk, w, &scene, &wname, &err) != SKP_OK) {
+		cli_error(a->rig, &err);
+		goto out;
+	}
+	if (!wname || !(wpath = weights_beside(a->rig, wname))) {
 		fprintf(stderr, "%s: expected \"weights_file\": the name of its .mhw weights file\n", a->rig);
-	else if ((wt = load_json(wpath)) && rig_mh_weights(wt, w, &scene, &err) != SKP_OK)
-		fprintf(stderr, "%s: %s\n", wpath, err.msg);
-	else
-		rc = wt ? 0 : -1;
-	if (rc == 0)
-		fprintf(stderr, "%s: group '%s', %d vertices, %d triangles; %s: %d bones, weights from %s\n", path,
-			group, body->mesh.vert_count, body->mesh.tri_count, a->rig, scene.joint_count, wpath);
+		goto out;
+	}
+	if (!(wt = load_json(wpath)))
+		goto out;
+	if (rig_mh_weights(wt, w, &scene, &err) != SKP_OK) {
+		cli_error(wpath, &err);
+		goto out;
+	}
+	fprintf(stderr, "%s: group '%s', %d vertices, %d triangles; %s: %d bones, weights from %s\n", path, group,
+		body->mesh.vert_count, body->mesh.tri_count, a->rig, scene.joint_count, wpath);
+	rc = 0;
+out:
 	json_object_put(wt);
 	json_object_put(sk);
 	return rc;

@@ -1,5 +1,7 @@
 #include "test_run.h"
 
+#include "test_paths.h"
+
 #include <stdarg.h>
 #include <stddef.h>
 #include <setjmp.h>
@@ -16,6 +18,13 @@
 #include <unistd.h>
 
 static char dir[64];
+
+void test_assert_contains_all(const char *path, const char *const *texts)
+{
+	for (; *texts; texts++)
+		if (!test_file_contains(path, *texts))
+			fail_msg("%s: no '%s' in it", path, *texts);
+}
 
 void test_write_text(const char *path, const char *text)
 {

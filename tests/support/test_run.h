@@ -16,6 +16,10 @@ const char *test_scratch(const char *name);
 /* Writes text to path (the test fails when it cannot). */
 void test_write_text(const char *path, const char *text);
 
+/* Fails the test, naming the text and the file, unless the file at path
+ * holds every text of the NULL-terminated list. */
+void test_assert_contains_all(const char *path, const char *const *texts);
+
 /* Runs a shell command built like printf; returns its exit status, or -1
  * when it did not exit normally (a crash). */
 int test_run(const char *fmt, ...) __attribute__((format(printf, 1, 2)));
