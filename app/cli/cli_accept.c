@@ -60,9 +60,12 @@ void show_log_rebuild(void *ctx, uint32_t block)
 	skp_block_report r = { .role = SKP_ROLE_DATA };
 	skp_image_block_role(&img->im, block, &kind, &item);
 	r.kind = kind;
-	if (show_log_once(img, (long)block))
-		fprintf(stderr, "image: %s: block %lu rebuilt from parity (%s, parity group %lu)\n", img->path,
-			(unsigned long)block, block == 0 && img->im.header_from_copy ? "header, read from its copy"
-										 : skp_block_report_what(&r),
+	if (!show_log_once(img, (long)block))
+		return;
+	if (block == 0 && img->im.header_from_copy)
+		fprintf(stderr, "image: %s: block 0 bad: header read from its copy\n", img->path);
+	else
+		fprintf(stderr, "image: %s: block %lu rebuilt from %s (%s, parity group %lu)\n", img->path,
+			(unsigned long)block, img->im.rebuilt_from, skp_block_report_what(&r),
 			(unsigned long)skp_image_group(&img->im.hdr, block));
 }

@@ -17,21 +17,32 @@ static long read_at(storage_file *sf, uint64_t at, uint8_t *buf, long n)
 	return got;
 }
 
+/* The image's block size from its header copy: at the end of the file,
+ * else searched for (bytes after the image, block 0 lost). 0: none. */
+static uint32_t copy_block_size(storage_file *sf)
+{
+	static uint8_t tail[SKP_IMAGE_TAIL], win[16384];
+	skp_image_header h;
+	uint64_t at;
+	if (sf->size >= sizeof tail && read_at(sf, sf->size - sizeof tail, tail, sizeof tail) == (long)sizeof tail &&
+	    skp_image_copy_at(tail, sf->size - sizeof tail, &h))
+		return h.block_size;
+	skp_reader rd = storage_file_reader(sf);
+	return skp_image_find_copy(rd, win, sizeof win, &h, &at) ? h.block_size : 0;
+}
+
 int show_storage_open(storage_file *sf, const char *path)
 {
-	static uint8_t head[SKP_IMAGE_BLOCK_HDR + 16], tail[SKP_IMAGE_TAIL];
+	static uint8_t head[SKP_IMAGE_BLOCK_HDR + SKP_IMAGE_HEADER_SIZE];
 	int rc = storage_file_open(sf, path, SKP_IMAGE_DEFAULT_BLOCK);
 	if (rc < 0)
 		return rc;
-	/* the header copy at the end (version 2) is checked by its CRC: it
-	 * wins over block 0's field, which may be the damaged byte */
-	uint32_t bs = 0;
-	if (sf->size >= sizeof tail && read_at(sf, sf->size - sizeof tail, tail, sizeof tail) == (long)sizeof tail)
-		bs = skp_image_block_size_hint_tail(tail, sizeof tail);
-	long n = bs ? 0 : read_at(sf, 0, head, sizeof head);
-	if (n > 0)
-		bs = skp_image_block_size_hint(head, (uint32_t)n);
-	if (bs)
+	/* block 0's header when whole (its CRC), else its copy's */
+	long n = read_at(sf, 0, head, sizeof head);
+	uint32_t bs = n > 0 ? skp_image_block_size_hint(head, (uint32_t)n) : 0;
+	if (!bs)
+		bs = copy_block_size(sf);
+	if (bs && bs <= SKP_IMAGE_BLOCK_SIZE)
 		storage_file_set_block_size(sf, bs);
 	return 0;
 }
@@ -58,23 +69,19 @@ void show_image_close(show_image *s)
 	s->path = NULL;
 }
 
-long show_image_verify(show_image *s, void (*bad)(void *ctx, uint32_t block, const skp_block_report *r),
-		       void *ctx, long *beyond)
+void show_image_verify(show_image *s, void (*bad)(void *ctx, uint32_t block, const skp_block_report *r),
+		       void *ctx, skp_image_verdict *v)
 {
 	static uint8_t buf[SKP_IMAGE_BLOCK_SIZE];
-	skp_block_report r;
-	long count = 0;
-	*beyond = 0;
-	for (uint32_t b = 0; b < s->im.hdr.block_count; b++) {
-		skp_image_survey(&s->im, b, &r, buf);
-		if (r.state == SKP_BLOCK_OK)
-			continue;
-		count++;
-		*beyond += !r.repairable;
-		if (bad)
-			bad(ctx, b, &r);
-	}
-	return count;
+	skp_image_verify(&s->im, buf, bad, ctx, v);
+}
+
+void show_image_warn(const show_image *s)
+{
+	if (s->im.missing)
+		fprintf(stderr, "image: %s: the storage ends %lu block%s before the image (its copies or parity): "
+			"it plays; skintool repair writes them again\n", s->path, (unsigned long)s->im.missing,
+			s->im.missing == 1 ? "" : "s");
 }
 
 static void refuse(const char *path, const skp_error *err)
@@ -132,14 +139,19 @@ int show_open(show_source *s, const char *const *paths, int n, bound_body *body)
 			continue;
 		}
 		/* one slot plays whatever survives; of several, one with no block
-		 * beyond repair wins */
-		long beyond = 0;
+		 * beyond repair and its digest matched wins */
+		skp_image_verdict v = { 0, 0, 1 };
 		if (n > 1)
-			show_image_verify(img, NULL, NULL, &beyond);
-		if (beyond == 0)
+			show_image_verify(img, NULL, NULL, &v);
+		if (v.beyond == 0 && v.digest != 0)
 			s->active = order[i];
 		else {
-			fprintf(stderr, "image: %s has %ld blocks beyond repair: trying an older slot\n", img->path, beyond);
+			if (v.beyond)
+				fprintf(stderr, "image: %s has %ld blocks beyond repair: trying an older slot\n", img->path,
+					v.beyond);
+			else
+				fprintf(stderr, "image: %s does not match its digest (a block altered with a good CRC): "
+					"trying an older slot\n", img->path);
 			if (damaged < 0)
 				damaged = order[i];
 		}
@@ -155,6 +167,7 @@ int show_open(show_source *s, const char *const *paths, int n, bound_body *body)
 	show_image *img = &s->slot[s->active];
 	fprintf(stderr, "image: playing %s (sequence %llu, %d clip%s)\n", img->path,
 		(unsigned long long)img->im.hdr.sequence, img->im.clip_count, img->im.clip_count == 1 ? "" : "s");
+	show_image_warn(img);
 	accept_clips(s, img);
 	return 0;
 }

@@ -56,12 +56,15 @@ int show_storage_open(storage_file *sf, const char *path);
 int show_image_open(show_image *s, const char *path, skp_error *err);
 void show_image_close(show_image *s);
 
-/* Checks every block of an opened image (CRC, tag, index, kind; parity
- * against its group; the header copy against the header); calls bad (when
- * non-NULL) for each bad one. Returns the count of bad blocks, *beyond
- * those that cannot be rebuilt. */
-long show_image_verify(show_image *s, void (*bad)(void *ctx, uint32_t block, const skp_block_report *r),
-		       void *ctx, long *beyond);
+/* Checks every block of an opened image (CRC, id, index, kind; parity
+ * against its group; the copies against what they copy) and the digest;
+ * calls bad (when non-NULL) for each bad block. */
+void show_image_verify(show_image *s, void (*bad)(void *ctx, uint32_t block, const skp_block_report *r),
+		       void *ctx, skp_image_verdict *v);
+
+/* Says on stderr what an opened image lacks but plays without: the blocks
+ * missing at its end (header copy, directory copy, parity). */
+void show_image_warn(const show_image *s);
 
 typedef struct show_source {
 	show_image slot[SHOW_MAX_SLOTS];

@@ -1,9 +1,51 @@
-/* The image header's bytes (image_format.h), both versions. */
+/* The image header's bytes and the block frame (image_format.h). */
 #include <string.h>
 
 #include "crc32.h"
 #include "image_format.h"
-#include "image_parity.h"
+
+/* The fields of the header, in order, after magic, version and size. */
+static void put_layout(uint8_t *p, const skp_image_header *h)
+{
+	le_put32(p + 12, h->block_size);
+	le_put32(p + 16, h->block_count);
+	le_put64(p + 20, h->sequence);
+	memcpy(p + 28, h->id, SKP_IMAGE_ID_BYTES);
+	const uint32_t needs[6] = { h->bones, h->dofs, h->verts, h->tris, h->influences, h->clips };
+	for (int i = 0; i < 6; i++)
+		le_put32(p + 44 + 4 * i, needs[i]);
+	for (int i = 0; i < SKP_SEC_COUNT; i++) {
+		le_put32(p + 68 + 12 * i, h->sec[i].first);
+		le_put32(p + 72 + 12 * i, h->sec[i].count);
+		le_put32(p + 76 + 12 * i, h->sec[i].bytes);
+	}
+	le_put32(p + 116, h->data_blocks);
+	le_put32(p + 120, h->parity_blocks);
+	le_put32(p + 124, h->dir_copy);
+	le_put32(p + 128, h->copy_block);
+	memcpy(p + 132, h->digest, SKP_IMAGE_DIGEST_BYTES);
+}
+
+static void get_layout(const uint8_t *p, skp_image_header *h)
+{
+	h->block_size = le_get32(p + 12);
+	h->block_count = le_get32(p + 16);
+	h->sequence = le_get64(p + 20);
+	memcpy(h->id, p + 28, SKP_IMAGE_ID_BYTES);
+	uint32_t *needs[6] = { &h->bones, &h->dofs, &h->verts, &h->tris, &h->influences, &h->clips };
+	for (int i = 0; i < 6; i++)
+		*needs[i] = le_get32(p + 44 + 4 * i);
+	for (int i = 0; i < SKP_SEC_COUNT; i++) {
+		h->sec[i].first = le_get32(p + 68 + 12 * i);
+		h->sec[i].count = le_get32(p + 72 + 12 * i);
+		h->sec[i].bytes = le_get32(p + 76 + 12 * i);
+	}
+	h->data_blocks = le_get32(p + 116);
+	h->parity_blocks = le_get32(p + 120);
+	h->dir_copy = le_get32(p + 124);
+	h->copy_block = le_get32(p + 128);
+	memcpy(h->digest, p + 132, SKP_IMAGE_DIGEST_BYTES);
+}
 
 void skp_image_header_put(uint8_t *p, const skp_image_header *h)
 {
@@ -11,59 +53,32 @@ void skp_image_header_put(uint8_t *p, const skp_image_header *h)
 	memcpy(p, SKP_IMAGE_MAGIC, 8);
 	le_put16(p + 8, SKP_IMAGE_VERSION);
 	le_put16(p + 10, SKP_IMAGE_HEADER_SIZE);
-	le_put32(p + 12, h->block_size);
-	le_put32(p + 16, h->block_count);
-	le_put64(p + 20, h->sequence);
-	le_put32(p + 28, h->bones);
-	le_put32(p + 32, h->dofs);
-	le_put32(p + 36, h->verts);
-	le_put32(p + 40, h->tris);
-	le_put32(p + 44, h->influences);
-	le_put32(p + 48, h->clips);
-	for (int i = 0; i < SKP_SEC_COUNT; i++) {
-		le_put32(p + 52 + 12 * i, h->sec[i].first);
-		le_put32(p + 56 + 12 * i, h->sec[i].count);
-		le_put32(p + 60 + 12 * i, h->sec[i].bytes);
-	}
-	le_put32(p + 100, h->data_blocks);
-	le_put32(p + 104, h->parity_blocks);
-	le_put32(p + 108, h->copy_block);
-	le_put32(p + 112, crc32_compute(p, SKP_IMAGE_HEADER_SIZE - 4));
+	put_layout(p, h);
+	le_put32(p + SKP_IMAGE_HEADER_SIZE - 4, crc32_compute(p, SKP_IMAGE_HEADER_SIZE - 4));
 }
 
 int skp_image_header_get(const uint8_t *p, uint32_t n, skp_image_header *h)
 {
 	memset(h, 0, sizeof *h);
-	if (n < SKP_IMAGE_HEADER_V1 || memcmp(p, SKP_IMAGE_MAGIC, 8))
+	if (n < 12 || memcmp(p, SKP_IMAGE_MAGIC, 8))
 		return 0;
 	h->version = le_get16(p + 8);
 	h->header_size = le_get16(p + 10);
-	h->block_size = le_get32(p + 12);
-	h->block_count = le_get32(p + 16);
-	h->sequence = le_get64(p + 20);
-	h->bones = le_get32(p + 28);
-	h->dofs = le_get32(p + 32);
-	h->verts = le_get32(p + 36);
-	h->tris = le_get32(p + 40);
-	h->influences = le_get32(p + 44);
-	h->clips = le_get32(p + 48);
-	for (int i = 0; i < SKP_SEC_COUNT; i++) {
-		h->sec[i].first = le_get32(p + 52 + 12 * i);
-		h->sec[i].count = le_get32(p + 56 + 12 * i);
-		h->sec[i].bytes = le_get32(p + 60 + 12 * i);
-	}
-	uint32_t size = h->version == 1 ? SKP_IMAGE_HEADER_V1 : SKP_IMAGE_HEADER_SIZE;
-	if (h->version < 1 || h->version > SKP_IMAGE_VERSION || h->header_size != size || n < size)
+	if (h->version != SKP_IMAGE_VERSION || h->header_size != SKP_IMAGE_HEADER_SIZE || n < SKP_IMAGE_HEADER_SIZE)
 		return 0;
-	if (h->version == 1) {
-		h->data_blocks = h->block_count;
-	} else {
-		h->data_blocks = le_get32(p + 100);
-		h->parity_blocks = le_get32(p + 104);
-		h->copy_block = le_get32(p + 108);
-	}
-	h->crc = le_get32(p + size - 4);
-	return crc32_compute(p, size - 4) == h->crc;
+	get_layout(p, h);
+	h->crc = le_get32(p + SKP_IMAGE_HEADER_SIZE - 4);
+	return crc32_compute(p, SKP_IMAGE_HEADER_SIZE - 4) == h->crc;
+}
+
+void skp_block_frame(uint8_t *block, const uint8_t id[SKP_IMAGE_ID_BYTES], uint32_t index, int kind,
+		     unsigned item)
+{
+	memcpy(block, id, SKP_IMAGE_ID_BYTES);
+	le_put32(block + SKP_IMAGE_AT_INDEX, index);
+	block[SKP_IMAGE_AT_KIND] = (uint8_t)kind;
+	block[SKP_IMAGE_AT_KIND + 1] = 0;
+	le_put16(block + SKP_IMAGE_AT_ITEM, (uint16_t)item);
 }
 
 void skp_block_seal(uint8_t *block, uint32_t block_size)

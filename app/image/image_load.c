@@ -54,9 +54,7 @@ static skp_status get_bone(skp_image *im, skel_bone *b, skp_error *err)
 		rc = sec_floats(im, b->limit[i], 2, err);
 	if (!rc) rc = sec_u16(im, &b->dof_offset, err);
 	if (!rc) rc = sec_floats(im, rot, 4, err);
-	b->offset = vec3_make(0.0f, 0.0f, 0.0f); /* version 1 has none */
-	if (!rc && im->hdr.version >= 2)
-		rc = sec_floats(im, &b->offset.x, 3, err);
+	if (!rc) rc = sec_floats(im, &b->offset.x, 3, err);
 	b->id = (long)(int32_t)id;
 	b->parent = (int16_t)parent;
 	b->axis_rot.w = rot[0];
@@ -118,9 +116,8 @@ skp_status skp_image_load_skel(skp_image *im, skel *s, skp_error *err)
 
 static skp_status get_influences(skp_image *im, const skel *s, skin_weights *w, int v, skp_error *err)
 {
-	const int wide = im->hdr.version < 3; /* 16-bit bone indices */
-	uint8_t rec[SKP_IMAGE_INFLUENCE_BYTES_V2];
-	skp_status rc = sec_get(im, rec, wide ? SKP_IMAGE_INFLUENCE_BYTES_V2 : SKP_IMAGE_INFLUENCE_BYTES, err);
+	uint8_t rec[SKP_IMAGE_INFLUENCE_BYTES];
+	skp_status rc = sec_get(im, rec, sizeof rec, err);
 	if (rc)
 		return rc;
 	int n = rec[0];
@@ -128,9 +125,9 @@ static skp_status get_influences(skp_image *im, const skel *s, skin_weights *w, 
 	if (n < 1 || n > SKP_MAX_INFLUENCES)
 		return sec_bad(im, err, "influence count not 1..4");
 	w->count[v] = (uint8_t)n;
-	const uint8_t *weights = rec + 1 + (wide ? 2 : 1) * SKP_MAX_INFLUENCES;
+	const uint8_t *weights = rec + 1 + SKP_MAX_INFLUENCES;
 	for (int i = 0; i < SKP_MAX_INFLUENCES; i++) {
-		uint16_t bone = wide ? le_get16(rec + 1 + 2 * i) : rec[1 + i], q = le_get16(weights + 2 * i);
+		uint16_t bone = rec[1 + i], q = le_get16(weights + 2 * i);
 		if (i < n && bone >= s->count)
 			return sec_bad(im, err, "influence on a bone the skeleton does not have");
 		w->bone[v][i] = i < n ? bone : 0;
@@ -147,23 +144,6 @@ static int in_envelope(vec3 p, float limit)
 	return p.x > -limit && p.x < limit && p.y > -limit && p.y < limit && p.z > -limit && p.z < limit;
 }
 
-/* Version 2: positions and normals as floats. */
-static skp_status get_float_vertices(skp_image *im, mesh *m, skp_error *err)
-{
-	skp_status rc = SKP_OK;
-	for (int v = 0; v < m->vert_count && !rc; v++) {
-		rc = sec_floats(im, &m->pos[v].x, 3, err);
-		if (!rc && !in_envelope(m->pos[v], 32767.0f))
-			return sec_bad(im, err, "vertex outside +-32767 units (the fixed-point range)");
-	}
-	for (int v = 0; v < m->vert_count && !rc; v++) {
-		rc = sec_floats(im, &m->normal[v].x, 3, err);
-		if (!rc && !in_envelope(m->normal[v], 1.01f))
-			return sec_bad(im, err, "normal longer than 1");
-	}
-	return rc;
-}
-
 /* A compact position record: three u16 steps from the mesh's origin */
 static vec3 dequantise(const uint8_t rec[6], const float origin[3], const float step[3])
 {
@@ -171,9 +151,8 @@ static vec3 dequantise(const uint8_t rec[6], const float origin[3], const float 
 			 origin[2] + (float)le_get16(rec + 4) * step[2]);
 }
 
-/* Version 3: positions in 16-bit steps over the bounds, octahedral
- * normals. Every q of 0..65535 decodes inside the envelope once the
- * bounds' two ends do. */
+/* Positions in 16-bit steps over the bounds, octahedral normals. Every q
+ * of 0..65535 decodes inside the envelope once the bounds' two ends do. */
 static skp_status get_compact_vertices(skp_image *im, mesh *m, skp_error *err)
 {
 	float origin[3], step[3];
@@ -202,7 +181,7 @@ static skp_status get_compact_vertices(skp_image *im, mesh *m, skp_error *err)
 
 static skp_status get_mesh(skp_image *im, mesh *m, skp_error *err)
 {
-	skp_status rc = im->hdr.version < 3 ? get_float_vertices(im, m, err) : get_compact_vertices(im, m, err);
+	skp_status rc = get_compact_vertices(im, m, err);
 	for (int t = 0; t < m->tri_count && !rc; t++) {
 		for (int k = 0; k < 3 && !rc; k++)
 			rc = sec_u32(im, &m->tri[t][k], err);

@@ -1,4 +1,4 @@
-/* XOR parity over interleaved groups of blocks (image_format.h, version 2):
+/* XOR parity over interleaved groups of blocks (image_format.h):
  * rebuilding a data block at read time, and computing the parity blocks when
  * an image is written or repaired. Fixed memory: the caller's block buffers. */
 #include "image_parity.h"
@@ -32,22 +32,13 @@ skp_block_state skp_image_rebuild(skp_image *im, uint32_t block, int kind, unsig
 	return st != SKP_BLOCK_OK ? st : skp_image_frame_check(im, block, kind, item, buf);
 }
 
-uint32_t skp_image_block_size_hint_tail(const uint8_t *tail, uint32_t n)
-{
-	skp_image_header h;
-	if (n < SKP_IMAGE_TAIL ||
-	    !skp_image_header_get(tail + n - SKP_IMAGE_TAIL, SKP_IMAGE_HEADER_SIZE, &h) || h.version < 2)
-		return 0;
-	uint32_t bs = h.block_size;
-	return bs >= SKP_IMAGE_MIN_BLOCK && bs <= SKP_IMAGE_BLOCK_SIZE && bs % 16 == 0 ? bs : 0;
-}
-
 uint32_t skp_parity_blocks(uint32_t data_blocks, uint32_t group)
 {
 	if (data_blocks == 0)
 		return 0;
 	if (group == 0) {
-		/* the default: groups of 8, larger when that is more than 15% */
+		/* the default: groups of 8, larger when parity and the header
+		 * copy would be more than 15% */
 		group = SKP_IMAGE_DEFAULT_GROUP;
 		while (group < data_blocks &&
 		       (uint64_t)((data_blocks + group - 1) / group + 1) * 100 > (uint64_t)data_blocks * 15)
@@ -73,16 +64,4 @@ skp_status skp_parity_write(const skp_blockdev *dev, const skp_image_header *h, 
 			return image_block_fail(err, SKP_ERR_IO, parity_block, "cannot write this parity block");
 	}
 	return SKP_OK;
-}
-
-void skp_header_copy_frame(uint8_t *buf, const skp_image_header *h)
-{
-	uint32_t bs = h->block_size;
-	memset(buf, 0, bs);
-	le_put32(buf, skp_image_tag(h->sequence));
-	le_put32(buf + 4, h->copy_block);
-	buf[8] = SKP_KIND_HEADER;
-	le_put16(buf + 10, 1);
-	skp_image_header_put(buf + bs - SKP_IMAGE_BLOCK_CRC - SKP_IMAGE_HEADER_SIZE, h);
-	skp_block_seal(buf, bs);
 }

@@ -1,5 +1,5 @@
-/* Parity for the image writer and repair (image_format.h, version 2). The
- * reader's side, skp_image_rebuild, is declared in image_read.h. */
+/* Parity for the image writer and repair (image_format.h). The reader's
+ * side, skp_image_rebuild, is declared in image_read.h. */
 #ifndef IMAGE_PARITY_H
 #define IMAGE_PARITY_H
 
@@ -16,11 +16,5 @@ uint32_t skp_parity_blocks(uint32_t data_blocks, uint32_t group);
  * and tmp: two block buffers. */
 skp_status skp_parity_write(const skp_blockdev *dev, const skp_image_header *h, const uint8_t *block0,
 			    uint8_t *acc, uint8_t *tmp, skp_error *err);
-
-/* The header copy block of h, framed and sealed, into buf. */
-void skp_header_copy_frame(uint8_t *buf, const skp_image_header *h);
-
-/* Sets a framed block's CRC. */
-void skp_block_seal(uint8_t *block, uint32_t block_size);
 
 #endif

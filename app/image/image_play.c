@@ -31,15 +31,19 @@ void skp_player_seek(skp_player *p, uint32_t index)
 	ring_clear(p);
 }
 
-/* Reads frame block b (clip-relative) into its ring slot. */
+/* Reads frame block b (clip-relative) into its ring slot: good when its
+ * frame and its count of frames are what the directory says. */
 static skp_player_slot *load(skp_player *p, uint32_t b)
 {
 	skp_player_slot *s = &p->slot[b % SKP_IMAGE_RING_BLOCKS];
+	uint8_t *block = p->ring[b % SKP_IMAGE_RING_BLOCKS];
 	if (s->block == b)
 		return s;
 	s->block = b;
-	s->state = (uint8_t)skp_image_read_block(p->im, p->c.frames_first + b, SKP_KIND_FRAMES,
-						 (unsigned)p->clip, p->ring[b % SKP_IMAGE_RING_BLOCKS]);
+	s->state = (uint8_t)skp_image_read_block(p->im, p->c.frames_first + b, SKP_KIND_FRAMES, (unsigned)p->clip,
+						 block);
+	if (s->state == SKP_BLOCK_OK && le_get16(block + SKP_IMAGE_BLOCK_HDR) != skp_image_frames_in(&p->c, b))
+		s->state = SKP_BLOCK_COUNT;
 	p->reads++;
 	return s;
 }
@@ -56,7 +60,7 @@ static void prefetch(skp_player *p, uint32_t head)
 
 static void decode(const skp_player *p, const uint8_t *block, uint32_t index, amc_frame *f)
 {
-	uint32_t at = SKP_IMAGE_BLOCK_HDR + (index % p->c.frames_per_block) * 2u * p->c.dofs;
+	uint32_t at = SKP_IMAGE_BLOCK_HDR + SKP_IMAGE_FRAMES_COUNT + (index % p->c.frames_per_block) * 2u * p->c.dofs;
 	const uint8_t *q = block + at;
 	for (int i = 0; i < p->c.dofs; i++)
 		f->value[i] = (float)((double)p->qmin[i] + (double)le_get16(q + 2 * i) * (double)p->qstep[i]);

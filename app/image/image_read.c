@@ -4,11 +4,12 @@
 #include <string.h>
 
 #include "crc32.h"
+#include "image_copies.h"
 #include "image_section.h"
 
 static const char *const state_names[] = {
 	"good", "I/O error", "short read", "CRC mismatch", "block of another image",
-	"block out of place"
+	"block out of place", "frame count differs from the directory's"
 };
 
 const char *skp_block_state_name(skp_block_state st)
@@ -21,12 +22,17 @@ int skp_block_crc_ok(const uint8_t *block, uint32_t block_size)
 	return crc32_compute(block, block_size - 4) == le_get32(block + block_size - 4);
 }
 
+static int block_size_ok(uint32_t bs)
+{
+	return bs >= SKP_IMAGE_MIN_BLOCK && bs <= SKP_IMAGE_BLOCK_SIZE && bs % 16 == 0;
+}
+
 uint32_t skp_image_block_size_hint(const uint8_t *block0, uint32_t n)
 {
-	if (n < SKP_IMAGE_BLOCK_HDR + 16 || memcmp(block0 + SKP_IMAGE_BLOCK_HDR, SKP_IMAGE_MAGIC, 8))
+	skp_image_header h;
+	if (n < SKP_IMAGE_BLOCK_HDR || !skp_image_header_get(block0 + SKP_IMAGE_BLOCK_HDR, n - SKP_IMAGE_BLOCK_HDR, &h))
 		return 0;
-	uint32_t bs = le_get32(block0 + SKP_IMAGE_BLOCK_HDR + 12);
-	return bs >= SKP_IMAGE_MIN_BLOCK && bs <= SKP_IMAGE_BLOCK_SIZE && bs % 16 == 0 ? bs : 0;
+	return block_size_ok(h.block_size) ? h.block_size : 0;
 }
 
 skp_block_state skp_image_frame_check(const skp_image *im, uint32_t block, int kind, unsigned item,
@@ -35,9 +41,10 @@ skp_block_state skp_image_frame_check(const skp_image *im, uint32_t block, int k
 	uint32_t bs = im->hdr.block_size;
 	if (!skp_block_crc_ok(buf, bs))
 		return SKP_BLOCK_CRC;
-	if (le_get32(buf) != im->tag)
+	if (memcmp(buf, im->hdr.id, SKP_IMAGE_ID_BYTES))
 		return SKP_BLOCK_FOREIGN;
-	if (le_get32(buf + 4) != block || (kind > 0 && (buf[8] != kind || le_get16(buf + 10) != item)))
+	if (le_get32(buf + SKP_IMAGE_AT_INDEX) != block ||
+	    (kind > 0 && (buf[SKP_IMAGE_AT_KIND] != kind || le_get16(buf + SKP_IMAGE_AT_ITEM) != item)))
 		return SKP_BLOCK_MISPLACED;
 	return SKP_BLOCK_OK;
 }
@@ -61,7 +68,7 @@ skp_block_state skp_image_read_block(skp_image *im, uint32_t block, int kind, un
 				     uint8_t *buf)
 {
 	skp_block_state st = skp_image_check_block(im, block, kind, item, buf);
-	if (st == SKP_BLOCK_OK || skp_image_rebuild(im, block, kind, item, buf) != SKP_BLOCK_OK)
+	if (st == SKP_BLOCK_OK || skp_image_recover(im, block, kind, item, buf) != SKP_BLOCK_OK)
 		return st;
 	im->rebuilt++;
 	if (im->on_rebuild)
@@ -69,29 +76,44 @@ skp_block_state skp_image_read_block(skp_image *im, uint32_t block, int kind, un
 	return SKP_BLOCK_OK;
 }
 
+/* Images before version 4 carry no id (their blocks' frames were 12 bytes,
+ * so their header starts at byte 12): refused by name, so the operator
+ * knows to pack the show again rather than suspect the card. Their header
+ * CRC must hold (104 bytes in version 1, 116 in 2 and 3), or it is damage. */
+#define OLD_FRAME 12
+
+static skp_status older_version(const uint8_t *block, uint32_t n, skp_error *err)
+{
+	const uint8_t *p = block + OLD_FRAME;
+	if (n < OLD_FRAME + 12 || memcmp(p, SKP_IMAGE_MAGIC, 8))
+		return SKP_OK;
+	unsigned v = le_get16(p + 8), size = v == 1 ? 104 : 116;
+	if (v < 1 || v >= SKP_IMAGE_VERSION || n < OLD_FRAME + size || le_get16(p + 10) != size ||
+	    crc32_compute(p, size - 4) != le_get32(p + size - 4))
+		return SKP_OK;
+	return image_block_fail(err, SKP_ERR_CORRUPT, 0,
+				"image format version %u (skintool 0.16 or older, without an image id): this build plays "
+				"version %d only; pack the show again", v, SKP_IMAGE_VERSION);
+}
 
 /* Header checks that need no other block, in the order a reader must make
- * them: what it is, whether it is intact, which version, whether it fits.
+ * them: what it is, which version, whether it is intact, whether it fits.
  * valid: the header decoded whole (version, size and CRC right). */
-static skp_status check_header(const skp_image *im, const uint8_t *p, int n, int valid, skp_error *err)
+static skp_status check_header(const skp_image *im, const uint8_t *p, uint32_t n, int valid, skp_error *err)
 {
 	const skp_image_header *h = &im->hdr;
-	uint32_t bs = im->dev->block_size;
 	if (memcmp(p, SKP_IMAGE_MAGIC, 8))
 		return image_block_fail(err, SKP_ERR_CORRUPT, 0, "not a skinplay image (no SKPIMAGE magic)");
-	if (valid && h->block_size != bs)
+	if (valid && h->block_size != im->dev->block_size)
 		return skp_fail(err, SKP_ERR_RANGE, 0, "image block size %lu, storage opened with %lu",
-				(unsigned long)h->block_size, (unsigned long)bs);
-	if ((uint32_t)n < bs)
-		return image_block_fail(err, SKP_ERR_CORRUPT, 0, "header block: short read");
-	if (!skp_block_crc_ok(im->buf, bs))
-		return image_block_fail(err, SKP_ERR_CORRUPT, 0, "header block: CRC mismatch");
-	if (h->version < 1 || h->version > SKP_IMAGE_VERSION)
-		return skp_fail(err, SKP_ERR_CORRUPT, 0, "image format version %u, this build reads versions 1 to %d",
+				(unsigned long)h->block_size, (unsigned long)im->dev->block_size);
+	if (h->version > SKP_IMAGE_VERSION)
+		return skp_fail(err, SKP_ERR_CORRUPT, 0, "image format version %u, this build reads version %d",
 				(unsigned)h->version, SKP_IMAGE_VERSION);
-	unsigned size = h->version == 1 ? SKP_IMAGE_HEADER_V1 : SKP_IMAGE_HEADER_SIZE;
-	if (h->header_size != size)
-		return skp_fail(err, SKP_ERR_CORRUPT, 0, "header size %u, expected %u", (unsigned)h->header_size, size);
+	if (n + SKP_IMAGE_BLOCK_HDR < im->dev->block_size)
+		return image_block_fail(err, SKP_ERR_CORRUPT, 0, "header block: short read");
+	if (!skp_block_crc_ok(im->buf, im->dev->block_size))
+		return image_block_fail(err, SKP_ERR_CORRUPT, 0, "header block: CRC mismatch");
 	if (!valid)
 		return image_block_fail(err, SKP_ERR_CORRUPT, 0, "header CRC mismatch");
 	return SKP_OK;
@@ -105,33 +127,50 @@ static skp_status limit(skp_error *err, const char *what, uint32_t need, long ha
 			(unsigned long)need, what, name, have);
 }
 
-static skp_status check_fit(const skp_image *im, skp_error *err)
+static skp_status check_limits(const skp_image_header *h, skp_error *err)
 {
-	const skp_image_header *h = &im->hdr;
 	skp_status rc = limit(err, "bones", h->bones, SKP_MAX_BONES, "SKP_MAX_BONES");
 	if (!rc) rc = limit(err, "dofs per frame", h->dofs, SKP_MAX_DOF, "SKP_MAX_DOF");
 	if (!rc) rc = limit(err, "vertices", h->verts, SKP_MAX_VERTS, "SKP_MAX_VERTS");
 	if (!rc) rc = limit(err, "triangles", h->tris, SKP_MAX_TRIS, "SKP_MAX_TRIS");
 	if (!rc) rc = limit(err, "influences per vertex", h->influences, SKP_MAX_INFLUENCES, "SKP_MAX_INFLUENCES");
 	if (!rc) rc = limit(err, "clips", h->clips, SKP_IMAGE_MAX_CLIPS, "SKP_IMAGE_MAX_CLIPS");
-	if (rc)
-		return rc;
-	if (h->block_count > im->dev->block_count)
-		return skp_fail(err, SKP_ERR_CORRUPT, 0, "image truncated: the header says %lu blocks, the storage holds %lu",
-				(unsigned long)h->block_count, (unsigned long)im->dev->block_count);
-	/* version 2: data, parity, then the copy, which ends the image */
-	if (h->version > 1 && ((uint64_t)h->data_blocks + h->parity_blocks + 1 != h->block_count ||
-			       h->copy_block != h->block_count - 1 || h->parity_blocks > h->data_blocks))
-		return skp_fail(err, SKP_ERR_CORRUPT, 0, "header: %lu data and %lu parity blocks do not make %lu",
-				(unsigned long)h->data_blocks, (unsigned long)h->parity_blocks,
+	return rc;
+}
+
+/* Data, parity, the directory copy, then the header copy, which ends the
+ * image; every section among the data blocks. 64-bit sums: a crafted count
+ * near 2^32 cannot wrap into range. */
+static skp_status check_layout(const skp_image_header *h, skp_error *err)
+{
+	uint64_t dir = h->sec[SKP_SEC_DIRECTORY].count, payload = h->block_size - SKP_IMAGE_BLOCK_EXTRA;
+	if ((uint64_t)h->data_blocks + h->parity_blocks + dir + 1 != h->block_count || h->parity_blocks > h->data_blocks ||
+	    (uint64_t)h->dir_copy != (uint64_t)h->data_blocks + h->parity_blocks || h->copy_block != h->block_count - 1 ||
+	    dir == 0)
+		return skp_fail(err, SKP_ERR_CORRUPT, 0,
+				"header: %lu data, %lu parity and %lu directory copy blocks and a header copy do not make %lu",
+				(unsigned long)h->data_blocks, (unsigned long)h->parity_blocks, (unsigned long)dir,
 				(unsigned long)h->block_count);
 	for (int i = 0; i < SKP_SEC_COUNT; i++) {
 		const skp_image_section *s = &h->sec[i];
-		uint32_t payload = h->block_size - SKP_IMAGE_BLOCK_EXTRA;
 		if ((uint64_t)s->first + s->count > h->data_blocks ||
-		    (i != SKP_SEC_CLIPS && ((uint64_t)s->count * payload < s->bytes || s->first == 0)))
+		    (i != SKP_SEC_CLIPS && (s->count * payload < s->bytes || s->first == 0)))
 			return skp_fail(err, SKP_ERR_CORRUPT, 0, "header: section %d out of the image", i + 1);
 	}
+	return SKP_OK;
+}
+
+/* The storage must hold every data block; what it lacks after them (the
+ * header copy, the directory copy, parity) is counted, not refused. */
+static skp_status check_storage(skp_image *im, skp_error *err)
+{
+	const skp_image_header *h = &im->hdr;
+	uint32_t held = im->dev->block_count;
+	if (held < h->data_blocks)
+		return skp_fail(err, SKP_ERR_CORRUPT, 0,
+				"image truncated: the header says %lu blocks (%lu of data), the storage holds %lu",
+				(unsigned long)h->block_count, (unsigned long)h->data_blocks, (unsigned long)held);
+	im->missing = held < h->block_count ? h->block_count - held : 0;
 	return SKP_OK;
 }
 
@@ -153,15 +192,14 @@ static skp_status get_clip(skp_image *im, skp_image_clip *c, skp_error *err)
 	if (rc)
 		return rc;
 	c->first_number = (int32_t)first;
-	uint32_t payload = im->hdr.block_size - SKP_IMAGE_BLOCK_EXTRA, fpb = c->frames_per_block;
+	uint32_t room = im->hdr.block_size - SKP_IMAGE_BLOCK_EXTRA - SKP_IMAGE_FRAMES_COUNT, fpb = c->frames_per_block;
 	const skp_image_section *all = &im->hdr.sec[SKP_SEC_CLIPS];
-	/* 64-bit sums: a crafted count near 2^32 must not wrap into range */
 	uint64_t end = (uint64_t)all->first + all->count;
-	if (c->dofs != im->hdr.dofs || fpb == 0 || fpb * 2u * c->dofs > payload || !(c->fps > 0) ||
+	if (c->dofs != im->hdr.dofs || fpb == 0 || fpb * 2u * c->dofs > room || !(c->fps > 0) ||
 	    !isfinite(c->fps) || (uint64_t)c->frame_blocks * fpb < c->frame_count ||
 	    (uint64_t)c->frame_count + fpb <= (uint64_t)c->frame_blocks * fpb ||
 	    c->quant_first < all->first || (uint64_t)c->quant_first + c->quant_blocks > end ||
-	    (uint64_t)c->quant_blocks * payload < 8u * c->dofs ||
+	    (uint64_t)c->quant_blocks * (room + SKP_IMAGE_FRAMES_COUNT) < 8u * c->dofs ||
 	    c->frames_first < all->first || (uint64_t)c->frames_first + c->frame_blocks > end)
 		return sec_bad(im, err, "clip entry out of the image");
 	return SKP_OK;
@@ -182,8 +220,9 @@ static skp_status load_directory(skp_image *im, skp_error *err)
 	return rc;
 }
 
-/* The header from block 0, checked in full. */
-static skp_status header_from_block0(skp_image *im, skp_error *err)
+/* The header from block 0, checked in full; *older when it is an older
+ * version's (no copy of this version to look for). */
+static skp_status header_from_block0(skp_image *im, int *older, skp_error *err)
 {
 	const skp_blockdev *dev = im->dev;
 	int n = dev->read(dev->ctx, 0, im->buf);
@@ -191,37 +230,62 @@ static skp_status header_from_block0(skp_image *im, skp_error *err)
 		n = 0; /* empty storage */
 	if (n < 0)
 		return image_block_fail(err, SKP_ERR_IO, 0, "header: I/O error");
-	if ((uint32_t)n < SKP_IMAGE_BLOCK_HDR + SKP_IMAGE_HEADER_V1)
-		return image_block_fail(err, SKP_ERR_CORRUPT, 0, "header: short read (empty or truncated image)");
-	const uint8_t *p = im->buf + SKP_IMAGE_BLOCK_HDR;
-	int valid = skp_image_header_get(p, (uint32_t)n - SKP_IMAGE_BLOCK_HDR, &im->hdr);
-	skp_status rc = check_header(im, p, n, valid, err);
+	skp_status rc = older_version(im->buf, (uint32_t)n, err);
+	*older = rc != SKP_OK;
 	if (rc)
 		return rc;
-	im->tag = skp_image_tag(im->hdr.sequence);
+	if ((uint32_t)n < SKP_IMAGE_BLOCK_HDR + 12)
+		return image_block_fail(err, SKP_ERR_CORRUPT, 0, "header: short read (empty or truncated image)");
+	const uint8_t *p = im->buf + SKP_IMAGE_BLOCK_HDR;
+	uint32_t len = (uint32_t)n - SKP_IMAGE_BLOCK_HDR;
+	int valid = skp_image_header_get(p, len, &im->hdr);
+	rc = check_header(im, p, len, valid, err);
+	if (rc)
+		return rc;
 	skp_block_state st = skp_image_frame_check(im, 0, SKP_KIND_HEADER, 0, im->buf);
 	if (st != SKP_BLOCK_OK)
-		return image_block_fail(err, SKP_ERR_CORRUPT, 0, "%s%s", "header block: ", skp_block_state_name(st));
+		return image_block_fail(err, SKP_ERR_CORRUPT, 0, "header block: %s", skp_block_state_name(st));
 	return SKP_OK;
 }
 
-/* Version 2: the header copy in the storage's last block, when block 0 is
- * unusable. 1 when its header is whole (its own CRC) and says it is there:
- * the rest of that block may be damaged too, the header is what counts. */
-static int header_from_copy(skp_image *im)
+/* Block 0 unusable: the header copy (image_copies.c), when there is one
+ * made with the storage's block size. An older image or another block size
+ * keeps block 0's message. */
+static skp_status header_from_copy(skp_image *im, skp_status rc0)
 {
-	const skp_blockdev *dev = im->dev;
-	uint32_t bs = dev->block_size, last = dev->block_count - 1;
-	if (dev->block_count < 2 || dev->read(dev->ctx, last, im->buf) != (int)bs)
-		return 0;
 	skp_image_header h;
-	const uint8_t *p = im->buf + bs - SKP_IMAGE_BLOCK_CRC - SKP_IMAGE_HEADER_SIZE;
-	if (!skp_image_header_get(p, SKP_IMAGE_HEADER_SIZE, &h) || h.version < 2 || h.block_size != bs ||
-	    h.copy_block != last)
-		return 0;
+	if (rc0 == SKP_ERR_RANGE || !skp_image_copy_header(im, &h))
+		return rc0;
 	im->hdr = h;
-	im->tag = skp_image_tag(h.sequence);
-	return 1;
+	im->header_from_copy = 1;
+	if (im->on_rebuild)
+		im->on_rebuild(im->on_rebuild_ctx, 0);
+	return SKP_OK;
+}
+
+/* A whole block 0 may still be another image's (copied in with a good
+ * CRC): block 1, always data, says whose the image is. 1 when block 1
+ * agrees with the header or cannot tell (then block 0 is trusted). */
+static int header_confirmed(skp_image *im)
+{
+	if (skp_image_read_raw(im, 1, im->buf) != SKP_BLOCK_OK || !skp_block_crc_ok(im->buf, im->hdr.block_size))
+		return 1;
+	return memcmp(im->buf, im->hdr.id, SKP_IMAGE_ID_BYTES) == 0;
+}
+
+/* Block 0 is another image's: the copy's header when block 1 is the
+ * copy's image's (im->buf holds block 1). */
+static void header_of_block1(skp_image *im)
+{
+	uint8_t id[SKP_IMAGE_ID_BYTES];
+	skp_image_header h;
+	memcpy(id, im->buf, sizeof id);
+	if (!skp_image_copy_header(im, &h) || memcmp(h.id, id, sizeof id))
+		return;
+	im->hdr = h;
+	im->header_from_copy = 1;
+	if (im->on_rebuild)
+		im->on_rebuild(im->on_rebuild_ctx, 0);
 }
 
 skp_status skp_image_open(skp_image *im, const skp_blockdev *dev, skp_error *err)
@@ -231,20 +295,23 @@ skp_status skp_image_open(skp_image *im, const skp_blockdev *dev, skp_error *err
 	im->dev = dev;
 	im->clip_count = 0;
 	im->rebuilt = 0;
+	im->rebuilt_from = "parity";
 	im->header_from_copy = 0;
-	if (dev->block_size < SKP_IMAGE_MIN_BLOCK || dev->block_size > SKP_IMAGE_BLOCK_SIZE)
-		return skp_fail(err, SKP_ERR_RANGE, 0, "storage block size %lu: expected %d..%d",
+	im->missing = 0;
+	if (!block_size_ok(dev->block_size))
+		return skp_fail(err, SKP_ERR_RANGE, 0, "storage block size %lu: expected a multiple of 16 from %d to %d",
 				(unsigned long)dev->block_size, SKP_IMAGE_MIN_BLOCK, SKP_IMAGE_BLOCK_SIZE);
-	skp_status rc = header_from_block0(im, err);
-	if (rc && rc != SKP_ERR_RANGE && header_from_copy(im)) {
-		im->header_from_copy = 1;
-		if (im->on_rebuild)
-			im->on_rebuild(im->on_rebuild_ctx, 0);
+	int older = 0;
+	skp_status rc = header_from_block0(im, &older, err);
+	if (rc && !older && header_from_copy(im, rc) == SKP_OK) {
 		skp_error_clear(err);
 		rc = SKP_OK;
+	} else if (!rc && !header_confirmed(im)) {
+		header_of_block1(im);
 	}
-	if (!rc)
-		rc = check_fit(im, err);
+	if (!rc) rc = check_limits(&im->hdr, err);
+	if (!rc) rc = check_layout(&im->hdr, err);
+	if (!rc) rc = check_storage(im, err);
 	return rc ? rc : load_directory(im, err);
 }
 

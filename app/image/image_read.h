@@ -1,9 +1,10 @@
 /* Reads a flash image (app/image/image_format.h) from a skp_blockdev with fixed
  * memory: the header and the clip directory at open, then the skeleton and
  * the bound body into the caller's structs. Every block read is checked
- * (CRC, tag, index, kind); a block that fails is rebuilt from its parity
- * group when the image has parity (version 2), else the error names it.
- * Playback of the clips is app/image/image_play.h. */
+ * (CRC, image id, index, kind); a block that fails is rebuilt from its
+ * parity group, or from its copy (block 0 from the header, a directory
+ * block from the directory copy), else the error names it. Playback of the
+ * clips is app/image/image_play.h. */
 #ifndef IMAGE_READ_H
 #define IMAGE_READ_H
 
@@ -20,8 +21,9 @@ typedef enum skp_block_state {
 	SKP_BLOCK_IO,        /* the storage reported an error */
 	SKP_BLOCK_SHORT,     /* fewer bytes than a block (truncated storage) */
 	SKP_BLOCK_CRC,       /* CRC mismatch */
-	SKP_BLOCK_FOREIGN,   /* good CRC, but from another image (tag) */
-	SKP_BLOCK_MISPLACED  /* good CRC, but its index or kind is not this one's */
+	SKP_BLOCK_FOREIGN,   /* good CRC, but another image's (its id) */
+	SKP_BLOCK_MISPLACED, /* good CRC, but its index or kind is not this one's */
+	SKP_BLOCK_COUNT      /* a frames block whose frame count is not the directory's */
 } skp_block_state;
 
 /* "CRC mismatch", "I/O error", ... */
@@ -30,20 +32,31 @@ const char *skp_block_state_name(skp_block_state st);
 /* Whether a raw block's CRC-32 matches (no other check). */
 int skp_block_crc_ok(const uint8_t *block, uint32_t block_size);
 
-/* The block size in the header of a raw first block, or 0 when it does not
- * look like an image (wrong magic, or a size out of range). Front ends use
- * it to open storage with the image's own block size. */
+/* The block size in a raw first block when it holds a whole header of this
+ * version (magic, version, CRC) with a size in range, else 0. Front ends
+ * use it to open storage with the image's own block size. */
 uint32_t skp_image_block_size_hint(const uint8_t *block0, uint32_t n);
 
-/* The same from the last n bytes of the storage (n >= SKP_IMAGE_TAIL):
- * the header copy of a version 2 image, for when block 0 is bad. */
+/* The header copy's bytes: the header and the block's CRC, at the end of
+ * its block. */
 #define SKP_IMAGE_TAIL (SKP_IMAGE_HEADER_SIZE + SKP_IMAGE_BLOCK_CRC)
-uint32_t skp_image_block_size_hint_tail(const uint8_t *tail, uint32_t n);
+
+/* 1 when the SKP_IMAGE_HEADER_SIZE bytes at p, byte offset `at` of the
+ * storage, are a header copy: a whole header of this version, where its
+ * own layout puts its copy. The header in *h. */
+int skp_image_copy_at(const uint8_t *p, uint64_t at, skp_image_header *h);
+
+/* Searches a byte stream (a file, a partition) from its start for a header
+ * copy: a whole header of this version at the end of a block, where its own
+ * layout puts its copy (at + SKP_IMAGE_TAIL == (copy_block + 1) * block
+ * size), whatever comes after it. win: cap >= 512 bytes of the caller's.
+ * Returns 1 with the header in *h and its byte offset in *at, 0 when the
+ * stream holds none. */
+int skp_image_find_copy(skp_reader rd, uint8_t *win, uint32_t cap, skp_image_header *h, uint64_t *at);
 
 typedef struct skp_image {
 	const skp_blockdev *dev;
 	skp_image_header hdr;
-	uint32_t tag;
 	int clip_count;
 	skp_image_clip clip[SKP_IMAGE_MAX_CLIPS];
 	/* section stream state, over buf */
@@ -52,35 +65,43 @@ typedef struct skp_image {
 	uint16_t s_item;
 	uint8_t buf[SKP_IMAGE_BLOCK_SIZE];
 	uint8_t scratch[SKP_IMAGE_BLOCK_SIZE];   /* a rebuild's group reads */
-	unsigned long rebuilt;                  /* blocks rebuilt from parity since open */
+	unsigned long rebuilt;                  /* blocks rebuilt (parity or copy) since open */
+	const char *rebuilt_from;               /* the last one's source: "parity", "the header",
+	                                         * "the directory copy", "the directory" */
 	int header_from_copy;                   /* block 0 was bad: the copy's header */
-	/* When set (before open), told of every block rebuilt from parity
-	 * (block 0 also when the header came from the copy). */
+	uint32_t missing;                       /* blocks at the image's end the storage lacks
+	                                         * (copies, parity): a warning */
+	/* When set (before open), told of every block rebuilt from parity or
+	 * a copy (block 0 also when the header came from the copy). */
 	void (*on_rebuild)(void *ctx, uint32_t block);
 	void *on_rebuild_ctx;
 } skp_image;
 
-/* Reads and checks block 0 (magic, version, header CRC, board limits, that
- * the storage holds every block) and the clip directory. A bad image gives
- * SKP_ERR_CORRUPT (or SKP_ERR_LIMIT, SKP_ERR_IO) naming the block and what
- * was expected. dev must stay valid while im is used. */
+/* Reads and checks the header (block 0, or its copy when block 0 is bad:
+ * at the storage's end, else searched for), the board limits, that the
+ * storage holds every data block, and the clip directory (from its copy
+ * where a block is beyond parity). A bad image gives SKP_ERR_CORRUPT (or
+ * SKP_ERR_LIMIT, SKP_ERR_IO) naming the block and what was expected; an
+ * image of an older format version is refused by name. im->missing counts
+ * blocks of the image's end the storage lacks (it still opens). dev must
+ * stay valid while im is used. */
 skp_status skp_image_open(skp_image *im, const skp_blockdev *dev, skp_error *err);
 
-/* Reads block into buf and checks it: its CRC, the image's tag, its index,
- * and when kind > 0 its kind and item. A block that fails is rebuilt from
- * its parity group when it can be (then SKP_BLOCK_OK, on_rebuild told);
+/* Reads block into buf and checks it: its CRC, the image's id, its index,
+ * and when kind > 0 its kind and item. A block that fails is recovered when
+ * it can be (skp_image_recover: then SKP_BLOCK_OK, on_rebuild told);
  * otherwise the first failure is returned. */
 skp_block_state skp_image_read_block(skp_image *im, uint32_t block, int kind, unsigned item,
 				     uint8_t *buf);
 
-/* The same without the rebuild: what the storage holds. */
+/* The same without the recovery: what the storage holds. */
 skp_block_state skp_image_check_block(skp_image *im, uint32_t block, int kind, unsigned item,
 				      uint8_t *buf);
 
 /* Only the read (a whole block, no check): parity blocks have no frame. */
 skp_block_state skp_image_read_raw(const skp_image *im, uint32_t block, uint8_t *buf);
 
-/* The frame check of a block already in buf (CRC, tag, index, kind). */
+/* The frame check of a block already in buf (CRC, id, index, kind). */
 skp_block_state skp_image_frame_check(const skp_image *im, uint32_t block, int kind, unsigned item,
 				      const uint8_t *buf);
 
@@ -89,6 +110,12 @@ skp_block_state skp_image_frame_check(const skp_image *im, uint32_t block, int k
  * im->scratch) and checks it. SKP_BLOCK_OK when the result is the block;
  * else why not (no parity, another bad block in the group). */
 skp_block_state skp_image_rebuild(skp_image *im, uint32_t block, int kind, unsigned item, uint8_t *buf);
+
+/* Recovers a bad block into buf: a data block from its parity group, else
+ * from its copy (block 0 from the header; a directory block from the
+ * directory copy); a copy from what it copies. SKP_BLOCK_OK when buf now
+ * holds the block as packed, else why not. */
+skp_block_state skp_image_recover(skp_image *im, uint32_t block, int kind, unsigned item, uint8_t *buf);
 
 /* The skeleton, exactly as packed. */
 skp_status skp_image_load_skel(skp_image *im, skel *s, skp_error *err);

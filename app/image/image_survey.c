@@ -2,6 +2,9 @@
 
 #include <string.h>
 
+#include "image_copies.h"
+#include "sha256.h"
+
 void skp_image_block_role(const skp_image *im, uint32_t b, int *kind, unsigned *item)
 {
 	static const int sec_kind[] = { SKP_KIND_SKELETON, SKP_KIND_BIND, SKP_KIND_DIRECTORY };
@@ -26,8 +29,7 @@ static void survey_data(skp_image *im, uint32_t b, skp_block_report *r, uint8_t 
 	skp_image_block_role(im, b, &r->kind, &r->item);
 	r->group = skp_image_group(&im->hdr, b);
 	r->state = skp_image_check_block(im, b, r->kind, r->item, buf);
-	r->repairable = r->state != SKP_BLOCK_OK &&
-			skp_image_rebuild(im, b, r->kind, r->item, buf) == SKP_BLOCK_OK;
+	r->repairable = r->state != SKP_BLOCK_OK && skp_image_recover(im, b, r->kind, r->item, buf) == SKP_BLOCK_OK;
 }
 
 /* The parity block XORed with its group's data blocks is all zeros when it
@@ -60,17 +62,22 @@ static void survey_parity(skp_image *im, uint32_t b, skp_block_report *r, uint8_
 	r->repairable = r->state != SKP_BLOCK_OK && data_good;
 }
 
+/* A copy must be framed as one and hold what it copies (rebuilt from
+ * there when not: the header always, a directory block when the primary
+ * reads, from parity at most). */
 static void survey_copy(skp_image *im, uint32_t b, skp_block_report *r, uint8_t *buf)
 {
-	r->role = SKP_ROLE_COPY;
-	r->kind = SKP_KIND_HEADER;
+	const skp_image_header *h = &im->hdr;
+	r->role = b == h->copy_block ? SKP_ROLE_COPY : SKP_ROLE_DIR_COPY;
+	r->kind = b == h->copy_block ? SKP_KIND_HEADER : SKP_KIND_DIRECTORY;
 	r->item = 1;
-	r->state = skp_image_check_block(im, b, SKP_KIND_HEADER, 1, buf);
-	uint8_t want[SKP_IMAGE_HEADER_SIZE];
-	skp_image_header_put(want, &im->hdr);
-	if (r->state == SKP_BLOCK_OK && memcmp(buf + im->hdr.block_size - SKP_IMAGE_TAIL, want, sizeof want))
+	r->state = skp_image_check_block(im, b, r->kind, 1, buf);
+	/* what it copies, framed as this block (a rebuild reads its group
+	 * through im->scratch) */
+	skp_block_state want = skp_image_recover(im, b, r->kind, 1, im->buf);
+	if (r->state == SKP_BLOCK_OK && want == SKP_BLOCK_OK && memcmp(buf, im->buf, h->block_size))
 		r->state = SKP_BLOCK_MISPLACED;
-	r->repairable = r->state != SKP_BLOCK_OK;
+	r->repairable = r->state != SKP_BLOCK_OK && want == SKP_BLOCK_OK;
 }
 
 void skp_image_survey(skp_image *im, uint32_t b, skp_block_report *r, uint8_t *buf)
@@ -90,9 +97,35 @@ const char *skp_block_report_what(const skp_block_report *r)
 {
 	static const char *const kinds[] = { "data", "header", "skeleton", "bind", "clip directory",
 					     "clip quantisation", "clip frames" };
-	if (r->role == SKP_ROLE_PARITY)
-		return "parity";
-	if (r->role == SKP_ROLE_COPY)
-		return "header copy";
+	if (r->role != SKP_ROLE_DATA)
+		return r->role == SKP_ROLE_PARITY ? "parity" : r->role == SKP_ROLE_COPY ? "header copy" : "directory copy";
 	return r->kind >= 0 && r->kind <= SKP_KIND_FRAMES ? kinds[r->kind] : "data";
+}
+
+void skp_image_verify(skp_image *im, uint8_t *buf, void (*bad)(void *ctx, uint32_t block, const skp_block_report *r),
+		      void *ctx, skp_image_verdict *v)
+{
+	sha256_ctx digest;
+	uint8_t sum[SKP_IMAGE_DIGEST_BYTES];
+	skp_block_report r;
+	memset(v, 0, sizeof *v);
+	v->digest = 1;
+	sha256_init(&digest);
+	for (uint32_t b = 0; b < im->hdr.block_count; b++) {
+		skp_image_survey(im, b, &r, buf);
+		int usable = r.state == SKP_BLOCK_OK || r.repairable;
+		if (b > 0 && b < im->hdr.data_blocks && usable)
+			sha256_update(&digest, buf, im->hdr.block_size);
+		if (b < im->hdr.data_blocks && !usable)
+			v->digest = -1;
+		if (r.state == SKP_BLOCK_OK)
+			continue;
+		v->bad++;
+		v->beyond += !r.repairable;
+		if (bad)
+			bad(ctx, b, &r);
+	}
+	sha256_final(&digest, sum);
+	if (v->digest == 1 && memcmp(sum, im->hdr.digest, sizeof sum))
+		v->digest = 0;
 }

@@ -4,6 +4,7 @@
 #include <string.h>
 
 #include "crc32.h"
+#include "image_copies.h"
 #include "image_parity.h"
 #include "image_section.h"
 #include "skin_compact.h"
@@ -45,12 +46,9 @@ static skp_status flush_block(skp_image_writer *w, skp_error *err)
 {
 	uint8_t *b = w->block;
 	uint32_t index = w->next_block++;
-	le_put32(b, w->tag);
-	le_put32(b + 4, index);
-	b[8] = w->kind;
-	b[9] = 0;
-	le_put16(b + 10, w->item);
+	skp_block_frame(b, w->hdr.id, index, w->kind, w->item);
 	skp_block_seal(b, w->bs);
+	sha256_update(&w->digest, b, w->bs);
 	if (w->dev->write(w->dev->ctx, index, b) < 0)
 		return image_block_fail(err, SKP_ERR_IO, index, "cannot write it");
 	memset(b, 0, w->bs);
@@ -184,7 +182,7 @@ static skp_status put_skel(skp_image_writer *w, const skel *s, skp_error *err)
 }
 
 skp_status skp_image_write_begin(skp_image_writer *w, skp_blockdev *dev, uint64_t sequence,
-				 const skel *s, skp_error *err)
+				 const uint8_t id[SKP_IMAGE_ID_BYTES], const skel *s, skp_error *err)
 {
 	uint32_t bs = dev->block_size;
 	skp_error_clear(err);
@@ -199,7 +197,8 @@ skp_status skp_image_write_begin(skp_image_writer *w, skp_blockdev *dev, uint64_
 	w->s = s;
 	w->bs = bs;
 	w->payload = bs - SKP_IMAGE_BLOCK_EXTRA;
-	w->tag = skp_image_tag(sequence);
+	memcpy(w->hdr.id, id, SKP_IMAGE_ID_BYTES);
+	sha256_init(&w->digest);
 	w->next_block = 1; /* block 0, the header, comes last */
 	w->clip_count = 0;
 	w->clip = NULL;
@@ -369,14 +368,14 @@ static skp_status put_quant(skp_image_writer *w, skp_image_clip *c, const skp_cl
 skp_status skp_image_clip_begin(skp_image_writer *w, const char *name, float fps,
 				const skp_clip_range *range, skp_error *err)
 {
-	uint32_t frame_bytes = 2u * (uint32_t)range->dofs;
+	uint32_t frame_bytes = 2u * (uint32_t)range->dofs, room = w->payload - SKP_IMAGE_FRAMES_COUNT;
 	if (w->clip_count >= SKP_IMAGE_MAX_CLIPS)
 		return skp_fail(err, SKP_ERR_LIMIT, 0, "more than %d clips (board limit SKP_IMAGE_MAX_CLIPS)",
 				SKP_IMAGE_MAX_CLIPS);
 	if (strlen(name) >= SKP_MAX_NAME)
 		return skp_fail(err, SKP_ERR_LIMIT, 0, "clip name '%s' longer than %d bytes", name,
 				SKP_MAX_NAME - 1);
-	if (range->dofs != w->s->dof_count || frame_bytes > w->payload || frame_bytes == 0)
+	if (range->dofs != w->s->dof_count || frame_bytes > room || frame_bytes == 0)
 		return skp_fail(err, SKP_ERR_RANGE, 0, "a frame of %d dofs does not fit a %lu-byte block",
 				range->dofs, (unsigned long)w->bs);
 	if (!(fps > 0))
@@ -388,7 +387,7 @@ skp_status skp_image_clip_begin(skp_image_writer *w, const char *name, float fps
 	c->frame_count = (uint32_t)range->frames;
 	c->first_number = (int32_t)range->first_number;
 	c->dofs = (uint16_t)range->dofs;
-	c->frames_per_block = (uint16_t)(w->payload / frame_bytes);
+	c->frames_per_block = (uint16_t)(room / frame_bytes);
 	skp_status rc = put_quant(w, c, range, err);
 	if (rc)
 		return rc;
@@ -398,6 +397,7 @@ skp_status skp_image_clip_begin(skp_image_writer *w, const char *name, float fps
 	c->frame_blocks = (c->frame_count + c->frames_per_block - 1) / c->frames_per_block;
 	w->clip = c->frame_count ? c : NULL;
 	w->frames_left = c->frame_count;
+	w->in_block = 0;
 	w->next_number = range->first_number;
 	sec_begin(w, SKP_KIND_FRAMES, (uint16_t)w->clip_count);
 	w->clip_count++;
@@ -413,6 +413,8 @@ skp_status skp_image_clip_frame(skp_image_writer *w, const amc_frame *f, skp_err
 	if (f->number != w->next_number)
 		return skp_fail(err, SKP_ERR_RANGE, f->line, "frame %ld: expected frame %ld (the input changed since the first pass?)",
 				f->number, w->next_number);
+	if (w->fill == 0)
+		w->fill = SKP_IMAGE_FRAMES_COUNT; /* the block's count of frames, set when it is full */
 	uint8_t *p = w->block + SKP_IMAGE_BLOCK_HDR + w->fill;
 	for (int i = 0; i < c->dofs; i++) {
 		double q = w->qstep[i] > 0 ? floor(((double)f->value[i] - w->qmin[i]) / w->qstep[i] + 0.5) : 0;
@@ -422,10 +424,13 @@ skp_status skp_image_clip_frame(skp_image_writer *w, const amc_frame *f, skp_err
 		le_put16(p + 2 * i, (uint16_t)q);
 	}
 	w->fill += 2u * c->dofs;
+	w->in_block++;
 	w->next_number++;
 	w->frames_left--;
 	/* whole frames only: the block goes when the next frame would not fit */
 	if (w->fill + 2u * c->dofs > w->payload || w->frames_left == 0) {
+		le_put16(w->block + SKP_IMAGE_BLOCK_HDR, w->in_block);
+		w->in_block = 0;
 		if (flush_block(w, err) != SKP_OK)
 			return SKP_ERR_IO;
 	}
@@ -467,25 +472,20 @@ skp_status skp_image_write_end(skp_image_writer *w, skp_error *err)
 	if (rc)
 		return rc;
 	/* data, parity over it (block 0 from memory: it is written last), the
-	 * header copy, block 0 */
+	 * copies, block 0 */
 	h->data_blocks = w->next_block;
 	h->parity_blocks = w->parity_group < 0 ? 0 : skp_parity_blocks(h->data_blocks, (uint32_t)w->parity_group);
-	h->copy_block = h->data_blocks + h->parity_blocks;
+	h->dir_copy = h->data_blocks + h->parity_blocks;
+	h->copy_block = h->dir_copy + h->sec[SKP_SEC_DIRECTORY].count;
 	h->block_count = h->copy_block + 1;
-	uint8_t *b0 = w->head;
-	memset(b0, 0, w->bs);
-	le_put32(b0, w->tag);
-	b0[8] = SKP_KIND_HEADER;
-	skp_image_header_put(b0 + SKP_IMAGE_BLOCK_HDR, h);
-	skp_block_seal(b0, w->bs);
-	rc = skp_parity_write(w->dev, h, b0, w->block, w->tmp, err);
+	sha256_final(&w->digest, h->digest);
+	skp_header_block_frame(w->head, h);
+	rc = skp_parity_write(w->dev, h, w->head, w->block, w->tmp, err);
+	if (!rc) rc = skp_image_write_copies(w->dev, h, w->block, err);
 	if (rc)
 		return rc;
-	skp_header_copy_frame(w->block, h);
-	if (w->dev->write(w->dev->ctx, h->copy_block, w->block) < 0 || w->dev->write(w->dev->ctx, 0, b0) < 0) {
-		skp_fail(err, SKP_ERR_IO, 0, "cannot write the header");
-		return SKP_ERR_IO;
-	}
+	if (w->dev->write(w->dev->ctx, 0, w->head) < 0)
+		return image_block_fail(err, SKP_ERR_IO, 0, "cannot write the header");
 	w->next_block = h->block_count;
 	return SKP_OK;
 }

@@ -11,6 +11,7 @@
 #include "fk.h"
 #include "image_format.h"
 #include "mesh.h"
+#include "sha256.h"
 #include "skin_weights.h"
 
 /* Pass 1 over a clip: frame count, numbering, per-dof min and max. */
@@ -30,7 +31,7 @@ typedef struct skp_image_writer {
 	skp_blockdev *dev;
 	const skel *s;
 	uint32_t bs, payload;     /* block size, payload bytes per block */
-	uint32_t tag;
+	sha256_ctx digest;        /* of data blocks 1.. as they are written */
 	uint32_t next_block;      /* next block to write */
 	skp_image_header hdr;
 	/* the section being written */
@@ -40,6 +41,7 @@ typedef struct skp_image_writer {
 	/* the clip being written */
 	skp_image_clip *clip;
 	uint32_t frames_left;
+	uint16_t in_block;        /* frames in the block being filled */
 	long next_number;
 	float qmin[SKP_MAX_DOF], qstep[SKP_MAX_DOF];
 	int clip_count;
@@ -50,10 +52,11 @@ typedef struct skp_image_writer {
 } skp_image_writer;
 
 /* Starts an image on dev (dev->block_size is the image's block size) and
- * writes the skeleton section. Set w->parity_group after it to choose the
- * parity (default 0: groups of 8 or more, see image_format.h). */
+ * writes the skeleton section. id: the image's random id (every block
+ * carries it). Set w->parity_group after it to choose the parity (default
+ * 0: groups of 8 or more, see image_format.h). */
 skp_status skp_image_write_begin(skp_image_writer *w, skp_blockdev *dev, uint64_t sequence,
-				 const skel *s, skp_error *err);
+				 const uint8_t id[SKP_IMAGE_ID_BYTES], const skel *s, skp_error *err);
 
 /* The bound body: mesh, weights, and the bind pose (bind_values: one frame
  * as amc_frame.value numbered bind_number, or NULL for the rest pose). */
@@ -66,8 +69,9 @@ skp_status skp_image_clip_begin(skp_image_writer *w, const char *name, float fps
 				const skp_clip_range *range, skp_error *err);
 skp_status skp_image_clip_frame(skp_image_writer *w, const amc_frame *f, skp_error *err);
 
-/* Writes the directory, the parity blocks (reading the data blocks back:
- * dev must read as well as write), the header copy, then the header. */
+/* Writes the directory, the parity blocks and the directory copy (reading
+ * the data blocks back: dev must read as well as write), the header copy,
+ * then the header, with the digest of the data blocks. */
 skp_status skp_image_write_end(skp_image_writer *w, skp_error *err);
 
 #endif

@@ -136,11 +136,11 @@ static void print_parity(const show_image *img)
 {
 	const skp_image_header *h = &img->im.hdr;
 	if (h->parity_blocks == 0)
-		printf("parity: none%s: no bad block can be rebuilt\n", h->version < 2 ? " (format version 1)" : "");
+		printf("parity: none: a bad block other than the header's and the directory's cannot be rebuilt\n");
 	else
-		printf("parity: %lu blocks and the header copy for %lu data blocks: %.1f%% larger than without\n",
+		printf("parity: %lu blocks and the copies (directory, header) for %lu data blocks: %.1f%% larger than without\n",
 		       (unsigned long)h->parity_blocks, (unsigned long)h->data_blocks,
-		       100.0 * (h->parity_blocks + 1) / h->data_blocks);
+		       100.0 * (h->block_count - h->data_blocks) / h->data_blocks);
 }
 
 typedef struct bench_image_args {

@@ -1,10 +1,11 @@
 /* skintool info show.skn
- * Prints a flash image's header, sections, parity and clips, then checks
- * every block: data blocks by their frame, parity blocks against their
- * group, the header copy against the header. Each bad block is named with
- * what it held and whether it can be rebuilt (`skintool repair`). Exit
- * status 0 when every block is good, 2 when the image is damaged, 1 when it
- * cannot be read at all. */
+ * Prints a flash image's header (its id included), sections, parity and
+ * clips, then checks every block: data blocks by their frame, parity
+ * blocks against their group, the copies against what they copy, and the
+ * data against the header's digest. Each bad block is named with what it
+ * held and whether it can be rebuilt (`skintool repair`). Exit status 0
+ * when every block is good, 2 when the image is damaged, 1 when it cannot
+ * be read at all. */
 #include <stdio.h>
 #include <string.h>
 
@@ -12,15 +13,40 @@
 #include "skintool_cmds.h"
 #include "tool_args.h"
 
+static void print_hex(const char *label, const uint8_t *p, int n)
+{
+	printf("%s", label);
+	for (int i = 0; i < n; i++)
+		printf("%02x", p[i]);
+	printf("\n");
+}
+
+static void print_parity(const skp_image_header *h)
+{
+	if (h->parity_blocks == 0)
+		printf("  parity      none (packed with --parity none)\n");
+	else
+		printf("  parity      blocks %lu..%lu: %lu groups of up to %lu data blocks (block b in group b mod %lu)\n",
+		       (unsigned long)h->data_blocks, (unsigned long)(h->data_blocks + h->parity_blocks - 1),
+		       (unsigned long)h->parity_blocks,
+		       (unsigned long)((h->data_blocks + h->parity_blocks - 1) / h->parity_blocks),
+		       (unsigned long)h->parity_blocks);
+	printf("  copies      directory: blocks %lu..%lu; header: block %lu; parity and copies %.1f%% more\n",
+	       (unsigned long)h->dir_copy, (unsigned long)(h->copy_block - 1), (unsigned long)h->copy_block,
+	       100.0 * (h->block_count - h->data_blocks) / h->data_blocks);
+}
+
 static void print_header(const show_image *s)
 {
 	const skp_image_header *h = &s->im.hdr;
 	static const char *const names[] = { "skeleton", "bind", "directory", "clips" };
 	printf("%s: skinplay image, format version %u\n", s->path, (unsigned)h->version);
+	print_hex("  id          ", h->id, SKP_IMAGE_ID_BYTES);
 	printf("  sequence    %llu\n", (unsigned long long)h->sequence);
 	printf("  blocks      %lu of %lu bytes (%llu bytes), CRC-32 each; header CRC %08lx\n",
 	       (unsigned long)h->block_count, (unsigned long)h->block_size,
 	       (unsigned long long)h->block_count * h->block_size, (unsigned long)h->crc);
+	print_hex("  digest      SHA-256 of the data blocks ", h->digest, SKP_IMAGE_DIGEST_BYTES);
 	printf("  needs       %lu bones, %lu dofs, %lu vertices, %lu triangles, %lu influences, %lu clips\n",
 	       (unsigned long)h->bones, (unsigned long)h->dofs, (unsigned long)h->verts, (unsigned long)h->tris,
 	       (unsigned long)h->influences, (unsigned long)h->clips);
@@ -33,19 +59,7 @@ static void print_header(const show_image *s)
 			printf(", %lu bytes", (unsigned long)sec->bytes);
 		printf("\n");
 	}
-	if (h->version < 2)
-		printf("  parity      none (format version 1): a bad block cannot be rebuilt; pack again for parity\n");
-	else if (h->parity_blocks == 0)
-		printf("  parity      none (packed with --parity none); header copy: block %lu\n",
-		       (unsigned long)h->copy_block);
-	else
-		printf("  parity      blocks %lu..%lu: %lu groups of up to %lu data blocks (block b in group b mod %lu), "
-		       "%.1f%% more; header copy: block %lu\n",
-		       (unsigned long)h->data_blocks, (unsigned long)(h->data_blocks + h->parity_blocks - 1),
-		       (unsigned long)h->parity_blocks,
-		       (unsigned long)((h->data_blocks + h->parity_blocks - 1) / h->parity_blocks),
-		       (unsigned long)h->parity_blocks, 100.0 * (h->parity_blocks + 1) / h->data_blocks,
-		       (unsigned long)h->copy_block);
+	print_parity(h);
 }
 
 static void print_clips(const show_image *s)
@@ -83,9 +97,10 @@ static void bad_block(void *ctx, uint32_t b, const skp_block_report *r)
 			printf(", frames %ld..%ld", first + c->first_number, last + c->first_number);
 		}
 	}
-	if (r->role != SKP_ROLE_COPY && h->parity_blocks)
+	if ((r->role == SKP_ROLE_DATA || r->role == SKP_ROLE_PARITY) && h->parity_blocks)
 		printf(", parity group %lu", (unsigned long)r->group);
 	printf("): %s\n", r->repairable ? "repairable"
+		 : r->role == SKP_ROLE_DIR_COPY ? "beyond repair (the directory is bad too)"
 		 : h->parity_blocks == 0 ? "beyond repair (no parity)"
 		 : "beyond repair (another block of its group is bad)");
 }
@@ -191,16 +206,22 @@ int cmd_info(int argc, char **argv)
 	print_header(&s);
 	print_clips(&s);
 	int refused_body = accept(&s);
-	long beyond;
-	long bad = show_image_verify(&s, bad_block, &s, &beyond);
-	if (bad == 0)
+	skp_image_verdict v;
+	show_image_verify(&s, bad_block, &s, &v);
+	if (v.bad == 0)
 		printf("verify: %lu blocks: all good, 0 bad\n", (unsigned long)s.im.hdr.block_count);
 	else
 		printf("verify: %lu blocks: %ld bad, %ld repairable (skintool repair %s), %ld beyond repair\n",
-		       (unsigned long)s.im.hdr.block_count, bad, bad - beyond, s.path, beyond);
+		       (unsigned long)s.im.hdr.block_count, v.bad, v.bad - v.beyond, s.path, v.beyond);
+	printf("digest: %s\n", v.digest > 0 ? "the data blocks match it"
+				: v.digest < 0 ? "not checked (a data block is beyond repair)"
+				: "MISMATCH: a data block was altered and keeps a good CRC (not this image as packed)");
+	if (s.im.missing)
+		printf("note: the storage ends %lu blocks before the image (counted bad above)\n",
+		       (unsigned long)s.im.missing);
 	if (s.sf.bd.block_count > s.im.hdr.block_count)
 		printf("note: %lu blocks after the image's end (ignored)\n",
 		       (unsigned long)(s.sf.bd.block_count - s.im.hdr.block_count));
 	show_image_close(&s);
-	return bad || refused_body ? 2 : 0;
+	return v.bad || v.digest == 0 || refused_body ? 2 : 0;
 }

@@ -22,6 +22,7 @@
 #include "cli_image_out.h"
 #include "cli_progress.h"
 #include "image_write.h"
+#include "random_bytes.h"
 #include "skintool_cmds.h"
 #include "tool_args.h"
 
@@ -237,8 +238,14 @@ static int pack_clip(skp_image_writer *w, const char *path, double fps)
 static int write_image(const pack_args *p, const bound_body *body, storage_file *sf)
 {
 	static skp_image_writer w;
+	uint8_t id[SKP_IMAGE_ID_BYTES];
 	skp_error err;
-	skp_status rc = skp_image_write_begin(&w, &sf->bd, (uint64_t)p->sequence, &body->skel, &err);
+	int e = random_bytes(id, sizeof id);
+	if (e < 0) {
+		fprintf(stderr, "%s: cannot choose the image id: %s\n", p->out, strerror(-e));
+		return -1;
+	}
+	skp_status rc = skp_image_write_begin(&w, &sf->bd, (uint64_t)p->sequence, id, &body->skel, &err);
 	w.parity_group = p->parity;
 	if (rc != SKP_OK ||
 	    skp_image_write_bind(&w, &body->mesh, &body->weights, bound_pose_values(body),

@@ -1,59 +1,76 @@
 /* skintool repair show.skn
- * Rebuilds every bad block of an image that has parity (format version 2):
- * data blocks from their parity group, parity blocks from their data, the
- * header copy from the header. The repaired image is written beside the old
- * one, synced and renamed over it (cli_image_out.h), so the old image is
- * never lost. Exit status 0 when the image is whole (repaired, or nothing
- * to repair), 2 when a block is beyond repair (the image is left as it
- * was), 1 when it cannot be read or written. */
+ * Rebuilds every bad block of an image: data blocks from their parity
+ * group (block 0 and directory blocks from their copies when their group
+ * cannot), parity blocks from their data, the copies from what they copy;
+ * a block of another image is bad like any other. The result must match
+ * the digest in the header, or nothing is written. The repaired image is
+ * written beside the old one, synced and renamed over it (cli_image_out.h),
+ * so the old image is never lost. Exit status 0 when the image is whole
+ * (repaired, or nothing to repair), 2 when a block is beyond repair or the
+ * data does not match the digest (the image is left as it was), 1 when it
+ * cannot be read or written. */
 #include <stdio.h>
 #include <string.h>
 
 #include "cli_common.h"
 #include "cli_image_out.h"
 #include "cli_show.h"
+#include "image_copies.h"
 #include "image_parity.h"
+#include "sha256.h"
 #include "skintool_cmds.h"
 #include "tool_args.h"
 
 static void beyond(void *ctx, uint32_t b, const skp_block_report *r)
 {
-	long *count = ctx;
+	(void)ctx;
 	if (!r->repairable)
 		fprintf(stderr, "block %lu: %s (%s): beyond repair\n", (unsigned long)b,
 			skp_block_state_name(r->state), skp_block_report_what(r));
-	(*count)++;
 }
 
-/* Every data block as the reader rebuilds it, then fresh parity and copy. */
+/* Data block b as the reader rebuilds it, written to out and hashed. */
+static int rewrite_block(show_image *s, cli_image_out *out, uint32_t b, uint8_t *buf, sha256_ctx *digest)
+{
+	const skp_blockdev *dev = &out->sf.bd;
+	int kind;
+	unsigned item;
+	skp_image_block_role(&s->im, b, &kind, &item);
+	skp_block_state st = skp_image_read_block(&s->im, b, kind, item, buf);
+	if (st != SKP_BLOCK_OK) {
+		fprintf(stderr, "%s: block %lu: %s on the second read\n", s->path, (unsigned long)b, skp_block_state_name(st));
+		return -1;
+	}
+	if (b > 0)
+		sha256_update(digest, buf, s->im.hdr.block_size);
+	if (dev->write(dev->ctx, b, buf) < 0) {
+		fprintf(stderr, "%s: cannot write block %lu\n", out->af.path, (unsigned long)b);
+		return -1;
+	}
+	return 0;
+}
+
+/* Every data block as the reader rebuilds it (matching the digest), then
+ * fresh parity and copies. */
 static int rewrite(show_image *s, cli_image_out *out)
 {
 	static uint8_t buf[SKP_IMAGE_BLOCK_SIZE], tmp[SKP_IMAGE_BLOCK_SIZE];
 	const skp_image_header *h = &s->im.hdr;
-	const skp_blockdev *dev = &out->sf.bd;
+	uint8_t sum[SKP_IMAGE_DIGEST_BYTES];
+	sha256_ctx digest;
 	skp_error err;
-	for (uint32_t b = 0; b < h->data_blocks; b++) {
-		int kind;
-		unsigned item;
-		skp_image_block_role(&s->im, b, &kind, &item);
-		skp_block_state st = skp_image_read_block(&s->im, b, kind, item, buf);
-		if (st != SKP_BLOCK_OK) {
-			fprintf(stderr, "%s: block %lu: %s on the second read\n", s->path, (unsigned long)b,
-				skp_block_state_name(st));
+	sha256_init(&digest);
+	for (uint32_t b = 0; b < h->data_blocks; b++)
+		if (rewrite_block(s, out, b, buf, &digest) < 0)
 			return -1;
-		}
-		if (dev->write(dev->ctx, b, buf) < 0) {
-			fprintf(stderr, "%s: cannot write block %lu\n", out->af.path, (unsigned long)b);
-			return -1;
-		}
-	}
-	if (skp_parity_write(dev, h, NULL, buf, tmp, &err) != SKP_OK) {
-		cli_error(out->af.path, &err);
+	sha256_final(&digest, sum);
+	if (memcmp(sum, h->digest, sizeof sum)) {
+		fprintf(stderr, "%s: the rebuilt data does not match the image's digest: not repaired\n", s->path);
 		return -1;
 	}
-	skp_header_copy_frame(buf, h);
-	if (dev->write(dev->ctx, h->copy_block, buf) < 0) {
-		fprintf(stderr, "%s: cannot write the header copy\n", out->af.path);
+	if (skp_parity_write(&out->sf.bd, h, NULL, buf, tmp, &err) != SKP_OK ||
+	    skp_image_write_copies(&out->sf.bd, h, buf, &err) != SKP_OK) {
+		cli_error(out->af.path, &err);
 		return -1;
 	}
 	return 0;
@@ -80,14 +97,18 @@ int cmd_repair(int argc, char **argv)
 		cli_error(path, &err);
 		return err.code == SKP_ERR_IO && err.block < 0 ? 1 : 2;
 	}
-	long bad = 0, lost;
-	show_image_verify(&s, beyond, &bad, &lost);
+	skp_image_verdict v;
+	show_image_verify(&s, beyond, NULL, &v);
 	int rc = 0;
-	if (bad == 0)
+	if (v.bad == 0 && v.digest > 0) {
 		printf("%s: all %lu blocks good: nothing to repair\n", s.path, (unsigned long)s.im.hdr.block_count);
-	else if (lost > 0 || s.im.hdr.version < 2) {
-		fprintf(stderr, "%s: %ld of %ld bad blocks beyond repair%s: the image is left as it was\n", s.path,
-			lost ? lost : bad, bad, s.im.hdr.version < 2 ? " (format version 1 has no parity)" : "");
+	} else if (v.beyond > 0) {
+		fprintf(stderr, "%s: %ld of %ld bad blocks beyond repair: the image is left as it was\n", s.path, v.beyond,
+			v.bad);
+		rc = 2;
+	} else if (v.digest == 0) {
+		fprintf(stderr, "%s: the data blocks do not match the image's digest (a block altered with a good CRC): "
+			"the image is left as it was\n", s.path);
 		rc = 2;
 	} else if (cli_image_out_open(&out, s.path, s.im.hdr.block_size) < 0) {
 		rc = 1;
@@ -97,8 +118,8 @@ int cmd_repair(int argc, char **argv)
 	} else if (cli_image_out_commit(&out) < 0) {
 		rc = 1;
 	} else {
-		printf("%s: %ld bad block%s rebuilt; the repaired image replaced the old one\n", s.path, bad,
-		       bad == 1 ? "" : "s");
+		printf("%s: %ld bad block%s rebuilt; the repaired image replaced the old one\n", s.path, v.bad,
+		       v.bad == 1 ? "" : "s");
 	}
 	show_image_close(&s);
 	return rc;

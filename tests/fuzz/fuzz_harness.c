@@ -151,6 +151,7 @@ int fuzz_image(const uint8_t *data, size_t size)
 	if (size > sizeof buf)
 		size = sizeof buf;
 	memcpy(buf, data, size);
+	image_fix_crcs(buf, size, SKP_IMAGE_MIN_BLOCK);
 	uint32_t bs = skp_image_block_size_hint(buf, (uint32_t)size);
 	if (bs == 0)
 		bs = SKP_IMAGE_MIN_BLOCK;

@@ -1,10 +1,10 @@
 /* Flash image core: CRC-32, pack/read round trip in memory (skeleton and
  * bind data exact, frames within the stated quantisation), every block's
  * damage named and playback holding over bad blocks (images packed without
- * parity), parity rebuilding any one bad block bit-identical, the header
- * copy, version 1 images still read, and the refusals: wrong magic/version,
- * header CRC, truncation, board limits, foreign blocks. Raw ASF/AMC
- * streamed from block storage. */
+ * parity), parity rebuilding any one bad block bit-identical, the copies
+ * (header, directory) wherever the storage ends, and the refusals: wrong
+ * magic, older versions by name, header CRC, truncation, board limits,
+ * another image's blocks. Raw ASF/AMC streamed from block storage. */
 #include <stdarg.h>
 #include <stddef.h>
 #include <setjmp.h>
@@ -18,6 +18,7 @@
 
 #include "crc32.h"
 #include "image_parity.h"
+#include "sha256.h"
 #include "image_play.h"
 #include "image_write.h"
 #include "test_parse.h"
@@ -45,6 +46,34 @@ static void test_crc32_vectors(void **state)
 	assert_int_equal(crc32_compute("", 0), 0);
 	assert_int_equal(crc32_update(crc32_update(0, "1234", 4), "56789", 5), 0xCBF43926u);
 	assert_int_equal(crc32_compute("The quick brown fox jumps over the lazy dog", 43), 0x414FA339u);
+}
+
+/* FIPS 180-4's examples, and a message fed in uneven pieces across the
+ * 64-byte blocks and the padding's boundary (55/56 bytes). */
+static void assert_sha256(const char *msg, size_t piece, const char *hex)
+{
+	sha256_ctx c;
+	uint8_t out[SHA256_BYTES];
+	char got[2 * SHA256_BYTES + 1];
+	size_t n = strlen(msg);
+	sha256_init(&c);
+	for (size_t at = 0; at < n; at += piece)
+		sha256_update(&c, msg + at, n - at < piece ? n - at : piece);
+	sha256_final(&c, out);
+	for (int i = 0; i < SHA256_BYTES; i++)
+		snprintf(got + 2 * i, 3, "%02x", out[i]);
+	assert_string_equal(got, hex);
+}
+
+static void test_sha256_vectors(void **state)
+{
+	(void)state;
+	assert_sha256("", 1, "e3b0c44298fc1c149afbf4c8996fb92427ae41e4649b934ca495991b7852b855");
+	assert_sha256("abc", 1, "ba7816bf8f01cfea414140de5dae2223b00361a396177a9cb410ff61f20015ad");
+	assert_sha256("abcdbcdecdefdefgefghfghighijhijkijkljklmklmnlmnomnopnopq", 7,
+		      "248d6a61d20638b8e5c026930c3e6039a33ce45964ff2167f6ecedd419db06c1");
+	assert_sha256("abcdefghbcdefghicdefghijdefghijkefghijklfghijklmghijklmnhijklmnoijklmnopjklmnopqklmnopqrlmnopqrsmnopqrstnopqrstu",
+		      13, "cf5b16a778af8380036ce59e7b0492370b249b11e8f07a51afac45037afee9d1");
 }
 
 /* A box around the tiny arm: 8 corners, 12 triangles, weights shared
@@ -133,14 +162,26 @@ static void make_synth(int n)
 	}
 }
 
+/* A made-up id per pack (pack draws it at random): each call another. */
+static void next_id(uint8_t id[SKP_IMAGE_ID_BYTES])
+{
+	static uint64_t n = 0x9e3779b97f4a7c15ull;
+	for (int i = 0; i < SKP_IMAGE_ID_BYTES; i++) {
+		n = n * 6364136223846793005ull + 1442695040888963407ull;
+		id[i] = (uint8_t)(n >> 56);
+	}
+}
+
 /* parity: data blocks per group, 0 the default, -1 none */
 static void pack_with(uint64_t sequence, const float *bind_values, int parity)
 {
 	static skp_mem_blockdev mb;
+	uint8_t id[SKP_IMAGE_ID_BYTES];
 	skp_error err;
 	skp_blockdev dev = skp_mem_blockdev_init(&mb, img, CAP, BS);
 	memset(img, 0, CAP);
-	assert_int_equal(skp_image_write_begin(&wr, &dev, sequence, &s, &err), SKP_OK);
+	next_id(id);
+	assert_int_equal(skp_image_write_begin(&wr, &dev, sequence, id, &s, &err), SKP_OK);
 	wr.parity_group = parity;
 	assert_int_equal(skp_image_write_bind(&wr, &m, &w, bind_values, 7, &err), SKP_OK);
 	assert_int_equal(write_clip("tiny", frames, frame_count, &err), SKP_OK);
@@ -266,8 +307,8 @@ static void test_rest_pose_bind(void **state)
 		assert_true(bind2[d] == 0.0f);
 }
 
-/* Loads everything and checks every block; returns the first bad block or
- * -1 when all is well. */
+/* Loads everything and checks every block as the storage holds it;
+ * returns the first bad block or -1 when all is well. */
 static long first_bad(void)
 {
 	static uint8_t buf[BS];
@@ -276,12 +317,13 @@ static long first_bad(void)
 	long number;
 	if (open_image(img_size, &err) != SKP_OK)
 		return err.block;
+	if (im.header_from_copy)
+		return 0;
 	if (skp_image_load_skel(&im, &s2, &err) != SKP_OK ||
 	    skp_image_load_bind(&im, &s2, &m2, &w2, bind2, &number, &err) != SKP_OK)
 		return err.block;
 	for (uint32_t b = 0; b < im.hdr.block_count; b++)
-		if ((b < im.hdr.data_blocks || b == im.hdr.copy_block) &&
-		    skp_image_read_block(&im, b, 0, 0, buf) != SKP_BLOCK_OK)
+		if ((b < im.hdr.data_blocks || b >= im.hdr.dir_copy) && skp_image_check_block(&im, b, 0, 0, buf) != SKP_BLOCK_OK)
 			return (long)b;
 	return -1;
 }
@@ -360,9 +402,9 @@ static void patch_header(void (*fn)(uint8_t *p), int fix_header_crc)
 	skp_block_seal(copy, BS);
 }
 
-static void set_version_4(uint8_t *p) { le_put16(p + 8, 4); }
+static void set_version_5(uint8_t *p) { le_put16(p + 8, 5); }
 static void set_sequence(uint8_t *p) { le_put64(p + 20, 777); }
-static void set_many_bones(uint8_t *p) { le_put32(p + 28, SKP_MAX_BONES + 1); }
+static void set_many_bones(uint8_t *p) { le_put32(p + 44, SKP_MAX_BONES + 1); }
 static void set_magic(uint8_t *p) { p[0] = 'X'; }
 
 static void expect_refusal(const char *needle, skp_status code)
@@ -379,8 +421,8 @@ static void test_refusals(void **state)
 	(void)state;
 	load_inputs();
 	pack(5, NULL);
-	patch_header(set_version_4, 1);
-	expect_refusal("version 4, this build reads versions 1 to 3", SKP_ERR_CORRUPT);
+	patch_header(set_version_5, 1);
+	expect_refusal("version 5, this build reads version 4", SKP_ERR_CORRUPT);
 	pack(5, NULL);
 	patch_header(set_sequence, 0);
 	expect_refusal("header CRC mismatch", SKP_ERR_CORRUPT);
@@ -398,30 +440,41 @@ static void test_refusals(void **state)
 	skp_error err;
 	static uint8_t buf[BS];
 	assert_int_equal(open_image(img_size, &err), SKP_OK);
-	assert_int_equal(skp_image_read_block(&im, im.hdr.copy_block, SKP_KIND_HEADER, 1, buf), SKP_BLOCK_SHORT);
+	assert_int_equal(skp_image_check_block(&im, im.hdr.copy_block, SKP_KIND_HEADER, 1, buf), SKP_BLOCK_SHORT);
 	img_size = 0;
 	expect_refusal("short read", SKP_ERR_CORRUPT);
 }
 
-/* A block of an older image left in place (same position, good CRC) is
- * refused: the tag differs. */
+/* A block of another image left in place (same position, good CRC) is
+ * refused, even when both images have the same sequence (two packs in one
+ * second): the ids differ. Rebuilt from parity, it reads as it was. */
 static void test_foreign_block(void **state)
 {
 	(void)state;
-	static uint8_t old[CAP];
+	static uint8_t old[CAP], buf[BS], want[BS];
 	skp_error err;
 	load_inputs();
-	pack(1, NULL);
+	pack_with(1, NULL, 0);
 	memcpy(old, img, img_size);
-	pack(2, NULL);
+	pack_with(1, NULL, 0);
+	assert_memory_not_equal(old, img, SKP_IMAGE_ID_BYTES);
 	uint32_t b = wr.dir[1].frames_first;
+	memcpy(want, img + (size_t)b * BS, BS);
 	memcpy(img + (size_t)b * BS, old + (size_t)b * BS, BS);
-	static uint8_t buf[BS];
 	assert_int_equal(open_image(img_size, &err), SKP_OK);
-	assert_int_equal(skp_image_read_block(&im, b, SKP_KIND_FRAMES, 1, buf), SKP_BLOCK_FOREIGN);
+	assert_int_equal(skp_image_check_block(&im, b, SKP_KIND_FRAMES, 1, buf), SKP_BLOCK_FOREIGN);
+	assert_int_equal(skp_image_read_block(&im, b, SKP_KIND_FRAMES, 1, buf), SKP_BLOCK_OK);
+	assert_memory_equal(buf, want, BS);
+	assert_int_equal(im.rebuilt, 1);
 	assert_int_equal(skp_image_read_block(&im, b + 1, SKP_KIND_FRAMES, 1, buf), SKP_BLOCK_OK);
 	/* a good block asked for at another position */
-	assert_int_equal(skp_image_read_block(&im, b + 1, SKP_KIND_FRAMES, 0, buf), SKP_BLOCK_MISPLACED);
+	assert_int_equal(skp_image_check_block(&im, b + 1, SKP_KIND_FRAMES, 0, buf), SKP_BLOCK_MISPLACED);
+	/* another image's block 0 (good CRC, its own header): block 1 says
+	 * whose the image is, and the header comes from the copy */
+	memcpy(img, old, BS);
+	assert_int_equal(open_image(img_size, &err), SKP_OK);
+	assert_true(im.header_from_copy);
+	assert_memory_equal(im.hdr.id, img + BS, SKP_IMAGE_ID_BYTES);
 }
 
 /* FNV-1a over everything a player gets from the image: skeleton, body,
@@ -467,11 +520,12 @@ static void test_parity_layout(void **state)
 	pack_with(3, NULL, 0);
 	assert_int_equal(open_image(img_size, &err), SKP_OK);
 	const skp_image_header *h = &im.hdr;
-	assert_int_equal(h->version, 3);
+	assert_int_equal(h->version, 4);
 	assert_int_equal(h->parity_blocks, skp_parity_blocks(h->data_blocks, 0));
-	assert_int_equal(h->copy_block, h->data_blocks + h->parity_blocks);
 	assert_int_equal(h->block_count, h->copy_block + 1);
-	/* the default keeps parity and copy within 15% where it can */
+	assert_int_equal(h->dir_copy, h->data_blocks + h->parity_blocks);
+	assert_int_equal(h->copy_block, h->dir_copy + h->sec[SKP_SEC_DIRECTORY].count);
+	/* the default keeps parity and the header copy within 15% where it can */
 	assert_true((h->parity_blocks + 1) * 100 <= h->data_blocks * 15 || h->parity_blocks == 1);
 	print_message("%lu data blocks, %lu parity, 1 copy: %.1f%% more\n", (unsigned long)h->data_blocks,
 		      (unsigned long)h->parity_blocks, 100.0 * (h->parity_blocks + 1) / h->data_blocks);
@@ -479,7 +533,9 @@ static void test_parity_layout(void **state)
 	assert_int_equal(skp_parity_blocks(20, 0), 2);    /* groups of 10: 3/20 = 15% */
 	assert_int_equal(skp_parity_blocks(217, 4), 55);
 	/* the block size is found from the end when block 0 is gone */
-	assert_int_equal(skp_image_block_size_hint_tail(img + img_size - SKP_IMAGE_TAIL, SKP_IMAGE_TAIL), BS);
+	skp_image_header copy;
+	assert_true(skp_image_copy_at(img + img_size - SKP_IMAGE_TAIL, img_size - SKP_IMAGE_TAIL, &copy));
+	assert_int_equal(copy.block_size, BS);
 }
 
 /* Any one data block flipped, or zeroed, is rebuilt bit-identical: what the
@@ -548,75 +604,126 @@ static void test_header_copy(void **state)
 	assert_int_equal(err.block, 0);
 }
 
-/* An image an older writer made, from tests/data, opened, its skeleton
- * and body (the box) loaded into s2, m2, w2. */
-static void open_old_image(const char *path, int version)
+/* Storage longer than the image (a slot on a raw partition, a padded
+ * download): the copy is where the header says, and searched for when
+ * block 0 is lost; storage shorter by the copies or parity: a warning
+ * (im.missing), the same playback. */
+static void test_copy_wherever_the_storage_ends(void **state)
 {
-	static float bind2[SKP_MAX_DOF];
-	skp_error err;
-	long number;
-	size_t n;
+	(void)state;
+	static const size_t extra[] = { 1, 7, BS, 3 * BS + 5 };
 	load_inputs();
-	char *old = test_read_file(path, &n);
-	assert_non_null(old);
-	assert_true(n <= CAP);
-	memcpy(img, old, n);
-	img_size = n;
-	free(old);
+	pack_with(8, NULL, 0);
+	uint64_t ref = decoded_hash();
+	size_t full = img_size;
+	for (size_t i = 0; i < sizeof extra / sizeof extra[0]; i++) {
+		memset(img + full, 0xa5, extra[i]);
+		img_size = full + extra[i];
+		assert_int_equal(decoded_hash(), ref);
+		assert_false(im.header_from_copy);
+		memset(img, 0, BS);      /* block 0 lost too: the copy is searched for */
+		assert_int_equal(decoded_hash(), ref);
+		assert_true(im.header_from_copy);
+		skp_block_seal(img, BS); /* still another image's block (zero id) */
+		assert_int_equal(decoded_hash(), ref);
+		pack_with(8, NULL, 0);
+		ref = decoded_hash();
+	}
+	/* the header copy, then the directory copy and parity missing */
+	for (uint32_t lost = 1; lost <= 1 + wr.hdr.sec[SKP_SEC_DIRECTORY].count + 1; lost++) {
+		img_size = full - (size_t)lost * BS;
+		assert_int_equal(decoded_hash(), ref);
+		assert_int_equal(im.missing, lost);
+	}
+	/* into the data: refused (a partial directory block is short) */
+	img_size = (size_t)wr.hdr.data_blocks * BS - 1;
+	expect_refusal("clip directory section: short read", SKP_ERR_CORRUPT);
+	img_size = (size_t)(wr.hdr.data_blocks - 1) * BS;
+	expect_refusal("image truncated", SKP_ERR_CORRUPT);
+}
+
+/* The directory and block 0 come back from their copies when their parity
+ * group cannot rebuild them (another block of the group lost too), and a
+ * lost copy from what it copies. */
+static void test_directory_and_header_copies(void **state)
+{
+	(void)state;
+	static uint8_t buf[BS];
+	skp_error err;
+	load_inputs();
+	pack_with(9, NULL, 4);
+	uint64_t ref = decoded_hash();
+	const skp_image_header *h = &wr.hdr;
+	uint32_t dir = h->sec[SKP_SEC_DIRECTORY].first, p = h->parity_blocks;
+	assert_true(dir >= p);
+	memset(img + (size_t)dir * BS, 0, BS);
+	memset(img + (size_t)(dir - p) * BS, 0, BS);   /* the same group */
+	memset(img, 0, BS);
+	memset(img + (size_t)p * BS, 0, BS);           /* group 0 */
 	assert_int_equal(open_image(img_size, &err), SKP_OK);
-	assert_int_equal(im.hdr.version, version);
-	assert_int_equal(skp_image_load_skel(&im, &s2, &err), SKP_OK);
-	assert_same_skel(&s, &s2);
-	assert_int_equal(skp_image_load_bind(&im, &s2, &m2, &w2, bind2, &number, &err), SKP_OK);
-	assert_int_equal(m2.vert_count, 8);
-	assert_int_equal(m2.tri_count, 12);
+	assert_true(im.header_from_copy);
+	assert_int_equal(skp_image_read_block(&im, dir, SKP_KIND_DIRECTORY, 0, buf), SKP_BLOCK_OK);
+	assert_string_equal(im.rebuilt_from, "the directory copy");
+	assert_int_equal(skp_image_read_block(&im, 0, SKP_KIND_HEADER, 0, buf), SKP_BLOCK_OK);
+	assert_string_equal(im.rebuilt_from, "the header");
+	pack_with(9, NULL, 4);
+	memset(img + (size_t)h->dir_copy * BS, 0, BS);
+	memset(img + (size_t)h->copy_block * BS, 0, BS);
+	assert_int_equal(decoded_hash(), ref);
+	assert_int_equal(skp_image_read_block(&im, h->dir_copy, SKP_KIND_DIRECTORY, 1, buf), SKP_BLOCK_OK);
+	assert_int_equal(skp_image_read_block(&im, h->copy_block, SKP_KIND_HEADER, 1, buf), SKP_BLOCK_OK);
 }
 
-/* An image the version 1 writer made (tests/data/v1_tiny.skn: the tiny arm,
- * a box, tiny.amc; no parity, no copy, 104-byte header, no bone offsets)
- * opens and plays as it did: the skeleton, the body, every frame. */
-static void test_version_1_still_reads(void **state)
+/* Images of versions 1 to 3 (no image id) are refused by name: the
+ * version 1 and 2 writers' own files from tests/data, and a version 3
+ * header. */
+static void test_older_versions_refused(void **state)
 {
 	(void)state;
-	open_old_image("tests/data/v1_tiny.skn", 1);
-	assert_int_equal(im.hdr.parity_blocks, 0);
-	check_clip(0, frames, frame_count);
-}
-
-/* An image the version 2 writer made (tests/data/v2_tiny.skn: the tiny
- * arm, the box, tiny.amc and the synthetic clip; parity and copy, float
- * positions and normals and 16-bit bone indices in the bind section)
- * opens and plays as it did: the body exactly as written then. */
-static void test_version_2_still_reads(void **state)
-{
-	(void)state;
-	open_old_image("tests/data/v2_tiny.skn", 2);
-	assert_true(im.hdr.parity_blocks > 0);
-	assert_memory_equal(m.pos, m2.pos, sizeof(vec3) * 8);
-	assert_memory_equal(m.normal, m2.normal, sizeof(vec3) * 8);
-	for (int v = 0; v < 8; v++)
-		for (int i = 0; i < w.count[v]; i++)
-			assert_int_equal(w.bone[v][i], w2.bone[v][i]);
-	check_clip(0, frames, frame_count);
-	make_synth(200);
-	check_clip(1, synth, 200);
+	static const char *const files[] = { "tests/data/v1_tiny.skn", "tests/data/v2_tiny.skn" };
+	skp_error err;
+	size_t n;
+	for (int i = 0; i < 2; i++) {
+		char *old = test_read_file(files[i], &n);
+		assert_true(old && n <= CAP);
+		memcpy(img, old, n);
+		free(old);
+		rdev = skp_mem_blockdev_ro(&rb, img, n, BS);
+		assert_int_equal(skp_image_open(&im, &rdev, &err), SKP_ERR_CORRUPT);
+		char want[64];
+		snprintf(want, sizeof want, "image format version %d (skintool 0.16 or older", i + 1);
+		if (!strstr(err.msg, want) || !strstr(err.msg, "pack the show again"))
+			fail_msg("%s: %s", files[i], err.msg);
+	}
+	/* a version 3 header: after a 12-byte frame, 116 bytes, its CRC at 112 */
+	load_inputs();
+	pack(5, NULL);
+	uint8_t *p = img + 12;
+	memcpy(p, SKP_IMAGE_MAGIC, 8);
+	le_put16(p + 8, 3);
+	le_put16(p + 10, 116);
+	le_put32(p + 112, crc32_compute(p, 112));
+	skp_block_seal(img, BS);
+	expect_refusal("image format version 3 (skintool 0.16 or older, without an image id)", SKP_ERR_CORRUPT);
 }
 
 static void test_writer_errors(void **state)
 {
 	(void)state;
 	static skp_mem_blockdev mb;
+	uint8_t id[SKP_IMAGE_ID_BYTES];
 	skp_error err;
 	load_inputs();
+	next_id(id);
 	skp_blockdev dev = skp_mem_blockdev_init(&mb, img, 2 * BS, BS);
-	assert_int_equal(skp_image_write_begin(&wr, &dev, 1, &s, &err), SKP_OK);
+	assert_int_equal(skp_image_write_begin(&wr, &dev, 1, id, &s, &err), SKP_OK);
 	/* header and skeleton fill the storage: no room for the body */
 	assert_int_equal(skp_image_write_bind(&wr, &m, &w, NULL, 0, &err), SKP_ERR_IO);
 	assert_int_equal(err.block, 2);
 	/* callers print "block 2: " before the message: it must not say it again */
 	assert_string_equal(err.msg, "cannot write it");
 	dev = skp_mem_blockdev_init(&mb, img, CAP, 100);
-	assert_int_equal(skp_image_write_begin(&wr, &dev, 1, &s, &err), SKP_ERR_RANGE);
+	assert_int_equal(skp_image_write_begin(&wr, &dev, 1, id, &s, &err), SKP_ERR_RANGE);
 	assert_non_null(strstr(err.msg, "block size 100"));
 	/* frames must be numbered consecutively */
 	skp_clip_range_init(&range, &s);
@@ -669,6 +776,7 @@ int main(void)
 {
 	const struct CMUnitTest tests[] = {
 		cmocka_unit_test(test_crc32_vectors),
+		cmocka_unit_test(test_sha256_vectors),
 		cmocka_unit_test(test_round_trip),
 		cmocka_unit_test(test_rest_pose_bind),
 		cmocka_unit_test(test_any_byte_names_its_block),
@@ -679,8 +787,9 @@ int main(void)
 		cmocka_unit_test(test_parity_rebuilds_any_one_block),
 		cmocka_unit_test(test_two_bad_blocks_in_a_group),
 		cmocka_unit_test(test_header_copy),
-		cmocka_unit_test(test_version_1_still_reads),
-		cmocka_unit_test(test_version_2_still_reads),
+		cmocka_unit_test(test_copy_wherever_the_storage_ends),
+		cmocka_unit_test(test_directory_and_header_copies),
+		cmocka_unit_test(test_older_versions_refused),
 		cmocka_unit_test(test_writer_errors),
 		cmocka_unit_test(test_blockdev_reader_streams_text),
 	};

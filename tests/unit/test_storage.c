@@ -73,10 +73,11 @@ static int setup(void **state)
  * the fault tests want to see each fault, the parity test wants it gone. */
 static int write_file(int parity)
 {
+	static const uint8_t id[SKP_IMAGE_ID_BYTES] = "storage-test-id";
 	skp_error err;
 	if (storage_file_create(&sf, path, BS) < 0)
 		return -1;
-	skp_status rc = skp_image_write_begin(&wr, &sf.bd, 42, &s, &err);
+	skp_status rc = skp_image_write_begin(&wr, &sf.bd, 42, id, &s, &err);
 	wr.parity_group = parity;
 	if (!rc) rc = skp_image_write_bind(&wr, &m, &w, NULL, 0, &err);
 	if (!rc) rc = skp_image_clip_begin(&wr, "synth", 120, &range, &err);
