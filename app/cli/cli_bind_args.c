@@ -2,9 +2,9 @@
 
 #include <stdio.h>
 #include <string.h>
-#include <strings.h>
 
 #include "cli_common.h"
+#include "cli_mesh_format.h"
 #include "cli_mesh_io.h"
 #include "cli_mesh_pick.h"
 #include "cli_mesh_place.h"
@@ -113,13 +113,7 @@ void bind_args_set_importer(bind_mesh_importer importer)
 
 int bind_args_is_interchange(const char *path)
 {
-	static const char *const ext[] = { ".gltf", ".glb", ".fbx", ".dae", ".3ds", ".blend", ".x3d", ".ply",
-					   ".stl", ".x", ".ms3d", ".b3d", ".mdl", ".md5mesh", ".smd", ".ogex" };
-	const char *dot = strrchr(path, '.');
-	for (size_t i = 0; dot && i < sizeof ext / sizeof ext[0]; i++)
-		if (strcasecmp(dot, ext[i]) == 0)
-			return 1;
-	return 0;
+	return cli_mesh_is_interchange(path);
 }
 
 static void balance_step(void *ctx, int done, int total)
@@ -217,7 +211,7 @@ int bind_args_load(const bind_args *a, const char *asf, const char *obj, bound_b
 			"a rigged mesh (glTF 2.0, FBX, COLLADA) or the OBJ's MakeHuman rig (--rig FILE.mhskel)\n", obj);
 		return -1;
 	}
-	if (cli_pick_mesh(obj, a->group, &body->mesh) < 0)
+	if (cli_mesh_check_obj(obj) < 0 || cli_pick_mesh(obj, a->group, &body->mesh) < 0)
 		return -1;
 	if (body->mesh.vert_count == 0) {
 		fprintf(stderr, "%s: no vertices%s%s\n", obj, a->group ? " in group " : "",

@@ -163,14 +163,37 @@ static skp_status group_missing(const rig_scene *r, const char *group, skp_error
 	return skp_fail(err, SKP_ERR_RANGE, 0, "no mesh named '%s'; there are: %s", group, list);
 }
 
+/* The whole file read into memory, for the library to read as hint says. */
+static const struct aiScene *read_as(const char *path, const char *hint, unsigned flags)
+{
+	if (!hint)
+		return aiImportFile(path, flags);
+	FILE *f = fopen(path, "rb");
+	if (!f)
+		return aiImportFile(path, flags);   /* the library says why */
+	const struct aiScene *scene = NULL;
+	long n = fseek(f, 0, SEEK_END) == 0 ? ftell(f) : -1;
+	char *buf = n > 0 && fseek(f, 0, SEEK_SET) == 0 ? malloc((size_t)n) : NULL;
+	if (buf && fread(buf, 1, (size_t)n, f) == (size_t)n && n <= (long)UINT32_MAX)
+		scene = aiImportFileFromMemory(buf, (unsigned)n, flags, hint);
+	free(buf);
+	fclose(f);
+	return scene;
+}
+
 skp_status rig_import(const char *path, const char *group, rig_scene *out, skp_error *err)
+{
+	return rig_import_as(path, NULL, group, out, err);
+}
+
+skp_status rig_import_as(const char *path, const char *hint, const char *group, rig_scene *out, skp_error *err)
 {
 	mesh *m = out->mesh;
 	memset(out, 0, offsetof(rig_scene, infl_count));
 	out->mesh = m;
 	m->vert_count = m->tri_count = 0;
-	const struct aiScene *scene = aiImportFile(path, aiProcess_Triangulate | aiProcess_JoinIdenticalVertices |
-						    aiProcess_SortByPType);
+	const struct aiScene *scene = read_as(path, hint, aiProcess_Triangulate | aiProcess_JoinIdenticalVertices |
+							       aiProcess_SortByPType);
 	if (!scene || !scene->mRootNode)
 		return skp_fail(err, SKP_ERR_SYNTAX, 0, "%s", aiGetErrorString());
 	import_walk w = { scene, group, out, err, 0 };

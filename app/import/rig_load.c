@@ -2,8 +2,8 @@
 
 #include <stdio.h>
 #include <string.h>
-#include <strings.h>
 
+#include "cli_mesh_format.h"
 #include "cli_mesh_io.h"
 #include "cli_mesh_place.h"
 #include "cli_common.h"
@@ -81,6 +81,24 @@ out:
 	return rc;
 }
 
+/* What to do when the library cannot read the file, by what it is. */
+static const char *import_advice(mesh_format fmt)
+{
+	switch (fmt) {
+	case MESH_FMT_FBX:
+		return "if this FBX does not load, export the character as glTF 2.0 (.glb) instead (Blender: File > "
+		       "Export > glTF 2.0)";
+	case MESH_FMT_ZIP:
+		return "the library reads a zip archive as a zipped COLLADA (.zae); for one holding another model, "
+		       "unpack it and give the model inside";
+	case MESH_FMT_BLEND:
+		return "export the character from Blender as glTF 2.0 (File > Export > glTF 2.0)";
+	default:
+		return "skintool reads rigged meshes as glTF 2.0 (.gltf, .glb), FBX (binary or ASCII 6.1-7.x) and "
+		       "COLLADA (.dae, .zae); an OBJ works without a rig";
+	}
+}
+
 static int import_scene(const bind_args *a, const char *path, bound_body *body)
 {
 	skp_error err;
@@ -92,15 +110,14 @@ static int import_scene(const bind_args *a, const char *path, bound_body *body)
 	}
 	if (a->rig)
 		return import_makehuman(a, path, body);
+	mesh_format fmt = cli_mesh_format(path);
+	cli_mesh_format_note(path, fmt);
 	uint64_t t0 = clock_now_ns();
-	if (rig_import(path, a->group, &scene, &err) != SKP_OK) {
-		const char *dot = strrchr(path, '.');
+	const char *hint = cli_mesh_format_named(path, fmt) ? NULL : mesh_format_extension(fmt);
+	if (rig_import_as(path, hint, a->group, &scene, &err) != SKP_OK) {
 		fprintf(stderr, "%s: %s\n", path, err.msg);
 		if (!a->group)
-			fprintf(stderr, "%s: skintool reads rigged meshes as glTF 2.0 (.gltf, .glb), FBX (binary or ASCII "
-				"6.1-7.x) and COLLADA (.dae); %s\n", path, dot && strcasecmp(dot, ".fbx") == 0
-				? "if this FBX does not load, export the character as glTF 2.0 (.glb) instead "
-				  "(Blender: File > Export > glTF 2.0)" : "an OBJ works without a rig");
+			fprintf(stderr, "%s: read as %s: %s\n", path, mesh_format_name(fmt), import_advice(fmt));
 		return -1;
 	}
 	fprintf(stderr, "%s: %d vertices, %d triangles, %d joints (imported in %.1f ms", path,
@@ -112,6 +129,9 @@ static int import_scene(const bind_args *a, const char *path, bound_body *body)
 	for (int p = 0; p < scene.part_count; p++)
 		if (!scene.part_used[p])
 			fprintf(stderr, "%s: mesh '%s' left out (--group chooses)\n", path, scene.part[p]);
+	if (fmt == MESH_FMT_BLEND && !scene.joint_count)
+		fprintf(stderr, "%s: a Blender file's meshes are read, its armature and weights are not (the library "
+			"does not read them): %s\n", path, import_advice(fmt));
 	return 0;
 }
 

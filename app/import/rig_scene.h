@@ -45,6 +45,11 @@ typedef struct rig_scene {
  * meshes), too many vertices, joints or triangles. */
 skp_status rig_import(const char *path, const char *group, rig_scene *out, skp_error *err);
 
+/* rig_import for a file whose name does not say its format: hint is the
+ * extension of the format its content has ("zae" for a zip archive), so
+ * the library reads it as that. hint NULL: rig_import. */
+skp_status rig_import_as(const char *path, const char *hint, const char *group, rig_scene *out, skp_error *err);
+
 /* Index of the joint named name, or -1. */
 int rig_find_joint(const rig_scene *r, const char *name);
 

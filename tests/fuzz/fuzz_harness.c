@@ -14,6 +14,7 @@
 #include "image_play.h"
 #include "image_read.h"
 #include "ini.h"
+#include "mesh_format.h"
 #include "obj.h"
 #include "rig_makehuman.h"
 #include "rig_map_file.h"
@@ -230,6 +231,20 @@ int fuzz_makehuman(const uint8_t *data, size_t size)
 	return 0;
 }
 
+/* The mesh format sniffer on every prefix length the reader could hand it:
+ * a known answer, and the same one for the same bytes (it reads nothing
+ * past n). */
+int fuzz_mesh_format(const uint8_t *data, size_t size)
+{
+	size_t n = size < MESH_FORMAT_HEAD ? size : MESH_FORMAT_HEAD;
+	mesh_format f = mesh_format_sniff(data, n);
+	if (f >= MESH_FMT_COUNT || !mesh_format_name(f)[0] || mesh_format_sniff(data, n) != f)
+		__builtin_trap();
+	if (n && mesh_format_sniff(data, n - 1) >= MESH_FMT_COUNT)
+		__builtin_trap();
+	return 0;
+}
+
 const fuzz_target fuzz_targets[] = {
 	{ "asf", fuzz_asf },
 	{ "amc", fuzz_amc },
@@ -240,5 +255,6 @@ const fuzz_target fuzz_targets[] = {
 	{ "image", fuzz_image },
 	{ "joint_map", fuzz_joint_map },
 	{ "makehuman", fuzz_makehuman },
+	{ "mesh_format", fuzz_mesh_format },
 	{ NULL, NULL },
 };

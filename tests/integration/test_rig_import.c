@@ -348,6 +348,44 @@ static void test_broken_files(void **state)
 	assert_true(test_file_contains(log, "no mesh named 'nosuch'; there are: 'Cube.001'"));
 }
 
+/* Formats by content: a zipped COLLADA (.zae), the same file named .obj,
+ * the glb named .obj, a MakeHuman skeleton given as the mesh, a Blender
+ * file (meshes read, armature not). */
+static void test_formats_by_content(void **state)
+{
+	(void)state;
+	char asf[4096], glb[4096], mhskel[4096];
+	if (!data("mocap/cmu/02.asf", asf, sizeof asf) || !data(GLB, glb, sizeof glb) ||
+	    !data("mesh/makehuman/default.mhskel", mhskel, sizeof mhskel))
+		skip();
+	const char *log = test_scratch("format.log"), *w = test_scratch("format.csv");
+	const char *renamed = test_scratch("glb_named.obj");
+	assert_int_equal(test_run("cp %s %s", glb, renamed), 0);
+	assert_int_equal(test_run("%s bind %s %s --weights mesh -o %s 2> %s", test_tool_path("skintool"), asf, renamed,
+				  w, log), 0);
+	test_assert_contains_all(log, (const char *const[]){
+		"glb_named.obj: the file is a binary glTF (.glb), whatever its name says ('.obj'): read as that",
+		"904 vertices, 1804 triangles, 56 joints",
+		NULL,
+	});
+	assert_int_equal(test_run("%s bind %s %s -o %s 2> %s", test_tool_path("skintool"), asf, mhskel, w, log), 1);
+	assert_true(test_file_contains(log, "default.mhskel: the file is a JSON file that is not glTF, not a mesh"));
+	assert_true(test_file_contains(log, "goes with its OBJ as --rig FILE"));
+	if (access(SAMPLES "/Collada/human.zae", R_OK) || access(SAMPLES "/BLEND/HUMAN.blend", R_OK))
+		return;
+	const char *zip_obj = test_scratch("zipped.obj");
+	assert_int_equal(test_run("cp " SAMPLES "/Collada/human.zae %s", zip_obj), 0);
+	assert_true(test_run("%s bind %s %s -o %s 2> %s", test_tool_path("skintool"), asf, zip_obj, w, log) >= 0);
+	test_assert_contains_all(log, (const char *const[]){
+		"zipped.obj: the file is a zip archive, whatever its name says ('.obj'): read as that",
+		"zipped.obj: 14444 vertices, 28796 triangles",
+		NULL,
+	});
+	assert_true(test_run("%s bind %s " SAMPLES "/BLEND/HUMAN.blend -o %s 2> %s", test_tool_path("skintool"), asf, w,
+			     log) >= 0);
+	assert_true(test_file_contains(log, "a Blender file's meshes are read, its armature and weights are not"));
+}
+
 static void test_joint_map_file(void **state)
 {
 	(void)state;
@@ -392,6 +430,7 @@ int main(void)
 		cmocka_unit_test(test_weights_file_on_rig),
 		cmocka_unit_test(test_unmapped_and_unskinned),
 		cmocka_unit_test(test_broken_files),
+		cmocka_unit_test(test_formats_by_content),
 		cmocka_unit_test(test_joint_map_file),
 	};
 	return cmocka_run_group_tests(tests, test_scratch_setup, test_scratch_teardown);
