@@ -121,43 +121,75 @@ static void close_others(show_source *s, int keep)
 			show_image_close(&s->slot[i]);
 }
 
-static void accept_clips(show_source *s, show_image *img);
-
-int show_open(show_source *s, const char *const *paths, int n, bound_body *body)
+/* Every clip of img checked (its skeleton sk); one that cannot play is
+ * skipped, with a line saying why when loud. Returns how many can play. */
+static int accept_clips(show_source *s, show_image *img, const skel *sk, int loud)
 {
-	int order[SHOW_MAX_SLOTS], damaged = -1;
 	skp_error err;
-	memset(s, 0, sizeof *s);
-	s->clip = -1;
-	s->active = -1;
-	s->slot_count = n < SHOW_MAX_SLOTS ? n : SHOW_MAX_SLOTS;
-	int k = by_sequence(s, paths, n, order);
-	for (int i = 0; i < k && s->active < 0; i++) {
+	int playable = 0;
+	for (int c = 0; c < img->im.clip_count; c++) {
+		s->playable[c] = show_accept_clip(img, sk, c, &err) == 0;
+		playable += s->playable[c];
+		if (s->playable[c] || !loud)
+			continue;
+		if (err.block >= 0)
+			fprintf(stderr, "image: clip %s skipped: block %ld: %s\n", img->im.clip[c].name, err.block, err.msg);
+		else
+			fprintf(stderr, "image: clip %s skipped: %s\n", img->im.clip[c].name, err.msg);
+	}
+	return playable;
+}
+
+/* Of several slots, why an accepted one should yield to an older one: a
+ * block beyond repair, data that does not match its digest, no clip that
+ * can play. 0 when it is whole (one slot is always whole: it plays
+ * whatever survives). */
+static int slot_flawed(show_source *s, show_image *img, const skel *sk, int several)
+{
+	skp_image_verdict v = { 0, 0, 1 };
+	if (!several)
+		return 0;
+	show_image_verify(img, NULL, NULL, &v);
+	if (v.beyond)
+		fprintf(stderr, "image: %s has %ld blocks beyond repair: trying an older slot\n", img->path, v.beyond);
+	else if (v.digest == 0)
+		fprintf(stderr, "image: %s does not match its digest (a block altered with a good CRC): trying an older slot\n",
+			img->path);
+	else if (accept_clips(s, img, sk, 0) == 0)
+		fprintf(stderr, "image: %s has no clip that can play: trying an older slot\n", img->path);
+	else
+		return 0;
+	return 1;
+}
+
+/* The newest slot whose body is accepted and that has no flaw, else the
+ * newest accepted one; -1 when none is. body holds the chosen one's. */
+static int choose_slot(show_source *s, const int *order, int k, int several, bound_body *body)
+{
+	skp_error err;
+	int flawed = -1;
+	for (int i = 0; i < k; i++) {
 		show_image *img = &s->slot[order[i]];
 		if (show_accept_body(img, body, &err) < 0) {
 			refuse(img->path, &err);
 			continue;
 		}
-		/* one slot plays whatever survives; of several, one with no block
-		 * beyond repair and its digest matched wins */
-		skp_image_verdict v = { 0, 0, 1 };
-		if (n > 1)
-			show_image_verify(img, NULL, NULL, &v);
-		if (v.beyond == 0 && v.digest != 0)
-			s->active = order[i];
-		else {
-			if (v.beyond)
-				fprintf(stderr, "image: %s has %ld blocks beyond repair: trying an older slot\n", img->path,
-					v.beyond);
-			else
-				fprintf(stderr, "image: %s does not match its digest (a block altered with a good CRC): "
-					"trying an older slot\n", img->path);
-			if (damaged < 0)
-				damaged = order[i];
-		}
+		if (!slot_flawed(s, img, &body->skel, several))
+			return order[i];
+		if (flawed < 0)
+			flawed = order[i];
 	}
-	if (s->active < 0 && damaged >= 0 && show_accept_body(&s->slot[damaged], body, &err) == 0)
-		s->active = damaged;
+	return flawed >= 0 && show_accept_body(&s->slot[flawed], body, &err) == 0 ? flawed : -1;
+}
+
+int show_open(show_source *s, const char *const *paths, int n, bound_body *body)
+{
+	int order[SHOW_MAX_SLOTS];
+	memset(s, 0, sizeof *s);
+	s->clip = -1;
+	s->slot_count = n < SHOW_MAX_SLOTS ? n : SHOW_MAX_SLOTS;
+	int k = by_sequence(s, paths, n, order);
+	s->active = choose_slot(s, order, k, n > 1, body);
 	if (s->active < 0) {
 		fprintf(stderr, "image: no valid image among %d slot%s\n", n, n > 1 ? "s" : "");
 		close_others(s, -1);
@@ -168,24 +200,8 @@ int show_open(show_source *s, const char *const *paths, int n, bound_body *body)
 	fprintf(stderr, "image: playing %s (sequence %llu, %d clip%s)\n", img->path,
 		(unsigned long long)img->im.hdr.sequence, img->im.clip_count, img->im.clip_count == 1 ? "" : "s");
 	show_image_warn(img);
-	accept_clips(s, img);
+	accept_clips(s, img, &body->skel, 1);
 	return 0;
-}
-
-/* Every clip checked before anything plays; one that cannot play is
- * skipped with a line saying why. */
-static void accept_clips(show_source *s, show_image *img)
-{
-	skp_error err;
-	for (int c = 0; c < img->im.clip_count; c++) {
-		s->playable[c] = show_accept_clip(img, c, &err) == 0;
-		if (s->playable[c])
-			continue;
-		if (err.block >= 0)
-			fprintf(stderr, "image: clip %s skipped: block %ld: %s\n", img->im.clip[c].name, err.block, err.msg);
-		else
-			fprintf(stderr, "image: clip %s skipped: %s\n", img->im.clip[c].name, err.msg);
-	}
 }
 
 int show_next_playable(const show_source *s, int from)

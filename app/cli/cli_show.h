@@ -36,10 +36,15 @@ typedef struct show_image {
 	unsigned long unlisted;         /* damaged blocks past the table: counted */
 } show_image;
 
-/* Acceptance (cli_accept.c): the skeleton and the bound body into body;
- * each clip's frames and quantisation. Return 0, or -1 with err filled. */
+/* Acceptance (cli_accept.c, app/image/image_accept.h): the skeleton and
+ * the bound body into body, loaded and judged; each clip of skeleton s:
+ * its quantisation, its meaning and its frame count. The same for any
+ * opened image (pack judges what it wrote). Return 0, or -1 with err
+ * filled. */
+int image_accept_body(skp_image *im, bound_body *body, skp_error *err);
+int image_accept_clip(skp_image *im, const skel *s, int clip, skp_error *err);
 int show_accept_body(show_image *img, bound_body *body, skp_error *err);
-int show_accept_clip(show_image *img, int clip, skp_error *err);
+int show_accept_clip(show_image *img, const skel *s, int clip, skp_error *err);
 
 /* 1 the first time block is named for img (log it), else 0; bounded. */
 int show_log_once(show_image *img, long block);

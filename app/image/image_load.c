@@ -241,3 +241,17 @@ skp_status skp_image_load_quant(skp_image *im, int clip, float *qmin, float *qst
 	}
 	return rc;
 }
+
+skp_status skp_image_check_frames(skp_image *im, int clip, skp_error *err)
+{
+	const skp_image_clip *c = &im->clip[clip];
+	uint32_t last = c->frame_blocks - 1, block = c->frames_first + last;
+	/* im->buf: every section read starts with sec_open */
+	if (c->frame_blocks == 0 || skp_image_read_block(im, block, SKP_KIND_FRAMES, (unsigned)clip, im->buf) != SKP_BLOCK_OK)
+		return SKP_OK;
+	uint32_t has = le_get16(im->buf + SKP_IMAGE_BLOCK_HDR), want = skp_image_frames_in(c, last);
+	if (has != want)
+		return image_block_fail(err, SKP_ERR_CORRUPT, block, "the clip's last block holds %lu frames, the directory says %lu",
+					(unsigned long)has, (unsigned long)want);
+	return SKP_OK;
+}

@@ -130,6 +130,11 @@ skp_status skp_image_load_bind(skp_image *im, const skel *s, mesh *m, skin_weigh
 /* The clip's per-dof quantisation (qmin, qstep: clip->dofs floats each). */
 skp_status skp_image_load_quant(skp_image *im, int clip, float *qmin, float *qstep, skp_error *err);
 
+/* The clip's last frames block holds the frames the directory leaves for
+ * it: SKP_OK, also when the block cannot be read (its frames are held
+ * when played); else SKP_ERR_CORRUPT naming the block. */
+skp_status skp_image_check_frames(skp_image *im, int clip, skp_error *err);
+
 /* Index of the clip with that name, or -1. */
 int skp_image_find_clip(const skp_image *im, const char *name);
 

@@ -1,5 +1,7 @@
 #include "fk.h"
 
+#include <math.h>
+
 /* Rotation of a bone's rotational channels, first listed applied first;
  * translational channels go to *trans and `l` to *stretch. */
 static quat channel_motion(const skel_bone *b, const float *v, vec3 *trans, float *stretch)
@@ -63,4 +65,15 @@ void fk_pose(const skel *s, const float *values, skel_pose *out)
 	pose_root(s, values, out);
 	for (int k = 1; k < s->count; k++)
 		pose_bone(s, s->eval_order[k], values, out);
+}
+
+vec3 fk_tip_centre(const skel_pose *pose, int count)
+{
+	vec3 lo = pose->tip[0], hi = lo;
+	for (int b = 1; b < count; b++) {
+		vec3 t = pose->tip[b];
+		lo = vec3_make(fminf(lo.x, t.x), fminf(lo.y, t.y), fminf(lo.z, t.z));
+		hi = vec3_make(fmaxf(hi.x, t.x), fmaxf(hi.y, t.y), fmaxf(hi.z, t.z));
+	}
+	return vec3_scale(vec3_add(lo, hi), 0.5f);
 }

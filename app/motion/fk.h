@@ -19,4 +19,8 @@ typedef struct skel_pose {
  * for the rest pose. */
 void fk_pose(const skel *s, const float *values, skel_pose *out);
 
+/* The middle of the bounding box of the first count bones' tips: what the
+ * renderer's camera follows, and what image acceptance wants on the body. */
+vec3 fk_tip_centre(const skel_pose *pose, int count);
+
 #endif

@@ -308,23 +308,12 @@ static void draw_panel(renderer *r, const render_frame *f, int i, render_rect ar
 		draw_label(r, f, i, area);
 }
 
-static vec3 skeleton_center(const renderer *r, const skel_pose *pose)
-{
-	vec3 lo = pose->tip[0], hi = lo;
-	for (int b = 1; b < r->bone_count; b++) {
-		vec3 t = pose->tip[b];
-		lo = vec3_make(fminf(lo.x, t.x), fminf(lo.y, t.y), fminf(lo.z, t.z));
-		hi = vec3_make(fmaxf(hi.x, t.x), fmaxf(hi.y, t.y), fmaxf(hi.z, t.z));
-	}
-	return vec3_scale(vec3_add(lo, hi), 0.5f);
-}
-
 void render_draw(renderer *r, const render_frame *f)
 {
 	const gl_api *gl = r->gl;
 	int lw, lh;
 	render_logical_size(r, &lw, &lh);
-	camera_follow(&r->cam, skeleton_center(r, f->pose), f->dt);
+	camera_follow(&r->cam, fk_tip_centre(f->pose, r->bone_count), f->dt);
 	gl->Enable(GL_DEPTH_TEST);
 	gl->Enable(GL_CULL_FACE);
 	gl->CullFace(GL_BACK);

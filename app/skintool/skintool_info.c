@@ -136,8 +136,8 @@ static long scan_raw(storage_file *sf)
 }
 
 /* What skinplay checks before playing (cli_accept.c), so that info and
- * skinplay never disagree: 1 when the body is refused (nothing would play),
- * clips that cannot play are listed. */
+ * skinplay never disagree: 1 when the body is refused (nothing would play)
+ * or a clip cannot play (each listed). */
 static int accept(show_image *s)
 {
 	static bound_body body;
@@ -151,7 +151,7 @@ static int accept(show_image *s)
 	}
 	int playable = 0;
 	for (int c = 0; c < s->im.clip_count; c++) {
-		if (show_accept_clip(s, c, &err) == 0) {
+		if (show_accept_clip(s, &body.skel, c, &err) == 0) {
 			playable++;
 			continue;
 		}
@@ -161,7 +161,7 @@ static int accept(show_image *s)
 		printf("%s\n", err.msg);
 	}
 	printf("accept: skeleton and body good, %d of %d clips can play\n", playable, s->im.clip_count);
-	return 0;
+	return playable < s->im.clip_count;
 }
 
 static int refused(show_image *s, const skp_error *err)
@@ -183,9 +183,10 @@ static int refused(show_image *s, const skp_error *err)
 static const cli_command info_command = {
 	.prog = "skintool info",
 	.usage = "SHOW.skn",
-	.about = "Prints an image's header, sections and clips, accepts its body as skinplay would, and checks\n"
-		 "every block (CRC, tag, parity, the header copy). Exit status 2 when a block is bad or the\n"
-		 "body is refused (`skintool repair` rebuilds what parity allows).",
+	.about = "Prints an image's header (its id), sections and clips, accepts its body and clips as skinplay\n"
+		 "would, and checks every block (CRC, id, parity, the copies) and the digest. Exit status 2 when a\n"
+		 "block is bad, the digest does not match, or the body or a clip is refused (`skintool repair`\n"
+		 "rebuilds what parity and the copies allow).",
 };
 
 int cmd_info(int argc, char **argv)

@@ -21,6 +21,7 @@
 #include "cli_common.h"
 #include "cli_image_out.h"
 #include "cli_progress.h"
+#include "cli_show.h"
 #include "image_write.h"
 #include "random_bytes.h"
 #include "skintool_cmds.h"
@@ -235,6 +236,35 @@ static int pack_clip(skp_image_writer *w, const char *path, double fps)
 	return r;
 }
 
+static void refuse_written(const char *out, const char *what, const skp_error *err)
+{
+	fprintf(stderr, "%s: not written: skinplay would refuse %s: ", out, what);
+	if (err->block >= 0)
+		fprintf(stderr, "block %ld: ", err->block);
+	fprintf(stderr, "%s\n", err->msg);
+}
+
+/* What skinplay would refuse is not written: the image as written, opened
+ * and judged by the very acceptance skinplay runs (cli_accept.c). */
+static int accept_written(const skp_blockdev *dev, const char *out)
+{
+	static skp_image im;
+	static bound_body body;
+	skp_error err;
+	if (skp_image_open(&im, dev, &err) != SKP_OK || image_accept_body(&im, &body, &err) < 0) {
+		refuse_written(out, "it", &err);
+		return -1;
+	}
+	for (int c = 0; c < im.clip_count; c++)
+		if (image_accept_clip(&im, &body.skel, c, &err) < 0) {
+			char what[SKP_MAX_NAME + 8];
+			snprintf(what, sizeof what, "clip %s", im.clip[c].name);
+			refuse_written(out, what, &err);
+			return -1;
+		}
+	return 0;
+}
+
 static int write_image(const pack_args *p, const bound_body *body, storage_file *sf)
 {
 	static skp_image_writer w;
@@ -260,6 +290,8 @@ static int write_image(const pack_args *p, const bound_body *body, storage_file 
 		cli_error(p->out, &err);
 		return -1;
 	}
+	if (accept_written(&sf->bd, p->out) < 0)
+		return -1;
 	printf("%s: %lu blocks of %lu bytes (%lu bytes), sequence %ld, %d bones, %d vertices, %d triangles\n",
 	       p->out, (unsigned long)w.hdr.block_count, (unsigned long)w.hdr.block_size,
 	       (unsigned long)w.hdr.block_count * w.hdr.block_size, p->sequence, body->skel.count,

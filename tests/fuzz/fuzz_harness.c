@@ -11,8 +11,10 @@
 #include "bvh.h"
 #include "crc32.h"
 #include "fk.h"
+#include "image_accept.h"
 #include "image_play.h"
 #include "image_read.h"
+#include "image_survey.h"
 #include "ini.h"
 #include "mesh_format.h"
 #include "obj.h"
@@ -149,6 +151,9 @@ int fuzz_image(const uint8_t *data, size_t size)
 	static skin_weights w;
 	static float bind_values[SKP_MAX_DOF];
 	static amc_frame frame;
+	static skel_pose pose;
+	static skp_block_report report;
+	static uint8_t block[SKP_IMAGE_BLOCK_SIZE];
 	if (size > sizeof buf)
 		size = sizeof buf;
 	memcpy(buf, data, size);
@@ -161,16 +166,24 @@ int fuzz_image(const uint8_t *data, size_t size)
 	skp_blockdev dev = skp_mem_blockdev_ro(&mb, buf, size, bs);
 	if (skp_image_open(&im, &dev, &err) != SKP_OK || skp_image_load_skel(&im, &sk, &err) != SKP_OK)
 		return 0;
+	skp_accept_skel(&sk, &err);
 	long bind_number;
-	skp_image_load_bind(&im, &sk, &m, &w, bind_values, &bind_number, &err);
+	if (skp_image_load_bind(&im, &sk, &m, &w, bind_values, &bind_number, &err) == SKP_OK) {
+		fk_pose(&sk, bind_values, &pose);
+		skp_accept_body(&sk, &pose, &m, &err);
+	}
 	for (int c = 0; c < im.clip_count; c++) {
 		if (skp_player_open(&player, &im, c, &err) != SKP_OK)
 			continue;
+		skp_accept_clip(&sk, &im.clip[c], player.qmin, player.qstep, &err);
+		skp_image_check_frames(&im, c, &err);
 		for (int i = 0; i < 4096 && skp_player_next(&player, &frame, &err) > 0; i++)
 			;
 		skp_player_seek(&player, 1);
 		skp_player_next(&player, &frame, &err);
 	}
+	for (uint32_t b = 0; b < im.hdr.block_count && b < 64; b++)
+		skp_image_survey(&im, b, &report, block);
 	return 0;
 }
 

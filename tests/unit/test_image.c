@@ -18,9 +18,10 @@
 
 #include "crc32.h"
 #include "image_parity.h"
-#include "sha256.h"
 #include "image_play.h"
 #include "image_write.h"
+#include "sha256.h"
+#include "test_box.h"
 #include "test_parse.h"
 #include "test_paths.h"
 
@@ -76,34 +77,6 @@ static void test_sha256_vectors(void **state)
 		      13, "cf5b16a778af8380036ce59e7b0492370b249b11e8f07a51afac45037afee9d1");
 }
 
-/* A box around the tiny arm: 8 corners, 12 triangles, weights shared
- * between the two bones (and the root) so quantisation has work to do. */
-static void make_body(void)
-{
-	memset(&m, 0, sizeof m);
-	memset(&w, 0, sizeof w);
-	static const uint32_t tri[12][3] = {
-		{ 0, 1, 2 }, { 0, 2, 3 }, { 4, 6, 5 }, { 4, 7, 6 }, { 0, 4, 5 }, { 0, 5, 1 },
-		{ 1, 5, 6 }, { 1, 6, 2 }, { 2, 6, 7 }, { 2, 7, 3 }, { 3, 7, 4 }, { 3, 4, 0 },
-	};
-	for (int v = 0; v < 8; v++) {
-		m.pos[v] = vec3_make(v & 1 ? 3.5f : -0.1f, v & 2 ? 0.3f : -0.3f, v & 4 ? 0.3f : -0.3f);
-		m.normal[v] = vec3_normalize(m.pos[v]);
-		w.count[v] = (uint8_t)(1 + v % 3);
-		float sum = 0;
-		for (int i = 0; i < w.count[v]; i++) {
-			w.bone[v][i] = (uint16_t)((v + i) % s.count);
-			w.weight[v][i] = 1.0f / (float)(i + 1 + v % 2);
-			sum += w.weight[v][i];
-		}
-		for (int i = 0; i < w.count[v]; i++)
-			w.weight[v][i] /= sum;
-	}
-	memcpy(m.tri, tri, sizeof tri);
-	m.vert_count = w.vert_count = 8;
-	m.tri_count = 12;
-}
-
 /* Version 3 keeps positions to half a 16-bit step of the bounds on each
  * axis (the box is 3.6 x 0.6 x 0.6) and normals to 5e-5. */
 static void assert_same_vertices(const mesh *a, const mesh *b)
@@ -116,26 +89,11 @@ static void assert_same_vertices(const mesh *a, const mesh *b)
 	}
 }
 
-static void keep_frame(const amc_frame *f, void *ctx)
-{
-	(void)ctx;
-	if (frame_count < 64)
-		frames[frame_count++] = *f;
-}
-
 /* Two clips: tiny.amc and a made-up longer one (40 frames of 5 dofs, in
  * several 512-byte blocks). */
 static void load_inputs(void)
 {
-	skp_error err;
-	size_t n;
-	assert_int_equal(test_parse_asf_file("tests/data/tiny.asf", &s, &err), SKP_OK);
-	char *amc = test_read_file("tests/data/tiny.amc", &n);
-	assert_non_null(amc);
-	frame_count = 0;
-	assert_true(test_stream_amc(amc, n, &s, &err, keep_frame, NULL) > 0);
-	free(amc);
-	make_body();
+	frame_count = test_tiny_inputs(&s, frames, 64, &m, &w);
 }
 
 static skp_status write_clip(const char *name, const amc_frame *f, int n, skp_error *err)
