@@ -3,6 +3,7 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "cli_bind_gate.h"
 #include "cli_common.h"
 #include "cli_mesh_format.h"
 #include "cli_mesh_io.h"
@@ -22,7 +23,8 @@ void bind_args_init(bind_args *a)
 	a->balance = -1;
 }
 
-enum { OPT_GROUP = BIND_OPT_FIRST, OPT_FIT, OPT_NO_FIT, OPT_BIND_POSE, OPT_WEIGHTS, OPT_JOINT_MAP, OPT_RIG, OPT_BALANCE };
+enum { OPT_GROUP = BIND_OPT_FIRST, OPT_FIT, OPT_NO_FIT, OPT_BIND_POSE, OPT_WEIGHTS, OPT_JOINT_MAP, OPT_RIG, OPT_BALANCE,
+       OPT_FORCE };
 
 const cli_opt bind_opts[] = {
 	{ "group", 0, "NAME", OPT_GROUP, "bind only the OBJ group/object or glTF mesh NAME (default: the body)" },
@@ -33,6 +35,7 @@ const cli_opt bind_opts[] = {
 	{ "joint-map", 0, "FILE", OPT_JOINT_MAP, "a rigged mesh's joints onto skeleton bones (JOINT = BONE lines)" },
 	{ "rig", 0, "FILE.mhskel", OPT_RIG, "the OBJ's MakeHuman skeleton, with the weights file it names" },
 	{ "balance", 0, "on|off", OPT_BALANCE, "volume-balance computed weights (default: on for the generated body)" },
+	{ "force", 0, NULL, OPT_FORCE, "bind even when the quality check fails (torn skin, parts off their bones)" },
 	{ NULL, 0, NULL, 0, NULL },
 };
 
@@ -74,6 +77,7 @@ int bind_args_take(bind_args *a, const char *prog, int id, const char *value)
 		return 0;
 	case OPT_JOINT_MAP: a->joint_map = value; return 0;
 	case OPT_RIG: a->rig = value; return 0;
+	case OPT_FORCE: a->force = 1; return 0;
 	case OPT_BALANCE:
 		if ((k = cli_choice(prog, "balance", value, onoff, 2)) < 0)
 			return -1;
@@ -189,7 +193,7 @@ const float *bound_pose_values(const bound_body *body)
 	return NULL;
 }
 
-int bind_args_load(const bind_args *a, const char *asf, const char *obj, bound_body *body)
+static int load_body(const bind_args *a, const char *asf, const char *obj, bound_body *body)
 {
 	body->fitted = 0;
 	body->automatic = 0;
@@ -221,6 +225,13 @@ int bind_args_load(const bind_args *a, const char *asf, const char *obj, bound_b
 	if (cli_place_mesh(a, obj, body) < 0)
 		return -1;
 	return bind_args_weights(a, cli_obj_is_generated(obj), obj, body);
+}
+
+int bind_args_load(const bind_args *a, const char *asf, const char *obj, bound_body *body)
+{
+	if (load_body(a, asf, obj, body) < 0)
+		return -1;
+	return cli_bind_gate(a, obj ? obj : asf, body);
 }
 
 int bind_args_weights(const bind_args *a, int generated, const char *name, bound_body *body)

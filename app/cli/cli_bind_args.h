@@ -12,6 +12,7 @@
  *   --joint-map FILE        a rigged mesh's joints -> skeleton bones (rig_map_file.h)
  *   --rig FILE.mhskel       an OBJ's MakeHuman skeleton and the weights file it
  *                           names (rig_makehuman.h): the OBJ binds as a rigged mesh
+ *   --force                 bind even when the quality gate (cli_bind_gate.h) fails
  *   --balance on|off        volume balancing of computed weights (bind_balance.h);
  *                           default on for the generated body (also as the OBJ
  *                           `skintool mannequin` writes), off for a mesh of
@@ -25,6 +26,7 @@
 #include "bind.h"
 #include "bind_balance.h"
 #include "bind_fit.h"
+#include "bind_gate.h"
 #include "bind_pose_guess.h"
 #include "cli_opts.h"
 #include "mesh.h"
@@ -41,6 +43,10 @@ typedef struct bind_args {
 	const char *joint_map;      /* --joint-map FILE */
 	const char *rig;            /* --rig FILE.mhskel: the OBJ's MakeHuman rig */
 	int balance;                /* -1 default, 0 off, 1 on (bind_balance) */
+	int force;                  /* --force: a bind the gate fails is kept, with the warning */
+	const char *const *gate_motion; /* the command's clips, whose frames the gate also checks */
+	int gate_motion_count;
+	int gate_report;            /* print every figure of the gate (bind --report) */
 	char pose_buf[1024];        /* pose_path without its :F */
 } bind_args;
 
@@ -76,10 +82,13 @@ typedef struct bound_body {
 	bind_balance_info balance;  /* valid when automatic and balanced */
 	int balanced;
 	unsigned long long bind_ns; /* time bind_prepare + bind_weights (+ bind_balance) took */
+	bind_rom rom;               /* the gate's range of motion */
+	bind_gate_result gate;      /* and its figures (cli_bind_gate.h) */
 } bound_body;
 
 /* Loads skeleton asf, mesh obj (group), the bind pose, fits the mesh when
- * asked, then computes the weights (default bind_params) or reads them.
+ * asked, then computes the weights (default bind_params) or reads them,
+ * and checks the result (cli_bind_gate.h): a failing bind is refused.
  * obj NULL: the generated body (skintool mannequin) in the rest pose with
  * its arms out (skel_tpose.h), which is then the bind pose.
  * Returns 0, or -1 after reporting the error on stderr. */

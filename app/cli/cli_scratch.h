@@ -1,6 +1,7 @@
 /* Start-up scratch for the bound body. The OBJ parser, the generated body
  * and the weight balancing each need megabytes of work space (obj_work,
- * manq_work, bind_balance_work, all sized by the board's vertex limit), one
+ * manq_work, bind_balance_work, all sized by the board's vertex limit; the
+ * quality gate's work after them), one
  * after another and never two at once (bind_args_load), so they share one
  * static area instead of holding three. Only the pointer a step was given
  * is valid, and only until the next step starts. */
@@ -8,7 +9,9 @@
 #define CLI_SCRATCH_H
 
 #include "bind_balance.h"
+#include "bind_gate.h"
 #include "bind_pose_guess.h"
+#include "cli_skin.h"
 #include "mannequin.h"
 #include "obj.h"
 
@@ -17,6 +20,11 @@ typedef union cli_scratch {
 	manq_work manq;
 	bind_balance_work balance;
 	bind_guess_work guess;
+	struct {
+		bind_gate_work work;
+		cli_skin skin;
+		skel_pose pose;
+	} gate;
 } cli_scratch;
 
 cli_scratch *cli_scratch_area(void);

@@ -389,6 +389,7 @@ int compare_other_weights(compare_run *main_run, const compare_args *a)
 		return 0;
 	oa = *a;
 	oa.bind.weights_mesh = !a->bind.weights_mesh;
+	oa.bind.force = 1;  /* the other weights are shown beside, whatever the gate says of them */
 	oa.csv_name = oa.bind.weights_mesh ? "metrics_weights_mesh.csv" : "metrics_weights_computed.csv";
 	fprintf(stderr, "%s: the clip again with the %s weights, for the side-by-side table\n", a->mesh,
 		oa.bind.weights_mesh ? "mesh's own" : "computed");

@@ -93,21 +93,34 @@ static void report(FILE *to, const bind_args *a, const bound_body *b)
 		fprintf(to, "%s,%d\n", s->bone[i].name, st.bone_verts[i]);
 }
 
+#define BIND_MAX_MOTIONS 8
+
 typedef struct bind_cmd {
 	tool_common c;
 	int want_report;
+	const char *motion[BIND_MAX_MOTIONS];
+	int motion_count;
 } bind_cmd;
 
 enum { OPT_REPORT = 1 };
 
 static const cli_opt bind_cmd_opts[] = {
-	{ "report", 0, NULL, OPT_REPORT, "also print how the body was bound (pose, fit, balancing) on stderr" },
+	{ "motion", 0, "M.amc", TOOL_OPT_MOTION, "a clip (AMC or BVH) the quality check plays too (repeat for more)" },
+	{ "report", 0, NULL, OPT_REPORT, "also print how the body was bound (pose, fit, balancing, the quality gate's figures) on stderr" },
 	{ NULL, 0, NULL, 0, NULL },
 };
 
 static int bind_take(void *ctx, int id, const char *v)
 {
 	bind_cmd *b = ctx;
+	if (id == TOOL_OPT_MOTION) {
+		if (b->motion_count == BIND_MAX_MOTIONS) {
+			fprintf(stderr, "skintool bind: at most %d --motion files\n", BIND_MAX_MOTIONS);
+			return -1;
+		}
+		b->motion[b->motion_count++] = v;
+		return 0;
+	}
 	int r = tool_common_take(&b->c, id, v);
 	if (r <= 0)
 		return r;
@@ -122,7 +135,10 @@ static const cli_command bind_command = {
 		 "vertex,bone,weight (at most 4 per vertex; -o - writes to stdout). The weights are computed\n"
 		 "(the paper's rule, volume-balanced by default for the generated body), read from a CSV, or\n"
 		 "a rigged mesh's own (glTF, FBX, COLLADA, or an OBJ with its MakeHuman rig). Every choice\n"
-		 "made for the mesh is said on stderr.",
+		 "made for the mesh is said on stderr. Before anything is written the bind is checked on a\n"
+		 "range of motion built from the skeleton (and on each --motion clip): torn skin, parts\n"
+		 "leaving their bones, parts left to the root or rigid are refused (exit 1) naming the part,\n"
+		 "the figure and the fix; --force writes the weights anyway.",
 	.opts = { tool_opt_skeleton, tool_opt_mesh, tool_opt_output, bind_cmd_opts, bind_opts },
 	.take = bind_take,
 	.positional = tool_files_skel_mesh,
@@ -137,11 +153,15 @@ int cmd_bind(int argc, char **argv)
 	static bound_body body;
 	tool_common_init(&b.c, bind_command.prog);
 	b.want_report = 0;
+	b.motion_count = 0;
 	int rc = cli_parse(&bind_command, &b, argc, argv, 0);
 	if (rc != 0)
 		return rc < 0;
 	if (!b.c.asf || !b.c.mesh || !b.c.out)
 		return tool_missing(&b.c, "SKELETON, MESH and -o W.csv");
+	b.c.bind.gate_motion = b.motion;
+	b.c.bind.gate_motion_count = b.motion_count;
+	b.c.bind.gate_report = b.want_report;
 	if (bind_args_load(&b.c.bind, b.c.asf, b.c.mesh, &body) < 0)
 		return 1;
 	if (cli_write_weights(b.c.out, &body.skel, &body.weights) < 0)

@@ -80,6 +80,8 @@ static int parse_args(compare_args *a, int argc, char **argv)
 	if (!a->asf || !a->amc || !a->out) {
 		return cli_missing(compare_command.prog, "SKELETON MOTION and -o DIR");
 	}
+	a->bind.gate_motion = &a->amc;
+	a->bind.gate_motion_count = 1;
 	if (a->renders < 0 || a->renders > REPORT_MAX_STILLS) {
 		fprintf(stderr, "skintool compare: --renders takes 0 to %d, got %ld\n", REPORT_MAX_STILLS,
 			a->renders);

@@ -174,11 +174,13 @@ static int run_scene(metrics_run *r, const metrics_args *a)
 	return 0;
 }
 
-static int run_clip(metrics_run *r, const metrics_args *a)
+static int run_clip(metrics_run *r, metrics_args *a)
 {
 	static bound_body body;
 	static cli_motion mo;
 	static amc_frame f;
+	a->c.bind.gate_motion = &a->c.amc;
+	a->c.bind.gate_motion_count = 1;
 	if (bind_args_load(&a->c.bind, a->c.asf, a->c.mesh, &body) < 0 ||
 	    start(r, &body.skel, &body.pose, &body.mesh, &body.weights, a->c.mesh) < 0 ||
 	    cli_motion_open(&mo, a->c.amc, &body.skel) < 0)

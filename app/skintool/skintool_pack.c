@@ -308,6 +308,8 @@ int cmd_pack(int argc, char **argv)
 	int rc = pack_parse(&p, argc, argv);
 	if (rc != 0)
 		return rc < 0;
+	p.bind.gate_motion = p.amc;
+	p.bind.gate_motion_count = p.amc_count;
 	if (bind_args_load(&p.bind, p.asf, p.mesh, &body) < 0 ||
 	    cli_image_out_open(&out, p.out, (uint32_t)p.block_size) < 0)
 		return 1;

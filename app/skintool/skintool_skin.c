@@ -85,6 +85,8 @@ int cmd_skin(int argc, char **argv)
 	int rc = parse_args(&a, argc, argv);
 	if (rc != 0)
 		return rc < 0;
+	a.c.bind.gate_motion = &a.c.amc;
+	a.c.bind.gate_motion_count = 1;
 	if (bind_args_load(&a.c.bind, a.c.asf, a.c.mesh, &body) < 0)
 		return 1;
 	if (cli_read_frame(a.c.amc, &body.skel, a.frame, &f) < 0)

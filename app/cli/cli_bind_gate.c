@@ -1,0 +1,161 @@
+#include "cli_bind_gate.h"
+
+#include <string.h>
+
+#include "cli_common.h"
+#include "cli_scratch.h"
+
+/* Where a figure was worst, for messages: "with lfemur forward 60 degrees"
+ * or "at frame 84 of walk.amc". */
+static void say_where(FILE *to, const bound_body *body, const bind_gate_worst *w)
+{
+	const bind_rom_move *m = w->move >= 0 ? &body->rom.move[w->move] : NULL;
+	if (m)
+		fprintf(to, "with %s %s %d degrees", body->skel.bone[m->bone].name, bind_rom_kind_name(m->kind),
+			m->degrees);
+	else
+		fprintf(to, "at frame %ld of the motion", w->frame);
+}
+
+static const char *region_name(const bound_body *body, const bind_gate_worst *w)
+{
+	return w->region > 0 ? body->skel.bone[w->region].name : "the root";
+}
+
+/* What to try, by how the body was bound. */
+static const char *fix_for(const bind_args *a, const bound_body *body, unsigned check)
+{
+	int unmapped = check & (BIND_GATE_ROOT | BIND_GATE_RIGID);
+	if (body->rigged && a->weights_mesh)
+		return unmapped ? "name the joints of that part in a map file (--joint-map FILE, lines MESH_JOINT = "
+				  "SKELETON_BONE; README \"Rigged meshes\"), or leave out --weights mesh to have the "
+				  "weights computed"
+				: "check the joints mapped onto that part (--joint-map FILE overrides them), or leave out "
+				  "--weights mesh to have the weights computed";
+	if (body->rigged && !a->weights_path)
+		return "--weights mesh keeps the artist's weights; --joint-map FILE maps the joints by hand";
+	if (a->weights_path)
+		return "the weights file does not fit this mesh and skeleton: leave out --weights to compute them";
+	return "--group NAME binds one part of the file alone, --bind-pose FILE:F or rest when the pose was "
+	       "guessed wrong, and a rigged export (glTF 2.0) brings its own joints and weights";
+}
+
+static void say_failures(FILE *to, const char *name, const bind_args *a, const bound_body *body)
+{
+	const bind_gate_result *g = &body->gate;
+	if (g->failed & BIND_GATE_TEARS) {
+		fprintf(to, "%s: the skin tears at %s: an edge stretched to %.1f times its bind length ", name,
+			region_name(body, &g->stretch), (double)g->stretch.value);
+		say_where(to, body, &g->stretch);
+		fprintf(to, " (%d edges past %.0fx and %.0f%% of the skeleton's extent); %s\n", g->torn_edges,
+			(double)bind_gate_default_limits.stretch_ratio,
+			100.0 * (double)bind_gate_default_limits.stretch_extent, fix_for(a, body, BIND_GATE_TEARS));
+	}
+	if (g->failed & BIND_GATE_DRIFT) {
+		fprintf(to, "%s: a part leaves its bones at %s: a vertex's distance to the posed skeleton grows by "
+			"%.1f%% of its extent ", name, region_name(body, &g->drift), 100.0 * (double)g->drift.value);
+		say_where(to, body, &g->drift);
+		fprintf(to, " (%d vertices past %.0f%%); %s\n", g->drifting, 100.0 * (double)bind_gate_default_limits.drift,
+			fix_for(a, body, BIND_GATE_DRIFT));
+	}
+	if (g->failed & BIND_GATE_ROOT)
+		fprintf(to, "%s: %s moves, but %.0f%% of its vertices are bound to the root alone (%d such vertices in "
+			"all): its joints mapped to nothing; %s\n", name, region_name(body, &g->root),
+			100.0 * (double)g->root.value, g->root_moving, fix_for(a, body, BIND_GATE_ROOT));
+	if (g->failed & BIND_GATE_RIGID)
+		fprintf(to, "%s: %s stays rigid: its vertices follow its bone %.2f of the way (at least %.2f wanted); "
+			"%s\n", name, region_name(body, &g->rigid), (double)g->rigid.value,
+			(double)bind_gate_default_limits.follow_min, fix_for(a, body, BIND_GATE_RIGID));
+}
+
+static int run_moves(const bound_body *body, bind_gate_work *w, cli_skin *sk, skel_pose *pose)
+{
+	for (int k = 0; k < body->rom.count; k++) {
+		bind_rom_pose(&body->skel, &body->pose, &body->rom.move[k], pose);
+		cli_skin_pose(sk, pose);
+		cli_skin_run(sk, SKIN_DQBS, w->xyz, w->nrm);
+		bind_gate_add(w, pose, w->xyz, &body->rom.move[k], k, 0);
+	}
+	return 0;
+}
+
+/* Frames of the motion, at most GATE_FRAMES of them evenly spread. */
+#define GATE_FRAMES 240
+
+static int run_motion(const char *path, long cap, const bound_body *body, bind_gate_work *w, cli_skin *sk)
+{
+	static cli_motion mo;
+	static amc_frame f;
+	long total = cli_motion_count(path, &body->skel), n = 0;
+	if (total < 0 || cli_motion_open(&mo, path, &body->skel) < 0)
+		return -1;
+	long stride = total > cap ? (total + cap - 1) / cap : 1;
+	int rc;
+	while ((rc = cli_motion_next(&mo, &f)) > 0) {
+		if (n++ % stride)
+			continue;
+		cli_skin_frame(sk, f.value);
+		cli_skin_run(sk, SKIN_DQBS, w->xyz, w->nrm);
+		bind_gate_add(w, &sk->pose, w->xyz, NULL, -1, f.number);
+	}
+	cli_motion_close(&mo);
+	return rc < 0 ? -1 : 0;
+}
+
+int cli_bind_gate(const bind_args *a, const char *name, bound_body *body)
+{
+	cli_scratch *sc = cli_scratch_area();
+	bind_gate_work *w = &sc->gate.work;
+	const mesh *m = &body->mesh;
+	if (cli_skin_init(&sc->gate.skin, &body->skel, &body->pose, m, &body->weights, name) < 0)
+		return -1;
+	bind_rom_build(&body->skel, &body->pose, &body->rom);
+	bind_gate_start(w, &body->skel, &body->pose, m, &body->weights, NULL);
+	run_moves(body, w, &sc->gate.skin, &sc->gate.pose);
+	for (int i = 0; i < a->gate_motion_count; i++) {
+		long cap = GATE_FRAMES / a->gate_motion_count;
+		if (run_motion(a->gate_motion[i], cap < 30 ? 30 : cap, body, w, &sc->gate.skin) < 0)
+			return -1;
+	}
+	bind_gate_finish(w, &body->gate);
+	if (a->gate_report)
+		cli_bind_gate_report(stderr, body);
+	if (!body->gate.failed)
+		return 0;
+	say_failures(stderr, name, a, body);
+	if (a->force) {
+		fprintf(stderr, "%s: --force: bound anyway\n", name);
+		return 0;
+	}
+	fprintf(stderr, "%s: bind refused (bind --report prints every figure; --force binds anyway)\n", name);
+	return -1;
+}
+
+static const char *verdict(const bound_body *body, unsigned check)
+{
+	return body->gate.failed & check ? "FAILED" : "ok";
+}
+
+void cli_bind_gate_report(FILE *to, const bound_body *body)
+{
+	const bind_gate_result *g = &body->gate;
+	const bind_gate_limits *lim = &bind_gate_default_limits;
+	fprintf(to, "quality gate: %d range-of-motion poses, %ld motion frames, skeleton extent %.4g\n", g->moves,
+		g->frames, (double)g->extent);
+	fprintf(to, "  tears: worst edge %.2f times its bind length (%s), %d edges past %.0fx and %.0f%%: %s\n",
+		(double)g->stretch.value, region_name(body, &g->stretch), g->torn_edges, (double)lim->stretch_ratio,
+		100.0 * (double)lim->stretch_extent, verdict(body, BIND_GATE_TEARS));
+	fprintf(to, "  grow: an edge longer by %.2f%% of the extent at most (%s)\n", 100.0 * (double)g->grow.value,
+		region_name(body, &g->grow));
+	fprintf(to, "  drift: a vertex's distance to the posed skeleton grew by %.2f%% of its extent at most (%s), "
+		"%d vertices past %.0f%%: %s\n", 100.0 * (double)g->drift.value, region_name(body, &g->drift),
+		g->drifting, 100.0 * (double)lim->drift, verdict(body, BIND_GATE_DRIFT));
+	fprintf(to, "  closer: and shrank by %.2f%% at most (%s: contact, not judged)\n", 100.0 * (double)g->closer.value,
+		region_name(body, &g->closer));
+	fprintf(to, "  root: %.1f%% of a moving region's vertices bound to the root alone at most (%s), %d in all, "
+		"limit %.0f%%: %s\n", 100.0 * (double)g->root.value, region_name(body, &g->root), g->root_moving,
+		100.0 * (double)lim->root_share, verdict(body, BIND_GATE_ROOT));
+	fprintf(to, "  rigid: the region following its bone least follows it %.2f of the way (%s), limit %.2f: %s\n",
+		(double)g->rigid.value, region_name(body, &g->rigid), (double)lim->follow_min,
+		verdict(body, BIND_GATE_RIGID));
+}
