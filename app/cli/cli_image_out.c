@@ -3,7 +3,9 @@
 #include <stdio.h>
 #include <string.h>
 
-int cli_image_out_open(cli_image_out *o, const char *path, uint32_t block_size)
+#include "cli_inputs.h"
+
+int cli_image_out_replace(cli_image_out *o, const char *path, uint32_t block_size)
 {
 	int rc = atomic_file_open(&o->af, path);
 	if (rc == 0 && (rc = storage_file_use_fd(&o->sf, o->af.fd, block_size)) < 0)
@@ -13,6 +15,11 @@ int cli_image_out_open(cli_image_out *o, const char *path, uint32_t block_size)
 		return -1;
 	}
 	return 0;
+}
+
+int cli_image_out_open(cli_image_out *o, const char *path, uint32_t block_size)
+{
+	return cli_output_check(path) < 0 ? -1 : cli_image_out_replace(o, path, block_size);
 }
 
 int cli_image_out_commit(cli_image_out *o)

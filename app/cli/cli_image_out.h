@@ -14,8 +14,12 @@ typedef struct cli_image_out {
 	storage_file sf;          /* sf.bd: the blocks to write (and read back) */
 } cli_image_out;
 
-/* Returns 0, or -1 after reporting. */
+/* Returns 0, or -1 after reporting (path is one of the command's inputs:
+ * cli_inputs.h). */
 int cli_image_out_open(cli_image_out *o, const char *path, uint32_t block_size);
+
+/* The same for an output that replaces its input by design (repair). */
+int cli_image_out_replace(cli_image_out *o, const char *path, uint32_t block_size);
 
 /* The image becomes path (synced, then the directory synced). Returns 0,
  * or -1 after reporting, with path untouched and nothing left behind. */

@@ -3,6 +3,7 @@
 #include <getopt.h>
 #include <string.h>
 
+#include "cli_inputs.h"
 #include "cli_progress.h"
 #include "cli_version.h"
 
@@ -91,6 +92,13 @@ static int answer(const cli_command *c, const cli_opt *o)
 
 static char program[32] = "skintool";
 
+/* Options whose value names a file written: every other value and every
+ * file is an input (cli_inputs.h). */
+static int writes(const cli_opt *o)
+{
+	return !strcmp(o->name, "output") || !strcmp(o->name, "out") || !strcmp(o->name, "sheet");
+}
+
 const char *cli_program(void)
 {
 	return program;
@@ -110,9 +118,11 @@ int cli_parse(const cli_command *c, void *ctx, int argc, char **argv, int first)
 	args[n] = NULL;
 	snprintf(program, sizeof program, "%.*s", (int)strcspn(c->prog, " "), c->prog);
 	build(c, &x);
+	cli_inputs_reset();
 	optind = 0;     /* GNU: start afresh (a second parse in one process) */
 	opterr = 0;
-	int ch, li;
+	int ch, li, out_count = 0;
+	const char *outs[8];
 	while ((ch = getopt_long(n, args, x.shorts, x.longopts, &li)) != -1) {
 		const cli_opt *o = ch == 0 ? x.by_index[li] : by_short(&x, ch);
 		if (ch == '?' || ch == ':' || !o)
@@ -123,15 +133,26 @@ int cli_parse(const cli_command *c, void *ctx, int argc, char **argv, int first)
 			cli_set_quiet(1);
 			continue;
 		}
+		if (o->arg && !writes(o))
+			cli_inputs_add(optarg);
+		else if (o->arg && out_count < 8)
+			outs[out_count++] = optarg;
 		if (c->take(ctx, o->id, o->arg ? optarg : NULL) < 0)
 			return -1;
 	}
 	for (int i = optind; i < n; i++) {
 		if (!c->positional)
 			return usage_error(c, "unexpected argument", args[i]);
+		cli_inputs_add(args[i]);
 		if (c->positional(ctx, args[i]) < 0)
 			return -1;
 	}
+	/* before any work: an output named like an input is refused now (the
+	 * writers check again, for the names they make and the inputs found
+	 * on the way) */
+	for (int i = 0; i < out_count; i++)
+		if (cli_output_check(outs[i]) < 0)
+			return -1;
 	return 0;
 }
 

@@ -4,10 +4,14 @@
 #include <string.h>
 #include <unistd.h>
 
+#include "cli_inputs.h"
+
 int cli_text_out_open(cli_text_out *o, const char *path)
 {
-	int rc = atomic_file_open(&o->af, path);
 	o->f = NULL;
+	if (cli_output_check(path) < 0)
+		return -1;
+	int rc = atomic_file_open(&o->af, path);
 	if (rc == 0 && !(o->f = fdopen(o->af.fd, "w"))) {
 		rc = -errno;
 		close(o->af.fd);

@@ -13,7 +13,8 @@ typedef struct cli_text_out {
 	FILE *f;                   /* write here */
 } cli_text_out;
 
-/* Returns 0, or -1 after reporting "PATH: cannot create: why". */
+/* Returns 0, or -1 after reporting "PATH: cannot create: why" (or that
+ * PATH is one of the command's inputs: cli_inputs.h). */
 int cli_text_out_open(cli_text_out *o, const char *path);
 
 /* Flushes, checks for write errors and replaces the target. Returns 0, or

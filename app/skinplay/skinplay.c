@@ -9,6 +9,7 @@
 #include <unistd.h>
 
 #include "board_config.h"
+#include "cli_inputs.h"
 #include "cli_version.h"
 #include "clock.h"
 #include "png_writer.h"
@@ -261,6 +262,8 @@ static int write_png(player *p, long n)
 	skp_error err;
 	snprintf(path, sizeof path, "%s/frame_%06ld.png", p->o.out_dir, n);
 	render_read_rgba(&p->r, p->rgba);
+	if (cli_output_check(path) < 0)
+		return -1;
 	if (png_write_rgba(path, p->rgba, p->info.width, p->info.height, 1, &err) != 0) {
 		fprintf(stderr, "skinplay: %s: %s\n", path, err.msg);
 		return -1;

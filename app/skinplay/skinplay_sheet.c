@@ -3,6 +3,7 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "cli_inputs.h"
 #include "png_writer.h"
 
 void sheet_init(sheet *s, int frame_w, int frame_h)
@@ -57,6 +58,8 @@ int sheet_write(const sheet *s, const char *path)
 	int rows = (s->cells + SHEET_COLUMNS - 1) / SHEET_COLUMNS;
 	if (rows == 0)
 		return 0;
+	if (cli_output_check(path) < 0)
+		return -1;
 	if (png_write_rgba(path, s->rgba, s->cell_w * SHEET_COLUMNS, s->cell_h * rows, 0, &err) != 0) {
 		fprintf(stderr, "skinplay: %s: %s\n", path, err.msg);
 		return -1;

@@ -8,6 +8,7 @@
 #include <unistd.h>
 
 #include "cli_common.h"
+#include "cli_inputs.h"
 #include "clock.h"
 #include "cli_progress.h"
 #include "compare.h"
@@ -264,6 +265,8 @@ static long count_frames(const compare_args *a, const skel *s)
 static int open_csv(compare_run *c, const compare_args *a)
 {
 	snprintf(c->path, sizeof c->path, "%s/%s", a->out, a->csv_name ? a->csv_name : "metrics.csv");
+	if (cli_output_check(c->path) < 0)
+		return -1;
 	if (!(c->csv = fopen(c->path, "w"))) {
 		fprintf(stderr, "%s: %s\n", c->path, strerror(errno));
 		return -1;

@@ -110,7 +110,7 @@ int cmd_repair(int argc, char **argv)
 		fprintf(stderr, "%s: the data blocks do not match the image's digest (a block altered with a good CRC): "
 			"the image is left as it was\n", s.path);
 		rc = 2;
-	} else if (cli_image_out_open(&out, s.path, s.im.hdr.block_size) < 0) {
+	} else if (cli_image_out_replace(&out, s.path, s.im.hdr.block_size) < 0) {
 		rc = 1;
 	} else if (rewrite(&s, &out) < 0) {
 		cli_image_out_abort(&out);

@@ -4,6 +4,7 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "cli_inputs.h"
 #include "png_writer.h"
 #include "render_font.h"
 
@@ -284,6 +285,8 @@ int chart_write_png(const char *path, const chart *ch, int w, int h)
 	}
 	canvas c = { px, w, h };
 	chart_draw(&c, ch);
+	if (cli_output_check(path) < 0)
+		return -1;
 	if (png_write_rgba(path, px, w, h, 0, &err) != 0) {
 		fprintf(stderr, "%s: %s\n", path, err.msg);
 		return -1;

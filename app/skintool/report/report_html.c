@@ -5,6 +5,7 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "cli_inputs.h"
 #include "report.h"
 
 static const char *const algo_label[SKIN_ALGO_COUNT] = { "LBS", "DQBS", "DQBS fixed" };
@@ -504,6 +505,8 @@ int report_write_html(const report *r, const char *dir)
 {
 	char path[4096];
 	snprintf(path, sizeof path, "%s/index.html", dir);
+	if (cli_output_check(path) < 0)
+		return -1;
 	FILE *f = fopen(path, "w");
 	if (!f) {
 		fprintf(stderr, "%s: %s\n", path, strerror(errno));

@@ -4,6 +4,7 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "cli_inputs.h"
 #include "report_chart.h"
 #include "png_writer.h"
 
@@ -132,6 +133,8 @@ int report_view_compare(report_view *v, cli_skin *sk, vec3 joint, int closeup, c
 	flip(v);
 	mark(v, joint, closeup);
 	v->r.cam = saved;
+	if (cli_output_check(path) < 0)
+		return -1;
 	if (png_write_rgba(path, v->top_down, v->info.width, v->info.height, 0, &err) != 0) {
 		fprintf(stderr, "%s: %s\n", path, err.msg);
 		return -1;
