@@ -13,6 +13,8 @@
 #           |
 #   platform/{display,input,storage,sys}       Linux backends (base + port headers)
 #           |
+#   play                                       the playback engine: clock in, pose out
+#           |
 #   bind  image  render  kiosk                 features
 #      \    |    /
 #        skin (+ kernels/, private)            LBS, DQBS, DQBS fixed
@@ -29,13 +31,14 @@
 #   image     the flash image: format, block device port, reader, writer, player
 #   render    the GLES2 renderer, camera, font, shaders, GL entry points
 #   kiosk     player state machine, debounce, board config, input port
+#   play      the playback engine: clock, sampler, crossfades, root motion, facing, slot and clip policy
 #   analysis  tool-only measures: volume, radius, overlap, scenes
 #   import    tool-only: rigged glTF/FBX/COLLADA meshes through libassimp, joint maps
 #   cli       shared by both programs: bound body, skin run, show, errors, --version
 #   skinplay  the device program; skintool: the host tool (+ report/)
 
 # The portable core, bottom up: no malloc, no stdio (make check-core).
-CORE_MODULES  := base math motion mesh skin bind image render kiosk
+CORE_MODULES  := base math motion mesh skin bind image render kiosk play
 DEPS_base     :=
 DEPS_math     := base
 DEPS_motion   := math base
@@ -45,6 +48,7 @@ DEPS_bind     := skin mesh motion math base
 DEPS_image    := skin mesh motion math base
 DEPS_render   := skin mesh motion math base
 DEPS_kiosk    := base
+DEPS_play     := image skin mesh motion math base
 # Host code, which may allocate and print: the tool-only measures, the layer
 # both programs share (loading, binding, showing, --version), the programs.
 DEPS_analysis := skin mesh motion math base

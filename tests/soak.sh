@@ -44,9 +44,9 @@ for b in $faults; do
 	printf "$(printf '\\%03o' $((byte ^ 0x5a)))" | dd of="$dir/damaged.skn" bs=1 seek="$off" conv=notrunc status=none
 done
 
-# Headless, script time is frame time: frame n is at n * 1000 / 120 ms (the
-# demo clip's rate). Presses from 20 s (frame 2400) to the end of the run.
-span_ms=$((frames * 1000 / 120 - 20000))
+# Headless, script time is display time: frame n is at n * 1000 / 60 ms (the
+# default --display-rate). Presses from 20 s (frame 1200) to the end of the run.
+span_ms=$((frames * 1000 / 60 - 20000))
 [ "$span_ms" -lt 1000 ] && span_ms=1000
 awk -v n=500 -v span="$span_ms" 'BEGIN {
 	srand(20261121); split("ALGO PLAY NEXT VIEW", name, " ");

@@ -34,6 +34,9 @@ typedef struct cli_motion {
 int cli_motion_open(cli_motion *m, const char *path, const skel *s);
 /* 1 frame, 0 end, -1 error (already reported). */
 int cli_motion_next(cli_motion *m, amc_frame *f);
+/* The same with the error in err, not reported (warnings about a file cut
+ * short are printed, once). */
+int cli_motion_read(cli_motion *m, amc_frame *f, skp_error *err);
 void cli_motion_close(cli_motion *m);
 
 /* Streams the whole file: its frame count, or -1 (reported). */

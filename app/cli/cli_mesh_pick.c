@@ -1,7 +1,6 @@
 #include "cli_mesh_pick.h"
 
 #include <stdio.h>
-#include <stdlib.h>
 #include <string.h>
 #include <strings.h>
 
@@ -58,41 +57,45 @@ static int find_root(int *up, int v)
 	return v;
 }
 
-static int cmp_u64(const void *a, const void *b)
+/* Every edge of the mesh bucketed by its smaller vertex (a counting sort),
+ * the part of each edge not shared by exactly two triangles marked open. */
+static void mark_open_parts(const mesh *m, mesh_pick_work *p)
 {
-	uint64_t x = *(const uint64_t *)a, y = *(const uint64_t *)b;
-	return x < y ? -1 : x > y;
-}
-
-typedef struct parts {
-	int *up;             /* union-find over vertices */
-	long *tris, *verts;  /* per root */
-	char *open;          /* per root: an edge not shared by exactly two triangles */
-} parts;
-
-static void mark_open_parts(const mesh *m, parts *p)
-{
-	uint64_t *e = malloc(sizeof *e * (size_t)m->tri_count * 3);
-	if (!e)
-		return;
-	long n = 0;
+	uint32_t *start = p->edge_start;
+	memset(start, 0, sizeof(uint32_t) * ((size_t)m->vert_count + 1));
 	for (int t = 0; t < m->tri_count; t++)
 		for (int k = 0; k < 3; k++) {
-			uint64_t a = m->tri[t][k], b = m->tri[t][(k + 1) % 3];
-			e[n++] = a < b ? a << 32 | b : b << 32 | a;
+			uint32_t a = m->tri[t][k], b = m->tri[t][(k + 1) % 3];
+			start[(a < b ? a : b) + 1]++;
 		}
-	qsort(e, (size_t)n, sizeof *e, cmp_u64);
-	for (long i = 0, j; i < n; i = j) {
-		for (j = i; j < n && e[j] == e[i]; j++)
-			;
-		if (j - i != 2)
-			p->open[find_root(p->up, (int)(e[i] >> 32))] = 1;
+	for (int v = 0; v < m->vert_count; v++)
+		start[v + 1] += start[v];
+	for (int v = 0; v < m->vert_count; v++)
+		p->fill[v] = start[v];
+	for (int t = 0; t < m->tri_count; t++)
+		for (int k = 0; k < 3; k++) {
+			uint32_t a = m->tri[t][k], b = m->tri[t][(k + 1) % 3];
+			p->edge_other[p->fill[a < b ? a : b]++] = a < b ? b : a;
+		}
+	for (int v = 0; v < m->vert_count; v++) {
+		uint32_t *e = p->edge_other + start[v], n = start[v + 1] - start[v];
+		for (uint32_t i = 1; i < n; i++) /* a vertex has a handful of edges */
+			for (uint32_t j = i; j > 0 && e[j] < e[j - 1]; j--) {
+				uint32_t x = e[j];
+				e[j] = e[j - 1];
+				e[j - 1] = x;
+			}
+		for (uint32_t i = 0, j; i < n; i = j) {
+			for (j = i; j < n && e[j] == e[i]; j++)
+				;
+			if (j - i != 2)
+				p->open[find_root(p->up, v)] = 1;
+		}
 	}
-	free(e);
 }
 
 /* The largest closed part's root, else the largest part's. */
-static int best_part(const mesh *m, const parts *p, int *count)
+static int best_part(const mesh *m, const mesh_pick_work *p, int *count)
 {
 	int best = -1, closed = 0;
 	*count = 0;
@@ -109,11 +112,9 @@ static int best_part(const mesh *m, const parts *p, int *count)
 	return best;
 }
 
-static void keep_part(mesh *m, const parts *p, int root)
+static void keep_part(mesh *m, mesh_pick_work *p, int root)
 {
-	int *to = malloc(sizeof *to * (size_t)m->vert_count), n = 0, t2 = 0;
-	if (!to)
-		return;
+	int *to = p->to, n = 0, t2 = 0;
 	for (int v = 0; v < m->vert_count; v++) {
 		to[v] = find_root(p->up, v) == root ? n : -1;
 		if (to[v] >= 0) {
@@ -129,46 +130,46 @@ static void keep_part(mesh *m, const parts *p, int root)
 		}
 	m->vert_count = n;
 	m->tri_count = t2;
-	free(to);
 }
 
-static void pick_largest_part(const char *path, mesh *m)
+/* Union-find over the triangles' vertices: each vertex's part. */
+static void find_parts(const mesh *m, mesh_pick_work *p)
 {
-	parts p;
-	size_t nv = (size_t)m->vert_count;
-	p.up = malloc(sizeof *p.up * nv);
-	p.tris = calloc(nv, sizeof *p.tris);
-	p.verts = calloc(nv, sizeof *p.verts);
-	p.open = calloc(nv, 1);
-	if (p.up && p.tris && p.verts && p.open) {
-		for (size_t v = 0; v < nv; v++)
-			p.up[v] = (int)v;
-		for (int t = 0; t < m->tri_count; t++) {
-			int a = find_root(p.up, (int)m->tri[t][0]);
-			for (int k = 1; k < 3; k++) {
-				int b = find_root(p.up, (int)m->tri[t][k]);
-				if (a != b)
-					p.up[b] = a;
-			}
-		}
-		for (size_t v = 0; v < nv; v++)
-			p.verts[find_root(p.up, (int)v)]++;
-		for (int t = 0; t < m->tri_count; t++)
-			p.tris[find_root(p.up, (int)m->tri[t][0])]++;
-		mark_open_parts(m, &p);
-		int count, best = best_part(m, &p, &count);
-		if (count > 1 && best >= 0) {
-			long kept = p.verts[best];
-			keep_part(m, &p, best);
-			fprintf(stderr, "%s: using its largest %sconnected part (%ld vertices); left out %d other part%s "
-				"(%ld vertices)\n", path, p.open[best] ? "" : "closed ", kept, count - 1,
-				count == 2 ? "" : "s", (long)nv - kept);
+	for (int v = 0; v < m->vert_count; v++) {
+		p->up[v] = v;
+		p->tris[v] = p->verts[v] = 0;
+		p->open[v] = 0;
+	}
+	for (int t = 0; t < m->tri_count; t++) {
+		int a = find_root(p->up, (int)m->tri[t][0]);
+		for (int k = 1; k < 3; k++) {
+			int b = find_root(p->up, (int)m->tri[t][k]);
+			if (a != b)
+				p->up[b] = a;
 		}
 	}
-	free(p.up);
-	free(p.tris);
-	free(p.verts);
-	free(p.open);
+	for (int v = 0; v < m->vert_count; v++)
+		p->verts[find_root(p->up, v)]++;
+	for (int t = 0; t < m->tri_count; t++)
+		p->tris[find_root(p->up, (int)m->tri[t][0])]++;
+}
+
+/* In the start-up scratch (the OBJ's work space is free again by now):
+ * no allocation in skinplay, which binds --mesh at start-up too. */
+static void pick_largest_part(const char *path, mesh *m)
+{
+	mesh_pick_work *p = &cli_scratch_area()->pick;
+	long all = m->vert_count;
+	find_parts(m, p);
+	mark_open_parts(m, p);
+	int count, best = best_part(m, p, &count);
+	if (count <= 1 || best < 0)
+		return;
+	long kept = p->verts[best];
+	int closed = !p->open[best];
+	keep_part(m, p, best);
+	fprintf(stderr, "%s: using its largest %sconnected part (%ld vertices); left out %d other part%s (%ld vertices)\n",
+		path, closed ? "closed " : "", kept, count - 1, count == 2 ? "" : "s", all - kept);
 }
 
 int cli_pick_mesh(const char *path, const char *group, mesh *out)

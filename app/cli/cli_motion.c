@@ -82,14 +82,9 @@ int cli_motion_open(cli_motion *m, const char *path, const skel *s)
 	return 0;
 }
 
-int cli_motion_next(cli_motion *m, amc_frame *f)
+int cli_motion_read(cli_motion *m, amc_frame *f, skp_error *err)
 {
-	skp_error err;
-	int r = m->is_bvh ? bvh_next(&m->bvh, f, &err) : amc_next(&m->stream, f, &err);
-	if (r < 0) {
-		cli_error(m->path, &err);
-		return -1;
-	}
+	int r = m->is_bvh ? bvh_next(&m->bvh, f, err) : amc_next(&m->stream, f, err);
 	if (r == 0 && m->is_bvh && m->bvh.cut_frames > 0 && !m->warned_cut) {
 		fprintf(stderr, "%s: warning: the file ends %ld frames short of its Frames: %ld\n", m->path,
 			m->bvh.cut_frames, m->layout.frames);
@@ -99,6 +94,17 @@ int cli_motion_next(cli_motion *m, amc_frame *f)
 		fprintf(stderr, "%s:%ld: warning: frame %ld is cut short (the file ends inside it): dropped\n",
 			m->path, m->stream.cut_line, m->stream.cut_frame);
 		m->warned_cut = 1;
+	}
+	return r;
+}
+
+int cli_motion_next(cli_motion *m, amc_frame *f)
+{
+	skp_error err;
+	int r = cli_motion_read(m, f, &err);
+	if (r < 0) {
+		cli_error(m->path, &err);
+		return -1;
 	}
 	return r;
 }

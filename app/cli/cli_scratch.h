@@ -1,7 +1,7 @@
-/* Start-up scratch for the bound body. The OBJ parser, the generated body
- * and the weight balancing each need megabytes of work space (obj_work,
- * manq_work, bind_balance_work, all sized by the board's vertex limit; the
- * quality gate's work after them), one
+/* Start-up scratch for the bound body. The OBJ parser, the choice of its
+ * part, the generated body and the weight balancing each need megabytes of
+ * work space (obj_work, mesh_pick_work, manq_work, bind_balance_work, all
+ * sized by the board's vertex limit; the quality gate's work after them), one
  * after another and never two at once (bind_args_load), so they share one
  * static area instead of holding three. Only the pointer a step was given
  * is valid, and only until the next step starts. */
@@ -15,8 +15,19 @@
 #include "mannequin.h"
 #include "obj.h"
 
+/* cli_mesh_pick.c: a mesh's connected parts, and which are closed. */
+typedef struct mesh_pick_work {
+	int up[SKP_MAX_VERTS];              /* union-find over vertices */
+	long tris[SKP_MAX_VERTS], verts[SKP_MAX_VERTS]; /* per root */
+	char open[SKP_MAX_VERTS];           /* per root: an edge not shared by exactly two triangles */
+	int to[SKP_MAX_VERTS];              /* old vertex -> kept one, -1 */
+	uint32_t edge_start[SKP_MAX_VERTS + 1], fill[SKP_MAX_VERTS];
+	uint32_t edge_other[3 * SKP_MAX_TRIS]; /* edges bucketed by their smaller vertex */
+} mesh_pick_work;
+
 typedef union cli_scratch {
 	obj_work obj;
+	mesh_pick_work pick;
 	manq_work manq;
 	bind_balance_work balance;
 	bind_guess_work guess;

@@ -4,7 +4,7 @@
 #include <string.h>
 
 #include "cli_common.h"
-#include "fk.h"
+#include "play_policy.h"
 
 /* n bytes of the file from offset at into buf; how many came. */
 static long read_at(storage_file *sf, uint64_t at, uint8_t *buf, long n)
@@ -92,10 +92,11 @@ static void refuse(const char *path, const skp_error *err)
 		fprintf(stderr, "image: %s refused: %s\n", path, err->msg);
 }
 
-/* Opened slots, newest (largest sequence) first. */
+/* Opens every slot; newest (largest sequence) first into order[]. */
 static int by_sequence(show_source *s, const char *const *paths, int n, int order[])
 {
-	int k = 0;
+	uint64_t seq[SHOW_MAX_SLOTS] = { 0 };
+	uint8_t opened[SHOW_MAX_SLOTS] = { 0 };
 	skp_error err;
 	for (int i = 0; i < n && i < SHOW_MAX_SLOTS; i++) {
 		s->slot[i].im.on_rebuild = show_log_rebuild;
@@ -104,14 +105,10 @@ static int by_sequence(show_source *s, const char *const *paths, int n, int orde
 			refuse(paths[i], &err);
 			continue;
 		}
-		int j = k++;
-		while (j > 0 && s->slot[order[j - 1]].im.hdr.sequence < s->slot[i].im.hdr.sequence) {
-			order[j] = order[j - 1];
-			j--;
-		}
-		order[j] = i;
+		opened[i] = 1;
+		seq[i] = s->slot[i].im.hdr.sequence;
 	}
-	return k;
+	return play_slots_by_sequence(seq, opened, n < SHOW_MAX_SLOTS ? n : SHOW_MAX_SLOTS, order);
 }
 
 static void close_others(show_source *s, int keep)
@@ -162,24 +159,23 @@ static int slot_flawed(show_source *s, show_image *img, const skel *sk, int seve
 	return 1;
 }
 
-/* The newest slot whose body is accepted and that has no flaw, else the
- * newest accepted one; -1 when none is. body holds the chosen one's. */
-static int choose_slot(show_source *s, const int *order, int k, int several, bound_body *body)
+/* The slot policy's checks (app/play/play_policy.h), with their messages:
+ * the body accepted (into s->body), and a flaw an intact older slot wins
+ * over. */
+static int slot_accept(void *ctx, int i)
 {
+	show_source *s = ctx;
 	skp_error err;
-	int flawed = -1;
-	for (int i = 0; i < k; i++) {
-		show_image *img = &s->slot[order[i]];
-		if (show_accept_body(img, body, &err) < 0) {
-			refuse(img->path, &err);
-			continue;
-		}
-		if (!slot_flawed(s, img, &body->skel, several))
-			return order[i];
-		if (flawed < 0)
-			flawed = order[i];
-	}
-	return flawed >= 0 && show_accept_body(&s->slot[flawed], body, &err) == 0 ? flawed : -1;
+	if (show_accept_body(&s->slot[i], s->body, &err) == 0)
+		return 1;
+	refuse(s->slot[i].path, &err);
+	return 0;
+}
+
+static long slot_damaged(void *ctx, int i)
+{
+	show_source *s = ctx;
+	return slot_flawed(s, &s->slot[i], &s->body->skel, 1);
 }
 
 int show_open(show_source *s, const char *const *paths, int n, bound_body *body)
@@ -187,9 +183,11 @@ int show_open(show_source *s, const char *const *paths, int n, bound_body *body)
 	int order[SHOW_MAX_SLOTS];
 	memset(s, 0, sizeof *s);
 	s->clip = -1;
+	s->body = body;
 	s->slot_count = n < SHOW_MAX_SLOTS ? n : SHOW_MAX_SLOTS;
 	int k = by_sequence(s, paths, n, order);
-	s->active = choose_slot(s, order, k, n > 1, body);
+	play_slot_checks checks = { s, slot_accept, slot_damaged };
+	s->active = play_slot_choose(order, k, n, &checks);
 	if (s->active < 0) {
 		fprintf(stderr, "image: no valid image among %d slot%s\n", n, n > 1 ? "s" : "");
 		close_others(s, -1);
@@ -206,13 +204,7 @@ int show_open(show_source *s, const char *const *paths, int n, bound_body *body)
 
 int show_next_playable(const show_source *s, int from)
 {
-	int n = show_clip_count(s);
-	for (int k = 0; k < n; k++) {
-		int c = ((from % n) + n + k) % n;
-		if (s->playable[c])
-			return c;
-	}
-	return -1;
+	return play_next_playable(s->playable, show_clip_count(s), from);
 }
 
 unsigned long show_rebuilt(const show_source *s)
@@ -235,7 +227,27 @@ const char *show_path(const show_source *s)
 	return s->active < 0 ? "" : s->slot[s->active].path;
 }
 
-int show_select_clip(show_source *s, const char *name, long start)
+/* A frame held over a bad block: one line per block, ever. */
+static void log_lost(void *ctx, long block, const char *why, long held)
+{
+	show_source *s = ctx;
+	if (show_log_once(&s->slot[s->active], block))
+		fprintf(stderr, "image: block %ld bad (%s), holding frame %ld\n", block, why, held);
+}
+
+/* One line for a pass over the clip that lost or rebuilt anything: what a
+ * dying card costs stays visible in the journal without a line per frame. */
+static void log_pass(void *ctx)
+{
+	show_source *s = ctx;
+	unsigned long rebuilt = s->slot[s->active].im.rebuilt - s->pass_rebuilt, lost = s->clip_src.pass_lost;
+	if (lost || rebuilt)
+		fprintf(stderr, "image: clip %s: %lu frame%s held over bad blocks, %lu block%s rebuilt this pass\n",
+			s->clip_src.player.c.name, lost, lost == 1 ? "" : "s", rebuilt, rebuilt == 1 ? "" : "s");
+	s->pass_rebuilt = s->slot[s->active].im.rebuilt;
+}
+
+int show_select_clip(show_source *s, const char *name, play_source *src)
 {
 	show_image *img = &s->slot[s->active];
 	skp_error err;
@@ -252,71 +264,17 @@ int show_select_clip(show_source *s, const char *name, long start)
 		fprintf(stderr, "%s: clip %s cannot play (see above)\n", img->path, img->im.clip[c].name);
 		return -1;
 	}
-	if (skp_player_open(&s->player, &img->im, c, &err) != SKP_OK) {
+	s->clip_src.on_lost = log_lost;
+	s->clip_src.on_rewind = log_pass;
+	s->clip_src.ctx = s;
+	if (play_image_source_open(&s->clip_src, &img->im, c, &err) != SKP_OK) {
 		cli_error(img->path, &err);
 		return -1;
 	}
-	const skp_image_clip *cl = &img->im.clip[c];
-	if (start >= 0) {
-		if (start < cl->first_number || start - cl->first_number >= (long)cl->frame_count) {
-			fprintf(stderr, "%s: clip %s has no frame %ld (frames %ld..%ld)\n", img->path, cl->name, start,
-				(long)cl->first_number, (long)cl->first_number + (long)cl->frame_count - 1);
-			return -1;
-		}
-		skp_player_seek(&s->player, (uint32_t)(start - cl->first_number));
-	}
 	s->clip = c;
-	s->have_last = 0;
-	s->pass_lost = 0;
 	s->pass_rebuilt = img->im.rebuilt;
+	*src = play_image_source_get(&s->clip_src);
 	return 0;
-}
-
-int show_next_frame(show_source *s, amc_frame *f)
-{
-	skp_error err;
-	int r = skp_player_next(&s->player, f, &err);
-	if (r == 1) {
-		memcpy(s->last.value, f->value, sizeof(float) * (size_t)s->player.c.dofs);
-		s->last.number = f->number;
-		s->have_last = 1;
-		return 1;
-	}
-	if (r != SKP_PLAYER_LOST)
-		return r;
-	s->lost_frames++;
-	s->pass_lost++;
-	/* nothing good yet (the clip starts in a bad block): hold the ASF rest
-	 * pose (every value 0), never undecoded values */
-	if (!s->have_last) {
-		memset(s->last.value, 0, sizeof s->last.value);
-		s->last.number = (long)s->player.c.first_number + (long)s->player.next - 1;
-		s->have_last = 1;
-	}
-	if (show_log_once(&s->slot[s->active], err.block))
-		fprintf(stderr, "image: block %ld bad (%s), holding frame %ld\n", err.block, err.msg, s->last.number);
-	memcpy(f->value, s->last.value, sizeof(float) * (size_t)s->player.c.dofs);
-	f->number = s->last.number;
-	f->line = 0;
-	return 1;
-}
-
-/* One line for a pass over the clip that lost or rebuilt anything: what a
- * dying card costs stays visible in the journal without a line per frame. */
-static void pass_summary(show_source *s)
-{
-	unsigned long rebuilt = s->slot[s->active].im.rebuilt - s->pass_rebuilt;
-	if (s->pass_lost || rebuilt)
-		fprintf(stderr, "image: clip %s: %lu frame%s held over bad blocks, %lu block%s rebuilt this pass\n",
-			s->player.c.name, s->pass_lost, s->pass_lost == 1 ? "" : "s", rebuilt, rebuilt == 1 ? "" : "s");
-	s->pass_lost = 0;
-	s->pass_rebuilt = s->slot[s->active].im.rebuilt;
-}
-
-void show_rewind(show_source *s)
-{
-	pass_summary(s);
-	skp_player_seek(&s->player, 0);
 }
 
 void show_close(show_source *s)

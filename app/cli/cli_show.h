@@ -19,8 +19,8 @@
 #define CLI_SHOW_H
 
 #include "cli_bind_args.h"
-#include "image_play.h"
 #include "image_survey.h"
+#include "play_image_source.h"
 #include "storage_file.h"
 
 #define SHOW_MAX_SLOTS   4
@@ -77,16 +77,14 @@ typedef struct show_source {
 	int active;                 /* slot playing */
 	int clip;                   /* clip playing, -1 none */
 	uint8_t playable[SKP_IMAGE_MAX_CLIPS];  /* accepted clips of the active slot */
-	skp_player player;
-	amc_frame last;             /* the last good frame, held over bad blocks */
-	int have_last;
-	unsigned long lost_frames;  /* frames replaced by a held one */
-	unsigned long pass_lost;    /* ... in this pass over the clip */
+	play_image_source clip_src; /* the clip playing, as the engine's source */
 	unsigned long pass_rebuilt; /* im.rebuilt when the pass began */
+	bound_body *body;           /* filled by show_open (the slot choice) */
 } show_source;
 
-/* Opens the newest valid slot of paths[0..n-1] and fills body (skeleton,
- * bind pose, mesh, weights). Returns 0, or -1 after reporting on stderr. */
+/* Opens the newest valid slot of paths[0..n-1] (app/play's slot policy)
+ * and fills body (skeleton, bind pose, mesh, weights). Returns 0, or -1
+ * after reporting on stderr. */
 int show_open(show_source *s, const char *const *paths, int n, bound_body *body);
 
 int show_clip_count(const show_source *s);
@@ -99,16 +97,11 @@ unsigned long show_rebuilt(const show_source *s);
 const skp_image_clip *show_clip(const show_source *s, int i);
 const char *show_path(const show_source *s);
 
-/* Selects the clip named name (NULL: the first) and moves to frame number
- * start (< 0: the clip's first). Returns 0, or -1 after reporting. */
-int show_select_clip(show_source *s, const char *name, long start);
-
-/* Returns 1 with the next frame in *f (a held frame when the real one is in
- * a bad block), 0 at the end of the clip, -1 after reporting an error. */
-int show_next_frame(show_source *s, amc_frame *f);
-
-/* Back to the clip's first frame (looping on a display). */
-void show_rewind(show_source *s);
+/* Selects the clip named name (NULL: the first that can play). Returns 0
+ * with *src ready for the playback engine (a frame lost in a bad block is
+ * held and logged once per block; each pass that lost or rebuilt anything
+ * ends with a summary line), or -1 after reporting. */
+int show_select_clip(show_source *s, const char *name, play_source *src);
 
 void show_close(show_source *s);
 

@@ -9,7 +9,7 @@
 #define STR(x) STR_(x)
 #define DISPLAY_MAX_TEXT STR(SKP_DISPLAY_MAX_W) "x" STR(SKP_DISPLAY_MAX_H)
 
-typedef enum { SEC_NONE, SEC_DISPLAY, SEC_INPUT, SEC_BUTTON, SEC_STORAGE, SEC_LIMITS, SEC_SKIN } section_kind;
+typedef enum { SEC_NONE, SEC_DISPLAY, SEC_INPUT, SEC_BUTTON, SEC_STORAGE, SEC_LIMITS, SEC_SKIN, SEC_SHOW } section_kind;
 
 /* Per-button timing given in the file; -1 inherits [input]'s. */
 typedef struct pending {
@@ -23,6 +23,10 @@ void board_config_defaults(board_config *c)
 	c->rotation = -1;
 	c->hud = -1;
 	c->split_verts = BOARD_SPLIT_VERTS;
+	c->yaw_mode = -1;
+	c->speed = 1.0;
+	c->blend_ms = BOARD_BLEND_MS;
+	c->root = BOARD_ROOT_IN_PLACE;
 	for (int i = 0; i < PLAYER_BTN_COUNT; i++) {
 		c->button[i].active_low = 1;
 		c->button[i].bias = BOARD_BIAS_PULL_UP;
@@ -82,6 +86,28 @@ static skp_status parse_size(board_config *c, const ini_entry *e, skp_error *err
 }
 
 const char *const board_streams_names[BOARD_STREAMS_KINDS] = { "float", "compact" };
+const char *const board_root_names[BOARD_ROOT_MODES] = { "in-place", "travel" };
+
+int board_root_parse(const char *word)
+{
+	return word ? pick(word, board_root_names, BOARD_ROOT_MODES) : -1;
+}
+
+int board_speed_parse(const char *word, double *out)
+{
+	return word && tok_parse_double(word, out) == 0 && *out >= BOARD_SPEED_MIN && *out <= BOARD_SPEED_MAX ? 0 : -1;
+}
+
+int board_yaw_parse(const char *word, float *deg)
+{
+	double v;
+	if (word && tok_ieq(word, "auto"))
+		return 0;
+	if (!word || tok_parse_double(word, &v) != 0 || !(v >= -360.0 && v <= 360.0))
+		return -1;
+	*deg = (float)v;
+	return 1;
+}
 const char *const board_hud_names[BOARD_HUD_MODES] = { "off", "engineer", "visitor" };
 
 int board_hud_parse(const char *word)
@@ -128,8 +154,13 @@ static skp_status display_key(board_config *c, const ini_entry *e, skp_error *er
 			return bad(err, e, "visitor, engineer or off");
 		return SKP_OK;
 	}
+	if (tok_ieq(e->key, "yaw")) {
+		if ((c->yaw_mode = board_yaw_parse(e->value, &c->yaw_deg)) < 0)
+			return bad(err, e, "auto or degrees from -360 to 360");
+		return SKP_OK;
+	}
 	return skp_fail(err, SKP_ERR_SYNTAX, e->line,
-			"unknown key '%s' in [display] (platform, device, rotation, size, hud)", e->key);
+			"unknown key '%s' in [display] (platform, device, rotation, size, hud, yaw)", e->key);
 }
 
 static skp_status timing_key(const ini_entry *e, long *debounce, long *long_press, skp_error *err)
@@ -241,6 +272,29 @@ static skp_status skin_key(board_config *c, const ini_entry *e, skp_error *err)
 	return skp_fail(err, SKP_ERR_SYNTAX, e->line, "unknown key '%s' in [skin] (threads, split_verts, streams)", e->key);
 }
 
+static skp_status show_key(board_config *c, const ini_entry *e, skp_error *err)
+{
+	long v;
+	if (tok_ieq(e->key, "speed")) {
+		if (board_speed_parse(e->value, &c->speed) < 0)
+			return bad(err, e, "a speed from 0.1 to 4 (1: as captured)");
+		return SKP_OK;
+	}
+	if (tok_ieq(e->key, "blend_ms")) {
+		if (get_long(e, 0, BOARD_BLEND_MS_MAX, &v, "a crossfade of 0.." STR(BOARD_BLEND_MS_MAX) " ms (0: cut)", err) !=
+		    SKP_OK)
+			return err->code;
+		c->blend_ms = (int)v;
+		return SKP_OK;
+	}
+	if (tok_ieq(e->key, "root")) {
+		if ((c->root = board_root_parse(e->value)) < 0)
+			return bad(err, e, "in-place or travel");
+		return SKP_OK;
+	}
+	return skp_fail(err, SKP_ERR_SYNTAX, e->line, "unknown key '%s' in [show] (speed, blend_ms, root)", e->key);
+}
+
 /* "button.algo" -> PLAYER_BTN_ALGO; -1 when not a button section. */
 static int button_section(const char *s)
 {
@@ -251,13 +305,13 @@ static int button_section(const char *s)
 
 static skp_status section_of(const ini_entry *e, section_kind *k, int *b, skp_error *err)
 {
-	static const char *const names[] = { "", "display", "input", "button", "storage", "limits", "skin" };
+	static const char *const names[] = { "", "display", "input", "button", "storage", "limits", "skin", "show" };
 	*b = button_section(e->section);
 	if (*b >= 0) {
 		*k = SEC_BUTTON;
 		return SKP_OK;
 	}
-	for (int i = 1; i < 7; i++)
+	for (int i = 1; i < 8; i++)
 		if (i != SEC_BUTTON && tok_ieq(e->section, names[i])) {
 			*k = (section_kind)i;
 			return SKP_OK;
@@ -265,7 +319,7 @@ static skp_status section_of(const ini_entry *e, section_kind *k, int *b, skp_er
 	if (!*e->section)
 		return skp_fail(err, SKP_ERR_SYNTAX, e->line, "key '%s' before any [section]", e->key);
 	return skp_fail(err, SKP_ERR_SYNTAX, e->line,
-			"key '%s' in unknown section [%s] (display, input, button.algo|play|next|view, storage, limits, skin)",
+			"key '%s' in unknown section [%s] (display, input, button.algo|play|next|view, storage, limits, skin, show)",
 			e->key, e->section);
 }
 
@@ -303,6 +357,7 @@ skp_status board_config_read(board_config *c, skp_reader rd, skp_error *err)
 			case SEC_BUTTON: st = button_key(c, &p, b, &e, err); break;
 			case SEC_STORAGE: st = storage_key(c, &e, err); break;
 			case SEC_SKIN: st = skin_key(c, &e, err); break;
+			case SEC_SHOW: st = show_key(c, &e, err); break;
 			default: st = limits_key(c, &e, err); break;
 			}
 		}

@@ -14,6 +14,12 @@
  *              meshes of split_verts vertices or more; auto: the threads
  *              are tried against one and kept if they are faster)
  *              streams = float | compact   (skinplay --streams)
+ *   [display]  yaw = auto | DEG   (the camera faces the clip's mean facing,
+ *              or DEG degrees about the vertical from the usual view)
+ *   [show]     speed = 1   (0.1..4: clip seconds a second)
+ *              blend_ms = 300   (crossfade at a loop or a clip change; 0: cut)
+ *              root = in-place | travel   (in place: the root's horizontal
+ *              travel taken out; travel: kept, the camera follows)
  *
  * Unknown sections and keys are errors naming the line and the key. */
 #ifndef BOARD_CONFIG_H
@@ -65,6 +71,20 @@ extern const char *const board_hud_names[BOARD_HUD_MODES];         /* "off", "en
 int board_streams_parse(const char *word);
 int board_hud_parse(const char *word);
 
+/* [show] root: the words in enum order, and their parse (-1: another). */
+typedef enum board_root { BOARD_ROOT_IN_PLACE, BOARD_ROOT_TRAVEL } board_root;
+#define BOARD_ROOT_MODES 2
+extern const char *const board_root_names[BOARD_ROOT_MODES]; /* "in-place", "travel" */
+int board_root_parse(const char *word);
+
+/* [show] speed: 0 with *out in [BOARD_SPEED_MIN, BOARD_SPEED_MAX], else -1. */
+#define BOARD_SPEED_MIN 0.1
+#define BOARD_SPEED_MAX 4.0
+int board_speed_parse(const char *word, double *out);
+
+/* [display] yaw: 0 for auto, 1 with *deg for degrees (-360..360), -1 else. */
+int board_yaw_parse(const char *word, float *deg);
+
 typedef struct board_button {
 	int present;             /* its [button.NAME] section gives a line */
 	unsigned int line;       /* line offset on the chip (BCM GPIO on a Pi) */
@@ -88,6 +108,11 @@ typedef struct board_config {
 	int threads;             /* skinning threads; 0: one per core */
 	int split_verts;         /* meshes this big or bigger use them; BOARD_SPLIT_AUTO: measured */
 	int streams;             /* board_streams */
+	int yaw_mode;            /* -1 not given, 0 auto, 1 yaw_deg */
+	float yaw_deg;
+	double speed;            /* [show] speed */
+	int blend_ms;            /* [show] blend_ms */
+	int root;                /* board_root */
 } board_config;
 
 #define BOARD_DEBOUNCE_MS 30
@@ -98,6 +123,8 @@ typedef struct board_config {
  * development machine: two threads win from about 50,000). */
 #define BOARD_SPLIT_VERTS 50000
 #define BOARD_SPLIT_AUTO 0
+#define BOARD_BLEND_MS 300
+#define BOARD_BLEND_MS_MAX 10000
 
 void board_config_defaults(board_config *c);
 

@@ -24,5 +24,10 @@ vec3 quat_rotate(quat q, vec3 v);
 void quat_to_mat3(quat q, float m[3][3]);
 /* Unit quaternion of a rotation matrix (Shepperd's method, robust near 180 degrees). */
 quat quat_from_mat3(const float m[3][3]);
+/* Spherical interpolation of unit quaternions on the shortest arc (b's
+ * sign is flipped when a.b < 0): a at t = 0, b at t = 1, unit length.
+ * Single-precision arithmetic and sqrtf only (quat_slerp.c), so every board
+ * computes the same bits. */
+quat quat_slerp(quat a, quat b, float t);
 
 #endif

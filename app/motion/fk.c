@@ -27,44 +27,68 @@ static quat conjugate_by(quat c, quat m)
 	return quat_mul(quat_mul(c, m), quat_conj(c));
 }
 
-static void pose_root(const skel *s, const float *values, skel_pose *out)
+/* Bone i's local motion from its values (NULL: the rest pose). */
+static quat bone_local(const skel *s, int i, const float *values, vec3 *trans, float *stretch)
 {
-	const skel_bone *r = &s->bone[0];
 	static const float zero[SKEL_MAX_CHANNELS];
-	const float *v = values ? values + r->dof_offset : zero;
-	vec3 trans;
-	float stretch;
-	quat m = channel_motion(r, v, &trans, &stretch);
-	out->rot[0] = quat_normalize(conjugate_by(r->axis_rot, m));
+	const skel_bone *b = &s->bone[i];
+	return conjugate_by(b->axis_rot, channel_motion(b, values ? values + b->dof_offset : zero, trans, stretch));
+}
+
+void fk_local(const skel *s, const float *values, skel_local *out)
+{
+	for (int i = 0; i < s->count; i++)
+		out->rot[i] = bone_local(s, i, values, &out->trans[i], &out->stretch[i]);
+}
+
+static int nonzero(vec3 v)
+{
+	return v.x != 0.0f || v.y != 0.0f || v.z != 0.0f;
+}
+
+static void pose_root(const skel *s, quat rot, vec3 trans, skel_pose *out)
+{
+	out->rot[0] = quat_normalize(rot);
 	out->head[0] = out->tip[0] = vec3_add(s->root_position, trans);
 }
 
-static void pose_bone(const skel *s, int i, const float *values, skel_pose *out)
+static void pose_bone(const skel *s, int i, quat rot, vec3 trans, float stretch, skel_pose *out)
 {
 	const skel_bone *b = &s->bone[i];
-	static const float zero[SKEL_MAX_CHANNELS];
-	const float *v = values ? values + b->dof_offset : zero;
-	vec3 trans;
-	float stretch;
-	quat m = channel_motion(b, v, &trans, &stretch);
 	quat gp = out->rot[b->parent];
-	quat g = quat_normalize(quat_mul(gp, conjugate_by(b->axis_rot, m)));
+	quat g = quat_normalize(quat_mul(gp, rot));
 	/* a joint translation lives in the bone's local (axis) frame at rest */
 	vec3 head = out->tip[b->parent];
-	if (b->offset.x != 0.0f || b->offset.y != 0.0f || b->offset.z != 0.0f)
+	if (nonzero(b->offset))
 		head = vec3_add(head, quat_rotate(gp, b->offset));
-	if (trans.x != 0.0f || trans.y != 0.0f || trans.z != 0.0f)
+	if (nonzero(trans))
 		head = vec3_add(head, quat_rotate(quat_mul(gp, b->axis_rot), trans));
 	out->rot[i] = g;
 	out->head[i] = head;
 	out->tip[i] = vec3_madd(head, quat_rotate(g, b->direction), b->length + stretch);
 }
 
+void fk_from_local(const skel *s, const skel_local *l, skel_pose *out)
+{
+	pose_root(s, l->rot[0], l->trans[0], out);
+	for (int k = 1; k < s->count; k++) {
+		int i = s->eval_order[k];
+		pose_bone(s, i, l->rot[i], l->trans[i], l->stretch[i], out);
+	}
+}
+
+/* The same steps bone by bone, without a whole skel_local on the stack. */
 void fk_pose(const skel *s, const float *values, skel_pose *out)
 {
-	pose_root(s, values, out);
-	for (int k = 1; k < s->count; k++)
-		pose_bone(s, s->eval_order[k], values, out);
+	vec3 trans;
+	float stretch;
+	quat rot = bone_local(s, 0, values, &trans, &stretch);
+	pose_root(s, rot, trans, out);
+	for (int k = 1; k < s->count; k++) {
+		int i = s->eval_order[k];
+		rot = bone_local(s, i, values, &trans, &stretch);
+		pose_bone(s, i, rot, trans, stretch, out);
+	}
 }
 
 vec3 fk_tip_centre(const skel_pose *pose, int count)

@@ -7,7 +7,7 @@ void camera_init(follow_camera *c, float skel_height, float floor_y, float azimu
 	c->started = 0;
 	c->height = skel_height > 0 ? skel_height : 1.0f;
 	c->floor_y = floor_y;
-	c->azimuth = azimuth;
+	c->azimuth = c->azimuth_goal = azimuth;
 	c->target = vec3_make(0, floor_y + 0.5f * c->height, 0);
 
 }
@@ -22,6 +22,15 @@ void camera_follow(follow_camera *c, vec3 center, float dt)
 	}
 	float k = 1.0f - expf(-dt / 0.6f);
 	c->target = vec3_add(c->target, vec3_scale(vec3_sub(want, c->target), k));
+	float turn = remainderf(c->azimuth_goal - c->azimuth, 6.2831853f);
+	c->azimuth = turn * turn < 1e-10f ? c->azimuth_goal : c->azimuth + turn * k;
+}
+
+void camera_turn_to(follow_camera *c, float azimuth, int immediate)
+{
+	c->azimuth_goal = azimuth;
+	if (immediate)
+		c->azimuth = azimuth;
 }
 
 mat4 camera_matrix(const follow_camera *c, float aspect)

@@ -181,3 +181,8 @@ void render_read_rgba(const renderer *r, uint8_t *rgba)
 	r->gl->PixelStorei(GL_PACK_ALIGNMENT, 1);
 	r->gl->ReadPixels(0, 0, r->width, r->height, GL_RGBA, GL_UNSIGNED_BYTE, rgba);
 }
+
+void render_set_yaw(renderer *r, float yaw, int immediate)
+{
+	camera_turn_to(&r->cam, RENDER_CAMERA_AZIMUTH + yaw, immediate);
+}

@@ -83,4 +83,9 @@ void render_read_rgba(const renderer *r, uint8_t *rgba);
 
 void render_shutdown(renderer *r);
 
+/* Turns the camera yaw radians about the vertical from the usual view (a
+ * body facing +z seen from the front, RENDER_CAMERA_AZIMUTH to its left):
+ * smoothly over the next frames, or at once. */
+void render_set_yaw(renderer *r, float yaw, int immediate);
+
 #endif

@@ -116,7 +116,7 @@ static int setup(player *p)
 	start_workers(p);
 	if (p->o.streams == BOARD_STREAMS_COMPACT)
 		cli_skin_use_compact(&p->skin);
-	float floor_y = frames_first(p);
+	float floor_y = clips_first(p);
 	if (isnan(floor_y) || open_display(p) < 0)
 		return -1;
 	skp_error err;
@@ -126,12 +126,10 @@ static int setup(player *p)
 		fprintf(stderr, "skinplay: renderer: %s\n", err.msg);
 		return -1;
 	}
+	render_set_yaw(&p->r, p->yaw, 1);
+	p->render_ready = 1;
 	choose_paths(p);
 	sheet_init(&p->contact, p->info.width, p->info.height);
-	snprintf(p->clip, sizeof p->clip, "%s", p->o.image_count ? p->show.player.c.name : cli_basename(p->o.amc));
-	char *dot = strrchr(p->clip, '.');
-	if (dot)
-		*dot = '\0';
 	if (p->o.out_dir && (p->info.width > SKP_DISPLAY_MAX_W || p->info.height > SKP_DISPLAY_MAX_H)) {
 		fprintf(stderr, "skinplay: --out reads frames back into %dx%d at most (board limit); %s shows %dx%d\n",
 			SKP_DISPLAY_MAX_W, SKP_DISPLAY_MAX_H, p->info.name, p->info.width, p->info.height);
@@ -141,7 +139,7 @@ static int setup(player *p)
 		fprintf(stderr, "skinplay: %s: %s\n", p->o.out_dir, strerror(errno));
 		return -1;
 	}
-	return frames_open(p);
+	return 0;
 }
 
 /* " on 2 threads" when the CPU kernels share the mesh, ", compact
@@ -160,12 +158,9 @@ static const char *threads_note(const player *p)
 
 static void skin_panels(player *p, render_frame *f)
 {
-	uint64_t t0 = clock_now_ns();
-	fk_pose(p->skin.skel, p->frame.value, &p->skin.pose);
 	uint64_t t1 = clock_now_ns();
 	cli_skin_pose(&p->skin, &p->skin.pose);
 	uint64_t t2 = clock_now_ns();
-	stage_add(&p->stages, STAGE_FK, t1 - t0);
 	stage_add(&p->stages, STAGE_BONES, t2 - t1);
 	f->panel_count = p->panel_count;
 	for (int i = 0; i < p->panel_count; i++) {
@@ -220,6 +215,17 @@ static void visitor_hud(player *p, render_frame *f)
 	f->badge = p->kiosk.ps.playing ? NULL : "PAUSED";
 }
 
+/* The captured frame on screen (its number in the file) and the clip time. */
+static long shown_number(const player *p)
+{
+	return p->hold ? 0 : p->eng.number;
+}
+
+static double shown_time(const player *p)
+{
+	return p->hold ? 0.0 : p->eng.clip_time;
+}
+
 static void hud_text(player *p, render_frame *f, double fps, char lines[3][128])
 {
 	f->visitor = 0;
@@ -227,9 +233,7 @@ static void hud_text(player *p, render_frame *f, double fps, char lines[3][128])
 	for (int i = 0; i < RENDER_HUD_LINES; i++)
 		f->hud[i] = NULL;
 	/* a skipped clip, no clip at all: said on screen, not only in the log */
-	f->hud[3] = p->notice_frames > 0 ? p->notice : NULL;
-	if (p->notice_frames > 0)
-		p->notice_frames--;
+	f->hud[3] = p->now < p->notice_until ? p->notice : NULL;
 	if (p->o.hud == BOARD_HUD_VISITOR) {
 		visitor_hud(p, f);
 		return;
@@ -242,13 +246,14 @@ static void hud_text(player *p, render_frame *f, double fps, char lines[3][128])
 	else
 		snprintf(lines[0], 128, "%s  %s  %s", skin_algo_name(p->algo[0]), where, render_view_name(p->o.view));
 	unsigned long rebuilt = p->o.image_count ? show_rebuilt(&p->show) : 0;
+	int at = snprintf(lines[1], 128, "%s  FRAME %ld  %.2f S", p->clip, shown_number(p), shown_time(p));
 	if (rebuilt)
-		snprintf(lines[1], 128, "%s  FRAME %ld  REBUILT %lu", p->clip, p->frame.number, rebuilt);
-	else
-		snprintf(lines[1], 128, "%s  FRAME %ld", p->clip, p->frame.number);
-	/* no figure before the first second is measured */
+		snprintf(lines[1] + at, 128 - (size_t)at, "  REBUILT %lu", rebuilt);
+	/* no figure before the first second is measured; the clock: how far
+	 * the pose shown runs from the wall clock (headless: the virtual
+	 * display's time against real time) */
 	if (fps > 0)
-		snprintf(lines[2], 128, "%.1f FPS%s", fps, p->kiosk.ps.playing ? "" : "  PAUSED");
+		snprintf(lines[2], 128, "%.1f FPS  CLOCK %+.3f S%s", fps, p->drift, p->kiosk.ps.playing ? "" : "  PAUSED");
 	else
 		snprintf(lines[2], 128, "- FPS%s", p->kiosk.ps.playing ? "" : "  PAUSED");
 	f->hud[0] = lines[0];
@@ -276,8 +281,8 @@ static int write_png(player *p, long n)
 static void log_second(player *p, timing *t, uint64_t now)
 {
 	double secs = (double)(now - t->since) * 1e-9, n = (double)t->frames;
-	fprintf(stderr, "frame %ld: %.1f fps, decode %.2f ms, skin %.2f ms, upload %.2f ms, draw %.2f ms",
-		p->frame.number, n / secs, t->decode * 1e-6 / n, t->skin * 1e-6 / n, t->upload * 1e-6 / n,
+	fprintf(stderr, "frame %ld: clip %.3f s, %.1f fps, decode %.2f ms, skin %.2f ms, upload %.2f ms, draw %.2f ms",
+		shown_number(p), shown_time(p), n / secs, t->decode * 1e-6 / n, t->skin * 1e-6 / n, t->upload * 1e-6 / n,
 		t->draw * 1e-6 / n);
 	/* a run of known length (headless, --frames: make soak): how far, how long left */
 	if (p->budget > 0 && n > 0)
@@ -321,7 +326,7 @@ static int draw_one(player *p, timing *t, double fps, render_frame *f)
 }
 
 /* The buttons' state machine (skinplay_kiosk.h) drives what is shown. */
-static int apply_input(player *p, render_frame *f, unsigned act)
+static void apply_input(player *p, render_frame *f, unsigned act)
 {
 	const player_state *s = &p->kiosk.ps;
 	p->o.algo = (skin_algo)s->algo;
@@ -329,9 +334,24 @@ static int apply_input(player *p, render_frame *f, unsigned act)
 	p->o.gpu = s->gpu;
 	if (act & (KIOSK_ALGO | KIOSK_GPU))
 		choose_paths(p);
+	if (act & KIOSK_PLAY) {
+		/* headless, at the scripted time itself (script time is display
+		 * time): a run pauses on the same pose however it is rendered */
+		uint64_t at = p->kiosk.play_ms * 1000000u;
+		play_pause(&p->eng, !s->playing, p->headless && at < p->now ? at : p->now);
+	}
 	if (act & (KIOSK_RESTART | KIOSK_CLIP))
-		return frames_restart(p, act & KIOSK_CLIP ? s->clip : -1);
-	return 0;
+		clips_restart(p, act & KIOSK_CLIP ? s->clip : -1);
+}
+
+/* Frame n's time: headless, n / display rate exactly (reproducible); on a
+ * screen, the monotonic clock since the first frame. */
+static uint64_t frame_time(player *p, long n)
+{
+	uint64_t wall = clock_now_ns();
+	if (n == 0)
+		p->wall0 = wall;
+	return p->headless ? play_display_time(n, p->o.display_rate) : wall - p->wall0;
 }
 
 static int play(player *p)
@@ -341,39 +361,43 @@ static int play(player *p)
 	render_frame f;
 	memset(&f, 0, sizeof f);
 	f.view = p->o.view;
-	f.dt = (float)(1.0 / p->o.fps);
 	double fps = 0;
 	long shown = 0;
 	int quit = 0, r = 1;
 	/* headless: the clip once, frames held by a pause included, so a
 	 * scripted pause cannot keep a batch run going for ever */
-	long budget = p->o.frames >= 0 ? p->o.frames : p->headless ? frames_clip_length(p) : -1;
+	long budget = p->o.frames >= 0 ? p->o.frames : p->headless ? clips_pass_frames(p) : -1;
 	p->budget = budget;
+	p->eng.cfg.loop = budget < 0 || p->o.frames >= 0;
+	uint64_t prev = 0;
 	while (!quit && (budget < 0 || shown < budget)) {
 		unsigned act = kiosk_frame(&p->kiosk, shown);
 		if (act & (KIOSK_QUIT | KIOSK_RELOAD)) {
 			p->reload = !(act & KIOSK_QUIT);
 			break;
 		}
-		if (act && apply_input(p, &f, act) < 0)
-			return -1;
+		p->now = frame_time(p, shown);
+		if (act)
+			apply_input(p, &f, act);
 		uint64_t t0 = clock_now_ns();
-		/* paused: the same frame again (the first one is always read) */
-		if (p->kiosk.ps.playing || shown == 0 || (act & (KIOSK_RESTART | KIOSK_CLIP)))
-			r = frames_next(p);
-		if (r <= 0)
+		if (clips_pose(p) < 0) {
+			r = -1;
 			break;
+		}
 		t.decode += clock_now_ns() - t0;
 		stage_add(&p->stages, STAGE_DECODE, clock_now_ns() - t0);
+		f.dt = (float)((double)(p->now - prev) * 1e-9);
+		prev = p->now;
 		if (draw_one(p, &t, fps, &f) < 0)
 			return -1;
+		p->drift = ((double)p->now - (double)(clock_now_ns() - p->wall0)) * 1e-9;
 		p->shown = ++shown;
 		t.frames++;
 		uint64_t t_png = clock_now_ns();
 		if (p->o.out_dir && (shown - 1) % p->o.every == 0 && write_png(p, shown) < 0)
 			return -1;
 		stage_add(&p->stages, STAGE_SWAP, clock_now_ns() - t_png);
-		stage_frame_done(&p->stages, p->frame.number);
+		stage_frame_done(&p->stages, shown_number(p));
 		if (p->disp->handle_events)
 			p->disp->handle_events(&quit);
 		uint64_t now = clock_now_ns();
@@ -421,7 +445,7 @@ int main(int argc, char **argv)
 	if (rc == 0 && p.hold)
 		rc = 2;
 	kiosk_shutdown(&p.kiosk);
-	cli_motion_close(&p.motion);
+	cli_clip_source_close(&p.text);
 	show_close(&p.show);
 	if (p.o.report_memory)
 		show_print_memory();

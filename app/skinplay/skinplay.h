@@ -1,14 +1,18 @@
 /* skinplay's state, shared by its files: skinplay.c (setup, the display,
- * the frame loop) and skinplay_frames.c (where frames come from: an AMC
- * stream or an image's clips, skipping a clip that cannot play and holding
- * the bind pose when none can). */
+ * the frame loop) and skinplay_clips.c (which clip plays: an AMC or BVH
+ * file, or an image's clips, skipping a clip that cannot play and holding
+ * the bind pose when none can). The pose of each frame comes from the
+ * playback engine (app/play) at the frame's time. */
 #ifndef SKINPLAY_H
 #define SKINPLAY_H
 
+#include "cli_clip_source.h"
 #include "cli_common.h"
 #include "cli_show.h"
 #include "cli_skin.h"
 #include "display.h"
+#include "play_engine.h"
+#include "play_survey.h"
 #include "skinplay_kiosk.h"
 #include "skinplay_opts.h"
 #include "skinplay_timing.h"
@@ -22,18 +26,28 @@ typedef struct player {
 	cli_skin skin;
 	workers *pool;           /* skinning threads (--threads), NULL: one */
 	int threads_logged;      /* what measuring them chose is in the log */
-	cli_motion motion;
-	show_source show;  /* --image: frames from a packed image instead */
-	amc_frame frame;
+	play_engine eng;   /* clock in, pose out */
+	cli_clip_source text; /* --asf/--amc, --bvh: the file as the engine's source */
+	show_source show;  /* --image: the clips of a packed image instead */
+	play_source src;   /* the clip playing */
+	play_survey survey; /* its length, facing and extent (one pass at its start) */
+	skel_pose scratch_pose; /* the survey's */
+	amc_frame scratch_frame;
+	uint64_t now;      /* the frame's time (ns): the monotonic clock, or frame n / display rate */
+	uint64_t wall0;    /* the monotonic clock when the first frame was drawn */
+	double drift;      /* the frame's time less the wall clock's since the first frame, s */
+	int engine_failed; /* a source error was logged for this clip: hold, say it once */
+	double start_time; /* --start: the clip time the first frame shows */
+	float yaw;         /* the camera's turn for this clip (radians) */
+	int render_ready;  /* the renderer is up: clip changes turn its camera */
 	renderer r;
 	gl_api gl;
 	const display_backend *disp;
 	display_info info;
 	int headless;
-	int pending;       /* p->frame was read ahead by --start */
 	int hold;          /* no clip can play: the bind pose, with a message */
-	char notice[96];   /* shown on screen for notice_frames more frames */
-	long notice_frames;
+	char notice[96];   /* shown on screen until notice_until (ns) */
+	uint64_t notice_until;
 	int panel_count;
 	skin_algo algo[RENDER_MAX_PANELS];
 	int gpu[RENDER_MAX_PANELS];
@@ -47,27 +61,25 @@ typedef struct player {
 	int reload;        /* SIGHUP: start over (main re-executes) */
 } player;
 
-/* The clip's first frame (read into p->frame, to be shown first) and the
- * lowest point of the body in it: the floor. NAN after reporting when the
- * clip cannot be read at all. */
-float frames_first(player *p);
+/* Opens the first clip (--clip, --start) and computes its first pose into
+ * p->skin.pose; returns the lowest point of the body in it (the floor), or
+ * NAN after reporting when the clip cannot be read at all. */
+float clips_first(player *p);
 
-/* Opens the AMC stream (images were opened by frames_first). 0 or -1. */
-int frames_open(player *p);
-
-/* The next frame into p->frame: 1, 0 at the end of the clip (headless,
- * once), -1 after reporting a read error of an AMC file. Loops on a
- * display; an image's frames never fail (bad blocks hold, the bind pose
- * holds when no clip can play). */
-int frames_next(player *p);
+/* The pose at p->now into p->skin.pose (the engine's; the bind pose when
+ * no clip can play). A source that fails mid-clip (an AMC read error) is
+ * logged once and the last pose held: a kiosk never stops on bad data.
+ * Headless, that is an error instead: -1 after reporting, else 0. */
+int clips_pose(player *p);
 
 /* PLAY long (clip < 0: this clip from its start) or NEXT (clip i, or the
- * next one that can play). 0, or -1 after reporting (AMC files only). */
-int frames_restart(player *p, int clip);
-/* Frames in the clip playing (an image's header; an AMC or BVH counted). */
-long frames_clip_length(player *p);
+ * next one that can play), crossfading from the pose on screen. */
+void clips_restart(player *p, int clip);
 
-/* Shows text on screen for about seconds at the frame rate. */
-void frames_notice(player *p, const char *text, double seconds);
+/* Display frames that play the clip once from where it starts. */
+long clips_pass_frames(player *p);
+
+/* Shows text on screen for about seconds. */
+void clips_notice(player *p, const char *text, double seconds);
 
 #endif

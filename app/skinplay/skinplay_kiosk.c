@@ -51,6 +51,29 @@ static void apply_board(const board_config *b, play_opts *o, int argc, char **ar
 		o->width = b->width;
 		o->height = b->height;
 	}
+	if (o->yaw_mode < 0 && b->yaw_mode >= 0) {
+		o->yaw_mode = b->yaw_mode;
+		o->yaw_deg = b->yaw_deg;
+	}
+	if (o->speed <= 0)
+		o->speed = b->speed;
+	if (o->blend_ms < 0)
+		o->blend_ms = b->blend_ms;
+	if (o->root < 0)
+		o->root = b->root;
+}
+
+/* What neither the command line nor a board said. */
+static void playback_defaults(play_opts *o)
+{
+	if (o->speed <= 0)
+		o->speed = 1.0;
+	if (o->blend_ms < 0)
+		o->blend_ms = BOARD_BLEND_MS;
+	if (o->root < 0)
+		o->root = BOARD_ROOT_IN_PLACE;
+	if (o->yaw_mode < 0)
+		o->yaw_mode = 0;
 }
 
 int kiosk_setup(kiosk *k, play_opts *o, int argc, char **argv)
@@ -63,6 +86,7 @@ int kiosk_setup(kiosk *k, play_opts *o, int argc, char **argv)
 		return -1;
 	if (k->have_board)
 		apply_board(&k->board, o, argc, argv);
+	playback_defaults(o);
 	if (o->hud < 0)
 		o->hud = BOARD_HUD_ENGINEER;
 	if (o->threads < 0)
@@ -97,8 +121,9 @@ int kiosk_setup(kiosk *k, play_opts *o, int argc, char **argv)
 
 static uint64_t now_ms(const kiosk *k, long n)
 {
-	/* headless: frame n is at n * 1000 / fps ms exactly (the epsilon keeps
-	 * 100.0 from rounding down to 99), so scripted runs are reproducible */
+	/* headless: display frame n is at n * 1000 / display rate ms exactly
+	 * (the epsilon keeps 100.0 from rounding down to 99), so scripted runs
+	 * are reproducible */
 	if (k->headless)
 		return (uint64_t)((double)n * 1000.0 / k->fps + 1e-6);
 	return (clock_now_ns() - k->t0_ns) / 1000000u;
@@ -109,7 +134,7 @@ int kiosk_start(kiosk *k, const play_opts *o, int headless, int clip_count)
 	skp_error err;
 	const char *arg;
 	k->headless = headless;
-	k->fps = o->fps > 0 ? o->fps : 120.0;
+	k->fps = o->display_rate > 0 ? o->display_rate : 60.0;
 	k->t0_ns = k->last_ns = clock_now_ns();
 	player_init(&k->ps, o->algo, o->view, o->gpu, clip_count);
 	k->in = input_find(k->input_spec, &arg);
@@ -183,6 +208,8 @@ unsigned kiosk_frame(kiosk *k, long n)
 		player_action a = player_handle(&k->ps, &ev[i], line, sizeof line);
 		if (a != PLAYER_ACT_NONE)
 			fprintf(stderr, "%s\n", line);
+		if (a == PLAYER_ACT_PLAY)
+			k->play_ms = ev[i].t_ms;
 		act |= act_bit(a);
 	}
 	sdnotify_watchdog(&k->sd, clock_now_ns());

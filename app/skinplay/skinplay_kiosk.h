@@ -35,8 +35,9 @@ typedef struct kiosk {
 	sdnotify sd;
 	int sig_fd;
 	int headless;
-	double fps;              /* headless frame clock: frame n at n * 1000 / fps ms */
+	double fps;              /* headless display rate: frame n at n * 1000 / fps ms */
 	uint64_t t0_ns, last_ns;
+	uint64_t play_ms;        /* when PLAY last paused or resumed (the input's clock) */
 } kiosk;
 
 /* After play_parse: loads --board (display settings not given on the

@@ -12,7 +12,7 @@ enum {
 	OPT_IMAGE = 1, OPT_CLIP, OPT_ASF, OPT_AMC, OPT_BVH, OPT_MESH, OPT_ALGO, OPT_SKIN, OPT_PLATFORM, OPT_DEVICE,
 	OPT_ROTATION, OPT_SIZE, OPT_FRAMES, OPT_START, OPT_OUT, OPT_EVERY, OPT_SHEET, OPT_VIEW, OPT_FPS,
 	OPT_HUD_FPS, OPT_REPORT_MEMORY, OPT_BOARD, OPT_INPUT, OPT_PRINT_PLATFORM, OPT_HUD, OPT_REPORT_TIMING,
-	OPT_THREADS, OPT_STREAMS
+	OPT_THREADS, OPT_STREAMS, OPT_DISPLAY_RATE, OPT_SPEED, OPT_BLEND, OPT_ROOT, OPT_YAW
 };
 
 static const cli_opt play_opts_table[] = {
@@ -41,7 +41,18 @@ static const cli_opt play_opts_table[] = {
 	{ "every", 0, "K", OPT_EVERY, "with --output: every K-th frame (default 1)" },
 	{ "sheet", 0, "F.png", OPT_SHEET, "with --output: also a contact sheet of the frames written" },
 	{ "view", 0, "VIEW", OPT_VIEW, "body, skeleton or weights (default body)" },
-	{ "fps", 0, "F", OPT_FPS, "the motion's capture rate in Hz (default 120, the CMU rate; images carry theirs)" },
+	{ "fps", 0, "F", OPT_FPS, "an AMC's capture rate in Hz (default 120, the CMU rate; a BVH's Frame Time and an "
+	  "image's directory give theirs)" },
+	{ "display-rate", 0, "HZ", OPT_DISPLAY_RATE, "headless: the virtual display's rate; frame n shows the motion at "
+	  "n/HZ s (default 60; --frames, --every and the PNG numbers count these frames)" },
+	{ "speed", 0, "F", OPT_SPEED, "play at F times the captured speed, 0.1 to 4 (default: the board's [show] speed, "
+	  "else 1)" },
+	{ "blend-ms", 0, "MS", OPT_BLEND, "crossfade over MS ms where a clip loops or changes, 0: cut (default: the "
+	  "board's [show] blend_ms, else 300)" },
+	{ "root", 0, "MODE", OPT_ROOT, "in-place: the root's horizontal travel taken out (a looping walk never jumps); "
+	  "travel: kept, the camera follows (default: the board's [show] root, else in-place)" },
+	{ "yaw", 0, "DEG|auto", OPT_YAW, "turn the camera DEG degrees about the vertical from the usual view; auto: to "
+	  "the clip's mean facing (default: the board's [display] yaw, else auto)" },
 	{ "hud", 0, "MODE", OPT_HUD, "visitor, engineer or off (default: the board's [display] hud, else engineer)" },
 	{ "hud-fps", 0, "on|off", OPT_HUD_FPS, "engineer HUD: show the measured frame rate (off: reproducible pictures)" },
 	{ "report-memory", 0, NULL, OPT_REPORT_MEMORY, "print the peak and current resident memory at the end" },
@@ -114,6 +125,38 @@ static int take_rate(play_opts *o, const char *v)
 	return 0;
 }
 
+/* The playback options (--display-rate, --speed, --blend-ms, --root, --yaw). */
+static int take_timing(play_opts *o, int id, const char *v)
+{
+	static const char *const roots[] = { "in-place", "travel" };
+	char *end;
+	long n;
+	switch (id) {
+	case OPT_DISPLAY_RATE:
+		o->display_rate = strtod(v, &end);
+		if (end == v || *end || !(o->display_rate >= 1.0 && o->display_rate <= 1000.0))
+			return fprintf(stderr, PROG ": --display-rate expects 1 to 1000 Hz, got '%s'\n", v), -1;
+		return 0;
+	case OPT_SPEED:
+		if (board_speed_parse(v, &o->speed) < 0)
+			return fprintf(stderr, PROG ": --speed expects 0.1 to 4 (1: as captured), got '%s'\n", v), -1;
+		return 0;
+	case OPT_BLEND:
+		if (cli_parse_long("--blend-ms", v, &n) < 0 || n < 0 || n > BOARD_BLEND_MS_MAX)
+			return fprintf(stderr, PROG ": --blend-ms expects 0 to %d ms, got '%s'\n", BOARD_BLEND_MS_MAX, v), -1;
+		o->blend_ms = (int)n;
+		return 0;
+	case OPT_ROOT:
+		if ((o->root = board_root_parse(v)) < 0)
+			return cli_bad_choice(PROG, "root", v, roots, 2);
+		return 0;
+	default:
+		if ((o->yaw_mode = board_yaw_parse(v, &o->yaw_deg)) < 0)
+			return fprintf(stderr, PROG ": --yaw expects auto or degrees from -360 to 360, got '%s'\n", v), -1;
+		return 0;
+	}
+}
+
 static int take_choice(play_opts *o, int id, const char *v)
 {
 	static const char *const skins[] = { "cpu", "gpu" }, *const onoff[] = { "off", "on" };
@@ -166,6 +209,7 @@ static int take(void *ctx, int id, const char *v)
 	case OPT_EVERY: return take_number("--every", v, &o->every, 1);
 	case OPT_SHEET: o->sheet_path = v; return 0;
 	case OPT_FPS: return take_rate(o, v);
+	case OPT_DISPLAY_RATE: case OPT_SPEED: case OPT_BLEND: case OPT_ROOT: case OPT_YAW: return take_timing(o, id, v);
 	case OPT_REPORT_MEMORY: o->report_memory = 1; return 0;
 	case OPT_REPORT_TIMING: o->report_timing = 1; return 0;
 	case OPT_THREADS: return take_threads(o, v);
@@ -190,9 +234,12 @@ static const cli_command play_command = {
 		 "  or:  skinplay [OPTION]... --asf S.asf --amc M.amc [--mesh MESH.obj]\n"
 		 "  or:  skinplay [OPTION]... --bvh M.bvh [--mesh MESH.obj]",
 	.about = "Plays motion capture on a skinned body with LBS, DQBS or fixed-point DQBS, on a screen (DRM/KMS\n"
-		 "console or X11 window) or headless (EGL surfaceless, OSMesa). Headless, the clip plays once (a\n"
-		 "scripted pause holds the frame, and the held frames count: the run always ends); on a screen it\n"
-		 "loops until closed, and buttons (--input) switch the algorithm, pause, restart and change clips.",
+		 "console or X11 window) or headless (EGL surfaceless, OSMesa). The motion plays at the speed it was\n"
+		 "captured whatever the frame rate: each frame shows the pose at its time on the clock, interpolated\n"
+		 "between the captured frames. Headless, a virtual display of --display-rate frames a second plays\n"
+		 "the clip once (a scripted pause holds the frame, and the held frames count: the run always ends);\n"
+		 "on a screen it loops until closed, crossfading at the loop, and buttons (--input) switch the\n"
+		 "algorithm, pause, restart and change clips.",
 	.opts = { play_opts_table, bind_opts },
 	.take = take,
 	.more = "Without --mesh the generated body is used; the bind options apply to --mesh.\n"
@@ -216,6 +263,10 @@ int play_parse(play_opts *o, int argc, char **argv)
 	o->threads = -1;
 	o->streams = -1;
 	o->fps = 120.0;
+	o->display_rate = 60.0;
+	o->blend_ms = -1;
+	o->root = -1;
+	o->yaw_mode = -1;
 	int rc = cli_parse(&play_command, o, argc, argv, 1);
 	if (rc != 0)
 		return rc;

@@ -33,7 +33,13 @@ typedef struct play_opts {
 	render_view view;
 	int hud_fps;             /* 0: leave the measured fps out (reproducible images) */
 	int hud;                 /* board_hud; -1: the board's, else engineer */
-	double fps;              /* the clip's capture rate */
+	double fps;              /* an AMC's capture rate (a BVH and an image say theirs) */
+	double display_rate;     /* headless: display frame n is at n / display_rate s */
+	double speed;            /* clip seconds a second; 0: the board's (else 1) */
+	int blend_ms;            /* crossfade at loops and clip changes; -1: the board's */
+	int root;                /* board_root; -1: the board's (else in place) */
+	int yaw_mode;            /* -1: the board's (else auto), 0 auto, 1 yaw_deg */
+	float yaw_deg;
 } play_opts;
 
 /* Returns 0, 1 after printing help, or -1 after reporting an error. */

@@ -1,19 +1,27 @@
-/* skintool fk SKELETON.asf MOTION.amc [--frame N]: joint positions as CSV. */
+/* skintool fk SKELETON.asf MOTION.amc [--frame N | --time T...]: joint
+ * positions as CSV, at captured frames or, through the playback engine's
+ * sampler (app/play), at any time between them. */
+#include <math.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
-#include "fk.h"
-#include "skintool_cmds.h"
+#include "cli_clip_source.h"
 #include "cli_common.h"
 #include "cli_opts.h"
+#include "fk.h"
+#include "play_engine.h"
+#include "skintool_cmds.h"
 
-static void print_pose(const skel *s, long frame, const skel_pose *p)
+#define FK_MAX_TIMES 256
+
+static void print_pose(const skel *s, const char *when, const skel_pose *p)
 {
 	for (int b = 0; b < s->count; b++) {
 		quat q = p->rot[b];
 		if (q.w < 0.0f)
 			q = (quat){ -q.w, -q.x, -q.y, -q.z };
-		printf("%ld,%s,%.7g,%.7g,%.7g,%.7g,%.7g,%.7g,%.7g\n", frame, s->bone[b].name,
+		printf("%s,%s,%.7g,%.7g,%.7g,%.7g,%.7g,%.7g,%.7g\n", when, s->bone[b].name,
 		       p->tip[b].x, p->tip[b].y, p->tip[b].z, q.w, q.x, q.y, q.z);
 	}
 }
@@ -21,27 +29,54 @@ static void print_pose(const skel *s, long frame, const skel_pose *p)
 typedef struct fk_args {
 	const char *asf, *amc;
 	long only;
+	double fps;
+	const char *time[FK_MAX_TIMES];  /* as given: the CSV's first column */
+	double seconds[FK_MAX_TIMES];
+	int times;
 } fk_args;
 
-enum { OPT_SKELETON = 1, OPT_MOTION, OPT_FRAME };
+enum { OPT_SKELETON = 1, OPT_MOTION, OPT_FRAME, OPT_TIME, OPT_FPS };
 
 static const cli_opt fk_opts[] = {
 	{ "skeleton", 0, "S.asf", OPT_SKELETON, "the skeleton (or the first file named)" },
 	{ "motion", 0, "M.amc", OPT_MOTION, "the motion (or the second file; a BVH alone is both)" },
 	{ "frame", 0, "N", OPT_FRAME, "only the frame numbered N in the file (default: every frame)" },
+	{ "time", 0, "SECONDS", OPT_TIME, "the pose at SECONDS from the first frame, interpolated between the "
+	  "captured frames (repeatable; past the last frame: the last frame)" },
+	{ "fps", 0, "F", OPT_FPS, "an AMC's capture rate in Hz for --time (default 120; a BVH says its own)" },
 	{ NULL, 0, NULL, 0, NULL },
 };
+
+static int take_time(fk_args *a, const char *v)
+{
+	char *end;
+	double t = strtod(v, &end);
+	if (end == v || *end || !(t >= 0.0 && t < 1e9))
+		return fprintf(stderr, "skintool fk: --time expects seconds (0 or more), got '%s'\n", v), -1;
+	if (a->times >= FK_MAX_TIMES)
+		return fprintf(stderr, "skintool fk: at most %d --time options\n", FK_MAX_TIMES), -1;
+	a->time[a->times] = v;
+	a->seconds[a->times++] = t;
+	return 0;
+}
 
 static int fk_take(void *ctx, int id, const char *v)
 {
 	fk_args *a = ctx;
-	if (id == OPT_SKELETON)
-		a->asf = v;
-	else if (id == OPT_MOTION)
-		a->amc = v;
-	else if (cli_parse_long("--frame", v, &a->only) < 0)
+	char *end;
+	switch (id) {
+	case OPT_SKELETON: a->asf = v; return 0;
+	case OPT_MOTION: a->amc = v; return 0;
+	case OPT_TIME: return take_time(a, v);
+	case OPT_FPS:
+		a->fps = strtod(v, &end);
+		if (end == v || *end || !(a->fps >= 1.0 && a->fps <= 10000.0))
+			return fprintf(stderr, "skintool fk: --fps expects a rate from 1 to 10000 Hz, got '%s'\n", v), -1;
+		return 0;
+	}
+	if (cli_parse_long("--frame", v, &a->only) < 0)
 		return -1;
-	else if (a->only < 0)
+	if (a->only < 0)
 		return fprintf(stderr, "skintool fk: --frame expects a frame number (0 or more), got %ld\n", a->only), -1;
 	return 0;
 }
@@ -55,31 +90,26 @@ static int fk_file(void *ctx, const char *arg)
 
 static const cli_command fk_command = {
 	.prog = "skintool fk",
-	.usage = "SKELETON.asf MOTION.amc [--frame=N]\n  or:  skintool fk MOTION.bvh [--frame=N]",
+	.usage = "SKELETON.asf MOTION.amc [--frame=N | --time=SECONDS...]\n"
+		 "  or:  skintool fk MOTION.bvh [--frame=N | --time=SECONDS...]",
 	.about = "Forward kinematics: prints CSV, a header then one row per bone per frame: frame,bone,x,y,z\n"
 		 "(the bone's tip in world space, the skeleton's length unit) and qw,qx,qy,qz (its global\n"
-		 "rotation, qw >= 0). The root comes first, then the bones in file order.",
+		 "rotation, qw >= 0). The root comes first, then the bones in file order. With --time the first\n"
+		 "column is time (as given) and the pose is the one skinplay shows at that clip time: each bone's\n"
+		 "local rotation slerped on the shortest arc between the captured frames around it, translations\n"
+		 "and `l` linear, then FK. Time 0 is the first frame; the rate is the BVH's Frame Time, or --fps.",
 	.opts = { fk_opts },
 	.take = fk_take,
 	.positional = fk_file,
 };
 
-int cmd_fk(int argc, char **argv)
+static int print_frames(const skel *s, const char *amc, long only)
 {
-	static skel s;
 	static cli_motion m;
 	static amc_frame f;
 	static skel_pose pose;
-	fk_args args = { NULL, NULL, -1 };
-	int rc = cli_parse(&fk_command, &args, argc, argv, 0);
-	if (rc != 0)
-		return rc < 0;
-	const char *asf = args.asf, *amc = args.amc;
-	long only = args.only;
-	cli_bvh_slots(&asf, &amc, NULL);
-	if (!asf || !amc)
-		return -cli_missing(fk_command.prog, "SKELETON.asf MOTION.amc, or MOTION.bvh");
-	if (cli_load_skel(asf, &s) < 0 || cli_motion_open(&m, amc, &s) < 0)
+	char when[32];
+	if (cli_motion_open(&m, amc, s) < 0)
 		return 1;
 	printf("frame,bone,x,y,z,qw,qx,qy,qz\n");
 	int r, found = 0;
@@ -90,8 +120,9 @@ int cmd_fk(int argc, char **argv)
 		last = f.number;
 		if (only >= 0 && f.number != only)
 			continue;
-		fk_pose(&s, f.value, &pose);
-		print_pose(&s, f.number, &pose);
+		fk_pose(s, f.value, &pose);
+		snprintf(when, sizeof when, "%ld", f.number);
+		print_pose(s, when, &pose);
 		found = 1;
 		if (only >= 0)
 			break;
@@ -104,4 +135,55 @@ int cmd_fk(int argc, char **argv)
 		return 1;
 	}
 	return 0;
+}
+
+static int print_times(const skel *s, const char *amc, const fk_args *a)
+{
+	static cli_clip_source clip;
+	static play_engine e;
+	play_config cfg = { 1.0, 0, PLAY_ROOT_TRAVEL, 0 };
+	play_source src;
+	skp_error err;
+	if (cli_clip_source_open(&clip, amc, s, a->fps, &src) < 0)
+		return 1;
+	play_init(&e, s, &cfg);
+	int rc = 0;
+	if (play_start(&e, &src, 0, &err) != SKP_OK) {
+		cli_error(amc, &err);
+		rc = 1;
+	}
+	if (!rc)
+		printf("time,bone,x,y,z,qw,qx,qy,qz\n");
+	for (int i = 0; i < a->times && !rc; i++) {
+		if (play_sample_at(&e, a->seconds[i], &err) != SKP_OK) {
+			cli_error(amc, &err);
+			rc = 1;
+			break;
+		}
+		print_pose(s, a->time[i], &e.pose);
+	}
+	cli_clip_source_close(&clip);
+	return rc;
+}
+
+int cmd_fk(int argc, char **argv)
+{
+	static skel s;
+	static fk_args args;
+	memset(&args, 0, sizeof args);
+	args.only = -1;
+	int rc = cli_parse(&fk_command, &args, argc, argv, 0);
+	if (rc != 0)
+		return rc < 0;
+	const char *asf = args.asf, *amc = args.amc;
+	cli_bvh_slots(&asf, &amc, NULL);
+	if (!asf || !amc)
+		return -cli_missing(fk_command.prog, "SKELETON.asf MOTION.amc, or MOTION.bvh");
+	if (args.times && args.only >= 0) {
+		fprintf(stderr, "skintool fk: --frame and --time: give one of them\n");
+		return 1;
+	}
+	if (cli_load_skel(asf, &s) < 0)
+		return 1;
+	return args.times ? print_times(&s, amc, &args) : print_frames(&s, amc, args.only);
 }

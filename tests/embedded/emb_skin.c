@@ -10,7 +10,12 @@
  *    Q16.16 outputs go into an FNV-1a hash (each int32 as 4 little-endian
  *    bytes). Integer arithmetic is the same on every target, so this
  *    checksum must match bit for bit.
- * 2. Target pipeline (EMB_FULL builds, i.e. boards with the float core):
+ * 2. Sampler (EMB_FULL builds): the playback engine (app/play) plays the
+ *    embedded clip by time at display rates of 24, 60 and 144 Hz and at
+ *    jittered times, looping with crossfades: slerp, fade and FK in single
+ *    precision with no libm call but the half-angle sin/cos of each
+ *    channel, so its poses must match the host's bit for bit (hashed).
+ * 3. Target pipeline (EMB_FULL builds, i.e. boards with the float core):
  *    parse the embedded ASF and AMC text, pose with FK, bind the body with
  *    app/bind/bind.c, convert to fixed point and skin, all on the target. FK
  *    uses sinf/cosf, whose last bit differs between libms (glibc on the
@@ -31,6 +36,7 @@
 #include "asf.h"
 #include "bind.h"
 #include "fk.h"
+#include "play_engine.h"
 #include "skp_reader.h"
 #include "text_lines.h"
 #endif
@@ -254,6 +260,79 @@ static int pipeline_on_target(uint32_t *sum)
 }
 #endif
 
+#ifdef EMB_FULL
+/* The embedded AMC text as the engine's source: seeking re-reads it. */
+static skp_mem_source clip_mem;
+static text_lines clip_lines;
+static amc_stream clip_stream;
+static play_engine eng;
+
+static int clip_next(void *ctx, amc_frame *f, skp_error *err)
+{
+	(void)ctx;
+	return amc_next(&clip_stream, f, err);
+}
+
+static skp_status clip_seek(void *ctx, long index, skp_error *err)
+{
+	text_lines_init(&clip_lines, skp_mem_reader(&clip_mem, emb_amc, sizeof emb_amc - 1));
+	amc_open(&clip_stream, &sk, &clip_lines);
+	for (long i = 0; i < index; i++)
+		if (clip_next(ctx, &frame, err) != 1)
+			return SKP_ERR_RANGE;
+	return SKP_OK;
+}
+
+static void hash_pose(fnv *f, const play_engine *e)
+{
+	for (int b = 0; b < sk.count; b++) {
+		const float v[7] = { e->pose.tip[b].x, e->pose.tip[b].y, e->pose.tip[b].z, e->pose.rot[b].w,
+				     e->pose.rot[b].x, e->pose.rot[b].y, e->pose.rot[b].z };
+		for (int i = 0; i < 7; i++) {
+			uint32_t u;
+			memcpy(&u, &v[i], sizeof u);
+			fnv_i32(f, (int32_t)u);
+		}
+	}
+	fnv_i32(f, (int32_t)e->number);
+}
+
+/* The clip (EMB_FRAMES frames at 10 Hz) over 3 s of display frames at
+ * each rate, then at times a fixed generator jitters (5..45 ms apart). */
+static int sampler_checksum(uint32_t *sum)
+{
+	static const uint32_t rates[3] = { 24, 60, 144 };
+	play_config cfg = { 1.0, 300, PLAY_ROOT_IN_PLACE, 1 };
+	play_source src = { NULL, clip_next, clip_seek, EMB_FRAMES, 10.0, 0 };
+	skp_error err;
+	fnv f = { 2166136261u };
+	uint32_t seed = 12345u;
+	long samples = 0;
+	for (int k = 0; k < 4; k++) {
+		play_init(&eng, &sk, &cfg);
+		if (play_start(&eng, &src, 0, &err) != SKP_OK)
+			return fail("sampler", &err);
+		uint64_t now = 0;
+		for (uint32_t n = 0; now < 3000000000ull; n++) {
+			seed = seed * 1664525u + 1013904223u;
+			now = k < 3 ? (uint64_t)n * 1000000000ull / rates[k] : now + 5000000u + (seed >> 8) % 40000000u;
+			if (play_update(&eng, now, &err) != SKP_OK)
+				return fail("sampler", &err);
+			hash_pose(&f, &eng);
+			samples++;
+		}
+	}
+	char line[120], hex[11];
+	*sum = f.h;
+	hex32(hex, f.h);
+	skp_format(line, sizeof line, "emb: sampler: %ld poses at 24, 60, 144 Hz and jittered", samples);
+	say(line);
+	emb_puts("emb: sampler checksum ");
+	say(hex);
+	return 0;
+}
+#endif
+
 /* Decimal without a formatter: the fixed-only builds (Cortex-M0) link no
  * floating point at all, and skp_format carries %g. */
 static void put_int(long v)
@@ -284,7 +363,7 @@ int emb_main(void)
 	say(hex);
 #ifdef EMB_FULL
 	uint32_t sum;
-	if (pipeline_on_target(&sum))
+	if (pipeline_on_target(&sum) || sampler_checksum(&sum))
 		return 1;
 #endif
 	say("emb: done");

@@ -109,6 +109,10 @@ test: deps
 	if [ $$hrc -ne 0 ] || [ $$trc -ne 0 ]; then echo "emb: host exit $$hrc, target exit $$trc"; fail=1; fi; \
 	if [ -z "$$h" ] || [ "$$h" != "$$t" ]; then echo "emb: FAILED: $(BOARD) fixed-kernel checksum '$$t' != host '$$h'"; fail=1; \
 	else echo "emb: $(BOARD) fixed-kernel checksum $$t equals the host's"; fi; \
+	hs=$$(sed -n 's/^emb: sampler checksum //p' $(OUT)/emb_host.log); \
+	ts=$$(sed -n 's/^emb: sampler checksum //p' $(OUT)/emb_target.log); \
+	if [ "$$hs" != "$$ts" ]; then echo "emb: FAILED: $(BOARD) sampler checksum '$$ts' != host '$$hs'"; fail=1; \
+	elif [ -n "$$hs" ]; then echo "emb: $(BOARD) sampler checksum $$ts equals the host's (app/play: poses by time)"; fi; \
 	if [ $$fail = 0 ]; then echo "emb: 1 passed, 0 failed"; else echo "emb: 0 passed, 1 failed"; exit 1; fi
 
 # Flash = code + constants + the .data image; RAM = .data + .bss + stack.

@@ -21,6 +21,7 @@
 #include "display.h"
 #include "gl_api.h"
 #include "png_writer.h"
+#include "test_xvfb.h"
 
 #define W 64
 #define H 48
@@ -267,52 +268,13 @@ static void test_x11_without_server(void **state)
 	assert_int_equal(backend("x11")->event_fd(), -1);
 }
 
-/* Starts Xvfb on a free display number (-displayfd); 0 when it cannot. */
-static pid_t start_xvfb(char *name, size_t size)
-{
-	int fds[2];
-	char fd_arg[16], buf[16] = "";
-
-	if (system("command -v Xvfb >/dev/null 2>&1") != 0 || pipe(fds) != 0)
-		return 0;
-	pid_t pid = fork();
-	if (pid == 0) {
-		close(fds[0]);
-		snprintf(fd_arg, sizeof fd_arg, "%d", fds[1]);
-		execlp("Xvfb", "Xvfb", "-displayfd", fd_arg, "-screen", "0", "320x240x24", "-nolisten", "tcp",
-		       (char *)NULL);
-		_exit(127);
-	}
-	close(fds[1]);
-	/* Xvfb writes the number and the newline separately, and dies if the
-	 * pipe is closed between the two: read up to the newline. */
-	size_t n = 0;
-	while (pid > 0 && n < sizeof buf - 1 && !strchr(buf, '\n')) {
-		struct pollfd p = { .fd = fds[0], .events = POLLIN };
-		ssize_t got = poll(&p, 1, 10000) == 1 ? read(fds[0], buf + n, sizeof buf - 1 - n) : -1;
-		if (got <= 0)
-			break;
-		n += (size_t)got;
-	}
-	close(fds[0]);
-	if (!strchr(buf, '\n')) {
-		if (pid > 0) {
-			kill(pid, SIGTERM);
-			waitpid(pid, NULL, 0);
-		}
-		return 0;
-	}
-	snprintf(name, size, ":%d", atoi(buf));
-	return pid;
-}
-
 static pid_t xvfb_pid;
 
 static void test_x11_under_xvfb(void **state)
 {
 	char name[16];
 	(void)state;
-	xvfb_pid = start_xvfb(name, sizeof name);
+	xvfb_pid = test_xvfb_start("320x240x24", name, sizeof name);
 	if (!xvfb_pid) {
 		print_message("x11: Xvfb not installed or did not start (apt-get install xvfb)\n");
 		skip();
@@ -326,10 +288,7 @@ static int stop_xvfb(void **state)
 {
 	(void)state;
 	backend("x11")->shutdown();
-	if (xvfb_pid > 0) {
-		kill(xvfb_pid, SIGTERM);
-		waitpid(xvfb_pid, NULL, 0);
-	}
+	test_xvfb_stop(xvfb_pid);
 	xvfb_pid = 0;
 	return 0;
 }

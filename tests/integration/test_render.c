@@ -204,7 +204,7 @@ static void test_compare_view_of_a_twist(void **state)
 	make_tube(tube);
 	for (int frame = 1; frame <= 2; frame++) {
 		snprintf(args, sizeof args,
-			 "--asf tests/data/twist.asf --amc tests/data/twist.amc --mesh %s --algo compare --platform surfaceless --size 640x360 --start %d",
+			 "--asf tests/data/twist.asf --amc tests/data/twist.amc --mesh %s --algo compare --platform surfaceless --size 640x360 --yaw 0 --start %d",
 			 tube, frame);
 		render(args, tmpdir(), &got);
 		/* panel columns: the joint is in the middle of each half, the

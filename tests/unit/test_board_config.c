@@ -88,6 +88,29 @@ static void test_skin_section(void **state)
 	assert_int_equal(cfg.split_verts, BOARD_SPLIT_AUTO);
 }
 
+static void test_show_section_and_yaw(void **state)
+{
+	(void)state;
+	skp_error err;
+	assert_int_equal(parse("[display]\nplatform = kms\n", &err), SKP_OK);
+	assert_int_equal(cfg.yaw_mode, -1); /* not given: the program's default (auto) */
+	assert_true(cfg.speed == 1.0);
+	assert_int_equal(cfg.blend_ms, BOARD_BLEND_MS);
+	assert_int_equal(cfg.root, BOARD_ROOT_IN_PLACE);
+	assert_int_equal(parse("[show]\nspeed = 0.5\nblend_ms = 0\nroot = Travel\n[display]\nyaw = -90\n", &err), SKP_OK);
+	assert_true(cfg.speed == 0.5);
+	assert_int_equal(cfg.blend_ms, 0);
+	assert_int_equal(cfg.root, BOARD_ROOT_TRAVEL);
+	assert_int_equal(cfg.yaw_mode, 1);
+	assert_true(cfg.yaw_deg == -90.0f);
+	assert_int_equal(parse("[display]\nyaw = AUTO\n", &err), SKP_OK);
+	assert_int_equal(cfg.yaw_mode, 0);
+	parse_file("board/rpi4/board.ini");
+	assert_int_equal(cfg.yaw_mode, 0);
+	assert_true(cfg.speed == 1.0);
+	assert_int_equal(cfg.root, BOARD_ROOT_IN_PLACE);
+}
+
 static void test_inheritance_and_syntax(void **state)
 {
 	(void)state;
@@ -148,6 +171,12 @@ static void test_errors_name_line_and_key(void **state)
 		{ "[skin]\nsplit_verts = many\n", 2, "key 'split_verts' in [skin]: expected auto or a vertex count" },
 		{ "[skin]\ncores = 4\n", 2, "unknown key 'cores' in [skin] (threads, split_verts, streams)" },
 		{ "[skin]\nstreams = tiny\n", 2, "key 'streams' in [skin]: expected float or compact, found 'tiny'" },
+		{ "[show]\nspeed = 5\n", 2, "key 'speed' in [show]: expected a speed from 0.1 to 4" },
+		{ "[show]\nspeed = fast\n", 2, "key 'speed' in [show]" },
+		{ "[show]\nblend_ms = 20000\n", 2, "key 'blend_ms' in [show]: expected a crossfade of 0..10000 ms" },
+		{ "[show]\nroot = walking\n", 2, "key 'root' in [show]: expected in-place or travel, found 'walking'" },
+		{ "[show]\nloop = yes\n", 2, "unknown key 'loop' in [show] (speed, blend_ms, root)" },
+		{ "[display]\nyaw = north\n", 2, "key 'yaw' in [display]: expected auto or degrees" },
 		{ "[storage]\nslot = a\nslot = b\nslot = c\nslot = d\n", 5, "SKP_MAX_SLOTS" },
 		{ "line = 3\n", 1, "key 'line' before any [section]" },
 		{ "[display\n", 1, "expected ']'" },
@@ -173,6 +202,7 @@ int main(void)
 	const struct CMUnitTest tests[] = {
 		cmocka_unit_test(test_rpi4_board),
 		cmocka_unit_test(test_host_board),
+		cmocka_unit_test(test_show_section_and_yaw),
 		cmocka_unit_test(test_skin_section),
 		cmocka_unit_test(test_inheritance_and_syntax),
 		cmocka_unit_test(test_errors_name_line_and_key),

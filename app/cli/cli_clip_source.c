@@ -1,0 +1,72 @@
+#include "cli_clip_source.h"
+
+#include <math.h>
+#include <stdio.h>
+
+static int clip_next(void *ctx, amc_frame *f, skp_error *err)
+{
+	cli_clip_source *c = ctx;
+	int r = cli_motion_read(&c->m, f, err);
+	if (r > 0)
+		c->next++;
+	return r;
+}
+
+static skp_status clip_seek(void *ctx, long index, skp_error *err)
+{
+	static amc_frame skipped;
+	cli_clip_source *c = ctx;
+	if (index < c->next || !c->open) {
+		if (c->open)
+			cli_motion_close(&c->m);
+		c->open = 0;
+		if (cli_motion_open(&c->m, c->path, c->s) < 0)
+			return skp_fail(err, SKP_ERR_IO, 0, "cannot reopen the file");
+		c->open = 1;
+		c->next = 0;
+	}
+	while (c->next < index) {
+		int r = clip_next(c, &skipped, err);
+		if (r <= 0)
+			return r < 0 ? (skp_status)r : skp_fail(err, SKP_ERR_RANGE, 0, "no frame index %ld", index);
+	}
+	return SKP_OK;
+}
+
+int cli_clip_source_open(cli_clip_source *c, const char *path, const skel *s, double amc_fps, play_source *out)
+{
+	long frames = cli_motion_count(path, s);
+	c->path = path;
+	c->s = s;
+	c->open = 0;
+	if (frames < 0)
+		return -1;
+	if (frames == 0) {
+		fprintf(stderr, "%s: no frames\n", path);
+		return -1;
+	}
+	if (cli_motion_open(&c->m, path, s) < 0)
+		return -1;
+	c->open = 1;
+	c->next = 0;
+	double rate = amc_fps > 0 ? amc_fps : CLI_DEFAULT_FPS;
+	if (c->m.is_bvh) {
+		double ft = c->m.layout.frame_time;
+		if (!(ft >= 1e-6 && ft <= 10.0)) {
+			fprintf(stderr, "%s: Frame Time %g s: expected 1 us to 10 s\n", path, ft);
+			cli_clip_source_close(c);
+			return -1;
+		}
+		rate = 1.0 / ft;
+	}
+	play_source src = { c, clip_next, clip_seek, frames, rate, 0 };
+	*out = src;
+	return 0;
+}
+
+void cli_clip_source_close(cli_clip_source *c)
+{
+	if (c->open)
+		cli_motion_close(&c->m);
+	c->open = 0;
+}

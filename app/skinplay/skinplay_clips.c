@@ -1,0 +1,176 @@
+/* Which clip plays: an AMC or BVH file, or the clips of an image, each
+ * handed to the playback engine as its source. A clip that cannot play is
+ * skipped with a log line and a notice on screen; with none that can, the
+ * body holds its bind pose under a message and the loop goes on (the
+ * watchdog is fed by the frame loop), so bad data never ends a kiosk. */
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "skinplay.h"
+
+void clips_notice(player *p, const char *text, double seconds)
+{
+	snprintf(p->notice, sizeof p->notice, "%s", text);
+	p->notice_until = p->now + (uint64_t)(seconds * 1e9);
+}
+
+static void bind_pose(player *p)
+{
+	fk_pose(&p->body.skel, p->body.pose_value, &p->skin.pose);
+}
+
+/* No clip can play: the bind pose, for ever (until SIGTERM). */
+static void hold_bind_pose(player *p)
+{
+	p->hold = 1;
+	bind_pose(p);
+	snprintf(p->clip, sizeof p->clip, "NO CLIP");
+	fprintf(stderr, "image: no clip of %s can play: holding the bind pose\n", show_path(&p->show));
+	clips_notice(p, "NO PLAYABLE CLIP IN THIS SHOW", 1e9);
+}
+
+/* The camera's turn for this clip: --yaw, or its mean facing (one pass). */
+static void face_clip(player *p)
+{
+	skp_error err;
+	float yaw = p->o.yaw_mode == 1 ? p->o.yaw_deg * (float)(M_PI / 180.0) : 0.0f;
+	if (p->o.yaw_mode == 0 && play_survey_clip(&p->body.skel, &p->src, 30, &p->scratch_frame, &p->scratch_pose,
+						   &p->survey, &err) == SKP_OK && p->survey.facing_known)
+		yaw = p->survey.facing;
+	p->yaw = yaw;
+	fprintf(stderr, "clip: %ld frames at %.6g Hz (%.2f s); camera yaw %.0f degrees%s\n", p->src.frames, p->src.rate,
+		(double)p->src.frames / p->src.rate, round(yaw / (M_PI / 180.0)) + 0.0, /* + 0.0: never "-0" */
+		p->o.yaw_mode == 1 ? " (--yaw)" : p->survey.facing_known ? " (the clip's mean facing)" : "");
+	if (p->render_ready)
+		render_set_yaw(&p->r, yaw, 0);
+}
+
+/* The engine on p->src from its first frame, fading from what is shown. */
+static int start_clip(player *p, const char *name)
+{
+	skp_error err;
+	face_clip(p);
+	if (play_start(&p->eng, &p->src, p->now, &err) != SKP_OK) {
+		cli_error(name, &err);
+		return -1;
+	}
+	p->engine_failed = 0;
+	snprintf(p->clip, sizeof p->clip, "%s", name);
+	char *dot = strrchr(p->clip, '.');
+	if (dot && !p->o.image_count)
+		*dot = '\0';
+	return 0;
+}
+
+/* Opens clip c of the image, or the next one that can play when it cannot
+ * (or fails now, the medium worse than at acceptance). */
+static void select_clip(player *p, int c)
+{
+	for (int tries = show_clip_count(&p->show); tries > 0; tries--) {
+		int next = show_next_playable(&p->show, c);
+		if (next < 0)
+			break;
+		const char *name = show_clip(&p->show, next)->name;
+		if (next != c && c >= 0) {
+			char text[96];
+			snprintf(text, sizeof text, "CLIP %s SKIPPED: DAMAGED", show_clip(&p->show, c)->name);
+			fprintf(stderr, "image: clip %s cannot play: showing %s\n", show_clip(&p->show, c)->name, name);
+			clips_notice(p, text, 3.0);
+		}
+		if (show_select_clip(&p->show, name, &p->src) == 0 && start_clip(p, name) == 0) {
+			p->kiosk.ps.clip = next;
+			p->hold = 0;
+			return;
+		}
+		p->show.playable[next] = 0;
+		c = next;
+	}
+	hold_bind_pose(p);
+}
+
+/* --start FRAME: the clip's clock set to that frame's time. */
+static int start_at_frame(player *p, const char *what)
+{
+	long first = p->eng.cur.number_a, index = p->o.start - first;
+	if (index < 0 || index > p->eng.cur.last) {
+		fprintf(stderr, "%s: no frame %ld (frames %ld..%ld)\n", what, p->o.start, first, first + p->eng.cur.last);
+		return -1;
+	}
+	p->start_time = (double)index / p->src.rate;
+	play_set_clip_time(&p->eng, p->start_time, p->now);
+	return 0;
+}
+
+static int open_first(player *p)
+{
+	const char *what = p->o.image_count ? show_path(&p->show) : p->o.amc;
+	if (!p->o.image_count) {
+		if (cli_clip_source_open(&p->text, p->o.amc, &p->body.skel, p->o.fps, &p->src) < 0 ||
+		    start_clip(p, cli_basename(p->o.amc)) < 0)
+			return -1;
+	} else if (p->o.clip || p->o.start >= 0) {
+		/* asked for by name or frame: that, or a message and no show */
+		if (show_select_clip(&p->show, p->o.clip, &p->src) < 0 ||
+		    start_clip(p, show_clip(&p->show, p->show.clip)->name) < 0)
+			return -1;
+		p->kiosk.ps.clip = p->show.clip;
+	} else
+		select_clip(p, 0);
+	return p->o.start >= 0 && !p->hold ? start_at_frame(p, what) : 0;
+}
+
+/* The lowest point of the body in the clip's first frame: the floor. */
+float clips_first(player *p)
+{
+	play_config cfg = { p->o.speed, (uint32_t)p->o.blend_ms, p->o.root, 1 };
+	play_init(&p->eng, &p->body.skel, &cfg);
+	p->now = 0;
+	if (open_first(p) < 0)
+		return NAN;
+	if (!p->hold && clips_pose(p) < 0)
+		return NAN;
+	cli_skin_pose(&p->skin, &p->skin.pose);
+	cli_skin_run(&p->skin, SKIN_DQBS, p->pos[0], p->nrm[0]);
+	float lo = INFINITY;
+	for (int v = 0; v < p->body.mesh.vert_count; v++)
+		lo = fminf(lo, p->pos[0][3 * v + 1]);
+	return lo;
+}
+
+int clips_pose(player *p)
+{
+	skp_error err;
+	if (p->hold)
+		return 0;
+	if (play_update(&p->eng, p->now, &err) != SKP_OK) {
+		/* headless, a file that cannot be read is an error; a kiosk holds */
+		if (p->headless)
+			return cli_error(p->o.image_count ? show_path(&p->show) : p->o.amc, &err), -1;
+		if (!p->engine_failed) {
+			cli_error(p->o.image_count ? show_path(&p->show) : p->o.amc, &err);
+			fprintf(stderr, "skinplay: clip %s cannot be read on: holding its last pose\n", p->clip);
+			clips_notice(p, "THIS CLIP CANNOT BE READ ON", 5.0);
+		}
+		p->engine_failed = 1;
+		return 0;
+	}
+	p->skin.pose = p->eng.pose;
+	return 0;
+}
+
+void clips_restart(player *p, int clip)
+{
+	if (p->hold)
+		return;
+	if (clip >= 0 && p->o.image_count) {
+		select_clip(p, clip);
+		return;
+	}
+	start_clip(p, p->o.image_count ? show_clip(&p->show, p->show.clip)->name : cli_basename(p->o.amc));
+}
+
+long clips_pass_frames(player *p)
+{
+	return p->hold ? 1 : play_pass_frames_from(&p->eng, p->o.display_rate, p->start_time);
+}

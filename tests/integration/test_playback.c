@@ -1,0 +1,265 @@
+/* Playback in time on real motion capture (../shared/data):
+ * - skinplay in a desktop window (x11 under Xvfb) at 320x240 and 1600x900:
+ *   the captured frame shown advances at the clip's rate per second of wall
+ *   time (its log lines, timed here as they arrive), for a 120 Hz AMC and
+ *   a 30 Hz BVH, however fast the window draws;
+ * - the engine as skinplay runs it (app/play over the AMC/BVH stream
+ *   source), at a 60 Hz display: a looping walk in place and a NEXT to
+ *   another clip move no joint more in one displayed frame than twice the
+ *   clip's median frame-to-frame motion. */
+#include <stdarg.h>
+#include <stddef.h>
+#include <setjmp.h>
+#include <stdint.h>
+#include <cmocka.h>
+
+#include <math.h>
+#include <poll.h>
+#include <signal.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/wait.h>
+#include <time.h>
+#include <unistd.h>
+
+#include "cli_clip_source.h"
+#include "play_engine.h"
+#include "test_paths.h"
+#include "test_run.h"
+#include "test_xvfb.h"
+
+#define HZ 60.0
+#define MAX_SHOWN 20000
+
+static skel sk;
+static cli_clip_source files[2];
+static play_engine eng;
+static skel_pose prev;
+static double moves[MAX_SHOWN];
+
+static double largest_move(const skel_pose *a, const skel_pose *b)
+{
+	double m = 0;
+	for (int i = 0; i < sk.count; i++) {
+		double x = (double)a->tip[i].x - b->tip[i].x, y = (double)a->tip[i].y - b->tip[i].y,
+		       z = (double)a->tip[i].z - b->tip[i].z;
+		m = fmax(m, sqrt(x * x + y * y + z * z));
+	}
+	return m;
+}
+
+static int cmp_double(const void *a, const void *b)
+{
+	double x = *(const double *)a, y = *(const double *)b;
+	return x < y ? -1 : x > y;
+}
+
+static double median(const double *v, int n)
+{
+	static double tmp[MAX_SHOWN];
+	memcpy(tmp, v, sizeof *v * (size_t)n);
+	qsort(tmp, (size_t)n, sizeof *tmp, cmp_double);
+	return tmp[n / 2];
+}
+
+typedef struct seam {
+	double median, seam, worst_elsewhere;
+} seam;
+
+/* Plays asf/amc from time 0 for `seconds` of display frames, switching to
+ * next_amc (when given) at next_at seconds; measures the largest move a
+ * frame within 0.5 s after each seam (the loop, the switch) against the
+ * median move over the whole clip. */
+static seam play_through(const char *asf, const char *amc, const char *next_amc, double seconds, double next_at,
+			 uint32_t blend_ms)
+{
+	play_source a, b;
+	skp_error err;
+	seam out = { 0, 0, 0 };
+	assert_int_equal(cli_load_skel(asf, &sk), 0);
+	assert_int_equal(cli_clip_source_open(&files[0], amc, &sk, 120.0, &a), 0);
+	if (next_amc)
+		assert_int_equal(cli_clip_source_open(&files[1], next_amc, &sk, 120.0, &b), 0);
+	play_config cfg = { 1.0, blend_ms, PLAY_ROOT_IN_PLACE, 1 };
+	play_init(&eng, &sk, &cfg);
+	assert_int_equal(play_start(&eng, &a, 0, &err), SKP_OK);
+	double d = play_duration(&eng);
+	int n = 0;
+	long frames = (long)(seconds * HZ), switch_frame = next_amc ? (long)(next_at * HZ) : -1;
+	for (long f = 0; f < frames && n < MAX_SHOWN; f++) {
+		uint64_t now = play_display_time(f, HZ);
+		if (f == switch_frame)
+			assert_int_equal(play_start(&eng, &b, now, &err), SKP_OK);
+		assert_int_equal(play_update(&eng, now, &err), SKP_OK);
+		if (f) {
+			double m = largest_move(&eng.pose, &prev), t = (double)now * 1e-9;
+			/* within half a second after a loop of the first clip or the switch */
+			int near = (switch_frame < 0 || f < switch_frame) ? fmod(t, d) < 0.5 && t > d
+									   : f - switch_frame < (long)(0.5 * HZ);
+			if (near)
+				out.seam = fmax(out.seam, m);
+			else
+				out.worst_elsewhere = fmax(out.worst_elsewhere, m);
+			if (switch_frame < 0 || f < switch_frame)
+				moves[n++] = m;
+		}
+		prev = eng.pose;
+	}
+	out.median = median(moves, n);
+	cli_clip_source_close(&files[0]);
+	if (next_amc)
+		cli_clip_source_close(&files[1]);
+	return out;
+}
+
+static void test_walk_loops_in_place(void **state)
+{
+	(void)state;
+	if (!test_data_path("mocap"))
+		skip();
+	char asf[512], amc[512];
+	snprintf(asf, sizeof asf, "%s", test_data_path("mocap/cmu/02.asf"));
+	snprintf(amc, sizeof amc, "%s", test_data_path("mocap/cmu/02_01.amc"));
+	seam cut = play_through(asf, amc, NULL, 9.0, 0, 0);
+	seam fade = play_through(asf, amc, NULL, 9.0, 0, PLAY_BLEND_MS_DEFAULT);
+	print_message("02_01 looping at 60 Hz in place: median move %.3f a frame; at the seam %.3f cut, %.3f with the "
+		      "crossfade (%.2fx the median); elsewhere at most %.3f\n", fade.median, cut.seam, fade.seam,
+		      fade.seam / fade.median, fade.worst_elsewhere);
+	assert_true(cut.seam > 2.0 * cut.median); /* the seam is there to hide */
+	assert_true(fade.seam <= 2.0 * fade.median);
+}
+
+static void test_next_clip_fades(void **state)
+{
+	(void)state;
+	if (!test_data_path("mocap"))
+		skip();
+	char asf[512], amc[512], next[512];
+	snprintf(asf, sizeof asf, "%s", test_data_path("mocap/cmu/02.asf"));
+	snprintf(amc, sizeof amc, "%s", test_data_path("mocap/cmu/02_01.amc"));
+	snprintf(next, sizeof next, "%s", test_data_path("mocap/cmu/02_01.amc"));
+	/* NEXT pressed mid-walk (1.3 s in): the clip from its start */
+	seam s = play_through(asf, amc, next, 4.0, 1.3, PLAY_BLEND_MS_DEFAULT);
+	print_message("02_01, NEXT at 1.3 s to its start: median move %.3f, after NEXT %.3f (%.2fx)\n", s.median, s.seam,
+		      s.seam / s.median);
+	assert_true(s.seam <= 2.0 * s.median);
+}
+
+static double wall_s(void)
+{
+	struct timespec ts;
+	clock_gettime(CLOCK_MONOTONIC, &ts);
+	return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
+/* Runs skinplay (argv) for `seconds` with its stderr on a pipe; every
+ * "frame N:" line timed as it arrives. Returns the captured frames a
+ * second of wall time between the second such line and the last (the
+ * first second includes start-up), and how many lines there were. */
+static double frames_per_wall_second(char *const argv[], double seconds, int *lines, double *fps)
+{
+	int fds[2];
+	assert_int_equal(pipe(fds), 0);
+	pid_t pid = fork();
+	if (pid == 0) {
+		dup2(fds[1], 2);
+		close(fds[0]);
+		execv(argv[0], argv);
+		_exit(127);
+	}
+	close(fds[1]);
+	char buf[8192];
+	size_t have = 0;
+	double t0 = wall_s(), first_t = 0, last_t = 0;
+	long first_n = -1, last_n = -1;
+	*lines = 0;
+	*fps = 0;
+	int stopped = 0;
+	for (;;) {
+		double now = wall_s();
+		if (!stopped && now - t0 > seconds) {
+			kill(pid, SIGTERM); /* a kiosk's clean exit */
+			stopped = 1;
+		}
+		struct pollfd p = { .fd = fds[0], .events = POLLIN };
+		if (poll(&p, 1, 100) <= 0)
+			continue;
+		ssize_t got = read(fds[0], buf + have, sizeof buf - 1 - have);
+		if (got <= 0)
+			break;
+		have += (size_t)got;
+		buf[have] = 0;
+		char *nl;
+		while ((nl = strchr(buf, '\n')) != NULL) {
+			*nl = 0;
+			long n;
+			double f;
+			if (sscanf(buf, "frame %ld: clip %*f s, %lf fps", &n, &f) == 2 && !stopped) {
+				if (++*lines == 2) {
+					first_n = n;
+					first_t = wall_s();
+				}
+				last_n = n;
+				last_t = wall_s();
+				*fps = f;
+			}
+			memmove(buf, nl + 1, have - (size_t)(nl + 1 - buf) + 1);
+			have -= (size_t)(nl + 1 - buf);
+		}
+	}
+	close(fds[0]);
+	int status;
+	waitpid(pid, &status, 0);
+	assert_true(WIFEXITED(status) && WEXITSTATUS(status) == 0);
+	return *lines >= 3 && last_t > first_t ? (double)(last_n - first_n) / (last_t - first_t) : 0;
+}
+
+static void test_window_plays_at_the_captured_rate(void **state)
+{
+	(void)state;
+	if (!test_data_path("mocap"))
+		skip();
+	char name[16], asf[1024], amc[1024], bvh[1024];
+	pid_t x = test_xvfb_start("1600x900x24", name, sizeof name);
+	if (!x) {
+		print_message("Xvfb not installed or did not start (apt-get install xvfb)\n");
+		skip();
+	}
+	snprintf(asf, sizeof asf, "%s", test_data_path("mocap/cmu/135.asf"));
+	snprintf(amc, sizeof amc, "%s", test_data_path("mocap/cmu/135_06.amc"));
+	/* a 30 Hz BVH: the walk's frames at a quarter of the rate */
+	snprintf(bvh, sizeof bvh, "%s", test_scratch("walk30.bvh"));
+	assert_int_equal(test_run("%s convert '%s' '%s' --fps=30 -o '%s' -q", test_tool_path("skintool"),
+				  test_data_path("mocap/cmu/02.asf"), test_data_path("mocap/cmu/02_01.amc"), bvh), 0);
+	setenv("DISPLAY", name, 1);
+	static const char *const sizes[] = { "320x240", "1600x900" };
+	for (int k = 0; k < 4; k++) {
+		char play[1024];
+		snprintf(play, sizeof play, "%s", test_tool_path("skinplay"));
+		char *argv_amc[] = { play, "--asf", asf, "--amc", amc, "--platform", "x11", "--size", (char *)sizes[k % 2],
+				     "--input", "none", NULL };
+		char *argv_bvh[] = { play, "--bvh", bvh, "--platform", "x11", "--size", (char *)sizes[k % 2], "--input",
+				     "none", NULL };
+		double want = k < 2 ? 120.0 : 30.0, fps;
+		int lines;
+		double got = frames_per_wall_second(k < 2 ? argv_amc : argv_bvh, 6.5, &lines, &fps);
+		print_message("x11 %s, %s at %.0f Hz: %.1f captured frames a second of wall time (%.2fx; the window "
+			      "drew %.1f frames a second)\n", sizes[k % 2], k < 2 ? "135_06.amc" : "02_01 as a BVH", want, got,
+			      got / want, fps);
+		if (fabs(got / want - 1.0) > 0.05)
+			fail_msg("%.1f frames a second, not %.0f within 5%% (%d log lines)", got, want, lines);
+	}
+	unsetenv("DISPLAY");
+	test_xvfb_stop(x);
+}
+
+int main(void)
+{
+	const struct CMUnitTest tests[] = {
+		cmocka_unit_test(test_window_plays_at_the_captured_rate),
+		cmocka_unit_test(test_walk_loops_in_place),
+		cmocka_unit_test(test_next_clip_fades),
+	};
+	return cmocka_run_group_tests_name("playback", tests, test_scratch_setup, test_scratch_teardown);
+}
