@@ -254,9 +254,50 @@ static void test_window_plays_at_the_captured_rate(void **state)
 	test_xvfb_stop(x);
 }
 
+/* The camera's turn skinplay logs for a clip ("camera yaw N degrees"). */
+static int logged_yaw(const char *motion_args)
+{
+	const char *log = test_scratch("yaw.log");
+	assert_int_equal(test_run("%s %s --platform surfaceless --size 64x36 --frames 1 2>'%s' >/dev/null",
+				  test_tool_path("skinplay"), motion_args, log), 0);
+	size_t n;
+	char *text = test_read_file(log, &n), *at = text ? strstr(text, "camera yaw ") : NULL;
+	int deg = 9999;
+	assert_non_null(at);
+	assert_int_equal(sscanf(at, "camera yaw %d degrees", &deg), 1);
+	free(text);
+	return deg;
+}
+
+/* yaw = auto: a clip captured facing away (assimp-testmodels' boxer) is
+ * seen from the front, a walk towards +z from where it always was. */
+static void test_camera_faces_the_clip(void **state)
+{
+	(void)state;
+	char args[2048];
+	const char *boxer = "/usr/share/assimp/models/BVH/Boxing_Toes.bvh";
+	if (access(boxer, R_OK) == 0) {
+		snprintf(args, sizeof args, "--bvh '%s'", boxer);
+		int deg = logged_yaw(args);
+		print_message("Boxing_Toes.bvh: camera yaw %d degrees\n", deg);
+		assert_true(abs(deg) >= 150);
+	} else
+		print_message("assimp-testmodels not installed: the boxer is not tried\n");
+	if (!test_data_path("mocap"))
+		return;
+	snprintf(args, sizeof args, "--asf '%s'", test_data_path("mocap/cmu/02.asf"));
+	snprintf(args + strlen(args), sizeof args - strlen(args), " --amc '%s'", test_data_path("mocap/cmu/02_01.amc"));
+	int walk = logged_yaw(args);
+	print_message("02_01: camera yaw %d degrees\n", walk);
+	assert_true(abs(walk) <= 30);
+	strcat(args, " --yaw=-45");
+	assert_int_equal(logged_yaw(args), -45);
+}
+
 int main(void)
 {
 	const struct CMUnitTest tests[] = {
+		cmocka_unit_test(test_camera_faces_the_clip),
 		cmocka_unit_test(test_window_plays_at_the_captured_rate),
 		cmocka_unit_test(test_walk_loops_in_place),
 		cmocka_unit_test(test_next_clip_fades),
