@@ -46,11 +46,13 @@ static void face_clip(player *p)
 		render_set_yaw(&p->r, yaw, 0);
 }
 
-/* The engine on p->src from its first frame, fading from what is shown. */
-static int start_clip(player *p, const char *name)
+/* The engine on p->src from its first frame, fading from what is shown;
+ * a new clip (not a restart of this one) also turns the camera to it. */
+static int start_clip(player *p, const char *name, int new_clip)
 {
 	skp_error err;
-	face_clip(p);
+	if (new_clip)
+		face_clip(p);
 	if (play_start(&p->eng, &p->src, p->now, &err) != SKP_OK) {
 		cli_error(name, &err);
 		return -1;
@@ -78,7 +80,7 @@ static void select_clip(player *p, int c)
 			fprintf(stderr, "image: clip %s cannot play: showing %s\n", show_clip(&p->show, c)->name, name);
 			clips_notice(p, text, 3.0);
 		}
-		if (show_select_clip(&p->show, name, &p->src) == 0 && start_clip(p, name) == 0) {
+		if (show_select_clip(&p->show, name, &p->src) == 0 && start_clip(p, name, 1) == 0) {
 			p->kiosk.ps.clip = next;
 			p->hold = 0;
 			return;
@@ -107,12 +109,12 @@ static int open_first(player *p)
 	const char *what = p->o.image_count ? show_path(&p->show) : p->o.amc;
 	if (!p->o.image_count) {
 		if (cli_clip_source_open(&p->text, p->o.amc, &p->body.skel, p->o.fps, &p->src) < 0 ||
-		    start_clip(p, cli_basename(p->o.amc)) < 0)
+		    start_clip(p, cli_basename(p->o.amc), 1) < 0)
 			return -1;
 	} else if (p->o.clip || p->o.start >= 0) {
 		/* asked for by name or frame: that, or a message and no show */
 		if (show_select_clip(&p->show, p->o.clip, &p->src) < 0 ||
-		    start_clip(p, show_clip(&p->show, p->show.clip)->name) < 0)
+		    start_clip(p, show_clip(&p->show, p->show.clip)->name, 1) < 0)
 			return -1;
 		p->kiosk.ps.clip = p->show.clip;
 	} else
@@ -167,7 +169,7 @@ void clips_restart(player *p, int clip)
 		select_clip(p, clip);
 		return;
 	}
-	start_clip(p, p->o.image_count ? show_clip(&p->show, p->show.clip)->name : cli_basename(p->o.amc));
+	start_clip(p, p->o.image_count ? show_clip(&p->show, p->show.clip)->name : cli_basename(p->o.amc), 0);
 }
 
 long clips_pass_frames(player *p)
