@@ -171,3 +171,12 @@ size_t skp_format(char *buf, size_t cap, const char *fmt, ...)
 	va_end(ap);
 	return n;
 }
+
+size_t skp_escape_name(char *buf, size_t cap, const char *name)
+{
+	out o = { buf, cap, 0, 1 };
+	put_str(&o, name);
+	if (cap)
+		buf[o.len < cap ? o.len : cap - 1] = '\0';
+	return o.len < cap ? o.len : cap - 1;
+}

@@ -14,4 +14,8 @@ size_t skp_vformat(char *buf, size_t cap, const char *fmt, va_list ap);
 size_t skp_vformat_escaped(char *buf, size_t cap, const char *fmt, va_list ap);
 size_t skp_format(char *buf, size_t cap, const char *fmt, ...);
 
+/* A name from a file, kept with its control characters as \xNN (cut to
+ * cap-1 bytes): names are printed on terminals, in logs and on screen. */
+size_t skp_escape_name(char *buf, size_t cap, const char *name);
+
 #endif

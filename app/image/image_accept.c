@@ -12,20 +12,6 @@ static double length3(vec3 v)
 	return sqrt((double)v.x * v.x + (double)v.y * v.y + (double)v.z * v.z);
 }
 
-double skp_accept_reach(const skel *s)
-{
-	double reach[SKP_MAX_BONES], most = 0;
-	for (int i = 0; i < s->count; i++) {
-		int b = s->eval_order[i];
-		const skel_bone *bone = &s->bone[b];
-		double from = b == 0 ? length3(s->root_position) : reach[bone->parent];
-		reach[b] = from + length3(bone->offset) + fabs((double)bone->length);
-		if (reach[b] > most)
-			most = reach[b];
-	}
-	return most;
-}
-
 static skp_status check_bone(const skel_bone *b, skp_error *err)
 {
 	const char *n = b->name;
@@ -50,7 +36,7 @@ skp_status skp_accept_skel(const skel *s, skp_error *err)
 	for (int i = 0; i < s->count; i++)
 		if (check_bone(&s->bone[i], err) != SKP_OK)
 			return SKP_ERR_RANGE;
-	double reach = skp_accept_reach(s);
+	double reach = skel_reach(s);
 	if (!(reach <= SKP_ACCEPT_REACH))
 		return skp_fail(err, SKP_ERR_RANGE, 0,
 				"skeleton: reaches %g units from the origin (bone lengths, offsets and the root's "
@@ -148,7 +134,7 @@ skp_status skp_accept_clip(const skel *s, const skp_image_clip *c, const float *
 				SKP_ACCEPT_MIN_FPS, SKP_ACCEPT_MAX_FPS);
 	if (c->frame_count == 0)
 		return skp_fail(err, SKP_ERR_RANGE, 0, "it has no frames");
-	double reach = skp_accept_reach(s);
+	double reach = skel_reach(s);
 	for (int d = 0; d < c->dofs; d++) {
 		double lo = qmin[d], hi = lo + (double)SKP_IMAGE_QMAX * qstep[d];
 		if (!isfinite(lo) || !isfinite(hi) || !(qstep[d] >= 0))

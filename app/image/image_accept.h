@@ -20,13 +20,10 @@
 #define SKP_ACCEPT_MAX_FPS 1e6
 
 /* The skeleton: finite geometry, a direction for every bone with a
- * length, unit axis rotations, and a reach (the longest chain of offsets
- * and lengths from the root's position) within SKP_ACCEPT_REACH. */
+ * length, unit axis rotations, and a reach (skel_reach: the longest chain
+ * of offsets and lengths from the root's position) within
+ * SKP_ACCEPT_REACH. */
 skp_status skp_accept_skel(const skel *s, skp_error *err);
-
-/* The longest chain of |offset| + length from the origin through the
- * root's position (the skeleton's reach at rest, any pose). */
-double skp_accept_reach(const skel *s);
 
 /* The bound body against its bind pose: vertices and triangles, most
  * triangles with an area, thickness along every axis, every joint within

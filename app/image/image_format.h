@@ -164,6 +164,9 @@
 #ifndef SKP_IMAGE_RING_BLOCKS
 #define SKP_IMAGE_RING_BLOCKS    4
 #endif
+#ifndef SKP_IMAGE_CACHE_BLOCKS
+#define SKP_IMAGE_CACHE_BLOCKS   4
+#endif
 #ifndef SKP_IMAGE_MAX_CLIPS
 #define SKP_IMAGE_MAX_CLIPS     64
 #endif

@@ -10,6 +10,29 @@ static void ring_clear(skp_player *p)
 		p->slot[i].block = UINT32_MAX;
 }
 
+/* Block read into buf: as the storage holds it; when bad, the copy kept
+ * from an earlier rebuild, else rebuilt (and kept). */
+static skp_block_state read_frames_block(skp_player *p, uint32_t block, uint8_t *buf)
+{
+	unsigned item = (unsigned)p->clip;
+	skp_block_state st = skp_image_check_block(p->im, block, SKP_KIND_FRAMES, item, buf);
+	if (st == SKP_BLOCK_OK)
+		return st;
+	for (int k = 0; k < SKP_IMAGE_CACHE_BLOCKS; k++)
+		if (p->kept[k] == block) {
+			memcpy(buf, p->keep[k], p->im->hdr.block_size);
+			p->kept_uses++;
+			return SKP_BLOCK_OK;
+		}
+	st = skp_image_read_block(p->im, block, SKP_KIND_FRAMES, item, buf);
+	if (st == SKP_BLOCK_OK && SKP_IMAGE_CACHE_BLOCKS > 0) {
+		int k = p->keep_next++ % SKP_IMAGE_CACHE_BLOCKS;
+		p->kept[k] = block;
+		memcpy(p->keep[k], buf, p->im->hdr.block_size);
+	}
+	return st;
+}
+
 skp_status skp_player_open(skp_player *p, skp_image *im, int clip, skp_error *err)
 {
 	skp_error_clear(err);
@@ -19,6 +42,10 @@ skp_status skp_player_open(skp_player *p, skp_image *im, int clip, skp_error *er
 	p->clip = clip;
 	p->c = im->clip[clip];
 	p->reads = 0;
+	p->keep_next = 0;
+	p->kept_uses = 0;
+	for (int k = 0; k < SKP_IMAGE_CACHE_BLOCKS; k++)
+		p->kept[k] = UINT32_MAX;
 	skp_status rc = skp_image_load_quant(im, clip, p->qmin, p->qstep, err);
 	skp_player_seek(p, 0);
 	return rc;
@@ -40,8 +67,7 @@ static skp_player_slot *load(skp_player *p, uint32_t b)
 	if (s->block == b)
 		return s;
 	s->block = b;
-	s->state = (uint8_t)skp_image_read_block(p->im, p->c.frames_first + b, SKP_KIND_FRAMES, (unsigned)p->clip,
-						 block);
+	s->state = (uint8_t)read_frames_block(p, p->c.frames_first + b, block);
 	if (s->state == SKP_BLOCK_OK && le_get16(block + SKP_IMAGE_BLOCK_HDR) != skp_image_frames_in(&p->c, b))
 		s->state = SKP_BLOCK_COUNT;
 	p->reads++;

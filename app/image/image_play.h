@@ -7,7 +7,13 @@
  * A frame in a block that fails its check (CRC, I/O error, short read, a
  * block of another image) is not decoded: skp_player_next returns
  * SKP_PLAYER_LOST with the block in err, and the caller keeps showing its
- * last good frame; playback goes on at the next good block. */
+ * last good frame; playback goes on at the next good block.
+ *
+ * A block rebuilt from parity is kept (SKP_IMAGE_CACHE_BLOCKS of them, for
+ * the clip): on the clip's next passes the block itself is read, as any
+ * block is, and while it is still bad the kept copy serves, so a short
+ * looping clip does not read its whole parity group again every pass (a
+ * slow card at a second a read would starve the watchdog). */
 #ifndef IMAGE_PLAY_H
 #define IMAGE_PLAY_H
 
@@ -30,6 +36,10 @@ typedef struct skp_player {
 	float qmin[SKP_MAX_DOF], qstep[SKP_MAX_DOF];
 	skp_player_slot slot[SKP_IMAGE_RING_BLOCKS];
 	uint8_t ring[SKP_IMAGE_RING_BLOCKS][SKP_IMAGE_BLOCK_SIZE];
+	uint32_t kept[SKP_IMAGE_CACHE_BLOCKS];  /* image blocks rebuilt, UINT32_MAX none */
+	uint8_t keep[SKP_IMAGE_CACHE_BLOCKS][SKP_IMAGE_BLOCK_SIZE];
+	int keep_next;           /* the slot the next rebuilt block takes */
+	unsigned long kept_uses; /* reads of a bad block served from a kept copy */
 	unsigned long reads;     /* blocks read, for the figures */
 } skp_player;
 

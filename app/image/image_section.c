@@ -3,6 +3,8 @@
 #include <stdarg.h>
 #include <string.h>
 
+#include "skp_format.h"
+
 skp_status image_block_fail(skp_error *err, skp_status code, uint32_t block, const char *fmt, ...)
 {
 	va_list ap;
@@ -109,7 +111,9 @@ skp_status sec_str(skp_image *im, char *s, skp_error *err)
 		return rc;
 	if (n >= SKP_MAX_NAME)
 		return sec_bad(im, err, "name longer than SKP_MAX_NAME");
-	rc = sec_get(im, s, n, err);
-	s[n] = '\0';
+	char raw[SKP_MAX_NAME];
+	rc = sec_get(im, raw, n, err);
+	raw[n] = '\0';
+	skp_escape_name(s, SKP_MAX_NAME, raw); /* names are printed and shown */
 	return rc;
 }

@@ -9,14 +9,20 @@
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
 
+#include "mem_cap.h"
 #include "mesh_normals.h"
+#include "rig_limits.h"
 #include "rig_weld.h"
+#include "skp_format.h"
 
+/* Control characters as \xNN: joint names are printed. */
 static void copy_name(char *dst, const struct aiString *s)
 {
+	char raw[RIG_NAME];
 	size_t n = s->length < RIG_NAME - 1 ? s->length : RIG_NAME - 1;
-	memcpy(dst, s->data, n);
-	dst[n] = '\0';
+	memcpy(raw, s->data, n);
+	raw[n] = '\0';
+	skp_escape_name(dst, RIG_NAME, raw);
 }
 
 static vec3 transform_point(const struct aiMatrix4x4 *m, vec3 p)
@@ -147,7 +153,9 @@ static skp_status walk_node(import_walk *w, const struct aiNode *node, const str
  * joints (an armature's own node, a mesh node). */
 static void link_parents(const struct aiNode *node, int joint_above, rig_scene *r)
 {
-	int j = rig_find_joint(r, node->mName.data);
+	char name[RIG_NAME];
+	copy_name(name, &node->mName);
+	int j = rig_find_joint(r, name);
 	if (j >= 0 && r->joint[j].parent < 0 && joint_above != j)
 		r->joint[j].parent = joint_above;
 	for (unsigned c = 0; c < node->mNumChildren; c++)
@@ -192,10 +200,17 @@ skp_status rig_import_as(const char *path, const char *hint, const char *group, 
 	memset(out, 0, offsetof(rig_scene, infl_count));
 	out->mesh = m;
 	m->vert_count = m->tri_count = 0;
+	uint64_t size;
+	mem_cap cap;
+	if (rig_limits_check(path, &size, err) != SKP_OK)
+		return err->code;
+	mem_cap_set(&cap, rig_limits_budget(size));
 	const struct aiScene *scene = read_as(path, hint, aiProcess_Triangulate | aiProcess_JoinIdenticalVertices |
 							       aiProcess_SortByPType);
+	mem_cap_release(&cap);
 	if (!scene || !scene->mRootNode)
-		return skp_fail(err, SKP_ERR_SYNTAX, 0, "%s", aiGetErrorString());
+		return skp_fail(err, SKP_ERR_SYNTAX, 0, "%s%s", aiGetErrorString(),
+				cap.limit ? " (the import's memory is capped: 1 GiB and 64 bytes a byte of the file)" : "");
 	import_walk w = { scene, group, out, err, 0 };
 	struct aiMatrix4x4 id;
 	aiIdentityMatrix4(&id);

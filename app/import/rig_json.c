@@ -6,8 +6,6 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "cli_inputs.h"
-
 static long line_at(const char *text, size_t offset)
 {
 	long line = 1;
@@ -89,7 +87,6 @@ static char *read_all(const char *path, size_t *len, skp_error *err)
 json_object *rig_json_load(const char *path, skp_error *err)
 {
 	size_t len = 0;
-	cli_inputs_add(path); /* a rig's weights file is named inside it: never an output */
 	char *text = read_all(path, &len, err);
 	if (!text)
 		return NULL;

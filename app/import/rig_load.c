@@ -7,6 +7,7 @@
 #include "cli_mesh_io.h"
 #include "cli_mesh_place.h"
 #include "cli_common.h"
+#include "cli_inputs.h"
 #include "clock.h"
 #include "mesh_normals.h"
 #include "rig_align.h"
@@ -35,6 +36,7 @@ static const char *weights_beside(const char *rig, const char *name)
 static json_object *load_json(const char *path)
 {
 	skp_error err;
+	cli_inputs_add(path); /* a rig's weights file is named inside it: never an output */
 	json_object *v = rig_json_load(path, &err);
 	if (!v)
 		cli_error(path, &err);

@@ -35,6 +35,9 @@ static skp_status add_bone(rig_scene *out, const char *name, json_object *bone, 
 		return skp_syntax(err, 0, "bones: '%s' is not an object", name);
 	if (strlen(name) >= RIG_NAME)
 		return skp_fail(err, SKP_ERR_LIMIT, 0, "bones: '%s': names are at most %d bytes", name, RIG_NAME - 1);
+	for (const char *c = name; *c; c++)
+		if ((unsigned char)*c < 0x20 || *c == 0x7f)
+			return skp_syntax(err, 0, "bones: '%s': a name with a control character", name);
 	if (rig_find_joint(out, name) >= 0)
 		return skp_syntax(err, 0, "bones: '%s' twice", name);
 	if (out->joint_count == RIG_MAX_JOINTS)

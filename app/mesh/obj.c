@@ -1,9 +1,11 @@
 #include "obj.h"
 
+#include <float.h>
 #include <math.h>
 #include <string.h>
 
 #include "mesh_normals.h"
+#include "skp_format.h"
 #include "text_tokens.h"
 
 typedef struct obj_state {
@@ -46,6 +48,8 @@ static skp_status parse_coords(obj_state *st, char **t, int n, int min, int max,
 		double v;
 		if (tok_parse_double(t[i], &v) != 0 || !isfinite(v))
 			return skp_syntax(st->err, st->line, "'%s': expected a finite number, found '%s'", t[0], t[i]);
+		if (fabs(v) > FLT_MAX)
+			return skp_fail(st->err, SKP_ERR_RANGE, st->line, "'%s': value '%s' is beyond a float's range", t[0], t[i]);
 		if (i <= 3)
 			c[i - 1] = (float)v;
 	}
@@ -226,10 +230,12 @@ static int names_match(const obj_state *st, char **t, int n)
 
 /* The table of names for listing: the first name of a `g` or `o` line
  * (names too long for the table are cut). */
-static void note_group(obj_work *w, const char *name)
+static void note_group(obj_work *w, const char *raw)
 {
+	char name[SKP_MAX_NAME];
+	skp_escape_name(name, sizeof name, raw);   /* listed on terminals */
 	for (int i = 0; i < w->group_count; i++)
-		if (strncmp(w->group[i].name, name, SKP_MAX_NAME - 1) == 0) {
+		if (strcmp(w->group[i].name, name) == 0) {
 			w->current_group = i;
 			return;
 		}
@@ -239,10 +245,7 @@ static void note_group(obj_work *w, const char *name)
 		return;
 	}
 	obj_group *g = &w->group[w->group_count];
-	size_t len = strlen(name);
-	len = len < SKP_MAX_NAME - 1 ? len : SKP_MAX_NAME - 1;
-	memcpy(g->name, name, len);
-	g->name[len] = '\0';
+	memcpy(g->name, name, sizeof name);
 	g->faces = 0;
 	w->current_group = w->group_count++;
 }

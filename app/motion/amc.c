@@ -80,9 +80,13 @@ static int bone_line(amc_stream *a, amc_frame *f, char **t, int n, skp_error *er
 			v *= 3.14159265358979323846 / 180.0;
 		else if (!is_angle)
 			v *= a->length_factor;
-		/* finite as a double, but the frame holds floats */
+		/* finite as a double, but the frame holds floats; a translation
+		 * beyond SKEL_MAX_REACH would take the pose out of float range */
 		if (fabs(v) > FLT_MAX)
 			return fail(a, err, SKP_ERR_RANGE, "value '%s' is beyond a float's range", t[i + 1], 0);
+		if (!is_angle && fabs(v) > SKEL_MAX_REACH)
+			return fail(a, err, SKP_ERR_RANGE, "translation '%s' is beyond the skeleton's range (1e9 units)",
+				    t[i + 1], 0);
 		dst[i] = (float)v;
 	}
 	return 0;

@@ -1,5 +1,6 @@
 #include "asf.h"
 
+#include <float.h>
 #include <math.h>
 #include <string.h>
 
@@ -30,11 +31,14 @@ static skp_status expect_values(asf_state *st, char **t, int n, int want)
 	return skp_syntax(st->err, st->line, "'%s' expects %d value(s), found %d", t[0], want, n - 1);
 }
 
+/* A float: finite as a float (1e308 is finite only as a double). */
 static skp_status parse_float(asf_state *st, const char *key, const char *tok, float *out)
 {
 	double v;
 	if (tok_parse_double(tok, &v) != 0 || isnan(v))
 		return skp_syntax(st->err, st->line, "'%s': expected a number, found '%s'", key, tok);
+	if (!(fabs(v) <= FLT_MAX))
+		return skp_fail(st->err, SKP_ERR_RANGE, st->line, "'%s': value '%s' is beyond a float's range", key, tok);
 	*out = (float)v;
 	return SKP_OK;
 }
@@ -48,9 +52,13 @@ static skp_status parse_vec3(asf_state *st, char **t, int n, vec3 *out)
 	return rc;
 }
 
+/* Names reach terminals and logs: control characters are refused. */
 static skp_status copy_name(asf_state *st, char *dst, size_t cap, const char *src)
 {
 	size_t n = strlen(src);
+	for (size_t i = 0; i < n; i++)
+		if ((unsigned char)src[i] < 0x20 || src[i] == 0x7f)
+			return skp_syntax(st->err, st->line, "name '%s' holds a control character", src);
 	if (n >= cap)
 		return skp_fail(st->err, SKP_ERR_LIMIT, st->line,
 				"name '%s' is longer than %d characters (board limit SKP_MAX_NAME)",
@@ -167,11 +175,11 @@ static skp_status limits_values(asf_state *st, char **t, int n, int first)
 		if (st->limits_left == 0)
 			return skp_syntax(st->err, st->line, "bone '%s': more limit values than the %d its dof need",
 				      b->name, 2 * b->channel_count);
-		float v = 0.0f;
-		skp_status rc = parse_float(st, "limits", t[i], &v);
-		if (rc)
-			return rc;
-		b->limit[st->limit_pos / 2][st->limit_pos % 2] = v;
+		/* limits may be unbounded: inf, or beyond a float (the same) */
+		double v = 0.0;
+		if (tok_parse_double(t[i], &v) != 0 || isnan(v))
+			return skp_syntax(st->err, st->line, "'limits': expected a number, found '%s'", t[i]);
+		b->limit[st->limit_pos / 2][st->limit_pos % 2] = (float)v;
 		st->limit_pos++;
 		st->limits_left--;
 	}
@@ -404,6 +412,27 @@ static void apply_length_unit(skel *s)
 	}
 }
 
+/* What forward kinematics cannot represent: a direction that does not
+ * normalise, a reach beyond SKEL_MAX_REACH (a length of 3e38, a tiny
+ * :units length), so that no pose of the skeleton is NaN. */
+static skp_status check_geometry(asf_state *st)
+{
+	const skel *s = st->s;
+	for (int i = 0; i < s->count; i++) {
+		const skel_bone *b = &s->bone[i];
+		float len = vec3_length(b->direction);
+		if (b->length > 0 && !(fabsf(len - 1.0f) < 1e-3f))
+			return skp_fail(st->err, SKP_ERR_RANGE, 0, "bone '%s': its direction cannot be normalised", b->name);
+	}
+	int far = skel_beyond_reach(s);
+	if (far >= 0)
+		return skp_fail(st->err, SKP_ERR_RANGE, 0,
+				"bone '%s': the skeleton reaches beyond %g units there (its position, lengths in :units "
+				"length, offsets): not a skeleton forward kinematics can pose", s->bone[far].name,
+				SKEL_MAX_REACH);
+	return SKP_OK;
+}
+
 static skp_status finish(asf_state *st)
 {
 	skel *s = st->s;
@@ -430,7 +459,7 @@ static skp_status finish(asf_state *st)
 		b->axis_rot = asf_axis_rotation(rad, b->axis_order);
 	}
 	s->dof_count = dof;
-	return SKP_OK;
+	return check_geometry(st);
 }
 
 static void init_skel(skel *s)

@@ -205,8 +205,9 @@ static skp_status read_motion_header(bvh_state *st)
 	if (!rc) rc = expect(st, "Frame");
 	if (!rc) rc = expect(st, "Time:");
 	if (!rc) rc = number(st, "Frame Time:", &dt);
-	if (!rc && !(dt > 0))
-		rc = skp_syntax(st->err, line_of(st), "Frame Time: expected seconds per frame, found %g", dt);
+	if (!rc && !(dt >= BVH_MIN_FRAME_TIME && dt <= BVH_MAX_FRAME_TIME))
+		rc = skp_syntax(st->err, line_of(st), "Frame Time: expected seconds per frame from 0.000001 to 10, found %g",
+				dt);
 	if (!rc && st->itok != st->ntok)
 		rc = skp_syntax(st->err, line_of(st), "unexpected '%s' after Frame Time", st->tok[st->itok]);
 	if (rc)
@@ -301,6 +302,12 @@ skp_status bvh_parse(skel *s, bvh_layout *layout, text_lines *tl, skp_error *err
 	if (rc)
 		return rc;
 	build_skel(&st);
+	/* OFFSETs in float range can still add up past what a pose holds */
+	int far = skel_beyond_reach(s);
+	if (far >= 0)
+		return skp_fail(err, SKP_ERR_RANGE, 0,
+				"joint '%s': the skeleton reaches beyond %g units there (OFFSETs): not a skeleton forward "
+				"kinematics can pose", s->bone[far].name, SKEL_MAX_REACH);
 	return SKP_OK;
 }
 
@@ -336,8 +343,9 @@ static int frame_values(bvh_stream *b, char *line, amc_frame *f, skp_error *err)
 			return -(int)skp_syntax(err, b->tl->line_no, "frame %ld: expected a finite number, found '%s'",
 						b->next + 1, start);
 		v = lay->rotation[n] ? v * (3.14159265358979323846 / 180.0) : v - lay->minus[n];
-		if (fabs(v) > FLT_MAX)
-			return -(int)skp_fail(err, SKP_ERR_RANGE, b->tl->line_no, "value '%s' is beyond a float's range", start);
+		if (fabs(v) > (lay->rotation[n] ? FLT_MAX : SKEL_MAX_REACH))
+			return -(int)skp_fail(err, SKP_ERR_RANGE, b->tl->line_no, "value '%s' is beyond %s", start,
+					      lay->rotation[n] ? "a float's range" : "the skeleton's range (1e9 units)");
 		f->value[lay->dof[n++]] = (float)v;
 		*p = keep;
 	}

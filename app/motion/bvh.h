@@ -22,6 +22,10 @@
 #include "skel.h"
 #include "text_lines.h"
 
+/* Frame times a BVH may give: 1 us to 10 s (1e6 to 0.1 frames a second). */
+#define BVH_MIN_FRAME_TIME 1e-6
+#define BVH_MAX_FRAME_TIME 10.0
+
 /* How the values on a frame line land in a frame (amc_frame.value). */
 typedef struct bvh_layout {
 	int channels;                       /* values per frame line */

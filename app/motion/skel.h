@@ -47,6 +47,21 @@ typedef struct skel {
 	skel_bone bone[SKP_MAX_BONES];
 } skel;
 
+/* The largest distance a skeleton may reach at rest (the root's position,
+ * then offsets and lengths along a chain) and the largest translation a
+ * frame may give, in the skeleton's units: within it forward kinematics in
+ * floats stays finite (a kilometre in micrometres). The parsers refuse
+ * beyond it; a flash image keeps to the fixed-point kernel's tighter range
+ * (app/image/image_accept.h). */
+#define SKEL_MAX_REACH 1e9
+
+/* The skeleton's reach at rest (infinite when a value is not finite). */
+double skel_reach(const skel *s);
+
+/* The first bone (in parents-first order; 0 the root's position) whose
+ * chain reaches beyond SKEL_MAX_REACH or is not finite, or -1. */
+int skel_beyond_reach(const skel *s);
+
 /* Index of the bone with that name ("root" is 0), or -1. */
 int skel_find(const skel *s, const char *name);
 

@@ -15,15 +15,22 @@
 
 #define FK_MAX_TIMES 256
 
-static void print_pose(const skel *s, const char *when, const skel_pose *p)
+/* Prints the pose's rows; -1 after saying so when a value is not finite
+ * (the parsers refuse what could make one: never a NaN row). */
+static int print_pose(const skel *s, const char *when, const skel_pose *p)
 {
 	for (int b = 0; b < s->count; b++) {
 		quat q = p->rot[b];
+		if (!isfinite(p->tip[b].x + p->tip[b].y + p->tip[b].z + q.w + q.x + q.y + q.z)) {
+			fprintf(stderr, "skintool fk: %s: bone '%s': the pose is not finite\n", when, s->bone[b].name);
+			return -1;
+		}
 		if (q.w < 0.0f)
 			q = (quat){ -q.w, -q.x, -q.y, -q.z };
 		printf("%s,%s,%.7g,%.7g,%.7g,%.7g,%.7g,%.7g,%.7g\n", when, s->bone[b].name,
 		       p->tip[b].x, p->tip[b].y, p->tip[b].z, q.w, q.x, q.y, q.z);
 	}
+	return 0;
 }
 
 typedef struct fk_args {
@@ -122,7 +129,10 @@ static int print_frames(const skel *s, const char *amc, long only)
 			continue;
 		fk_pose(s, f.value, &pose);
 		snprintf(when, sizeof when, "%ld", f.number);
-		print_pose(s, when, &pose);
+		if (print_pose(s, when, &pose) < 0) {
+			r = -1;
+			break;
+		}
 		found = 1;
 		if (only >= 0)
 			break;
@@ -160,7 +170,8 @@ static int print_times(const skel *s, const char *amc, const fk_args *a)
 			rc = 1;
 			break;
 		}
-		print_pose(s, a->time[i], &e.pose);
+		if (print_pose(s, a->time[i], &e.pose) < 0)
+			rc = 1;
 	}
 	cli_clip_source_close(&clip);
 	return rc;

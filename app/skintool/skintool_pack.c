@@ -24,6 +24,7 @@
 #include "cli_show.h"
 #include "image_write.h"
 #include "random_bytes.h"
+#include "skp_format.h"
 #include "skintool_cmds.h"
 #include "tool_args.h"
 
@@ -155,11 +156,12 @@ static int pack_parse(pack_args *p, int argc, char **argv)
 	return 0;
 }
 
-/* The clip's name: the AMC's file name without directory and extension. */
+/* The clip's name: the AMC's file name without directory and extension,
+ * control characters as \xNN (it is printed and shown on screen). */
 static void clip_name(const char *path, char *out, size_t cap)
 {
 	const char *base = strrchr(path, '/');
-	snprintf(out, cap, "%s", base ? base + 1 : path);
+	skp_escape_name(out, cap, base ? base + 1 : path);
 	char *dot = strrchr(out, '.');
 	if (dot && dot != out)
 		*dot = '\0';

@@ -21,6 +21,7 @@
  * (an image written there reads here), fewer blocks in RAM and clips. */
 #define SKP_IMAGE_BLOCK_SIZE  4096
 #define SKP_IMAGE_RING_BLOCKS    4
+#define SKP_IMAGE_CACHE_BLOCKS   2   /* blocks rebuilt from parity, kept for the next passes */
 #define SKP_IMAGE_MAX_CLIPS      8
 
 #endif

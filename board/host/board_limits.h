@@ -27,6 +27,7 @@
  * image may hold. Playback needs RING * BLOCK bytes whatever the clip's length. */
 #define SKP_IMAGE_BLOCK_SIZE  4096
 #define SKP_IMAGE_RING_BLOCKS    4
+#define SKP_IMAGE_CACHE_BLOCKS   4   /* blocks rebuilt from parity, kept for the next passes */
 #define SKP_IMAGE_MAX_CLIPS     64
 
 #endif

@@ -27,6 +27,7 @@
  * SD cards read 4 KiB pages well. */
 #define SKP_IMAGE_BLOCK_SIZE  4096
 #define SKP_IMAGE_RING_BLOCKS    4
+#define SKP_IMAGE_CACHE_BLOCKS   4   /* blocks rebuilt from parity, kept for the next passes */
 #define SKP_IMAGE_MAX_CLIPS     64
 
 /* board.ini (app/kiosk/board_config.h): path length; image slots (A, B, the demo). */

@@ -6,7 +6,8 @@
  * writer as a forger would. The same acceptance judges them in skinplay
  * (refused, or the clip skipped; of two slots the older good one plays),
  * in skintool info (exit 2, saying why) and in skintool pack (which
- * refuses to write such an image and leaves the output as it was). */
+ * refuses to write such an image and leaves the output as it was). Names
+ * with control characters are printed escaped. */
 #include <stdarg.h>
 #include <stddef.h>
 #include <setjmp.h>
@@ -43,6 +44,8 @@ static void inputs(void)
 
 /* Writes the inputs as they are now into path, as pack would but without
  * its acceptance: every block framed and sealed. */
+static const char *clip_name = "tiny";
+
 static void write_image(const char *path, uint64_t sequence)
 {
 	static storage_file sf;
@@ -58,7 +61,7 @@ static void write_image(const char *path, uint64_t sequence)
 	skp_clip_range_init(&range, &s);
 	for (int i = 0; i < frame_count && !rc; i++)
 		rc = skp_clip_range_add(&range, &frames[i], &err);
-	if (!rc) rc = skp_image_clip_begin(&wr, "tiny", fps, &range, &err);
+	if (!rc) rc = skp_image_clip_begin(&wr, clip_name, fps, &range, &err);
 	for (int i = 0; i < frame_count && !rc; i++)
 		rc = skp_image_clip_frame(&wr, &frames[i], &err);
 	if (!rc) rc = skp_image_write_end(&wr, &err);
@@ -194,12 +197,36 @@ static void test_pack_refuses(void **state)
 	}
 }
 
+/* Names with control characters reach no terminal raw: a clip named so in
+ * a forged image, and a clip file named so, packed. */
+static void test_names_escaped(void **state)
+{
+	(void)state;
+	const char *img = test_scratch("esc.skn"), *out = test_scratch("esc.txt");
+	const char *amc = test_scratch("w\x1b[31m.amc");
+	inputs();
+	clip_name = "ti\x1b]0;pwned\x07ny";
+	write_image(img, 3);
+	clip_name = "tiny";
+	assert_int_equal(test_run("%s info '%s' >'%s' 2>&1", test_tool_path("skintool"), img, out), 0);
+	assert_true(test_file_contains(out, "ti\\x1b]0;pwned\\x07ny: 2 frames"));
+	assert_false(test_file_contains(out, "\x1b"));
+	assert_int_equal(test_run("cp tests/data/tiny.amc '%s' && %s pack tests/data/tiny.asf '%s' -o '%s' >'%s' 2>&1", amc,
+				  test_tool_path("skintool"), amc, img, out), 0);
+	assert_true(test_file_contains(out, "clip w\\x1b[31m: 2 frames"));
+	assert_false(test_file_contains(out, "\x1b"));
+	assert_int_equal(test_run("%s --image '%s' --platform surfaceless --size 64x36 --frames 2 >'%s' 2>&1",
+				  test_tool_path("skinplay"), img, out), 0);
+	assert_false(test_file_contains(out, "\x1b"));
+}
+
 int main(void)
 {
 	const struct CMUnitTest tests[] = {
 		cmocka_unit_test(test_info_says_why),
 		cmocka_unit_test(test_skinplay_refuses_and_falls_back),
 		cmocka_unit_test(test_pack_refuses),
+		cmocka_unit_test(test_names_escaped),
 	};
 	return cmocka_run_group_tests(tests, test_scratch_setup, test_scratch_teardown);
 }

@@ -120,6 +120,16 @@ static const bad_case bad[] = {
 	{ ":bonedata\n", 1, "no :root" },
 	{ "garbage here\n", 1, "expected a ':' keyword" },
 	{ ":root\n:bonedata\n begin\n name a_very_long_bone_name_that_goes_on_and_on_forever_and_ever\n", 4, "SKP_MAX_NAME" },
+	/* what forward kinematics cannot represent: NaN rows otherwise */
+	{ ":root\n:bonedata\n begin\n  name a\n  axis 1e308 0 0 XYZ\n", 5, "'axis': value '1e308' is beyond a float's range" },
+	{ ":root\n:bonedata\n begin\n  name a\n  direction 1 0 0\n  length 3e38\n end\n:hierarchy\n begin\n root a\n end\n",
+	  0, "bone 'a': the skeleton reaches beyond" },
+	{ ":root\n  position 1e30 0 0\n:bonedata\n begin\n  name a\n end\n:hierarchy\n begin\n root a\n end\n", 0,
+	  "bone 'root': the skeleton reaches beyond" },
+	{ ":root\n:bonedata\n begin\n  name a\n  direction 1e30 0 0\n  length 1\n end\n:hierarchy\n begin\n root a\n end\n",
+	  0, "bone 'a': its direction cannot be normalised" },
+	/* names reach terminals: control characters refused, quoted escaped */
+	{ ":root\n:bonedata\n begin\n  name a\x1b[31mb\n", 4, "name 'a\\x1b[31mb' holds a control character" },
 };
 
 static void test_broken_inputs_name_line_and_expectation(void **state)

@@ -216,7 +216,14 @@ static const bad_case bad[] = {
 	{ HEAD "Motion\n", 11, "unexpected end of file: expected 'Frames:'" },
 	{ HEAD "MOTION\nFrames: -1\n", 12, "Frames: expected a whole count, found -1" },
 	{ HEAD "MOTION\nFrames: 1.5\n", 12, "whole count" },
-	{ HEAD "MOTION\nFrames: 1\nFrame Time: 0\n", 13, "expected seconds per frame, found 0" },
+	{ HEAD "MOTION\nFrames: 1\nFrame Time: 0\n", 13, "expected seconds per frame from 0.000001 to 10, found 0" },
+	{ HEAD "MOTION\nFrames: 1\nFrame Time: 1e-300\n", 13, "from 0.000001 to 10" },
+	{ HEAD "MOTION\nFrames: 1\nFrame Time: 0.0000009\n", 13, "from 0.000001 to 10" },
+	{ HEAD "MOTION\nFrames: 1\nFrame Time: 10.5\n", 13, "from 0.000001 to 10" },
+	{ "HIERARCHY\nROOT r\n{\n OFFSET 0 0 0\n JOINT a\n {\n  OFFSET 3e38 0 0\n  End Site\n  {\n   OFFSET 1 0 0\n  }\n"
+	  " }\n}\nMOTION\nFrames: 0\nFrame Time: 0.1\n", 0, "joint 'a': the skeleton reaches beyond" },
+	{ "HIERARCHY\nROOT r\n{\n OFFSET 0 0 0\n CHANNELS 3 Xposition Yposition Zposition\n End Site\n {\n  OFFSET 0 1 0\n"
+	  " }\n}\nMOTION\nFrames: 1\nFrame Time: 0.1\n1e30 0 0\n", 14, "'1e30' is beyond the skeleton's range" },
 	{ HEAD "MOTION\nFrames: 1\nFrame Time: 0.1 x\n", 13, "unexpected 'x' after Frame Time" },
 	{ HEAD "MOTION\nFrames: 2\nFrame Time: 0.1\n1 2 3\n1 2\n", 15, "frame 2: expected 3 values, found 2" },
 	{ HEAD "MOTION\nFrames: 1\nFrame Time: 0.1\n1 2 3 4\n", 14, "frame 1: more than the 3 values" },

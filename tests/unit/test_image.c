@@ -524,6 +524,51 @@ static void test_parity_rebuilds_any_one_block(void **state)
 		      (unsigned long)wr.hdr.block_count);
 }
 
+/* Reads through a counter, for the rebuild cache. */
+static unsigned long reads_done;
+static int counting_read(void *ctx, uint32_t block, void *buf)
+{
+	reads_done++;
+	return rdev.read(ctx, block, buf);
+}
+
+/* A short clip looping over a block rebuilt from parity: the first pass
+ * reads the group to rebuild it, the next ones read the block itself only
+ * and take the kept copy (the same frames), not the group again. */
+static void test_rebuilt_block_kept_for_next_passes(void **state)
+{
+	(void)state;
+	static amc_frame f, first[200];
+	skp_error err;
+	load_inputs();
+	pack_with(11, NULL, 4);
+	uint32_t bad = wr.dir[1].frames_first + 1;
+	img[(size_t)bad * BS + 60] ^= 0x20;
+	assert_int_equal(open_image(img_size, &err), SKP_OK);
+	skp_blockdev counted = rdev;
+	counted.read = counting_read;
+	im.dev = &counted;
+	assert_int_equal(skp_player_open(&pl, &im, 1, &err), SKP_OK);
+	unsigned long per_pass[3];
+	for (int pass = 0; pass < 3; pass++) {
+		reads_done = 0;
+		skp_player_seek(&pl, 0);
+		for (int i = 0; skp_player_next(&pl, &f, &err) == 1; i++) {
+			if (pass == 0)
+				first[i] = f;
+			else
+				assert_memory_equal(f.value, first[i].value, sizeof(float) * (size_t)s.dof_count);
+		}
+		per_pass[pass] = reads_done;
+	}
+	assert_int_equal(im.rebuilt, 1);
+	assert_int_equal(pl.kept_uses, 2);
+	assert_int_equal(per_pass[1], per_pass[2]);
+	assert_int_equal(per_pass[1], (unsigned long)wr.dir[1].frame_blocks);
+	assert_true(per_pass[0] > per_pass[1]);
+	im.dev = &rdev;
+}
+
 /* Two bad blocks of one group are beyond XOR: the read says so. */
 static void test_two_bad_blocks_in_a_group(void **state)
 {
@@ -744,6 +789,7 @@ int main(void)
 		cmocka_unit_test(test_parity_layout),
 		cmocka_unit_test(test_parity_rebuilds_any_one_block),
 		cmocka_unit_test(test_two_bad_blocks_in_a_group),
+		cmocka_unit_test(test_rebuilt_block_kept_for_next_passes),
 		cmocka_unit_test(test_header_copy),
 		cmocka_unit_test(test_copy_wherever_the_storage_ends),
 		cmocka_unit_test(test_directory_and_header_copies),

@@ -216,6 +216,17 @@ static void test_group_filter(void **state)
 	assert_true(strstr(err.msg, "no faces in group 'leg'") != NULL);
 }
 
+/* Group names are listed on terminals: their control characters kept as
+ * \xNN, a repeated name counted once. */
+static void test_group_names_escaped(void **state)
+{
+	(void)state;
+	assert_int_equal(parse("v 0 0 0\nv 1 0 0\nv 0 1 0\ng bo\x1b[2Jdy\nf 1 2 3\ng bo\x1b[2Jdy\nf 1 3 2\n"), SKP_OK);
+	assert_int_equal(work.group_count, 1);
+	assert_string_equal(work.group[0].name, "bo\\x1b[2Jdy");
+	assert_int_equal(work.group[0].faces, 2);
+}
+
 /* Without a filter every v is kept, used or not, in file order. */
 static void test_unused_vertices_kept(void **state)
 {
@@ -252,6 +263,9 @@ static void test_bad_number(void **state)
 	assert_fails(SKP_ERR_SYNTAX, 1, "'vn'");
 	assert_int_equal(parse("v 1 0 inf\n"), SKP_ERR_SYNTAX);
 	assert_fails(SKP_ERR_SYNTAX, 1, "finite");
+	/* finite as a double, not as the float a vertex holds */
+	assert_int_equal(parse("v 1 0 1e308\n"), SKP_ERR_RANGE);
+	assert_fails(SKP_ERR_RANGE, 1, "value '1e308' is beyond a float's range");
 	assert_int_equal(parse("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3a\n"), SKP_ERR_SYNTAX);
 	assert_fails(SKP_ERR_SYNTAX, 4, "expected a vertex index, found '3a'");
 }
@@ -386,6 +400,7 @@ int main(void)
 		cmocka_unit_test(test_normals_degenerate),
 		cmocka_unit_test(test_crlf),
 		cmocka_unit_test(test_group_filter),
+		cmocka_unit_test(test_group_names_escaped),
 		cmocka_unit_test(test_unused_vertices_kept),
 		cmocka_unit_test(test_ignored_statements),
 		cmocka_unit_test(test_bad_number),
