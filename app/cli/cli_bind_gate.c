@@ -36,7 +36,7 @@ static const char *fix_for(const bind_args *a, const bound_body *body, unsigned 
 		return "--weights mesh keeps the artist's weights; --joint-map FILE maps the joints by hand";
 	if (a->weights_path)
 		return "the weights file does not fit this mesh and skeleton: leave out --weights to compute them";
-	return "--group NAME binds one part of the file alone, --bind-pose FILE:F or rest when the pose was "
+	return "--group NAME binds one part of the file alone, --bind-pose P.amc[:F] or rest when the pose was "
 	       "guessed wrong, and a rigged export (glTF 2.0) brings its own joints and weights";
 }
 

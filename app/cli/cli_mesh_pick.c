@@ -5,6 +5,7 @@
 #include <strings.h>
 
 #include "cli_mesh_io.h"
+#include "cli_quiet.h"
 #include "cli_scratch.h"
 
 static void list_groups(const char *path, const obj_work *w)
@@ -37,14 +38,14 @@ static int pick_body_group(const char *path, const obj_work *w, mesh *out)
 	int others = w->group_count - 1;
 	if (!cli_load_obj(path, name, out, NULL))
 		return -1;
-	fprintf(stderr, "%s: using group '%s' (%d vertices); left out %d other group%s (%ld faces, %ld vertices",
+	fprintf(cli_note(), "%s: using group '%s' (%d vertices); left out %d other group%s (%ld faces, %ld vertices",
 		path, name, out->vert_count, others, others == 1 ? "" : "s", other_faces,
 		all_verts - out->vert_count);
 	w = &cli_scratch_area()->obj;
 	for (int i = 0, shown = 0; i < w->group_count && shown < 4; i++)
 		if (strcmp(w->group[i].name, name) != 0 && w->group[i].faces > 0)
-			fprintf(stderr, "%s %s", shown++ ? "," : ":", w->group[i].name);
-	fprintf(stderr, "%s); --group NAME picks another\n", others > 4 ? ", ..." : "");
+			fprintf(cli_note(), "%s %s", shown++ ? "," : ":", w->group[i].name);
+	fprintf(cli_note(), "%s); --group NAME picks another\n", others > 4 ? ", ..." : "");
 	return 0;
 }
 
@@ -168,7 +169,7 @@ static void pick_largest_part(const char *path, mesh *m)
 	long kept = p->verts[best];
 	int closed = !p->open[best];
 	keep_part(m, p, best);
-	fprintf(stderr, "%s: using its largest %sconnected part (%ld vertices); left out %d other part%s (%ld vertices)\n",
+	fprintf(cli_note(), "%s: using its largest %sconnected part (%ld vertices); left out %d other part%s (%ld vertices)\n",
 		path, closed ? "closed " : "", kept, count - 1, count == 2 ? "" : "s", all - kept);
 }
 

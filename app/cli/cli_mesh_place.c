@@ -5,6 +5,7 @@
 #include <string.h>
 
 #include "cli_mesh_io.h"
+#include "cli_quiet.h"
 #include "cli_scratch.h"
 #include "skel_tpose.h"
 
@@ -35,7 +36,7 @@ static int auto_fit(const char *obj, bound_body *body)
 		return 0;
 	bind_fit_apply(m->pos, m->vert_count, f);
 	body->fitted = 1;
-	fprintf(stderr, "%s: the mesh is %.4g units tall, the skeleton %.4g: fitted (scale %.4g, then moved by "
+	fprintf(cli_note(), "%s: the mesh is %.4g units tall, the skeleton %.4g: fitted (scale %.4g, then moved by "
 		"%.4g %.4g %.4g); --no-fit keeps it as it is\n", obj, (double)f->mesh_height,
 		(double)f->skel_height, (double)f->scale, (double)f->offset.x, (double)f->offset.y,
 		(double)f->offset.z);
@@ -44,17 +45,17 @@ static int auto_fit(const char *obj, bound_body *body)
 
 static void say_guess(const char *obj, const bound_body *body, const bind_guess_result *g)
 {
-	fprintf(stderr, "%s: bound in the mesh's own pose:", obj);
+	fprintf(cli_note(), "%s: bound in the mesh's own pose:", obj);
 	for (int i = 0, n = 0; i < g->arm_count; i++) {
 		const bind_guess_arm *a = &g->arm[i];
 		if (a->to_deg != a->from_deg)
-			fprintf(stderr, "%s '%s' from %.0f to %.0f degrees of elevation", n++ ? "," : "",
+			fprintf(cli_note(), "%s '%s' from %.0f to %.0f degrees of elevation", n++ ? "," : "",
 				body->skel.bone[a->bone].name, (double)a->from_deg, (double)a->to_deg);
 		if (a->lower_turn_deg != 0.0f)
-			fprintf(stderr, "%s '%s' turned %.0f degrees", n++ ? "," : "",
+			fprintf(cli_note(), "%s '%s' turned %.0f degrees", n++ ? "," : "",
 				body->skel.bone[a->lower].name, (double)a->lower_turn_deg);
 	}
-	fprintf(stderr, " (--bind-pose FILE:F or --bind-pose rest chooses)\n");
+	fprintf(cli_note(), " (--bind-pose P.amc[:F] or --bind-pose rest chooses)\n");
 }
 
 static void set_pose(bound_body *body, const float *values)

@@ -4,7 +4,7 @@
 #include <string.h>
 
 #include "cli_inputs.h"
-#include "cli_progress.h"
+#include "cli_quiet.h"
 #include "cli_version.h"
 
 #define MAX_OPTS 96
@@ -14,7 +14,7 @@
 
 static const cli_opt common[] = {
 	{ "help", 'h', NULL, ID_HELP, "show this help and exit" },
-	{ "quiet", 'q', NULL, ID_QUIET, "no progress and no summary line on stderr (errors still)" },
+	{ "quiet", 'q', NULL, ID_QUIET, "only errors and warnings on stderr: no notes, progress or summary lines" },
 	{ "version", 0, NULL, ID_VERSION, "show the version, revision, board and backends, and exit" },
 	{ NULL, 0, NULL, 0, NULL },
 };

@@ -3,22 +3,11 @@
 #include <stdio.h>
 #include <unistd.h>
 
+#include "cli_quiet.h"
 #include "clock.h"
 
 #define REDRAW_NS 200000000u
 #define BAR 30
-
-static int quiet;
-
-void cli_set_quiet(int q)
-{
-	quiet = q;
-}
-
-int cli_quiet(void)
-{
-	return quiet;
-}
 
 void cli_progress_start(cli_progress *p, const char *what, const char *unit, long total)
 {
@@ -28,7 +17,7 @@ void cli_progress_start(cli_progress *p, const char *what, const char *unit, lon
 	p->done = 0;
 	p->t0 = clock_now_ns();
 	p->last = 0;
-	p->tty = !quiet && isatty(2);
+	p->tty = !cli_quiet() && isatty(2);
 }
 
 double cli_progress_seconds(const cli_progress *p)
@@ -77,8 +66,6 @@ void cli_progress_end(cli_progress *p, const char *extra)
 {
 	double secs = cli_progress_seconds(p);
 	cli_progress_clear(p);
-	if (quiet)
-		return;
-	fprintf(stderr, "%s: %ld %s in %.2f s (%.0f %s/s)%s\n", p->what, p->done, p->unit, secs,
+	fprintf(cli_note(), "%s: %ld %s in %.2f s (%.0f %s/s)%s\n", p->what, p->done, p->unit, secs,
 		secs > 0.0 ? (double)p->done / secs : 0.0, p->unit, extra ? extra : "");
 }

@@ -1,7 +1,7 @@
 /* Progress of a step that can take more than a second (metrics, compare,
  * pack, bench): on a terminal a line redrawn at most five times a second
  * with a bar, the count, the rate and the time left; nothing while it runs
- * when stderr is not a terminal; with --quiet (cli_opts.h) nothing at all.
+ * when stderr is not a terminal; with --quiet (cli_quiet.h) nothing at all.
  * The end prints one summary line (not with --quiet). */
 #ifndef CLI_PROGRESS_H
 #define CLI_PROGRESS_H
@@ -24,9 +24,5 @@ void cli_progress_end(cli_progress *p, const char *extra);
 double cli_progress_seconds(const cli_progress *p);
 /* Clears the line only: the command prints its own summary. */
 void cli_progress_clear(cli_progress *p);
-
-/* --quiet: set by cli_parse, read here and by commands' own summaries. */
-void cli_set_quiet(int quiet);
-int cli_quiet(void);
 
 #endif

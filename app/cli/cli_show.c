@@ -4,6 +4,7 @@
 #include <string.h>
 
 #include "cli_common.h"
+#include "cli_quiet.h"
 #include "play_policy.h"
 
 /* n bytes of the file from offset at into buf; how many came. */
@@ -195,7 +196,7 @@ int show_open(show_source *s, const char *const *paths, int n, bound_body *body)
 	}
 	close_others(s, s->active);
 	show_image *img = &s->slot[s->active];
-	fprintf(stderr, "image: playing %s (sequence %llu, %d clip%s)\n", img->path,
+	fprintf(cli_note(), "image: playing %s (sequence %llu, %d clip%s)\n", img->path,
 		(unsigned long long)img->im.hdr.sequence, img->im.clip_count, img->im.clip_count == 1 ? "" : "s");
 	show_image_warn(img);
 	accept_clips(s, img, &body->skel, 1);

@@ -8,7 +8,7 @@
  * refused with a message, and with more than one slot a slot with a block
  * beyond repair yields to an intact older one, so an update cut short by
  * power loss never bricks the display. Blocks that fail their check are
- * rebuilt from parity (version 2), logged once each. A clip whose frames or
+ * rebuilt from parity or the copies, logged once each. A clip whose frames or
  * quantisation cannot be read is skipped, not the image. It fills the
  * bound body as bind_args_load does and hands out amc_frames: a frame lost
  * in a block beyond repair is replaced by the last good frame, each such

@@ -8,6 +8,7 @@
 #include "cli_mesh_place.h"
 #include "cli_common.h"
 #include "cli_inputs.h"
+#include "cli_quiet.h"
 #include "clock.h"
 #include "mesh_normals.h"
 #include "rig_align.h"
@@ -74,7 +75,7 @@ static int import_makehuman(const bind_args *a, const char *path, bound_body *bo
 		cli_error(wpath, &err);
 		goto out;
 	}
-	fprintf(stderr, "%s: group '%s', %d vertices, %d triangles; %s: %d bones, weights from %s\n", path, group,
+	fprintf(cli_note(), "%s: group '%s', %d vertices, %d triangles; %s: %d bones, weights from %s\n", path, group,
 		body->mesh.vert_count, body->mesh.tri_count, a->rig, scene.joint_count, wpath);
 	rc = 0;
 out:
@@ -122,15 +123,15 @@ static int import_scene(const bind_args *a, const char *path, bound_body *body)
 			fprintf(stderr, "%s: read as %s: %s\n", path, mesh_format_name(fmt), import_advice(fmt));
 		return -1;
 	}
-	fprintf(stderr, "%s: %d vertices, %d triangles, %d joints (imported in %.1f ms", path,
+	fprintf(cli_note(), "%s: %d vertices, %d triangles, %d joints (imported in %.1f ms", path,
 		body->mesh.vert_count, body->mesh.tri_count, scene.joint_count,
 		(double)(clock_now_ns() - t0) / 1e6);
 	if (scene.welded)
-		fprintf(stderr, "; %d split vertices welded", scene.welded);
-	fprintf(stderr, ")\n");
+		fprintf(cli_note(), "; %d split vertices welded", scene.welded);
+	fprintf(cli_note(), ")\n");
 	for (int p = 0; p < scene.part_count; p++)
 		if (!scene.part_used[p])
-			fprintf(stderr, "%s: mesh '%s' left out (--group chooses)\n", path, scene.part[p]);
+			fprintf(cli_note(), "%s: mesh '%s' left out (--group chooses)\n", path, scene.part[p]);
 	if (fmt == MESH_FMT_BLEND && !scene.joint_count)
 		fprintf(stderr, "%s: a Blender file's meshes are read, its armature and weights are not (the library "
 			"does not read them): %s\n", path, import_advice(fmt));
@@ -144,18 +145,18 @@ static void say_unmapped(const char *path, const char *skel_name)
 		count += map.bone[j] < 0;
 	if (!count)
 		return;
-	fprintf(stderr, "%s: %d joints unmapped, moving with their nearest mapped parent:", path, count);
+	fprintf(cli_note(), "%s: %d joints unmapped, moving with their nearest mapped parent:", path, count);
 	for (int j = 0; j < scene.joint_count; j++) {
 		if (map.bone[j] >= 0)
 			continue;
 		if (shown++ == 12) {
-			fprintf(stderr, " ...");
+			fprintf(cli_note(), " ...");
 			break;
 		}
-		fprintf(stderr, " %s->%s", scene.joint[j].name,
+		fprintf(cli_note(), " %s->%s", scene.joint[j].name,
 			map.via[j] >= 0 ? scene.joint[map.via[j]].name : skel_name);
 	}
-	fprintf(stderr, "\n");
+	fprintf(cli_note(), "\n");
 }
 
 static void say_map(const char *path, const bound_body *body, int with_file)
@@ -168,12 +169,12 @@ static void say_map(const char *path, const bound_body *body, int with_file)
 		fprintf(stderr, "%s\n", scene.joint_count > 24 ? " ..." : "");
 		return;
 	}
-	fprintf(stderr, "%s: %d of %d joints mapped onto the skeleton (names: %s%s):", path, map.mapped,
+	fprintf(cli_note(), "%s: %d of %d joints mapped onto the skeleton (names: %s%s):", path, map.mapped,
 		scene.joint_count, rig_family_name(map.family), with_file ? ", and the joint map" : "");
 	for (int j = 0; j < scene.joint_count; j++)
 		if (map.bone[j] >= 0)
-			fprintf(stderr, " %s=%s", scene.joint[j].name, body->skel.bone[map.bone[j]].name);
-	fprintf(stderr, "\n");
+			fprintf(cli_note(), " %s=%s", scene.joint[j].name, body->skel.bone[map.bone[j]].name);
+	fprintf(cli_note(), "\n");
 	say_unmapped(path, body->skel.bone[0].name);
 }
 
@@ -231,7 +232,7 @@ static int align_mesh(const char *path, bound_body *body)
 		scene.joint[j].head = rig_align_point(&al, scene.joint[j].head);
 	mesh_compute_normals(m);
 	body->fitted = 1;
-	fprintf(stderr, "%s: put on the skeleton by its joints: turned %.0f degrees%s, scaled by %.4g, moved by "
+	fprintf(cli_note(), "%s: put on the skeleton by its joints: turned %.0f degrees%s, scaled by %.4g, moved by "
 		"%.4g %.4g %.4g; joints off by %.3g after (--no-fit keeps the mesh as it is)\n", path,
 		(double)al.turn_deg, al.snapped ? " (a quarter-turn combination)" : "", (double)al.scale,
 		(double)al.offset.x, (double)al.offset.y, (double)al.offset.z, (double)al.rms);
@@ -242,14 +243,14 @@ static void fit_proportions(const char *path, bound_body *body)
 {
 	rig_proportions pr;
 	rig_fit_proportions(&body->skel, body->pose_value, &body->pose, &scene, &map, &pr);
-	fprintf(stderr, "%s: skeleton given the mesh's proportions: mesh scaled by %.4g more to match the legs",
+	fprintf(cli_note(), "%s: skeleton given the mesh's proportions: mesh scaled by %.4g more to match the legs",
 		path, (double)pr.mesh_scale);
 	if (pr.scaled)
-		fprintf(stderr, ", %d stretches of bones by %.3g to %.3g", pr.scaled, (double)pr.min_ratio,
+		fprintf(cli_note(), ", %d stretches of bones by %.3g to %.3g", pr.scaled, (double)pr.min_ratio,
 			(double)pr.max_ratio);
 	if (pr.hip_bones)
-		fprintf(stderr, ", %d hip bones moved to the mesh's hips", pr.hip_bones);
-	fprintf(stderr, "\n");
+		fprintf(cli_note(), ", %d hip bones moved to the mesh's hips", pr.hip_bones);
+	fprintf(cli_note(), "\n");
 }
 
 static void pose_skeleton(const bind_args *a, const char *path, bound_body *body)
@@ -259,16 +260,16 @@ static void pose_skeleton(const bind_args *a, const char *path, bound_body *body
 		rig_pose_measure(&scene, &map, &body->pose, &res);
 	} else {
 		rig_pose_fit(&body->skel, &scene, &map, body->pose_value, &body->pose, &res);
-		fprintf(stderr, "%s: skeleton posed as the mesh stands:", path);
+		fprintf(cli_note(), "%s: skeleton posed as the mesh stands:", path);
 		for (int k = 0; k < res.aim_count; k++)
 			if (res.aim[k].turned_deg >= 1.0f)
-				fprintf(stderr, " %s %.0f", body->skel.bone[res.aim[k].bone].name,
+				fprintf(cli_note(), " %s %.0f", body->skel.bone[res.aim[k].bone].name,
 					(double)res.aim[k].turned_deg);
-		fprintf(stderr, " degrees (--bind-pose FILE:F or rest chooses)\n");
+		fprintf(cli_note(), " degrees (--bind-pose P.amc[:F] or rest chooses)\n");
 	}
 	float h = bind_fit_skel_height(&body->skel, &body->pose, NULL);
 	if (res.pairs && h > 0.0f)
-		fprintf(stderr, "%s: mapped joints %.1f%% of the height from the skeleton's on average, %.1f%% at "
+		fprintf(cli_note(), "%s: mapped joints %.1f%% of the height from the skeleton's on average, %.1f%% at "
 			"worst (%s)\n", path, (double)(100.0f * res.mean_gap / h), (double)(100.0f * res.worst_gap / h),
 			scene.joint[res.worst_joint].name);
 }
@@ -278,13 +279,13 @@ static int mesh_weights(const bind_args *a, const char *path, bound_body *body)
 	rig_weights_info info;
 	rig_weights_to_skel(&scene, &map, &body->weights, &info);
 	body->automatic = 0;
-	fprintf(stderr, "%s: the mesh's own weights%s", path,
+	fprintf(cli_note(), "%s: the mesh's own weights%s", path,
 		a->balance == 1 ? " (kept as they are: --balance is for computed weights)" : "");
 	if (info.trimmed)
-		fprintf(stderr, ", %d vertices cut to their 4 largest bones", info.trimmed);
+		fprintf(cli_note(), ", %d vertices cut to their 4 largest bones", info.trimmed);
 	if (info.unweighted)
-		fprintf(stderr, ", %d vertices without weights given to the root", info.unweighted);
-	fprintf(stderr, "\n");
+		fprintf(cli_note(), ", %d vertices without weights given to the root", info.unweighted);
+	fprintf(cli_note(), "\n");
 	return 0;
 }
 

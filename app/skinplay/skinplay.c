@@ -10,6 +10,7 @@
 
 #include "board_config.h"
 #include "cli_inputs.h"
+#include "cli_quiet.h"
 #include "cli_version.h"
 #include "clock.h"
 #include "png_writer.h"
@@ -67,7 +68,7 @@ static int open_display(player *p)
 		return -1;
 	}
 	p->headless = !strcmp(p->disp->name, "surfaceless") || !strcmp(p->disp->name, "osmesa");
-	fprintf(stderr, "display: %s %dx%d, %s\n", p->disp->name, p->info.width, p->info.height,
+	fprintf(cli_note(), "display: %s %dx%d, %s\n", p->disp->name, p->info.width, p->info.height,
 		p->info.gl_renderer ? p->info.gl_renderer : "?");
 	return 0;
 }
@@ -101,7 +102,7 @@ static void log_measured_threads(player *p)
 		return;
 	p->threads_logged = 1;
 	int kept = cli_skin_threads(&p->skin) > 1;
-	fprintf(stderr, "skinplay: a kernel run took %.3f ms on %d threads, %.3f on one: skinning on %s\n", pool,
+	fprintf(cli_note(), "skinplay: a kernel run took %.3f ms on %d threads, %.3f on one: skinning on %s\n", pool,
 		workers_count(p->pool), one, kept ? "all of them" : "one");
 }
 
@@ -281,14 +282,14 @@ static int write_png(player *p, long n)
 static void log_second(player *p, timing *t, uint64_t now)
 {
 	double secs = (double)(now - t->since) * 1e-9, n = (double)t->frames;
-	fprintf(stderr, "frame %ld: clip %.3f s, %.1f fps, decode %.2f ms, skin %.2f ms, upload %.2f ms, draw %.2f ms",
+	fprintf(cli_note(), "frame %ld: clip %.3f s, %.1f fps, decode %.2f ms, skin %.2f ms, upload %.2f ms, draw %.2f ms",
 		shown_number(p), shown_time(p), n / secs, t->decode * 1e-6 / n, t->skin * 1e-6 / n, t->upload * 1e-6 / n,
 		t->draw * 1e-6 / n);
 	/* a run of known length (headless, --frames: make soak): how far, how long left */
 	if (p->budget > 0 && n > 0)
-		fprintf(stderr, "; %ld of %ld shown (%.1f%%), %.0f s left", p->shown, p->budget,
+		fprintf(cli_note(), "; %ld of %ld shown (%.1f%%), %.0f s left", p->shown, p->budget,
 			100.0 * (double)p->shown / (double)p->budget, (double)(p->budget - p->shown) * secs / n);
-	fputc('\n', stderr);
+	fputc('\n', cli_note());
 	total.decode += t->decode;
 	total.skin += t->skin;
 	total.upload += t->upload;
@@ -411,7 +412,7 @@ static int play(player *p)
 	log_second(p, &t, clock_now_ns());
 	double n = total.frames ? (double)total.frames : 1.0;
 	double secs = (double)(clock_now_ns() - total.since) * 1e-9;
-	fprintf(stderr, "played %ld frames of %s in %.2f s: %.1f fps; per frame decode %.2f ms, skin %.2f ms, "
+	fprintf(cli_note(), "played %ld frames of %s in %.2f s: %.1f fps; per frame decode %.2f ms, skin %.2f ms, "
 		"upload %.2f ms, draw %.2f ms (%s, %dx%d, %s skinning%s)\n", shown, p->o.amc ? p->o.amc : p->clip, secs,
 		shown / secs, total.decode * 1e-6 / n, total.skin * 1e-6 / n, total.upload * 1e-6 / n,
 		total.draw * 1e-6 / n, p->disp->name, p->info.width, p->info.height, p->gpu[0] ? "GPU" : "CPU",

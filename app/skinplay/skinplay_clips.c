@@ -7,6 +7,7 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "cli_quiet.h"
 #include "skinplay.h"
 
 void clips_notice(player *p, const char *text, double seconds)
@@ -39,7 +40,7 @@ static void face_clip(player *p)
 						   &p->survey, &err) == SKP_OK && p->survey.facing_known)
 		yaw = p->survey.facing;
 	p->yaw = yaw;
-	fprintf(stderr, "clip: %ld frames at %.6g Hz (%.2f s); camera yaw %.0f degrees%s\n", p->src.frames, p->src.rate,
+	fprintf(cli_note(), "clip: %ld frames at %.6g Hz (%.2f s); camera yaw %.0f degrees%s\n", p->src.frames, p->src.rate,
 		(double)p->src.frames / p->src.rate, round(yaw / (M_PI / 180.0)) + 0.0, /* + 0.0: never "-0" */
 		p->o.yaw_mode == 1 ? " (--yaw)" : p->survey.facing_known ? " (the clip's mean facing)" : "");
 	if (p->render_ready)

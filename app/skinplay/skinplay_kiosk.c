@@ -5,6 +5,7 @@
 #include <string.h>
 
 #include "cli_common.h"
+#include "cli_quiet.h"
 #include "clock.h"
 #include "file_reader.h"
 #include "signals.h"
@@ -144,7 +145,7 @@ int kiosk_start(kiosk *k, const play_opts *o, int headless, int clip_count)
 	}
 	k->in_started = 1;
 	if (k->in != &input_none)
-		fprintf(stderr, "input: %s%s%s\n", k->in->name, arg ? " " : "", arg ? arg : "");
+		fprintf(cli_note(), "input: %s%s%s\n", k->in->name, arg ? " " : "", arg ? arg : "");
 	int rc = sdnotify_init(&k->sd);
 	if (rc < 0)
 		fprintf(stderr, "skinplay: $NOTIFY_SOCKET: %s\n", strerror(-rc));
@@ -162,12 +163,12 @@ static unsigned take_signals(kiosk *k)
 {
 	unsigned s = signals_take(), act = 0;
 	if (s & SIGNALS_RELOAD) {
-		fprintf(stderr, "signal: SIGHUP -> reopen the show\n");
+		fprintf(cli_note(), "signal: SIGHUP -> reopen the show\n");
 		sdnotify_send(&k->sd, "RELOADING=1");
 		act |= KIOSK_RELOAD;
 	}
 	if (s & SIGNALS_QUIT) {
-		fprintf(stderr, "signal: quit -> clean exit\n");
+		fprintf(cli_note(), "signal: quit -> clean exit\n");
 		act |= KIOSK_QUIT;
 	}
 	return act;
@@ -207,7 +208,7 @@ unsigned kiosk_frame(kiosk *k, long n)
 		char line[96];
 		player_action a = player_handle(&k->ps, &ev[i], line, sizeof line);
 		if (a != PLAYER_ACT_NONE)
-			fprintf(stderr, "%s\n", line);
+			fprintf(cli_note(), "%s\n", line);
 		if (a == PLAYER_ACT_PLAY)
 			k->play_ms = ev[i].t_ms;
 		act |= act_bit(a);

@@ -11,6 +11,7 @@
 #include "cli_inputs.h"
 #include "clock.h"
 #include "cli_progress.h"
+#include "cli_quiet.h"
 #include "compare.h"
 #include "skin_overlap.h"
 
@@ -394,7 +395,7 @@ int compare_other_weights(compare_run *main_run, const compare_args *a)
 	oa.bind.weights_mesh = !a->bind.weights_mesh;
 	oa.bind.force = 1;  /* the other weights are shown beside, whatever the gate says of them */
 	oa.csv_name = oa.bind.weights_mesh ? "metrics_weights_mesh.csv" : "metrics_weights_computed.csv";
-	fprintf(stderr, "%s: the clip again with the %s weights, for the side-by-side table\n", a->mesh,
+	fprintf(cli_note(), "%s: the clip again with the %s weights, for the side-by-side table\n", a->mesh,
 		oa.bind.weights_mesh ? "mesh's own" : "computed");
 	memset(&other.rep, 0, sizeof other.rep);
 	if (compare_load_clip(&other, &oa) < 0 || compare_measure_clip(&other, &oa) < 0)

@@ -3,6 +3,7 @@
 #include <string.h>
 
 #include "cli_opts.h"
+#include "cli_quiet.h"
 #include "cli_version.h"
 #include "rig_load.h"
 #include "skintool_cmds.h"
@@ -38,12 +39,26 @@ static void usage(FILE *to)
 		fprintf(to, "  %-13s %s\n", commands[i].name, commands[i].what);
 	fprintf(to, "\n'skintool COMMAND --help' describes a command and its options. Options take their\n"
 		"value as --opt=value or --opt value; files and options come in any order.\n\n"
-		"Options:\n  -h, --help       show this help and exit\n      --version    show the version, "
-		"revision, board and backends, and exit\n\n" CLI_EXIT_CODES);
+		"Options (before the command; each command also takes -q and --help after its name):\n"
+		"  -h, --help       show this help and exit\n"
+		"  -q, --quiet      only errors and warnings on stderr: no notes, progress or summary lines\n"
+		"      --version    show the version, revision, board and backends, and exit\n\n" CLI_EXIT_CODES);
+}
+
+static int is_quiet(const char *arg)
+{
+	return !strcmp(arg, "-q") || !strcmp(arg, "--quiet");
 }
 
 int main(int argc, char **argv)
 {
+	/* -q before the command: as after it (cli_parse), for every command */
+	while (argc > 1 && is_quiet(argv[1])) {
+		cli_set_quiet(1);
+		argv[1] = argv[0];
+		argc--;
+		argv++;
+	}
 	if (cli_wants_version(argc, argv))
 		return cli_print_version("skintool"), 0;
 	if (argc < 2 || strcmp(argv[1], "--help") == 0 || strcmp(argv[1], "-h") == 0) {

@@ -16,6 +16,7 @@
 
 #include "cli_common.h"
 #include "cli_progress.h"
+#include "cli_quiet.h"
 #include "clock.h"
 #include "compare.h"
 #include "skintool_cmds.h"
@@ -154,9 +155,8 @@ int cmd_compare(int argc, char **argv)
 	c.rep.total_seconds = (double)(t2 - t_start) * 1e-9;
 	if (report_write_html(&c.rep, a.out) < 0)
 		return fail(a.out, made);
-	if (!cli_quiet())
-		fprintf(stderr, "%s: %ld frames x 3 algorithms, %d vertices: measured in %.2f s, renders, "
-			"charts and page %.2f s, total %.2f s -> %s/index.html\n", a.amc, c.rep.frames,
-			c.rep.vert_count, c.rep.seconds, (double)(t2 - t1) * 1e-9, c.rep.total_seconds, a.out);
+	fprintf(cli_note(), "%s: %ld frames x 3 algorithms, %d vertices: measured in %.2f s, renders, "
+		"charts and page %.2f s, total %.2f s -> %s/index.html\n", a.amc, c.rep.frames, c.rep.vert_count,
+		c.rep.seconds, (double)(t2 - t1) * 1e-9, c.rep.total_seconds, a.out);
 	return 0;
 }

@@ -8,6 +8,7 @@
 
 #include "cli_text_out.h"
 #include "cli_opts.h"
+#include "cli_quiet.h"
 #include "convert.h"
 #include "skintool_cmds.h"
 #include "text_tokens.h"
@@ -115,7 +116,7 @@ static int to_bvh(const convert_args *a, const skel *s)
 	}
 	if (cli_text_out_commit(&out) < 0)
 		return -1;
-	printf("%s: %d joints, %ld frames at %.6g Hz%s\n", a->out, s->count, frames, fps,
+	fprintf(cli_summary(), "%s: %d joints, %ld frames at %.6g Hz%s\n", a->out, s->count, frames, fps,
 	       !m.is_bvh && a->fps <= 0 ? " (AMC records no rate: --fps sets it)" : "");
 	return 0;
 }
@@ -154,7 +155,7 @@ static int to_asf(convert_args *a, const skel *s)
 	}
 	if (cli_text_out_commit(&asf) < 0)
 		return -1;
-	printf("%s: %d bones; %s: %ld frames%s\n", a->out, s->count, a->amc_out, frames,
+	fprintf(cli_summary(), "%s: %d bones; %s: %ld frames%s\n", a->out, s->count, a->amc_out, frames,
 	       m.is_bvh ? " (AMC records no frame rate)" : "");
 	return 0;
 }

@@ -6,6 +6,7 @@
 #include "cli_common.h"
 #include "cli_mesh_io.h"
 #include "cli_opts.h"
+#include "cli_quiet.h"
 #include "mannequin.h"
 #include "skintool_cmds.h"
 
@@ -89,10 +90,10 @@ int cmd_mannequin(int argc, char **argv)
 	}
 	if (mesh_write_obj(a.out, &body, TOOL_GENERATED_BODY) < 0)
 		return 1;
-	printf("%s: %d vertices, %d triangles", a.out, body.vert_count, body.tri_count);
+	fprintf(cli_summary(), "%s: %d vertices, %d triangles", a.out, body.vert_count, body.tri_count);
 	if (work.arms_raised)
-		printf(", around the rest pose with %d hanging arm%s raised sideways (the pose it binds in)",
+		fprintf(cli_summary(), ", around the rest pose with %d hanging arm%s raised sideways (the pose it binds in)",
 		       work.arms_raised, work.arms_raised == 1 ? "" : "s");
-	printf("\n");
+	fprintf(cli_summary(), "\n");
 	return 0;
 }

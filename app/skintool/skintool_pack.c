@@ -21,6 +21,7 @@
 #include "cli_common.h"
 #include "cli_image_out.h"
 #include "cli_progress.h"
+#include "cli_quiet.h"
 #include "cli_show.h"
 #include "image_write.h"
 #include "random_bytes.h"
@@ -231,7 +232,7 @@ static int pack_clip(skp_image_writer *w, const char *path, double fps)
 	cli_progress_clear(&pr);
 	cli_motion_close(&m);
 	if (r == 0)
-		printf("clip %s: %ld frames, max error %.3g rad (%.3g deg), %.3g length units\n", name,
+		fprintf(cli_summary(), "clip %s: %ld frames, max error %.3g rad (%.3g deg), %.3g length units\n", name,
 		       range.frames, (double)w->dir[w->clip_count - 1].max_rot_err,
 		       (double)w->dir[w->clip_count - 1].max_rot_err * 57.29577951308232,
 		       (double)w->dir[w->clip_count - 1].max_trans_err);
@@ -294,7 +295,7 @@ static int write_image(const pack_args *p, const bound_body *body, storage_file 
 	}
 	if (accept_written(&sf->bd, p->out) < 0)
 		return -1;
-	printf("%s: %lu blocks of %lu bytes (%lu bytes), sequence %ld, %d bones, %d vertices, %d triangles\n",
+	fprintf(cli_summary(), "%s: %lu blocks of %lu bytes (%lu bytes), sequence %ld, %d bones, %d vertices, %d triangles\n",
 	       p->out, (unsigned long)w.hdr.block_count, (unsigned long)w.hdr.block_size,
 	       (unsigned long)w.hdr.block_count * w.hdr.block_size, p->sequence, body->skel.count,
 	       body->mesh.vert_count, body->mesh.tri_count);

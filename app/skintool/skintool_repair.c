@@ -14,6 +14,7 @@
 
 #include "cli_common.h"
 #include "cli_image_out.h"
+#include "cli_quiet.h"
 #include "cli_show.h"
 #include "image_copies.h"
 #include "image_parity.h"
@@ -101,7 +102,7 @@ int cmd_repair(int argc, char **argv)
 	show_image_verify(&s, beyond, NULL, &v);
 	int rc = 0;
 	if (v.bad == 0 && v.digest > 0) {
-		printf("%s: all %lu blocks good: nothing to repair\n", s.path, (unsigned long)s.im.hdr.block_count);
+		fprintf(cli_summary(), "%s: all %lu blocks good: nothing to repair\n", s.path, (unsigned long)s.im.hdr.block_count);
 	} else if (v.beyond > 0) {
 		fprintf(stderr, "%s: %ld of %ld bad blocks beyond repair: the image is left as it was\n", s.path, v.beyond,
 			v.bad);
@@ -118,7 +119,7 @@ int cmd_repair(int argc, char **argv)
 	} else if (cli_image_out_commit(&out) < 0) {
 		rc = 1;
 	} else {
-		printf("%s: %ld bad block%s rebuilt; the repaired image replaced the old one\n", s.path, v.bad,
+		fprintf(cli_summary(), "%s: %ld bad block%s rebuilt; the repaired image replaced the old one\n", s.path, v.bad,
 		       v.bad == 1 ? "" : "s");
 	}
 	show_image_close(&s);

@@ -112,11 +112,87 @@ static void test_option_forms(void **state)
 	}
 }
 
+/* -q before or after the command leaves stderr empty on a good run: no
+ * notes on the choices made, no progress, no summary; the command's own
+ * output (fk's rows, info) still on stdout. Without -q the same runs say
+ * something (so the check can fail). */
+static void run_quiet(const char *tool, const char *before, const char *cmd, const char *args, int expect_notes)
+{
+	char line[1024];
+	snprintf(line, sizeof line, "%s%s%s %s", before, before[0] ? " " : "", cmd, args);
+	if (run_tool(tool, line) != 0)
+		fail_msg("%s %s: exit status not 0: %s", tool, line, slurp("err.txt"));
+	char *err = slurp("err.txt");
+	if (expect_notes ? !err[0] : err[0] != '\0')
+		fail_msg("%s %s: stderr %s: '%s'", tool, line, expect_notes ? "empty" : "not empty", err);
+	free(err);
+}
+
+static void test_quiet_everywhere(void **state)
+{
+	(void)state;
+	static const struct {
+		const char *cmd, *args;
+		int notes; /* says something on stderr without -q */
+	} runs[] = {
+		{ "fk", "tests/data/tiny.asf tests/data/tiny.amc", 0 },
+		{ "mannequin", "tests/data/tiny.asf -o %s/m.obj", 0 },
+		{ "convert", "tests/data/tiny.asf tests/data/tiny.amc -o %s/t.bvh", 0 },
+		{ "bind", "tests/data/tiny.asf %s/m.obj -o %s/w.csv", 1 },
+		{ "skin", "tests/data/tiny.asf tests/data/tiny.amc %s/m.obj --frame 1 --algo dqbs -o %s/s.obj", 1 },
+		{ "metrics", "tests/data/tiny.asf tests/data/tiny.amc %s/m.obj", 1 },
+		{ "compare", "tests/data/tiny.asf tests/data/tiny.amc --renders 0 -o %s/report%d", 1 },
+		{ "pack", "tests/data/tiny.asf tests/data/tiny.amc -o %s/t.skn", 0 },
+		{ "info", "%s/t.skn", 0 },
+		{ "repair", "%s/t.skn", 0 },
+		{ "bench", "--verts 64 --rounds 1", 1 },
+		{ "bench-parse", "tests/data/tiny.asf tests/data/tiny.amc --runs 1", 0 },
+		{ "bench-image", "%s/t.skn --runs 1", 0 },
+	};
+	const char *dir = test_scratch_dir();
+	int report = 0;
+	for (size_t i = 0; i < sizeof runs / sizeof runs[0]; i++) {
+		char args[512];
+		int uses = 0;
+		for (const char *p = runs[i].args; (p = strstr(p, "%s")); p += 2)
+			uses++;
+		for (int form = 0; form < 3; form++) {
+			/* compare writes a new folder each time */
+			if (uses == 2)
+				snprintf(args, sizeof args, runs[i].args, dir, dir);
+			else if (strstr(runs[i].args, "%d"))
+				snprintf(args, sizeof args, runs[i].args, dir, report++);
+			else
+				snprintf(args, sizeof args, runs[i].args, dir);
+			if (form == 0)
+				run_quiet("skintool", "", runs[i].cmd, args, runs[i].notes);
+			else if (form == 1)
+				run_quiet("skintool", "-q", runs[i].cmd, args, 0);
+			else {
+				strncat(args, " --quiet", sizeof args - strlen(args) - 1);
+				run_quiet("skintool", "", runs[i].cmd, args, 0);
+			}
+		}
+	}
+	if (getenv("SKP_TEST_EMULATED")) {
+		print_message("skinplay -q: no GPU under the emulator: skipped\n");
+		return;
+	}
+	char args[512];
+	snprintf(args, sizeof args, "--image %s/t.skn --platform surfaceless --size 64x64 --frames 2 -o %s/frames", dir, dir);
+	run_quiet("skinplay", "", "", args, 1);
+	run_quiet("skinplay", "-q", "", args, 0);
+	snprintf(args, sizeof args, "--asf tests/data/tiny.asf --amc tests/data/tiny.amc --platform surfaceless --size 64x64 "
+		 "--frames 2 --input script:/dev/null --quiet");
+	run_quiet("skinplay", "", "", args, 0);
+}
+
 int main(void)
 {
 	const struct CMUnitTest tests[] = {
 		cmocka_unit_test(test_every_command_has_help),
 		cmocka_unit_test(test_option_forms),
+		cmocka_unit_test(test_quiet_everywhere),
 	};
 	return cmocka_run_group_tests(tests, test_scratch_setup, test_scratch_teardown);
 }
