@@ -99,18 +99,29 @@ UNIT_BIN    := $(addprefix $(OUT)/tests/,$(basename $(notdir $(UNIT_SRC))))
 HOSTCC   ?= cc
 DEMO_ASF := assets/demo.asf
 DEMO_AMC := $(OUT)/assets/demo.amc
+# The default show (assets/README.md): the MakeHuman body with its own
+# weights on the CMU skeleton, three CMU clips, then the synthetic tour of
+# bends and twists written for that skeleton.
+SHOW_ASF   := assets/cmu/02.asf
+SHOW_TOUR  := $(OUT)/assets/tour.amc
+SHOW_CLIPS := assets/cmu/02_01.amc assets/cmu/lambada.amc assets/cmu/kick.amc $(SHOW_TOUR)
+SHOW_MESH  := assets/makehuman/base.obj
+SHOW_RIG   := assets/makehuman/default.mhskel
+SHOW_BODY  := --mesh $(SHOW_MESH) --rig $(SHOW_RIG) --weights mesh
 
 CMOCKA_CFLAGS = $(shell $(PKG_CONFIG) --cflags cmocka 2>/dev/null)
 CMOCKA_LIBS   = $(shell $(PKG_CONFIG) --libs cmocka 2>/dev/null || echo -lcmocka)
 
 .PHONY: all test run size install clean help check-core check-layers check-lean
-all: $(SKINTOOL) $(SKINPLAY) $(DEMO_AMC)
+all: $(SKINTOOL) $(SKINPLAY) $(DEMO_AMC) $(SHOW_TOUR)
 
 $(OUT)/assets/demo_motion: assets/demo_motion.c
 	@mkdir -p $(@D)
 	$(HOSTCC) -std=c11 -D_DEFAULT_SOURCE $(WARN) -O2 $< -o $@ -lm
 $(DEMO_AMC): $(OUT)/assets/demo_motion
 	$< > $@.tmp && mv $@.tmp $@
+$(SHOW_TOUR): $(OUT)/assets/demo_motion
+	$< cmu > $@.tmp && mv $@.tmp $@
 
 # Objects depend on the flags they were built with, so switching SIMD,
 # backends or board flags rebuilds them.
@@ -201,18 +212,19 @@ test: deps
 	@$(MAKE) --no-print-directory all $(UNIT_BIN) check-core check-layers check-lean
 	@$(TEST_WRAP) sh tests/run_tests.sh $(OUT) $(UNIT_BIN)
 
-# On a console or desktop: the demo on the display. Without one: headless,
-# compare view, a few frames and a contact sheet in out/.
+# On a console or desktop: the default show on the display. Without one:
+# headless, compare view, the show once at 30 frames a second, every 75th
+# frame and a contact sheet in out/.
 run: deps
-	@$(MAKE) --no-print-directory all
+	@$(MAKE) --no-print-directory all $(DEMO_SKN)
 	@plat=$$($(SKINPLAY) --print-platform); \
 	if [ "$$plat" = surfaceless ]; then \
 	  rm -rf out && mkdir -p out && \
-	  $(SKINPLAY) --asf $(DEMO_ASF) --amc $(DEMO_AMC) --platform surfaceless --algo compare \
-	    --size 1280x720 --out out --every 80 --sheet out/contact_sheet.png && \
+	  $(SKINPLAY) --image $(DEMO_SKN) --platform surfaceless --algo compare \
+	    --size 1280x720 --display-rate 30 --out out --every 75 --sheet out/contact_sheet.png && \
 	  echo "run: no display here, rendered headless: out/frame_*.png and out/contact_sheet.png"; \
 	else \
-	  $(SKINPLAY) --asf $(DEMO_ASF) --amc $(DEMO_AMC) --platform $$plat --algo compare; \
+	  $(SKINPLAY) --image $(DEMO_SKN) --platform $$plat --algo compare; \
 	fi
 
 # Code and static RAM of skinplay, the RAM per module and the largest
@@ -246,8 +258,8 @@ $(RUN_DIR)/%: $(OUT)/%
 
 # sequence 0: older than any show a user packs, so it plays only when no
 # image slot holds a valid show (board.ini lists it last)
-$(DEMO_SKN): $(RUN_DIR)/skintool $(DEMO_AMC) $(DEMO_ASF)
-	@$< pack $(DEMO_ASF) $(DEMO_AMC) --sequence 0 -o $@ >/dev/null
+$(DEMO_SKN): $(RUN_DIR)/skintool $(SHOW_ASF) $(SHOW_CLIPS) $(SHOW_MESH) $(SHOW_RIG) assets/makehuman/default_weights.mhw
+	@$< pack -q $(SHOW_ASF) $(SHOW_CLIPS) $(SHOW_BODY) --sequence 0 -o $@ >/dev/null
 
 # man pages from --help and --version (help2man), so they never drift;
 # skintool's gets a COMMANDS section from each command's own --help
@@ -288,7 +300,7 @@ clean:
 help:
 	@echo "make [BOARD=$(BOARD)]   build $(SKINTOOL) and $(SKINPLAY)"
 	@echo "make test               build and run every test (SANITIZE=1 for ASan+UBSan)"
-	@echo "make run                play the demo assets"
+	@echo "make run                play the default show (assets/: MakeHuman body, CMU clips, the tour)"
 	@echo "make size               code size and static RAM of skinplay"
 	@echo "make deps               check (and as root install) the Debian packages"
 	@echo "make install PREFIX=/usr/local DESTDIR="

@@ -1,9 +1,15 @@
 /* Writes the skinplay demo motion (AMC, 120 Hz) for assets/demo.asf to
  * stdout: a walk, then deep elbow and knee bends, then a large forearm and
  * upper-arm twist: the poses where LBS collapses and candy-wraps and DQBS
- * keeps its volume. Built and run by `make` into build/assets/demo.amc. */
+ * keeps its volume. Built and run by `make` into build/assets/demo.amc.
+ *
+ * `demo_motion cmu` writes the same tour for the CMU skeleton (the default
+ * show's, assets/cmu/02.asf), whose arm bones have other axes: each arm's
+ * rotations are carried over so that every arm bone turns the same way in
+ * space (build/assets/tour.amc). */
 #include <math.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 #define FPS 120.0
@@ -97,6 +103,130 @@ static pose pose_at(double t)
 	return p;
 }
 
+/* ---- the tour on the CMU skeleton's arms ----
+ * A bone's local rotation is C M C^-1, C from its ASF axis (x turned first)
+ * and M from its dof values in the order rx ry rz (x first). Axes in
+ * degrees, per side (0 right, 1 left); the legs, spine and clavicles have
+ * the same axes in both skeletons (the feet's differ by 7 degrees about y:
+ * left as it is). */
+typedef double mat3[3][3];
+
+static const double demo_axis[2][3][3] = { /* humerus, radius, wrist */
+	{ { 0, 0, 90 }, { 0, 0, 90 }, { 0, 0, 90 } },
+	{ { 0, 0, -90 }, { 0, 0, -90 }, { 0, 0, -90 } },
+};
+static const double cmu_axis[2][3][3] = { /* the same in every CMU subject's ASF */
+	{ { 180, 30, 90 }, { 180, 30, 90 }, { 0, -90, -90 } },
+	{ { 180, -30, -90 }, { 180, -30, -90 }, { 0, 90, 90 } },
+};
+
+static void mat_mul(const mat3 a, const mat3 b, mat3 out)
+{
+	mat3 t;
+	for (int i = 0; i < 3; i++)
+		for (int j = 0; j < 3; j++)
+			t[i][j] = a[i][0] * b[0][j] + a[i][1] * b[1][j] + a[i][2] * b[2][j];
+	memcpy(out, t, sizeof t);
+}
+
+static void mat_transpose(const mat3 a, mat3 out)
+{
+	for (int i = 0; i < 3; i++)
+		for (int j = 0; j < 3; j++)
+			out[j][i] = a[i][j];
+}
+
+/* rotation by deg degrees about basis axis k (0 x, 1 y, 2 z) */
+static void mat_basis(int k, double deg, mat3 out)
+{
+	double c = cos(deg * M_PI / 180), s = sin(deg * M_PI / 180);
+	int a = (k + 1) % 3, b = (k + 2) % 3;
+	memset(out, 0, sizeof(mat3));
+	out[k][k] = 1;
+	out[a][a] = out[b][b] = c;
+	out[b][a] = s;
+	out[a][b] = -s;
+}
+
+/* Rz(v[2]) Ry(v[1]) Rx(v[0]): an ASF axis, or the dofs rx ry rz */
+static void mat_euler(const double v[3], mat3 out)
+{
+	mat3 r;
+	mat_basis(0, v[0], out);
+	mat_basis(1, v[1], r);
+	mat_mul(r, out, out);
+	mat_basis(2, v[2], r);
+	mat_mul(r, out, out);
+}
+
+static void euler_of(const mat3 m, double v[3])
+{
+	v[0] = atan2(m[2][1], m[2][2]) * 180 / M_PI;
+	v[1] = atan2(-m[2][0], hypot(m[0][0], m[1][0])) * 180 / M_PI;
+	v[2] = atan2(m[1][0], m[0][0]) * 180 / M_PI;
+}
+
+static void column(const mat3 m, int k, double v[3])
+{
+	for (int i = 0; i < 3; i++)
+		v[i] = m[i][k];
+}
+
+/* The CMU elbow hinge is turned about the upper arm from the demo's: the
+ * roll about the bone's axis (x in the rest pose) that takes the CMU hinge
+ * onto the demo's. With it on the upper arm, the elbow bends in the same
+ * plane and the forearm's twist turns about the same line. */
+static void hinge_roll(int side, mat3 out)
+{
+	mat3 cd, cc;
+	double hd[3], hc[3];
+	mat_euler(demo_axis[side][1], cd);
+	mat_euler(cmu_axis[side][1], cc);
+	column(cd, 0, hd);
+	column(cc, 0, hc);
+	double deg = atan2(hc[1] * hd[2] - hc[2] * hd[1], hc[1] * hd[1] + hc[2] * hd[2]) * 180 / M_PI;
+	mat_basis(0, deg, out);
+}
+
+/* One arm's dofs from the demo skeleton's values to the CMU skeleton's. */
+static void arm_to_cmu(pose *p, int side)
+{
+	mat3 cd, cc, cct, m, roll;
+	mat_euler(demo_axis[side][0], cd);
+	mat_euler(cmu_axis[side][0], cc);
+	mat_transpose(cc, cct);
+	mat_transpose(cd, m);             /* C_demo^-1 */
+	mat3 motion;
+	mat_euler(p->humerus[side], motion);
+	mat_mul(motion, m, m);            /* M C_demo^-1 */
+	mat_mul(cd, m, m);                /* the local rotation, C_demo M C_demo^-1 */
+	hinge_roll(side, roll);
+	mat_mul(m, roll, m);
+	mat_mul(m, cc, m);
+	mat_mul(cct, m, m);               /* C_cmu^-1 (local roll) C_cmu */
+	euler_of(m, p->humerus[side]);
+	/* the forearm's twist axis (the wrist's y) points the other way */
+	double td[3], tc[3];
+	mat_euler(demo_axis[side][2], cd);
+	mat_euler(cmu_axis[side][2], cc);
+	column(cd, 1, td);
+	column(cc, 1, tc);
+	if (td[0] * tc[0] + td[1] * tc[1] + td[2] * tc[2] < 0)
+		p->wrist[side] = -p->wrist[side];
+}
+
+/* Euler angles as continuous as the motion: within 180 degrees of the
+ * previous frame's */
+static void unwrap(double *v, int n, const double *prev)
+{
+	for (int i = 0; i < n; i++) {
+		while (v[i] - prev[i] > 180)
+			v[i] -= 360;
+		while (v[i] - prev[i] < -180)
+			v[i] += 360;
+	}
+}
+
 static void line3(const char *name, const double v[3])
 {
 	printf("%s %.4f %.4f %.4f\n", name, v[0], v[1], v[2]);
@@ -132,13 +262,25 @@ static void write_frame(int n, const pose *p)
 	}
 }
 
-int main(void)
+int main(int argc, char **argv)
 {
-	printf("#!OML:ASF demo.asf\n:FULLY-SPECIFIED\n:DEGREES\n");
+	int cmu = argc > 1 && !strcmp(argv[1], "cmu");
+	if (argc > 2 || (argc == 2 && !cmu)) {
+		fprintf(stderr, "usage: demo_motion [cmu] > M.amc\n");
+		return 1;
+	}
+	printf("#!OML:ASF %s\n:FULLY-SPECIFIED\n:DEGREES\n", cmu ? "02.asf" : "demo.asf");
 	int frames = (int)(TWIST_END * FPS);
+	pose prev;
 	for (int n = 1; n <= frames; n++) {
 		pose p = pose_at((n - 1) / FPS);
+		for (int side = 0; cmu && side < 2; side++) {
+			arm_to_cmu(&p, side);
+			if (n > 1)
+				unwrap(p.humerus[side], 3, prev.humerus[side]);
+		}
 		write_frame(n, &p);
+		prev = p;
 	}
 	return 0;
 }

@@ -229,6 +229,8 @@ static int load_body(const bind_args *a, const char *asf, const char *obj, bound
 
 int bind_args_load(const bind_args *a, const char *asf, const char *obj, bound_body *body)
 {
+	if (obj && !strcmp(obj, BIND_MESH_GENERATED))
+		obj = NULL;
 	if (load_body(a, asf, obj, body) < 0)
 		return -1;
 	return cli_bind_gate(a, obj ? obj : asf, body);

@@ -89,9 +89,11 @@ typedef struct bound_body {
 /* Loads skeleton asf, mesh obj (group), the bind pose, fits the mesh when
  * asked, then computes the weights (default bind_params) or reads them,
  * and checks the result (cli_bind_gate.h): a failing bind is refused.
- * obj NULL: the generated body (skintool mannequin) in the rest pose with
- * its arms out (skel_tpose.h), which is then the bind pose.
+ * obj NULL or BIND_MESH_GENERATED: the generated body (skintool mannequin)
+ * in the rest pose with its arms out (skel_tpose.h), which is then the
+ * bind pose (a file of that name is ./generated).
  * Returns 0, or -1 after reporting the error on stderr. */
+#define BIND_MESH_GENERATED "generated"
 int bind_args_load(const bind_args *a, const char *asf, const char *obj, bound_body *body);
 
 /* Meshes other than OBJ (glTF, FBX, COLLADA), and an OBJ with --rig, go

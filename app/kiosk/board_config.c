@@ -27,6 +27,7 @@ void board_config_defaults(board_config *c)
 	c->speed = 1.0;
 	c->blend_ms = BOARD_BLEND_MS;
 	c->root = BOARD_ROOT_IN_PLACE;
+	c->loop = BOARD_LOOP_SHOW;
 	for (int i = 0; i < PLAYER_BTN_COUNT; i++) {
 		c->button[i].active_low = 1;
 		c->button[i].bias = BOARD_BIAS_PULL_UP;
@@ -91,6 +92,13 @@ const char *const board_root_names[BOARD_ROOT_MODES] = { "in-place", "travel" };
 int board_root_parse(const char *word)
 {
 	return word ? pick(word, board_root_names, BOARD_ROOT_MODES) : -1;
+}
+
+const char *const board_loop_names[BOARD_LOOP_MODES] = { "show", "clip" };
+
+int board_loop_parse(const char *word)
+{
+	return word ? pick(word, board_loop_names, BOARD_LOOP_MODES) : -1;
 }
 
 int board_speed_parse(const char *word, double *out)
@@ -292,7 +300,12 @@ static skp_status show_key(board_config *c, const ini_entry *e, skp_error *err)
 			return bad(err, e, "in-place or travel");
 		return SKP_OK;
 	}
-	return skp_fail(err, SKP_ERR_SYNTAX, e->line, "unknown key '%s' in [show] (speed, blend_ms, root)", e->key);
+	if (tok_ieq(e->key, "loop")) {
+		if ((c->loop = board_loop_parse(e->value)) < 0)
+			return bad(err, e, "show or clip");
+		return SKP_OK;
+	}
+	return skp_fail(err, SKP_ERR_SYNTAX, e->line, "unknown key '%s' in [show] (speed, blend_ms, root, loop)", e->key);
 }
 
 /* "button.algo" -> PLAYER_BTN_ALGO; -1 when not a button section. */

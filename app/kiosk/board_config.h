@@ -20,6 +20,8 @@
  *              blend_ms = 300   (crossfade at a loop or a clip change; 0: cut)
  *              root = in-place | travel   (in place: the root's horizontal
  *              travel taken out; travel: kept, the camera follows)
+ *              loop = show | clip   (show: an image's clips play in turn,
+ *              the show loops; clip: a clip loops until NEXT)
  *
  * Unknown sections and keys are errors naming the line and the key. */
 #ifndef BOARD_CONFIG_H
@@ -77,6 +79,12 @@ typedef enum board_root { BOARD_ROOT_IN_PLACE, BOARD_ROOT_TRAVEL } board_root;
 extern const char *const board_root_names[BOARD_ROOT_MODES]; /* "in-place", "travel" */
 int board_root_parse(const char *word);
 
+/* [show] loop: the words in enum order, and their parse (-1: another). */
+typedef enum board_loop { BOARD_LOOP_SHOW, BOARD_LOOP_CLIP } board_loop;
+#define BOARD_LOOP_MODES 2
+extern const char *const board_loop_names[BOARD_LOOP_MODES]; /* "show", "clip" */
+int board_loop_parse(const char *word);
+
 /* [show] speed: 0 with *out in [BOARD_SPEED_MIN, BOARD_SPEED_MAX], else -1. */
 #define BOARD_SPEED_MIN 0.1
 #define BOARD_SPEED_MAX 4.0
@@ -113,6 +121,7 @@ typedef struct board_config {
 	double speed;            /* [show] speed */
 	int blend_ms;            /* [show] blend_ms */
 	int root;                /* board_root */
+	int loop;                /* board_loop */
 } board_config;
 
 #define BOARD_DEBOUNCE_MS 30

@@ -369,7 +369,7 @@ static int play(player *p)
 	 * scripted pause cannot keep a batch run going for ever */
 	long budget = p->o.frames >= 0 ? p->o.frames : p->headless ? clips_pass_frames(p) : -1;
 	p->budget = budget;
-	p->eng.cfg.loop = budget < 0 || p->o.frames >= 0;
+	p->eng.cfg.loop = budget < 0 || p->o.frames >= 0 || clips_show_loops(p);
 	uint64_t prev = 0;
 	while (!quit && (budget < 0 || shown < budget)) {
 		unsigned act = kiosk_frame(&p->kiosk, shown);

@@ -76,8 +76,13 @@ int clips_pose(player *p);
  * next one that can play), crossfading from the pose on screen. */
 void clips_restart(player *p, int clip);
 
-/* Display frames that play the clip once from where it starts. */
+/* Display frames that play the clip once from where it starts; with loop
+ * = show, every playable clip of the image once. */
 long clips_pass_frames(player *p);
+
+/* loop = show and an image with more than one clip that can play: its
+ * clips play in turn (a pass's end starts the next). */
+int clips_show_loops(const player *p);
 
 /* Shows text on screen for about seconds. */
 void clips_notice(player *p, const char *text, double seconds);

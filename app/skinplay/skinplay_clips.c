@@ -141,12 +141,31 @@ float clips_first(player *p)
 	return lo;
 }
 
+int clips_show_loops(const player *p)
+{
+	return p->o.loop == BOARD_LOOP_SHOW && p->o.image_count && !p->hold &&
+	       show_next_playable(&p->show, (p->show.clip + 1) % show_clip_count(&p->show)) != p->show.clip;
+}
+
+/* The pass ended and the show goes on: the next clip, round the end,
+ * crossfading from the pose on screen. 1 when it changed. */
+static int next_in_show(player *p)
+{
+	if (p->eng.pass == 0 || !clips_show_loops(p))
+		return 0;
+	select_clip(p, (p->show.clip + 1) % show_clip_count(&p->show));
+	return !p->hold;
+}
+
 int clips_pose(player *p)
 {
 	skp_error err;
 	if (p->hold)
 		return 0;
-	if (play_update(&p->eng, p->now, &err) != SKP_OK) {
+	skp_status st = play_update(&p->eng, p->now, &err);
+	if (st == SKP_OK && next_in_show(p))
+		st = play_update(&p->eng, p->now, &err);
+	if (st != SKP_OK) {
 		/* headless, a file that cannot be read is an error; a kiosk holds */
 		if (p->headless)
 			return cli_error(p->o.image_count ? show_path(&p->show) : p->o.amc, &err), -1;
@@ -173,7 +192,25 @@ void clips_restart(player *p, int clip)
 	start_clip(p, p->o.image_count ? show_clip(&p->show, p->show.clip)->name : cli_basename(p->o.amc), 0);
 }
 
+/* Display frames before a looping clip of that many seconds wraps: those
+ * whose time is short of its end (the next clip shows at the end's time). */
+static long frames_before_end(const player *p, double seconds)
+{
+	long n = (long)ceil(seconds * p->o.display_rate / p->o.speed - 1e-9);
+	return n > 0 ? n : 1;
+}
+
 long clips_pass_frames(player *p)
 {
-	return p->hold ? 1 : play_pass_frames_from(&p->eng, p->o.display_rate, p->start_time);
+	if (p->hold)
+		return 1;
+	if (!clips_show_loops(p))
+		return play_pass_frames_from(&p->eng, p->o.display_rate, p->start_time);
+	long n = frames_before_end(p, play_duration(&p->eng) - p->start_time);
+	for (int i = 0; i < show_clip_count(&p->show); i++) {
+		const skp_image_clip *c = show_clip(&p->show, i);
+		if (i != p->show.clip && p->show.playable[i])
+			n += frames_before_end(p, (double)c->frame_count / c->fps);
+	}
+	return n;
 }

@@ -62,6 +62,8 @@ static void apply_board(const board_config *b, play_opts *o, int argc, char **ar
 		o->blend_ms = b->blend_ms;
 	if (o->root < 0)
 		o->root = b->root;
+	if (o->loop < 0)
+		o->loop = b->loop;
 }
 
 /* What neither the command line nor a board said. */
@@ -73,6 +75,8 @@ static void playback_defaults(play_opts *o)
 		o->blend_ms = BOARD_BLEND_MS;
 	if (o->root < 0)
 		o->root = BOARD_ROOT_IN_PLACE;
+	if (o->loop < 0)
+		o->loop = BOARD_LOOP_SHOW;
 	if (o->yaw_mode < 0)
 		o->yaw_mode = 0;
 }

@@ -12,7 +12,7 @@ enum {
 	OPT_IMAGE = 1, OPT_CLIP, OPT_ASF, OPT_AMC, OPT_BVH, OPT_MESH, OPT_ALGO, OPT_SKIN, OPT_PLATFORM, OPT_DEVICE,
 	OPT_ROTATION, OPT_SIZE, OPT_FRAMES, OPT_START, OPT_OUT, OPT_EVERY, OPT_SHEET, OPT_VIEW, OPT_FPS,
 	OPT_HUD_FPS, OPT_REPORT_MEMORY, OPT_BOARD, OPT_INPUT, OPT_PRINT_PLATFORM, OPT_HUD, OPT_REPORT_TIMING,
-	OPT_THREADS, OPT_STREAMS, OPT_DISPLAY_RATE, OPT_SPEED, OPT_BLEND, OPT_ROOT, OPT_YAW
+	OPT_THREADS, OPT_STREAMS, OPT_DISPLAY_RATE, OPT_SPEED, OPT_BLEND, OPT_ROOT, OPT_YAW, OPT_LOOP
 };
 
 static const cli_opt play_opts_table[] = {
@@ -23,7 +23,8 @@ static const cli_opt play_opts_table[] = {
 	{ "motion", 0, "M.amc|M.bvh", OPT_AMC, "the motion (also --amc; a BVH carries its skeleton)" },
 	{ "amc", 0, "M.amc", OPT_AMC, "the motion" },
 	{ "bvh", 0, "M.bvh", OPT_BVH, "skeleton and motion from one BVH file" },
-	{ "mesh", 0, "MESH.obj", OPT_MESH, "the body to skin (default: the generated one)" },
+	{ "mesh", 0, "MESH.obj", OPT_MESH, "the body to skin, or 'generated': the mannequin made around the skeleton "
+	  "(the default)" },
 	{ "algo", 0, "ALGO", OPT_ALGO, "lbs, dqbs, dqbs-fixed or compare (side by side); default dqbs" },
 	{ "skin", 0, "cpu|gpu", OPT_SKIN, "skin on the CPU (default) or in the vertex shader" },
 	{ "threads", 0, "N|auto", OPT_THREADS, "CPU skinning on N threads, auto: one per core, for meshes of the "
@@ -51,6 +52,8 @@ static const cli_opt play_opts_table[] = {
 	  "board's [show] blend_ms, else 300)" },
 	{ "root", 0, "MODE", OPT_ROOT, "in-place: the root's horizontal travel taken out (a looping walk never jumps); "
 	  "travel: kept, the camera follows (default: the board's [show] root, else in-place)" },
+	{ "loop", 0, "show|clip", OPT_LOOP, "show: an image's clips play in turn and the show loops (headless: the show "
+	  "once); clip: the clip loops until NEXT (default: the board's [show] loop, else show)" },
 	{ "yaw", 0, "DEG|auto", OPT_YAW, "turn the camera DEG degrees about the vertical from the usual view; auto: to "
 	  "the clip's mean facing (default: the board's [display] yaw, else auto)" },
 	{ "hud", 0, "MODE", OPT_HUD, "visitor, engineer or off (default: the board's [display] hud, else engineer)" },
@@ -125,7 +128,7 @@ static int take_rate(play_opts *o, const char *v)
 	return 0;
 }
 
-/* The playback options (--display-rate, --speed, --blend-ms, --root, --yaw). */
+/* The playback options (--display-rate, --speed, --blend-ms, --root, --loop, --yaw). */
 static int take_timing(play_opts *o, int id, const char *v)
 {
 	static const char *const roots[] = { "in-place", "travel" };
@@ -149,6 +152,10 @@ static int take_timing(play_opts *o, int id, const char *v)
 	case OPT_ROOT:
 		if ((o->root = board_root_parse(v)) < 0)
 			return cli_bad_choice(PROG, "root", v, roots, 2);
+		return 0;
+	case OPT_LOOP:
+		if ((o->loop = board_loop_parse(v)) < 0)
+			return cli_bad_choice(PROG, "loop", v, board_loop_names, BOARD_LOOP_MODES);
 		return 0;
 	default:
 		if ((o->yaw_mode = board_yaw_parse(v, &o->yaw_deg)) < 0)
@@ -209,7 +216,8 @@ static int take(void *ctx, int id, const char *v)
 	case OPT_EVERY: return take_number("--every", v, &o->every, 1);
 	case OPT_SHEET: o->sheet_path = v; return 0;
 	case OPT_FPS: return take_rate(o, v);
-	case OPT_DISPLAY_RATE: case OPT_SPEED: case OPT_BLEND: case OPT_ROOT: case OPT_YAW: return take_timing(o, id, v);
+	case OPT_DISPLAY_RATE: case OPT_SPEED: case OPT_BLEND: case OPT_ROOT: case OPT_LOOP: case OPT_YAW:
+		return take_timing(o, id, v);
 	case OPT_REPORT_MEMORY: o->report_memory = 1; return 0;
 	case OPT_REPORT_TIMING: o->report_timing = 1; return 0;
 	case OPT_THREADS: return take_threads(o, v);
@@ -266,6 +274,7 @@ int play_parse(play_opts *o, int argc, char **argv)
 	o->display_rate = 60.0;
 	o->blend_ms = -1;
 	o->root = -1;
+	o->loop = -1;
 	o->yaw_mode = -1;
 	int rc = cli_parse(&play_command, o, argc, argv, 1);
 	if (rc != 0)

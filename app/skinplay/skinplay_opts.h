@@ -38,6 +38,7 @@ typedef struct play_opts {
 	double speed;            /* clip seconds a second; 0: the board's (else 1) */
 	int blend_ms;            /* crossfade at loops and clip changes; -1: the board's */
 	int root;                /* board_root; -1: the board's (else in place) */
+	int loop;                /* board_loop; -1: the board's (else show) */
 	int yaw_mode;            /* -1: the board's (else auto), 0 auto, 1 yaw_deg */
 	float yaw_deg;
 } play_opts;

@@ -13,7 +13,8 @@ const cli_opt tool_opt_motion[] = {
 	{ NULL, 0, NULL, 0, NULL },
 };
 const cli_opt tool_opt_mesh[] = {
-	{ "mesh", 0, "MESH", TOOL_OPT_MESH, "the body: OBJ, or a rigged glTF/FBX/COLLADA (default: generated)" },
+	{ "mesh", 0, "MESH", TOOL_OPT_MESH, "the body: OBJ, a rigged glTF/FBX/COLLADA, or 'generated': the mannequin "
+	  "made around the skeleton (the default)" },
 	{ NULL, 0, NULL, 0, NULL },
 };
 const cli_opt tool_opt_output[] = {

@@ -239,6 +239,24 @@ static void test_bad_input_fails_cleanly(void **state)
 	}
 }
 
+/* --mesh generated (here the MESH operand) is the mannequin: the same
+ * weights as binding the OBJ `skintool mannequin` writes. */
+static void test_mesh_generated(void **state)
+{
+	(void)state;
+	const char *obj = test_scratch("mq.obj"), *a = test_scratch("gen.csv"), *b = test_scratch("obj.csv");
+	assert_int_equal(test_run("%s mannequin assets/demo.asf -o %s >/dev/null 2>&1", test_tool_path("skintool"), obj), 0);
+	assert_int_equal(test_run("%s bind assets/demo.asf generated -o %s 2>/dev/null", test_tool_path("skintool"), a), 0);
+	assert_int_equal(test_run("%s bind assets/demo.asf %s -o %s 2>/dev/null", test_tool_path("skintool"), obj, b), 0);
+	size_t na, nb;
+	char *x = test_read_file(a, &na), *y = test_read_file(b, &nb);
+	assert_non_null(x);
+	assert_non_null(y);
+	assert_true(na > 1000 && na == nb && memcmp(x, y, na) == 0);
+	free(x);
+	free(y);
+}
+
 /* -o - writes the CSV to stdout; the report stays on stderr. */
 static void test_stdout_and_report(void **state)
 {
@@ -266,6 +284,7 @@ int main(void)
 		cmocka_unit_test(test_makehuman_apose),
 		cmocka_unit_test(test_bad_input_fails_cleanly),
 		cmocka_unit_test(test_stdout_and_report),
+		cmocka_unit_test(test_mesh_generated),
 	};
 	return cmocka_run_group_tests(tests, test_scratch_setup, test_scratch_teardown);
 }

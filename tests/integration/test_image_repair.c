@@ -246,7 +246,7 @@ static void test_beyond_repair_skips_or_holds(void **state)
 	d[(frames + 1) * BS + 40] ^= 1;
 	d[mate * BS + 40] ^= 1;
 	save(bad, d, n);
-	assert_int_equal(test_run("%s --image '%s' --platform surfaceless --size 64x36 >'%s' 2>&1",
+	assert_int_equal(test_run("%s --image '%s' --loop clip --platform surfaceless --size 64x36 >'%s' 2>&1",
 				  test_tool_path("skinplay"), bad, log), 0);
 	text = test_read_file(log, &n);
 	if (!strstr(text, "holding frame") || !strstr(text, "played 21 frames")) /* 40 at 120 Hz: 21 at 60 */

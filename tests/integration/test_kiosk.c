@@ -477,9 +477,72 @@ static void test_bad_board_config_names_file_line_key(void **state)
 	free(log);
 }
 
+/* Runs skinplay headless on an image at 30 frames a second; returns the
+ * log (the caller frees it) after checking the exit status. */
+static char *play_image(const char *show, const char *more)
+{
+	char cmd[2048];
+	snprintf(cmd, sizeof cmd, "ASAN_OPTIONS=detect_leaks=0 %s --image %s --platform surfaceless --size 64x36 "
+		 "--display-rate 30 %s 2>%s", test_tool_path("skinplay"), show, more, log_path);
+	assert_int_equal(system(cmd), 0);
+	return read_log();
+}
+
+/* The clips' names in the order their "clip:" lines came, and the frames
+ * played, from a log. */
+static void clips_played(const char *log, char *order, size_t size, long *frames)
+{
+	order[0] = '\0';
+	for (const char *p = strstr(log, "clip: "); p; p = strstr(p + 1, "clip: ")) {
+		long n = 0;
+		sscanf(p, "clip: %ld frames", &n);
+		snprintf(order + strlen(order), size - strlen(order), "%s", n == 1140 ? "a" : n == 120 ? "b" : "?");
+	}
+	const char *played = strstr(log, "played ");
+	*frames = -1;
+	assert_non_null(played);
+	sscanf(played, "played %ld frames", frames);
+}
+
+/* loop = show (the default): an image's clips play in turn, headless the
+ * show once; loop = clip: the first clip alone, as before. */
+static void test_show_plays_its_clips_in_turn(void **state)
+{
+	(void)state;
+	char clip_a[128], clip_b[128], show[128], cmd[2048], order[16];
+	snprintf(clip_a, sizeof clip_a, "%s/a.amc", dir);
+	snprintf(clip_b, sizeof clip_b, "%s/b.amc", dir);
+	snprintf(show, sizeof show, "%s/two.skn", dir);
+	char amc[512]; /* test_tool_path's buffer is shared */
+	snprintf(amc, sizeof amc, "%s", test_tool_path("assets/demo.amc"));
+	snprintf(cmd, sizeof cmd, "cp %s %s && awk '/^[0-9]+$/ { n = $1 } n <= 120' %s > %s && "
+		 "%s pack -q assets/demo.asf %s %s -o %s >/dev/null", amc, clip_a, clip_a, clip_b,
+		 test_tool_path("skintool"), clip_a, clip_b, show);
+	assert_int_equal(system(cmd), 0);
+	long frames;
+	/* 9.5 s and 1 s at 30 frames a second: 285 + 30 frames */
+	char *log = play_image(show, "");
+	clips_played(log, order, sizeof order, &frames);
+	if (strcmp(order, "ab") || frames != 315)
+		fail_msg("clips %s, %ld frames; log:\n%s", order, frames, log);
+	free(log);
+	/* on past the end, the show starts over */
+	log = play_image(show, "--frames 330");
+	clips_played(log, order, sizeof order, &frames);
+	if (strcmp(order, "aba"))
+		fail_msg("clips %s; log:\n%s", order, log);
+	free(log);
+	log = play_image(show, "--loop clip");
+	clips_played(log, order, sizeof order, &frames);
+	if (strcmp(order, "a") || frames != 286)
+		fail_msg("--loop clip: clips %s, %ld frames; log:\n%s", order, frames, log);
+	free(log);
+}
+
 int main(void)
 {
 	const struct CMUnitTest tests[] = {
+		cmocka_unit_test(test_show_plays_its_clips_in_turn),
 		cmocka_unit_test(test_script_switches_algorithm_at_its_frames),
 		cmocka_unit_test(test_play_pause_and_view),
 		cmocka_unit_test(test_headless_pause_ends),

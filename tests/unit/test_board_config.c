@@ -97,10 +97,13 @@ static void test_show_section_and_yaw(void **state)
 	assert_true(cfg.speed == 1.0);
 	assert_int_equal(cfg.blend_ms, BOARD_BLEND_MS);
 	assert_int_equal(cfg.root, BOARD_ROOT_IN_PLACE);
-	assert_int_equal(parse("[show]\nspeed = 0.5\nblend_ms = 0\nroot = Travel\n[display]\nyaw = -90\n", &err), SKP_OK);
+	assert_int_equal(cfg.loop, BOARD_LOOP_SHOW);
+	assert_int_equal(parse("[show]\nspeed = 0.5\nblend_ms = 0\nroot = Travel\nloop = clip\n[display]\nyaw = -90\n", &err),
+			 SKP_OK);
 	assert_true(cfg.speed == 0.5);
 	assert_int_equal(cfg.blend_ms, 0);
 	assert_int_equal(cfg.root, BOARD_ROOT_TRAVEL);
+	assert_int_equal(cfg.loop, BOARD_LOOP_CLIP);
 	assert_int_equal(cfg.yaw_mode, 1);
 	assert_true(cfg.yaw_deg == -90.0f);
 	assert_int_equal(parse("[display]\nyaw = AUTO\n", &err), SKP_OK);
@@ -175,7 +178,8 @@ static void test_errors_name_line_and_key(void **state)
 		{ "[show]\nspeed = fast\n", 2, "key 'speed' in [show]" },
 		{ "[show]\nblend_ms = 20000\n", 2, "key 'blend_ms' in [show]: expected a crossfade of 0..10000 ms" },
 		{ "[show]\nroot = walking\n", 2, "key 'root' in [show]: expected in-place or travel, found 'walking'" },
-		{ "[show]\nloop = yes\n", 2, "unknown key 'loop' in [show] (speed, blend_ms, root)" },
+		{ "[show]\nloop = yes\n", 2, "key 'loop' in [show]: expected show or clip, found 'yes'" },
+		{ "[show]\nshuffle = on\n", 2, "unknown key 'shuffle' in [show] (speed, blend_ms, root, loop)" },
 		{ "[display]\nyaw = north\n", 2, "key 'yaw' in [display]: expected auto or degrees" },
 		{ "[storage]\nslot = a\nslot = b\nslot = c\nslot = d\n", 5, "SKP_MAX_SLOTS" },
 		{ "line = 3\n", 1, "key 'line' before any [section]" },
