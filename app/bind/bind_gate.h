@@ -5,14 +5,24 @@
  *   tears   a triangle edge stretched to more than stretch_ratio times its
  *           bind length and by more than stretch_extent of the skeleton's
  *           extent (the skin between two parts bound to bones that part);
- *   drift   a vertex whose distance to the posed skeleton (its nearest bone
- *           segment) grows past its distance in the bind pose by more than
- *           drift of the extent (a part that leaves its bones); a distance
- *           that shrinks (another limb passing by, a hand on the chest) is
- *           contact, not a failure, and is only reported (closer);
+ *   drift   a vertex that moved (in the body's frame) and whose distance to
+ *           the posed skeleton (its nearest bone segment) grows past its
+ *           distance in the bind pose, and past its distance to its own
+ *           bones there (a part far from its bone that keeps to it, as a
+ *           robot's head does, leaves nothing), by more than drift of the
+ *           extent: a part that leaves its bones; a distance that shrinks
+ *           (another limb passing by, a hand on the chest) is contact, not
+ *           a failure, and is only reported (closer);
  *   root    vertices bound to the root alone where their region moves (the
- *           share of the region: joints that mapped to nothing);
- *   rigid   a region whose vertices do not follow its bone: when a move
+ *           share of the region: joints that mapped to nothing; for a
+ *           rigged mesh, the vertices whose joints fell back to the root);
+ *           this and rigid count a region's vertices past the first
+ *           quarter of its bone (the rest is joint skin), unless their
+ *           heaviest bone is on another branch and holds them near (a big
+ *           head beside an upper arm is not the arm's skin);
+ *   rigid   a limb region (arm or leg: a rig with fewer spine joints than
+ *           the skeleton, or a robot's one-piece torso, bends the spine
+ *           its own way) whose vertices do not follow its bone: when a move
  *           turns the bone, the vertices' displacement along the one the
  *           bone's own transform gives them, summed over the region, over
  *           the same for rigid attachment (1: it follows, 0: it stays).
@@ -74,20 +84,25 @@ typedef struct bind_gate_work {
 	int seg_bone[SKP_MAX_BONES], seg_count;
 	int16_t region[SKP_MAX_VERTS];
 	float bind_dist[SKP_MAX_VERTS];
+	float own_dist[SKP_MAX_VERTS];          /* the larger of that and the distance to its own bones */
 	uint8_t root_only[SKP_MAX_VERTS];       /* 1: bound to the root alone; 2: ... and seen moving */
 	float bind_edge[SKP_MAX_TRIS][3];
 	int region_verts[SKP_MAX_BONES];
+	uint8_t limb[SKP_MAX_BONES];            /* an arm or leg bone (skel_roles.h) */
 	double follow_num[SKP_MAX_BONES], follow_den[SKP_MAX_BONES];
 	bind_gate_result res;
 	uint8_t drifted[SKP_MAX_VERTS];
+	uint8_t inner[SKP_MAX_VERTS];           /* judged with its region (root, rigid) */
 	uint8_t torn[SKP_MAX_TRIS];             /* a bit per edge of the triangle */
 	float xyz[3 * SKP_MAX_VERTS], nrm[3 * SKP_MAX_VERTS];   /* for the caller's kernel */
 } bind_gate_work;
 
 /* Sets up the measures for mesh m bound with weights wt to s posed as
- * bind, judged by lim (NULL: the defaults). */
+ * bind, judged by lim (NULL: the defaults). orphan (NULL: vertices
+ * weighted to the root alone) marks the vertices left to the root for
+ * want of a mapped joint. */
 void bind_gate_start(bind_gate_work *w, const skel *s, const skel_pose *bind, const mesh *m,
-		     const skin_weights *wt, const bind_gate_limits *lim);
+		     const skin_weights *wt, const uint8_t *orphan, const bind_gate_limits *lim);
 
 /* One test pose and the mesh skinned in it (xyz per vertex): move is the
  * range-of-motion move it came from (index move_index), or NULL for a

@@ -46,6 +46,25 @@ static int chain_of(const rom_ctx *c, int start, int *chain)
 	return n;
 }
 
+/* How far the bone's head is out to the side of the root's vertical. */
+static float out_to_side(const rom_ctx *c, int b)
+{
+	vec3 d = vec3_sub(c->p->head[b], c->p->head[0]);
+	return vec3_length(vec3_sub(d, vec3_scale(c->roles.up, vec3_dot(d, c->roles.up))));
+}
+
+/* The limb's upper bone: one a motion turns (it has channels); a leg's
+ * the first 0.6 as long as the limb's longest, an arm's the first 0.3 as
+ * long starting out to the side by 0.3 of its length (not the clavicle,
+ * which starts at the spine, however far a mesh's shoulders stretched it). */
+static int is_upper(const rom_ctx *c, int b, int leg, float longest)
+{
+	float len = bone_len(c->p, b);
+	if (!c->s->bone[b].channel_count)
+		return 0;
+	return leg ? len >= 0.6f * longest : len >= 0.3f * longest && out_to_side(c, b) >= 0.3f * len;
+}
+
 /* upper, lower and end bone of a limb: -1 where there is none */
 static void limb_bones(const rom_ctx *c, int start, int *bones)
 {
@@ -55,7 +74,7 @@ static void limb_bones(const rom_ctx *c, int start, int *bones)
 		longest = fmaxf(longest, bone_len(c->p, chain[i]));
 	bones[0] = bones[1] = bones[2] = -1;
 	for (int i = 0; i < n && k < 3; i++)
-		if (k ? bone_len(c->p, chain[i]) > 0.05f * longest : bone_len(c->p, chain[i]) >= 0.6f * longest)
+		if (k ? bone_len(c->p, chain[i]) > 0.05f * longest : is_upper(c, chain[i], c->roles.leg[start], longest))
 			bones[k++] = chain[i];
 }
 

@@ -5,9 +5,11 @@
  * ankle 25; an arm forward 60, up and down 40, an elbow bent 90, a wrist
  * 40; the back bent 30 and twisted 30; the neck bent 30 and turned 40.
  * Which bones those are comes from the skeleton's shape (skel_roles.h): in
- * each limb the first bone at least 0.6 as long as the limb's longest,
- * the next one, the one after; the lowest spine bone with a length, and
- * the spine bone above the one the arms hang from. Front is the way the
+ * each limb the upper bone (one with rotation channels: a leg's first 0.6
+ * as long as the limb's longest, an arm's first 0.3 as long starting out
+ * to the side by 0.3 of its length, so not the clavicle), the next one,
+ * the one after; the lowest spine bone with a length, and the spine bone
+ * above the one the arms hang from (the neck). Front is the way the
  * feet point. The moves turn bones in world space, whatever channels the
  * skeleton has: they test the skin, not the motion. */
 #ifndef BIND_ROM_H

@@ -82,6 +82,9 @@ typedef struct bound_body {
 	bind_balance_info balance;  /* valid when automatic and balanced */
 	int balanced;
 	unsigned long long bind_ns; /* time bind_prepare + bind_weights (+ bind_balance) took */
+	uint8_t orphan[SKP_MAX_VERTS]; /* with has_orphans: vertices left to the root for want of a
+					* mapped joint (the importer's, --weights mesh) */
+	int has_orphans;
 	bind_rom rom;               /* the gate's range of motion */
 	bind_gate_result gate;      /* and its figures (cli_bind_gate.h) */
 } bound_body;

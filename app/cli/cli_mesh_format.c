@@ -1,5 +1,7 @@
 #include "cli_mesh_format.h"
 
+#include "cli_quiet.h"
+
 #include <stdio.h>
 #include <string.h>
 #include <strings.h>
@@ -67,7 +69,7 @@ void cli_mesh_format_note(const char *path, mesh_format f)
 {
 	if (cli_mesh_format_named(path, f) || !*extension(path))
 		return;
-	fprintf(stderr, "%s: the file is %s, whatever its name says ('%s'): read as that\n", path,
+	fprintf(cli_note(), "%s: the file is %s, whatever its name says ('%s'): read as that\n", path,
 		mesh_format_name(f), extension(path));
 }
 

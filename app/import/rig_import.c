@@ -1,5 +1,6 @@
 #include "rig_scene.h"
 
+#include <math.h>
 #include <stddef.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -12,18 +13,9 @@
 #include "mem_cap.h"
 #include "mesh_normals.h"
 #include "rig_limits.h"
+#include "rig_rest.h"
 #include "rig_weld.h"
-#include "skp_format.h"
 
-/* Control characters as \xNN: joint names are printed. */
-static void copy_name(char *dst, const struct aiString *s)
-{
-	char raw[RIG_NAME];
-	size_t n = s->length < RIG_NAME - 1 ? s->length : RIG_NAME - 1;
-	memcpy(raw, s->data, n);
-	raw[n] = '\0';
-	skp_escape_name(dst, RIG_NAME, raw);
-}
 
 static vec3 transform_point(const struct aiMatrix4x4 *m, vec3 p)
 {
@@ -32,12 +24,23 @@ static vec3 transform_point(const struct aiMatrix4x4 *m, vec3 p)
 			 m->c1 * p.x + m->c2 * p.y + m->c3 * p.z + m->c4);
 }
 
+typedef struct rigid_part {
+	int part, first, count;
+	const struct aiNode *node;
+} rigid_part;
+
 typedef struct import_walk {
 	const struct aiScene *scene;
 	const char *group;
 	rig_scene *out;
 	skp_error *err;
 	int group_found;
+	int rigid_count;
+	rigid_part rigid[RIG_MAX_PARTS];
+	vec3 *rest_pos;                 /* the vertices in the nodes' rest pose (rig_rest.h) */
+	vec3 rest_head[RIG_MAX_JOINTS]; /* the joints there */
+	/* each joint's rest pose to its bind pose (bind x rest^-1) */
+	struct aiMatrix4x4 rest_to_bind[RIG_MAX_JOINTS];
 } import_walk;
 
 static skp_status add_joint(import_walk *w, const struct aiBone *b, const struct aiMatrix4x4 *node_m,
@@ -45,7 +48,7 @@ static skp_status add_joint(import_walk *w, const struct aiBone *b, const struct
 {
 	rig_scene *r = w->out;
 	char name[RIG_NAME];
-	copy_name(name, &b->mName);
+	rig_rest_name(name, &b->mName);
 	int j = rig_find_joint(r, name);
 	if (j < 0) {
 		if (r->joint_count >= RIG_MAX_JOINTS)
@@ -59,6 +62,16 @@ static skp_status add_joint(import_walk *w, const struct aiBone *b, const struct
 		struct aiMatrix4x4 bind = b->mOffsetMatrix;
 		aiMatrix4Inverse(&bind);
 		jt->head = transform_point(node_m, transform_point(&bind, vec3_make(0.0f, 0.0f, 0.0f)));
+		const struct aiNode *node = rig_rest_node(w->scene, name);
+		struct aiMatrix4x4 rest = node ? rig_rest_global(node) : bind;
+		if (!node)
+			aiMultiplyMatrix4(&rest, node_m);
+		w->rest_head[j] = transform_point(&rest, vec3_make(0.0f, 0.0f, 0.0f));
+		struct aiMatrix4x4 to_bind = *node_m;
+		aiMultiplyMatrix4(&to_bind, &bind);
+		aiMatrix4Inverse(&rest);
+		aiMultiplyMatrix4(&to_bind, &rest);
+		w->rest_to_bind[j] = to_bind;
 	}
 	*index = j;
 	return SKP_OK;
@@ -84,17 +97,36 @@ static skp_status add_bones(import_walk *w, const struct aiMesh *am, const struc
 	return SKP_OK;
 }
 
-static skp_status add_mesh(import_walk *w, const struct aiMesh *am, const struct aiMatrix4x4 *node_m)
+static skp_status place_vertices(import_walk *w, const struct aiMesh *am, const struct aiMatrix4x4 *node_m, int base)
+{
+	mesh *m = w->out->mesh;
+	for (unsigned v = 0; v < am->mNumVertices; v++) {
+		const struct aiVector3D *p = &am->mVertices[v];
+		m->pos[base + (int)v] = w->rest_pos[base + (int)v] = transform_point(node_m, vec3_make(p->x, p->y, p->z));
+		w->out->infl_count[base + (int)v] = 0;
+	}
+	if (!am->mNumBones)
+		return SKP_OK;
+	float *scratch = malloc(sizeof *scratch * am->mNumVertices);
+	if (!scratch)
+		return skp_fail(w->err, SKP_ERR_LIMIT, 0, "out of memory for %u vertices", am->mNumVertices);
+	rig_rest_skin(w->scene, am, node_m, w->rest_pos + base, scratch);
+	free(scratch);
+	return SKP_OK;
+}
+
+static skp_status add_mesh(import_walk *w, const struct aiMesh *am, const struct aiNode *node,
+			   const struct aiMatrix4x4 *node_m, int part)
 {
 	mesh *m = w->out->mesh;
 	int base = m->vert_count;
 	if ((long)base + am->mNumVertices > SKP_MAX_VERTS)
 		return skp_fail(w->err, SKP_ERR_LIMIT, 0, "more than %d vertices", SKP_MAX_VERTS);
-	for (unsigned v = 0; v < am->mNumVertices; v++) {
-		const struct aiVector3D *p = &am->mVertices[v];
-		m->pos[base + (int)v] = transform_point(node_m, vec3_make(p->x, p->y, p->z));
-		w->out->infl_count[base + (int)v] = 0;
-	}
+	skp_status rc = place_vertices(w, am, node_m, base);
+	if (rc != SKP_OK)
+		return rc;
+	if (!am->mNumBones && part >= 0 && w->rigid_count < RIG_MAX_PARTS)
+		w->rigid[w->rigid_count++] = (rigid_part){ part, base, (int)am->mNumVertices, node };
 	m->vert_count = base + (int)am->mNumVertices;
 	for (unsigned f = 0; f < am->mNumFaces; f++) {
 		const struct aiFace *face = &am->mFaces[f];
@@ -116,14 +148,16 @@ static int wanted(const import_walk *w, const struct aiNode *node, const struct 
 	return strcmp(am->mName.data, w->group) == 0 || strcmp(node->mName.data, w->group) == 0;
 }
 
-static void note_part(rig_scene *r, const struct aiNode *node, const struct aiMesh *am, int used)
+/* The part's index, or -1 past RIG_MAX_PARTS. */
+static int note_part(rig_scene *r, const struct aiNode *node, const struct aiMesh *am, int used)
 {
 	if (r->part_count >= RIG_MAX_PARTS)
-		return;
-	copy_name(r->part[r->part_count], am->mName.length ? &am->mName : &node->mName);
+		return -1;
+	rig_rest_name(r->part[r->part_count], am->mName.length ? &am->mName : &node->mName);
 	r->part_used[r->part_count] = used;
 	r->part_skinned[r->part_count] = am->mNumBones > 0;
-	r->part_count++;
+	r->part_joint[r->part_count] = -1;
+	return r->part_count++;
 }
 
 static skp_status walk_node(import_walk *w, const struct aiNode *node, const struct aiMatrix4x4 *parent_m)
@@ -133,11 +167,11 @@ static skp_status walk_node(import_walk *w, const struct aiNode *node, const str
 	for (unsigned k = 0; k < node->mNumMeshes; k++) {
 		const struct aiMesh *am = w->scene->mMeshes[node->mMeshes[k]];
 		int use = (am->mPrimitiveTypes & aiPrimitiveType_TRIANGLE) && wanted(w, node, am);
-		note_part(w->out, node, am, use);
+		int part = note_part(w->out, node, am, use);
 		if (!use)
 			continue;
 		w->group_found = 1;
-		skp_status rc = add_mesh(w, am, &m);
+		skp_status rc = add_mesh(w, am, node, &m, part);
 		if (rc != SKP_OK)
 			return rc;
 	}
@@ -151,15 +185,80 @@ static skp_status walk_node(import_walk *w, const struct aiNode *node, const str
 
 /* The joint hierarchy is the node tree's, skipping nodes that are not
  * joints (an armature's own node, a mesh node). */
-static void link_parents(const struct aiNode *node, int joint_above, rig_scene *r)
+static void link_parents(const struct aiScene *scene, const struct aiNode *node, int joint_above, rig_scene *r)
 {
 	char name[RIG_NAME];
-	copy_name(name, &node->mName);
-	int j = rig_find_joint(r, name);
+	rig_rest_name(name, &node->mName);
+	int j = rig_rest_is_joint(scene, r, node) ? rig_find_joint(r, name) : -1;
 	if (j >= 0 && r->joint[j].parent < 0 && joint_above != j)
 		r->joint[j].parent = joint_above;
 	for (unsigned c = 0; c < node->mNumChildren; c++)
-		link_parents(node->mChildren[c], j >= 0 ? j : joint_above, r);
+		link_parents(scene, node->mChildren[c], j >= 0 ? j : joint_above, r);
+}
+
+/* Whether the skin's bind pose is a pose of its skeleton: every joint as
+ * far from its parent as the nodes put it, up to one scale for all (the
+ * nodes may carry a unit change), within 2% of the skeleton's size. A
+ * part bound away from its joints (BCN_Epileptic.X's head, half a body
+ * from its neck) is not: the nodes' rest pose is taken instead. */
+static int bind_is_a_pose(const import_walk *w)
+{
+	const rig_scene *r = w->out;
+	double sum_bind = 0.0, sum_rest = 0.0;
+	float longest = 0.0f;
+	for (int j = 0; j < r->joint_count; j++) {
+		int p = r->joint[j].parent;
+		if (p < 0)
+			continue;
+		sum_bind += vec3_length(vec3_sub(r->joint[j].head, r->joint[p].head));
+		sum_rest += vec3_length(vec3_sub(w->rest_head[j], w->rest_head[p]));
+		longest = fmaxf(longest, vec3_length(vec3_sub(w->rest_head[j], w->rest_head[p])));
+	}
+	if (!(sum_bind > 0.0) || !(sum_rest > 0.0))
+		return 1;
+	float k = (float)(sum_rest / sum_bind);
+	for (int j = 0; j < r->joint_count; j++) {
+		int p = r->joint[j].parent;
+		if (p < 0)
+			continue;
+		float bind = k * vec3_length(vec3_sub(r->joint[j].head, r->joint[p].head));
+		float rest = vec3_length(vec3_sub(w->rest_head[j], w->rest_head[p]));
+		if (fabsf(bind - rest) > 0.1f * longest)
+			return 0;
+	}
+	return 1;
+}
+
+static void take_rest_pose(import_walk *w)
+{
+	rig_scene *r = w->out;
+	r->rest_posed = !bind_is_a_pose(w);
+	if (!r->rest_posed)
+		return;
+	memcpy(r->mesh->pos, w->rest_pos, sizeof *w->rest_pos * (size_t)r->mesh->vert_count);
+	for (int j = 0; j < r->joint_count; j++)
+		r->joint[j].head = w->rest_head[j];
+}
+
+/* Parts without a skin move wholly with the joint above them, from where
+ * the nodes put them to where the skin's bind pose puts that joint (a
+ * helmet, a prop in a hand: the nodes may hold another pose). */
+static void attach_rigid(import_walk *w)
+{
+	rig_scene *r = w->out;
+	for (int k = 0; k < w->rigid_count; k++) {
+		const rigid_part *p = &w->rigid[k];
+		int j = rig_rest_joint_above(w->scene, r, p->node);
+		r->part_joint[p->part] = j;
+		if (j < 0)
+			continue;
+		for (int v = p->first; v < p->first + p->count; v++) {
+			rig_add_influence(r, v, j, 1.0f);
+			if (!r->rest_posed)
+				r->mesh->pos[v] = transform_point(&w->rest_to_bind[j], r->mesh->pos[v]);
+		}
+		r->joint[j].weighted += p->count;
+	}
 }
 
 static skp_status group_missing(const rig_scene *r, const char *group, skp_error *err)
@@ -211,12 +310,26 @@ skp_status rig_import_as(const char *path, const char *hint, const char *group, 
 	if (!scene || !scene->mRootNode)
 		return skp_fail(err, SKP_ERR_SYNTAX, 0, "%s%s", aiGetErrorString(),
 				cap.limit ? " (the import's memory is capped: 1 GiB and 64 bytes a byte of the file)" : "");
-	import_walk w = { scene, group, out, err, 0 };
+	static import_walk w;
+	memset(&w, 0, sizeof w);
+	w.rest_pos = malloc(sizeof *w.rest_pos * SKP_MAX_VERTS);
+	if (!w.rest_pos) {
+		aiReleaseImport(scene);
+		return skp_fail(err, SKP_ERR_LIMIT, 0, "out of memory");
+	}
+	w.scene = scene;
+	w.group = group;
+	w.out = out;
+	w.err = err;
 	struct aiMatrix4x4 id;
 	aiIdentityMatrix4(&id);
 	skp_status rc = walk_node(&w, scene->mRootNode, &id);
-	if (rc == SKP_OK)
-		link_parents(scene->mRootNode, -1, out);
+	if (rc == SKP_OK) {
+		link_parents(scene, scene->mRootNode, -1, out);
+		take_rest_pose(&w);
+		attach_rigid(&w);
+	}
+	free(w.rest_pos);
 	aiReleaseImport(scene);
 	if (rc != SKP_OK)
 		return rc;

@@ -138,24 +138,19 @@ static int import_scene(const bind_args *a, const char *path, bound_body *body)
 	return 0;
 }
 
+/* Every unmapped joint, with the joint it moves with. */
 static void say_unmapped(const char *path, const char *skel_name)
 {
-	int shown = 0, count = 0;
+	int count = 0;
 	for (int j = 0; j < scene.joint_count; j++)
 		count += map.bone[j] < 0;
 	if (!count)
 		return;
 	fprintf(cli_note(), "%s: %d joints unmapped, moving with their nearest mapped parent:", path, count);
-	for (int j = 0; j < scene.joint_count; j++) {
-		if (map.bone[j] >= 0)
-			continue;
-		if (shown++ == 12) {
-			fprintf(cli_note(), " ...");
-			break;
-		}
-		fprintf(cli_note(), " %s->%s", scene.joint[j].name,
-			map.via[j] >= 0 ? scene.joint[map.via[j]].name : skel_name);
-	}
+	for (int j = 0; j < scene.joint_count; j++)
+		if (map.bone[j] < 0)
+			fprintf(cli_note(), " %s->%s", scene.joint[j].name,
+				map.via[j] >= 0 ? scene.joint[map.via[j]].name : skel_name);
 	fprintf(cli_note(), "\n");
 }
 
@@ -163,14 +158,20 @@ static void say_map(const char *path, const bound_body *body, int with_file)
 {
 	if (!map.mapped) {
 		fprintf(stderr, "%s: none of its %d joints is named as the built-in maps know (Rigify/Blender metarig, "
-			"Mixamo, MakeHuman default, Unreal, Daz, CMU):", path, scene.joint_count);
-		for (int j = 0; j < scene.joint_count && j < 24; j++)
+			"Mixamo, Unity/Mecanim, MakeHuman default, Unreal, Daz, 3ds Max Biped, CMU), nor are they shaped "
+			"like a biped's (two legs from the hips, two arms from the chest, a neck):", path,
+			scene.joint_count);
+		for (int j = 0; j < scene.joint_count; j++)
 			fprintf(stderr, " %s", scene.joint[j].name);
-		fprintf(stderr, "%s\n", scene.joint_count > 24 ? " ..." : "");
+		fprintf(stderr, "\n");
 		return;
 	}
-	fprintf(cli_note(), "%s: %d of %d joints mapped onto the skeleton (names: %s%s):", path, map.mapped,
-		scene.joint_count, rig_family_name(map.family), with_file ? ", and the joint map" : "");
+	if (map.family == RIG_FAMILY_SHAPE)
+		fprintf(cli_note(), "%s: %d of %d joints mapped onto the skeleton by the skeleton's shape (its names say "
+			"nothing)%s:", path, map.mapped, scene.joint_count, with_file ? ", and the joint map" : "");
+	else
+		fprintf(cli_note(), "%s: %d of %d joints mapped onto the skeleton (names: %s%s):", path, map.mapped,
+			scene.joint_count, rig_family_name(map.family), with_file ? ", and the joint map" : "");
 	for (int j = 0; j < scene.joint_count; j++)
 		if (map.bone[j] >= 0)
 			fprintf(cli_note(), " %s=%s", scene.joint[j].name, body->skel.bone[map.bone[j]].name);
@@ -277,7 +278,8 @@ static void pose_skeleton(const bind_args *a, const char *path, bound_body *body
 static int mesh_weights(const bind_args *a, const char *path, bound_body *body)
 {
 	rig_weights_info info;
-	rig_weights_to_skel(&scene, &map, &body->weights, &info);
+	rig_weights_to_skel(&scene, &map, &body->weights, &info, body->orphan);
+	body->has_orphans = 1;
 	body->automatic = 0;
 	fprintf(cli_note(), "%s: the mesh's own weights%s", path,
 		a->balance == 1 ? " (kept as they are: --balance is for computed weights)" : "");

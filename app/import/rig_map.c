@@ -3,6 +3,8 @@
 #include <math.h>
 #include <string.h>
 
+#include "rig_topology.h"
+
 static int depth_of(const rig_scene *r, int j)
 {
 	int d = 0;
@@ -40,6 +42,14 @@ static int named_joint(const rig_scene *r, const rig_map *m, rig_side side, rig_
 	return best;
 }
 
+static int child_count(const rig_scene *r, int j)
+{
+	int n = 0;
+	for (int c = 0; c < r->joint_count; c++)
+		n += r->joint[c].parent == j;
+	return n;
+}
+
 /* Longest chain of unsided joints below j. */
 static int unsided_height(const rig_scene *r, int j, int *next)
 {
@@ -67,12 +77,18 @@ static void find_trunk(const rig_scene *r, rig_map *m)
 	if (m->chest < 0)
 		m->chest = common_ancestor(r, named_joint(r, m, RIG_LEFT, RIG_UPPER_ARM),
 					   named_joint(r, m, RIG_RIGHT, RIG_UPPER_ARM));
-	if (m->head >= 0)
-		return;
-	for (int chest = m->chest, next; chest >= 0; chest = next) {
-		m->head = chest;
-		unsided_height(r, chest, &next);
+	/* no joint named head: the end of the unsided chain above the chest,
+	 * or where it branches into a face (3 children or more) */
+	for (int j = m->head < 0 ? m->chest : -1, next; j >= 0; j = next) {
+		m->head = j;
+		unsided_height(r, j, &next);
+		if (j != m->chest && child_count(r, j) >= 3)
+			break;
 	}
+	/* legs hung from a pelvis beside the spine (BCN_Epileptic's
+	 * LowerPelvis): the spine starts where both meet */
+	if (m->hips >= 0 && m->head >= 0 && !is_ancestor(r, m->hips, m->head))
+		m->hips = common_ancestor(r, m->hips, m->head);
 }
 
 /* Where each joint of the chain sits along it: 0 at its first, 0.5 at
@@ -200,6 +216,16 @@ int rig_map_part_joint(const rig_map *m, const rig_scene *r, rig_side side, rig_
 	return best;
 }
 
+/* Limbs (upper and lower part on one side) the names say. */
+static int named_limbs(const rig_scene *r, const rig_map *m)
+{
+	int n = 0;
+	for (int side = RIG_LEFT; side <= RIG_RIGHT; side++)
+		n += (named_joint(r, m, (rig_side)side, RIG_UPPER_ARM) >= 0 && named_joint(r, m, (rig_side)side, RIG_FOREARM) >= 0) +
+		     (named_joint(r, m, (rig_side)side, RIG_THIGH) >= 0 && named_joint(r, m, (rig_side)side, RIG_SHIN) >= 0);
+	return n;
+}
+
 skp_status rig_map_joints(const rig_scene *r, const skel *s, const skel_pose *p,
 			  const rig_map_file *file, rig_map *out, skp_error *err)
 {
@@ -209,6 +235,8 @@ skp_status rig_map_joints(const rig_scene *r, const skel *s, const skel_pose *p,
 		out->bone[j] = -1;
 		rig_name_parse(r->joint[j].name, &out->name[j]);
 	}
+	if (named_limbs(r, out) < 2)
+		rig_topology_names(r, out->name);
 	find_trunk(r, out);
 	map_spine(r, p, out);
 	map_limbs(r, out);

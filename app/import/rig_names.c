@@ -3,10 +3,14 @@
 #include <ctype.h>
 #include <string.h>
 
-enum { RIGIFY = 1, MIXAMO = 2, MAKEHUMAN = 4, UNREAL = 8, DAZ = 16, CMU = 32, FAMILY_COUNT = 6 };
+enum {
+	RIGIFY = 1, MIXAMO = 2, MAKEHUMAN = 4, UNREAL = 8, DAZ = 16, CMU = 32, UNITY = 64, BIPED = 128,
+	JOINTS = 256, FAMILY_COUNT = 10
+};
 
 static const char *const family_names[FAMILY_COUNT] = {
-	"Rigify (Blender metarig)", "Mixamo", "MakeHuman default", "Unreal", "Daz", "CMU"
+	"Rigify (Blender metarig)", "Mixamo", "MakeHuman default", "Unreal", "Daz", "CMU", "Unity/Mecanim humanoid",
+	"3ds Max Biped", "joint names (hip, knee, ankle)", "none: the skeleton's shape",
 };
 
 /* Base names without separators: "upper_arm" and "UpperArm" both read upperarm. */
@@ -16,42 +20,50 @@ static const struct {
 	int families;
 } table[] = {
 	{ "head", RIG_HEAD, RIGIFY | MIXAMO | MAKEHUMAN | UNREAL | DAZ | CMU },
-	{ "shoulder", RIG_CLAVICLE, RIGIFY | MIXAMO },
-	{ "clavicle", RIG_CLAVICLE, MAKEHUMAN | UNREAL | CMU },
+	{ "shoulder", RIG_CLAVICLE, RIGIFY | MIXAMO | UNITY },
+	{ "clavicle", RIG_CLAVICLE, MAKEHUMAN | UNREAL | CMU | BIPED },
 	{ "collar", RIG_CLAVICLE, DAZ },
-	{ "upperarm", RIG_UPPER_ARM, RIGIFY | UNREAL },
+	{ "upperarm", RIG_UPPER_ARM, RIGIFY | UNREAL | UNITY | BIPED },
 	{ "arm", RIG_UPPER_ARM, MIXAMO },
 	{ "upperarm01", RIG_UPPER_ARM, MAKEHUMAN },
 	{ "shldr", RIG_UPPER_ARM, DAZ },
 	{ "shldrbend", RIG_UPPER_ARM, DAZ },
 	{ "humerus", RIG_UPPER_ARM, CMU },
-	{ "forearm", RIG_FOREARM, RIGIFY | MIXAMO | DAZ },
+	{ "forearm", RIG_FOREARM, RIGIFY | MIXAMO | DAZ | BIPED },
+	{ "elbow", RIG_FOREARM, JOINTS },
 	{ "forearmbend", RIG_FOREARM, DAZ },
-	{ "lowerarm", RIG_FOREARM, UNREAL },
+	{ "lowerarm", RIG_FOREARM, UNREAL | UNITY },
 	{ "lowerarm01", RIG_FOREARM, MAKEHUMAN },
 	{ "radius", RIG_FOREARM, CMU },
-	{ "hand", RIG_HAND, RIGIFY | MIXAMO | UNREAL | DAZ | CMU },
-	{ "wrist", RIG_HAND, MAKEHUMAN | CMU },
-	{ "thigh", RIG_THIGH, RIGIFY | UNREAL | DAZ },
+	{ "hand", RIG_HAND, RIGIFY | MIXAMO | UNREAL | DAZ | CMU | UNITY | BIPED },
+	{ "wrist", RIG_HAND, MAKEHUMAN | CMU | JOINTS },
+	{ "thigh", RIG_THIGH, RIGIFY | UNREAL | DAZ | BIPED },
+	{ "upperleg", RIG_THIGH, UNITY },
+	{ "hip", RIG_THIGH, JOINTS },
 	{ "thighbend", RIG_THIGH, DAZ },
 	{ "upleg", RIG_THIGH, MIXAMO },
 	{ "upperleg01", RIG_THIGH, MAKEHUMAN },
 	{ "femur", RIG_THIGH, CMU },
 	{ "shin", RIG_SHIN, RIGIFY | DAZ },
 	{ "leg", RIG_SHIN, MIXAMO },
-	{ "calf", RIG_SHIN, UNREAL },
+	{ "calf", RIG_SHIN, UNREAL | BIPED },
+	{ "lowerleg", RIG_SHIN, UNITY },
+	{ "knee", RIG_SHIN, JOINTS },
 	{ "lowerleg01", RIG_SHIN, MAKEHUMAN },
 	{ "tibia", RIG_SHIN, CMU },
-	{ "foot", RIG_FOOT, RIGIFY | MIXAMO | MAKEHUMAN | UNREAL | DAZ | CMU },
-	{ "toe", RIG_TOE, RIGIFY | DAZ },
+	{ "foot", RIG_FOOT, RIGIFY | MIXAMO | MAKEHUMAN | UNREAL | DAZ | CMU | UNITY | BIPED },
+	{ "ankle", RIG_FOOT, JOINTS },
+	{ "toe", RIG_TOE, RIGIFY | DAZ | JOINTS },
+	{ "toe0", RIG_TOE, BIPED },
 	{ "toebase", RIG_TOE, MIXAMO },
 	{ "ball", RIG_TOE, UNREAL },
-	{ "toes", RIG_TOE, CMU },
+	{ "toes", RIG_TOE, CMU | UNITY },
 };
 
 #define NAME_MAX_LEN 128
 
-/* Lower case, without a namespace (mixamorig:, Armature|) or DEF-/ORG-. */
+/* Lower case, without a namespace (mixamorig:, Armature|) or a rig prefix
+ * (DEF-, ORG-, Bip01, B_, CC_Base_). */
 static void normalise(const char *name, char *out)
 {
 	const char *s = name;
@@ -62,7 +74,8 @@ static void normalise(const char *name, char *out)
 	for (; n < NAME_MAX_LEN - 1 && s[n]; n++)
 		out[n] = (char)tolower((unsigned char)s[n]);
 	out[n] = '\0';
-	static const char *const prefixes[] = { "def-", "def_", "org-", "mch-" };
+	static const char *const prefixes[] = { "def-", "def_", "org-", "mch-", "bip001 ", "bip01 ", "bip001_", "bip01_",
+						"cc_base_", "b_", "jnt_", "bn_" };
 	for (size_t p = 0; p < sizeof prefixes / sizeof prefixes[0]; p++) {
 		size_t k = strlen(prefixes[p]);
 		if (strncmp(out, prefixes[p], k) == 0)

@@ -31,6 +31,9 @@ rig_slot rig_name_parse(const char *name, rig_name *out);
 /* The side the name carries, whatever its slot. */
 rig_side rig_name_side(const char *name);
 
+/* rig_name.rig of parts found from the skeleton's shape (rig_topology.h). */
+#define RIG_FAMILY_SHAPE (1 << 9)
+
 /* "Rigify", "Mixamo", ... for rig_name.rig. */
 const char *rig_family_name(int rig);
 

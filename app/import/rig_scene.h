@@ -34,13 +34,17 @@ typedef struct rig_scene {
 	char part[RIG_MAX_PARTS][RIG_NAME];
 	int part_used[RIG_MAX_PARTS];
 	int part_skinned[RIG_MAX_PARTS];
+	int part_joint[RIG_MAX_PARTS];  /* a part without a skin: the joint above it it follows, or -1 */
 	int welded;             /* vertices merged with an identical one */
+	int rest_posed;         /* the skin's bind pose was no pose of its skeleton: the nodes' rest pose taken */
 } rig_scene;
 
-/* Reads path: every triangle mesh (only those named group, when not NULL),
- * each moved by its node's transform into the scene's space, vertices at
- * the same place with the same weights welded, and the joints of their
- * skins. Fails with a message naming what went wrong: a file the library
+/* Reads path: every triangle mesh (only those named group, when not NULL)
+ * in the skin's bind pose, each moved by its node's transform (or, when
+ * that bind pose is no pose of its skeleton, in the nodes' rest pose:
+ * rig_rest.h), a part without a skin weighted wholly to the joint above
+ * it, vertices at the same place with the same weights welded, and the
+ * joints of their skins. Fails with a message naming what went wrong: a file the library
  * cannot read, no triangles, a group that is not there (listing the
  * meshes), too many vertices, joints or triangles. */
 skp_status rig_import(const char *path, const char *group, rig_scene *out, skp_error *err);

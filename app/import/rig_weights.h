@@ -13,6 +13,9 @@ typedef struct rig_weights_info {
 	int unweighted;         /* vertices without any weight: given to the root */
 } rig_weights_info;
 
-void rig_weights_to_skel(const rig_scene *r, const rig_map *m, skin_weights *out, rig_weights_info *info);
+/* orphan (may be NULL) gets 1 for each vertex whose weight all went to
+ * the root for want of a mapped joint (or that had none), else 0. */
+void rig_weights_to_skel(const rig_scene *r, const rig_map *m, skin_weights *out, rig_weights_info *info,
+			 uint8_t *orphan);
 
 #endif

@@ -69,6 +69,33 @@ static void test_mixamo_makehuman_unreal_daz_cmu(void **state)
 	check(c, sizeof c / sizeof c[0]);
 }
 
+static void test_unity_biped_and_joint_names(void **state)
+{
+	(void)state;
+	static const case_ c[] = {
+		/* Unity/Mecanim humanoid, in its spellings */
+		{ "LeftUpperLeg", RIG_THIGH, RIG_LEFT }, { "RightLowerLeg", RIG_SHIN, RIG_RIGHT },
+		{ "UpperLeg.L", RIG_THIGH, RIG_LEFT }, { "LowerLeg.R", RIG_SHIN, RIG_RIGHT },
+		{ "UpperArm_l", RIG_UPPER_ARM, RIG_LEFT }, { "LowerArm_r", RIG_FOREARM, RIG_RIGHT },
+		{ "LeftShoulder", RIG_CLAVICLE, RIG_LEFT }, { "RightToes", RIG_TOE, RIG_RIGHT },
+		{ "Foot.L", RIG_FOOT, RIG_LEFT }, { "Hand.R", RIG_HAND, RIG_RIGHT },
+		{ "Hips", RIG_NONE, RIG_CENTRE }, { "Chest", RIG_NONE, RIG_CENTRE }, { "UpperChest", RIG_NONE, RIG_CENTRE },
+		/* 3ds Max Biped, Character Creator, joint-named rigs (BCN_Epileptic.X) */
+		{ "Bip01 L UpperArm", RIG_UPPER_ARM, RIG_LEFT }, { "Bip01 R Calf", RIG_SHIN, RIG_RIGHT },
+		{ "Bip01 L Toe0", RIG_TOE, RIG_LEFT }, { "CC_Base_R_Thigh", RIG_THIGH, RIG_RIGHT },
+		{ "B_UpperArm_Left", RIG_UPPER_ARM, RIG_LEFT }, { "B_Hip_Right", RIG_THIGH, RIG_RIGHT },
+		{ "B_Knee_Left", RIG_SHIN, RIG_LEFT }, { "B_Ankle_Right", RIG_FOOT, RIG_RIGHT },
+		{ "elbow_l", RIG_FOREARM, RIG_LEFT }, { "B_Spine4", RIG_NONE, RIG_CENTRE },
+	};
+	check(c, sizeof c / sizeof c[0]);
+	rig_name n;
+	rig_name_parse("LeftUpperLeg", &n);
+	assert_string_equal(rig_family_name(n.rig), "Unity/Mecanim humanoid");
+	rig_name_parse("B_Knee_Left", &n);
+	assert_string_equal(rig_family_name(n.rig), "joint names (hip, knee, ankle)");
+	assert_string_equal(rig_family_name(RIG_FAMILY_SHAPE), "none: the skeleton's shape");
+}
+
 static void test_not_parts(void **state)
 {
 	(void)state;
@@ -107,6 +134,7 @@ int main(void)
 	const struct CMUnitTest tests[] = {
 		cmocka_unit_test(test_rigify),
 		cmocka_unit_test(test_mixamo_makehuman_unreal_daz_cmu),
+		cmocka_unit_test(test_unity_biped_and_joint_names),
 		cmocka_unit_test(test_not_parts),
 		cmocka_unit_test(test_families),
 	};
