@@ -105,7 +105,7 @@ static skp_status place_vertices(import_walk *w, const struct aiMesh *am, const 
 		m->pos[base + (int)v] = w->rest_pos[base + (int)v] = transform_point(node_m, vec3_make(p->x, p->y, p->z));
 		w->out->infl_count[base + (int)v] = 0;
 	}
-	if (!am->mNumBones)
+	if (!am->mNumBones || !am->mNumVertices)
 		return SKP_OK;
 	float *scratch = malloc(sizeof *scratch * am->mNumVertices);
 	if (!scratch)
