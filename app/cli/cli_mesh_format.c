@@ -1,10 +1,10 @@
 #include "cli_mesh_format.h"
 
-#include "cli_quiet.h"
-
 #include <stdio.h>
 #include <string.h>
 #include <strings.h>
+
+#include "cli_quiet.h"
 
 mesh_format cli_mesh_format(const char *path)
 {
