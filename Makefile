@@ -88,6 +88,8 @@ IMPORT_LIB   := $(OUT)/libskp_import.a
 PLAT_LIB     := $(OUT)/libskp_platform.a
 SKINTOOL     := $(OUT)/skintool
 SKINPLAY     := $(OUT)/skinplay
+# the man pages (made by the board's programs: see $(RUN_DIR) below)
+MAN_STAMP    := $(OUT)/man/.made
 
 UNIT_SRC    := $(wildcard tests/unit/test_*.c tests/integration/test_*.c)
 TESTLIB_SRC := $(wildcard tests/support/*.c)
@@ -113,7 +115,7 @@ CMOCKA_CFLAGS = $(shell $(PKG_CONFIG) --cflags cmocka 2>/dev/null)
 CMOCKA_LIBS   = $(shell $(PKG_CONFIG) --libs cmocka 2>/dev/null || echo -lcmocka)
 
 .PHONY: all test run size install clean help check-core check-layers check-lean
-all: $(SKINTOOL) $(SKINPLAY) $(DEMO_AMC) $(SHOW_TOUR)
+all: $(SKINTOOL) $(SKINPLAY) $(DEMO_AMC) $(SHOW_TOUR) $(MAN_STAMP)
 
 $(OUT)/assets/demo_motion: assets/demo_motion.c
 	@mkdir -p $(@D)
@@ -248,7 +250,6 @@ NM         ?= nm
 # cross build): the demo image and the man pages are made by them.
 RUN_DIR    := $(OUT)/run
 DEMO_SKN   := $(OUT)/assets/demo.skn
-MAN_PAGES  := $(OUT)/man/skinplay.1 $(OUT)/man/skintool.1
 
 # kept (not deleted as intermediates: no "rm" line after an install)
 .SECONDARY: $(RUN_DIR)/skinplay $(RUN_DIR)/skintool
@@ -261,23 +262,15 @@ $(RUN_DIR)/%: $(OUT)/%
 $(DEMO_SKN): $(RUN_DIR)/skintool $(SHOW_ASF) $(SHOW_CLIPS) $(SHOW_MESH) $(SHOW_RIG) assets/makehuman/default_weights.mhw
 	@$< pack -q $(SHOW_ASF) $(SHOW_CLIPS) $(SHOW_BODY) --sequence 0 -o $@ >/dev/null
 
-# man pages from --help and --version (help2man), so they never drift;
-# skintool's gets a COMMANDS section from each command's own --help
-MAN_EXTRA_skintool := $(OUT)/man/skintool-commands.h2m
-.SECONDEXPANSION:
-$(OUT)/man/%.1: $(RUN_DIR)/% platform/debian/%.h2m $$(MAN_EXTRA_$$*)
-	@mkdir -p $(@D)
-	@help2man --no-info --section=1 --include=platform/debian/$*.h2m \
-	  $(addprefix --include=,$(MAN_EXTRA_$*)) --output=$@ $<
-$(OUT)/man/skintool-commands.h2m: $(RUN_DIR)/skintool
-	@mkdir -p $(@D)
-	@{ echo '[COMMANDS]'; \
-	  for c in $$($< --help | sed -n 's/^  \([a-z-]*\)  .*/\1/p'); do \
-	    printf '.SS "skintool %s"\n.nf\n' "$$c"; \
-	    $< $$c --help | sed 's/\\/\\e/g; s/^[.'"'"']/\\\&&/'; echo '.fi'; \
-	  done; } > $@.tmp && mv $@.tmp $@
+# The man pages, from --help (help2man: platform/debian/man_pages.sh), so
+# they never drift from the code: skinplay.1, skintool.1 and one page per
+# skintool command (skintool-pack.1, ...). Made again whenever a program is.
+$(MAN_STAMP): $(RUN_DIR)/skinplay $(RUN_DIR)/skintool platform/debian/man_pages.sh $(wildcard platform/debian/*.h2m)
+	@rm -f $(OUT)/man/*.1
+	@sh platform/debian/man_pages.sh $(OUT)/man $(VERSION) $(abspath $(RUN_DIR))
+	@touch $@
 
-install: all $(DEMO_SKN) $(MAN_PAGES)
+install: all $(DEMO_SKN)
 	@install -d $(DESTDIR)$(BINDIR) $(DESTDIR)$(DATADIR)/board/$(BOARD) $(DESTDIR)$(MANDIR) \
 	  $(DESTDIR)$(UNITDIR) $(DESTDIR)$(UDEVDIR) $(DESTDIR)/etc/skinplay
 	@install -m 755 -s --strip-program=$(STRIP) $(SKINTOOL) $(SKINPLAY) $(DESTDIR)$(BINDIR)/
@@ -285,7 +278,7 @@ install: all $(DEMO_SKN) $(MAN_PAGES)
 	@install -m 644 board/$(BOARD)/board.ini $(DESTDIR)$(DATADIR)/board/$(BOARD)/
 	@for f in $(wildcard board/$(BOARD)/README.md); do \
 	  install -D -m 644 $$f $(DESTDIR)$(PREFIX)/share/doc/skinplay/README.$(BOARD).md; done
-	@for m in $(MAN_PAGES); do gzip -9n < $$m > $(DESTDIR)$(MANDIR)/$$(basename $$m).gz; done
+	@for m in $(OUT)/man/*.1; do gzip -9n < $$m > $(DESTDIR)$(MANDIR)/$$(basename $$m).gz; done
 	@sed 's|@PREFIX@|$(PREFIX)|g' platform/debian/skinplay.service > $(DESTDIR)$(UNITDIR)/skinplay.service
 	@install -m 644 platform/debian/60-skinplay-gpio.rules $(DESTDIR)$(UDEVDIR)/
 	@# the board config stays when there is one: it is the integrator's
@@ -298,7 +291,7 @@ clean:
 	rm -rf $(BUILD)
 
 help:
-	@echo "make [BOARD=$(BOARD)]   build $(SKINTOOL) and $(SKINPLAY)"
+	@echo "make [BOARD=$(BOARD)]   build $(SKINTOOL), $(SKINPLAY) and the man pages in $(OUT)/man"
 	@echo "make test               build and run every test (SANITIZE=1 for ASan+UBSan)"
 	@echo "make run                play the default show (assets/: MakeHuman body, CMU clips, the tour)"
 	@echo "make size               code size and static RAM of skinplay"

@@ -186,7 +186,7 @@ if [ "$deb" = 1 ]; then
 		test -f /usr/share/man/man1/skinplay.1.gz && echo 'package: played the demo to its end'"
 	step package "package-tools" "DEBIAN_FRONTEND=noninteractive apt-get install -y -qq ./root/$tools >/dev/null &&
 		skintool info /usr/share/skinplay/demo.skn | tail -n 1 &&
-		test -f /usr/share/man/man1/skintool.1.gz &&
+		test -f /usr/share/man/man1/skintool.1.gz && test -f /usr/share/man/man1/skintool-pack.1.gz &&
 		echo \"package: \$(dpkg-query -W -f='\${Package} \${Version}' skinplay-tools) installed; info: all good\""
 	# left behind: a path the purge did not take back that no installed package
 	# owns (what apt pulled in, adduser say, stays installed and owns its

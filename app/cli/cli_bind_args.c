@@ -30,7 +30,7 @@ const cli_opt bind_opts[] = {
 	{ "group", 0, "NAME", OPT_GROUP, "bind only the OBJ group/object or glTF mesh NAME (default: the body)" },
 	{ "fit", 0, NULL, OPT_FIT, "always scale and move the mesh onto the skeleton" },
 	{ "no-fit", 0, NULL, OPT_NO_FIT, "keep the mesh's size and place (default: fit when they differ)" },
-	{ "bind-pose", 0, "P.amc[:F]", OPT_BIND_POSE, "bind in frame F of P, or 'rest' (default: the mesh's own pose)" },
+	{ "bind-pose", 0, "P.amc[:F]|rest", OPT_BIND_POSE, "bind in frame F of P (its first without :F) or the rest pose (default: the mesh's own pose)" },
 	{ "weights", 0, "W.csv|mesh", OPT_WEIGHTS, "read the weights, or keep a rigged mesh's own (default: computed)" },
 	{ "joint-map", 0, "FILE", OPT_JOINT_MAP, "a rigged mesh's joints onto skeleton bones (JOINT = BONE lines)" },
 	{ "rig", 0, "FILE.mhskel", OPT_RIG, "the OBJ's MakeHuman skeleton, with the weights file it names" },

@@ -171,6 +171,25 @@ static void help_table(const cli_opt *t, FILE *f)
 	}
 }
 
+void cli_help_exit(const char *exit2, FILE *f)
+{
+	fprintf(f, "Exit status:\n  0  done\n"
+		"  1  bad input, bad usage or a failure (the message names the file, line, block or option)\n");
+	if (exit2)
+		fprintf(f, "  2  %s\n", exit2);
+}
+
+/* Each example's line indented under what it does: help2man keeps them
+ * as separate paragraphs. */
+static void help_examples(const cli_example *e, FILE *f)
+{
+	if (!e || !e->what)
+		return;
+	fprintf(f, "\nExamples:\n");
+	for (; e->what; e++)
+		fprintf(f, "  %s:\n      %s\n", e->what, e->line);
+}
+
 void cli_help(const cli_command *c, FILE *f)
 {
 	fprintf(f, "Usage: %s %s\n", c->prog, c->usage);
@@ -182,7 +201,9 @@ void cli_help(const cli_command *c, FILE *f)
 	help_table(common, f);
 	if (c->more)
 		fprintf(f, "\n%s", c->more);
-	fprintf(f, "\n" CLI_EXIT_CODES);
+	fprintf(f, "\n");
+	cli_help_exit(c->exit2, f);
+	help_examples(c->examples, f);
 }
 
 int cli_missing(const char *prog, const char *what)

@@ -3,8 +3,10 @@
  * order, `--` ends the options; every command answers --help (its usage,
  * what it does and each option, on stdout, exit 0) and --version. A
  * command is a table: its options (with a one-line help each), a handler
- * for an option's value and one for the files. help2man turns the same
- * text into the man pages. */
+ * for an option's value and one for the files, its exit statuses and
+ * examples. help2man turns the same text into the man pages
+ * (platform/debian/man_pages.sh), so the layout below is the one help2man
+ * reads: "Options:", "Exit status:" and "Examples:" headings. */
 #ifndef CLI_OPTS_H
 #define CLI_OPTS_H
 
@@ -20,6 +22,12 @@ typedef struct cli_opt {
 
 #define CLI_MAX_TABLES 8
 
+/* One example of --help (help2man puts them in the man page's EXAMPLES). */
+typedef struct cli_example {
+	const char *what;       /* "the demo on the screen"; NULL ends a list */
+	const char *line;       /* the command line */
+} cli_example;
+
 typedef struct cli_command {
 	const char *prog;       /* "skintool bind": in messages and the help */
 	const char *usage;      /* after "usage: PROG " (several lines may follow "\n") */
@@ -29,7 +37,9 @@ typedef struct cli_command {
 	int (*take)(void *ctx, int id, const char *value);
 	/* a file or other word that is not an option: 0, or -1 after reporting */
 	int (*positional)(void *ctx, const char *arg);
-	const char *more;       /* text after the options (exit codes, examples), or NULL */
+	const char *more;       /* a paragraph after the options, or NULL */
+	const char *exit2;      /* what exit status 2 means, or NULL: the command has none */
+	const cli_example *examples; /* ended by a NULL what; NULL: none */
 } cli_command;
 
 /* Parses argv[first..argc). Returns 0, 1 when --help or --version was
@@ -54,9 +64,8 @@ int cli_bad_choice(const char *prog, const char *opt, const char *value, const c
 /* Index of value among choices, or cli_bad_choice's -1. */
 int cli_choice(const char *prog, const char *opt, const char *value, const char *const *choices, int n);
 
-/* The exit codes both programs document. */
-#define CLI_EXIT_CODES \
-	"Exit status: 0 done; 1 bad input, bad usage or a failure (the message names the file, line, block\n" \
-	"or option); 2 a damaged image (skintool info; skintool repair: blocks beyond repair).\n"
+/* The "Exit status:" list of --help: 0 and 1 as every command has them,
+ * then 2 when exit2 says what it means (help2man: the EXIT STATUS section). */
+void cli_help_exit(const char *exit2, FILE *f);
 
 #endif

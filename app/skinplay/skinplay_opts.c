@@ -250,10 +250,17 @@ static const cli_command play_command = {
 		 "algorithm, pause, restart and change clips.",
 	.opts = { play_opts_table, bind_opts },
 	.take = take,
-	.more = "Without --mesh the generated body is used; the bind options apply to --mesh.\n"
-		"Examples:\n"
-		"  skinplay --image /usr/share/skinplay/demo.skn\n"
-		"  skinplay --bvh 131_01.bvh --platform surfaceless --algo compare --output out --every 60\n",
+	.more = "Without --mesh the generated body is used; the bind options apply to --mesh.\n",
+	.exit2 = "headless, no clip of the show could play (the bind pose was rendered)",
+	.examples = (const cli_example[]){
+		{ "The packaged demo on the screen",
+		  "skinplay --image /usr/share/skinplay/demo.skn" },
+		{ "A kiosk: the board's config, its image slots and buttons",
+		  "skinplay --board /etc/skinplay/board.ini" },
+		{ "A BVH headless, LBS beside DQBS, every 60th frame into out/",
+		  "skinplay --bvh 131_01.bvh --platform surfaceless --algo compare -o out --every 60" },
+		{ NULL, NULL },
+	},
 };
 
 int play_parse(play_opts *o, int argc, char **argv)

@@ -32,17 +32,19 @@ static const command commands[] = {
 
 static void usage(FILE *to)
 {
-	fprintf(to, "Usage: skintool COMMAND [OPTION]... [FILE]...\n"
+	fprintf(to, "Usage: skintool [-q] COMMAND [OPTION]... [FILE]...\n"
 		"The host tool of skinplay: reads motion (ASF/AMC, BVH) and bodies (OBJ; rigged glTF, FBX,\n"
 		"COLLADA), binds, skins, measures, compares and packs images for the device.\n\nCommands:\n");
 	for (size_t i = 0; i < sizeof commands / sizeof commands[0]; i++)
 		fprintf(to, "  %-13s %s\n", commands[i].name, commands[i].what);
-	fprintf(to, "\n'skintool COMMAND --help' describes a command and its options. Options take their\n"
-		"value as --opt=value or --opt value; files and options come in any order.\n\n"
-		"Options (before the command; each command also takes -q and --help after its name):\n"
+	fprintf(to, "\n'skintool COMMAND --help' describes a command and its options (the man page skintool-COMMAND\n"
+		"holds the same). Options take their value as --opt=value or --opt value; files and options come\n"
+		"in any order. The options below go before the command or after it.\n\n"
+		"Options:\n"
 		"  -h, --help       show this help and exit\n"
 		"  -q, --quiet      only errors and warnings on stderr: no notes, progress or summary lines\n"
-		"      --version    show the version, revision, board and backends, and exit\n\n" CLI_EXIT_CODES);
+		"      --version    show the version, revision, board and backends, and exit\n\n");
+	cli_help_exit("a damaged image (info), blocks beyond repair (repair)", to);
 }
 
 static int is_quiet(const char *arg)

@@ -321,6 +321,13 @@ static const cli_command bench_command = {
 	.opts = { bench_opts, tool_opt_skeleton, tool_opt_motion, tool_opt_mesh, bind_opts },
 	.take = bench_take,
 	.positional = tool_files_skel_mesh,
+	.examples = (const cli_example[]){
+		{ "Every kernel on 1M synthetic vertices, on two threads",
+		  "skintool bench --threads=2" },
+		{ "The kernels on your own body, posed in a clip's first frame",
+		  "skintool bench 02.asf body.obj --motion=02_01.amc" },
+		{ NULL, NULL },
+	},
 };
 
 static int parse(int argc, char **argv, bench_args *a)

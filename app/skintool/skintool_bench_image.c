@@ -186,6 +186,11 @@ static const cli_command bench_image_command = {
 	.opts = { bench_image_opts },
 	.take = bi_take,
 	.positional = bi_file,
+	.examples = (const cli_example[]){
+		{ "An image's time to the first frame, and its bytes per frame against the AMC text",
+		  "skintool bench-image show.skn --amc=02_01.amc" },
+		{ NULL, NULL },
+	},
 };
 
 int cmd_bench_image(int argc, char **argv)

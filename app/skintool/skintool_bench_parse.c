@@ -56,6 +56,11 @@ static const cli_command bench_parse_command = {
 	.opts = { bench_parse_opts },
 	.take = bp_take,
 	.positional = bp_file,
+	.examples = (const cli_example[]){
+		{ "AMC against the same motion as BVH",
+		  "skintool bench-parse 135.asf 135_06.amc 135_06.bvh --runs=15" },
+		{ NULL, NULL },
+	},
 };
 
 typedef struct parse_figure {

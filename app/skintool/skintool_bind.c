@@ -142,9 +142,15 @@ static const cli_command bind_command = {
 	.opts = { tool_opt_skeleton, tool_opt_mesh, tool_opt_output, bind_cmd_opts, bind_opts },
 	.take = bind_take,
 	.positional = tool_files_skel_mesh,
-	.more = "Examples:\n  skintool bind 02.asf base.obj -o w.csv\n"
-		"  skintool bind 02.asf male_base_mesh.glb --weights=mesh -o w.csv\n"
-		"  skintool bind 02.asf base.obj --rig=default.mhskel --weights=mesh -o w.csv\n",
+	.examples = (const cli_example[]){
+		{ "The paper's weights on an OBJ, every choice said on stderr",
+		  "skintool bind 02.asf base.obj -o w.csv" },
+		{ "A rigged glTF body with the artist's weights",
+		  "skintool bind 02.asf male_base_mesh.glb --weights=mesh -o w.csv" },
+		{ "A MakeHuman export with its own rig",
+		  "skintool bind 02.asf base.obj --rig=default.mhskel --weights=mesh -o w.csv" },
+		{ NULL, NULL },
+	},
 };
 
 int cmd_bind(int argc, char **argv)

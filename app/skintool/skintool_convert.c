@@ -76,6 +76,13 @@ static const cli_command convert_command = {
 	.opts = { convert_opts },
 	.take = convert_take,
 	.positional = convert_file,
+	.examples = (const cli_example[]){
+		{ "A CMU clip as BVH, its Frame Time from the CMU rate",
+		  "skintool convert 02.asf 02_01.amc -o 02_01.bvh" },
+		{ "A BVH as ASF and AMC (writes walk.asf and walk.amc)",
+		  "skintool convert 131_01.bvh -o walk.asf" },
+		{ NULL, NULL },
+	},
 };
 
 static int parse(convert_args *a, int argc, char **argv)

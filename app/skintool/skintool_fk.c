@@ -108,6 +108,13 @@ static const cli_command fk_command = {
 	.opts = { fk_opts },
 	.take = fk_take,
 	.positional = fk_file,
+	.examples = (const cli_example[]){
+		{ "The joints of frame 1 of a CMU walk",
+		  "skintool fk 02.asf 02_01.amc --frame=1" },
+		{ "The pose skinplay shows 0.5 s and 1 s into a BVH clip",
+		  "skintool fk 131_01.bvh --time=0.5 --time=1" },
+		{ NULL, NULL },
+	},
 };
 
 static int print_frames(const skel *s, const char *amc, long only)

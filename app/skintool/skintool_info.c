@@ -184,9 +184,14 @@ static const cli_command info_command = {
 	.prog = "skintool info",
 	.usage = "SHOW.skn",
 	.about = "Prints an image's header (its id), sections and clips, accepts its body and clips as skinplay\n"
-		 "would, and checks every block (CRC, id, parity, the copies) and the digest. Exit status 2 when a\n"
-		 "block is bad, the digest does not match, or the body or a clip is refused (`skintool repair`\n"
+		 "would, and checks every block (CRC, id, parity, the copies) and the digest (`skintool repair`\n"
 		 "rebuilds what parity and the copies allow).",
+	.exit2 = "a damaged image: a bad block, a digest that does not match, the body or a clip refused",
+	.examples = (const cli_example[]){
+		{ "Check an image before it goes to the kiosk",
+		  "skintool info show.skn" },
+		{ NULL, NULL },
+	},
 };
 
 int cmd_info(int argc, char **argv)

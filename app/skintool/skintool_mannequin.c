@@ -51,6 +51,11 @@ static const cli_command manq_command = {
 	.opts = { manq_opts },
 	.take = manq_take,
 	.positional = manq_file,
+	.examples = (const cli_example[]){
+		{ "The generated body of a CMU skeleton",
+		  "skintool mannequin 02.asf -o body.obj" },
+		{ NULL, NULL },
+	},
 };
 
 static int parse_args(int argc, char **argv, manq_args *a)

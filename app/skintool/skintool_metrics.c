@@ -111,6 +111,13 @@ static const cli_command metrics_command = {
 	.opts = { tool_opt_skeleton, tool_opt_motion, tool_opt_mesh, metrics_cmd_opts, bind_opts },
 	.take = metrics_take,
 	.positional = tool_files_skel_motion_mesh,
+	.examples = (const cli_example[]){
+		{ "Volume and radius ratios of every frame, LBS and DQBS",
+		  "skintool metrics 02.asf 02_01.amc body.obj --algo=lbs,dqbs" },
+		{ "The twist scene at 90 degrees",
+		  "skintool metrics --scene=twist --angle=90" },
+		{ NULL, NULL },
+	},
 };
 
 static int check_args(metrics_args *a)

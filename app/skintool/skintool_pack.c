@@ -134,6 +134,13 @@ static const cli_command pack_command = {
 	.opts = { tool_opt_skeleton, pack_motion_opt, tool_opt_mesh, tool_opt_output, pack_cmd_opts, bind_opts },
 	.take = pack_take,
 	.positional = pack_file,
+	.examples = (const cli_example[]){
+		{ "Two clips on the generated body",
+		  "skintool pack 02.asf 02_01.amc 02_02.amc -o show.skn" },
+		{ "A rigged body with its own weights",
+		  "skintool pack 02.asf 02_01.amc --mesh=male_base_mesh.glb --weights=mesh -o show.skn" },
+		{ NULL, NULL },
+	},
 };
 
 static int pack_parse(pack_args *p, int argc, char **argv)

@@ -80,9 +80,14 @@ static int rewrite(show_image *s, cli_image_out *out)
 static const cli_command repair_command = {
 	.prog = "skintool repair",
 	.usage = "SHOW.skn",
-	.about = "Rebuilds an image's bad blocks from its parity and replaces the file (written under a\n"
-		 "temporary name, synced and renamed). Exit status 2, the file untouched, when a block is\n"
-		 "beyond repair.",
+	.about = "Rebuilds an image's bad blocks from its parity and copies and replaces the file (written\n"
+		 "under a temporary name, synced and renamed); with a block beyond repair the file is left as it was.",
+	.exit2 = "blocks beyond repair: the file is left as it was",
+	.examples = (const cli_example[]){
+		{ "Rebuild the bad blocks of an image in place",
+		  "skintool repair show.skn" },
+		{ NULL, NULL },
+	},
 };
 
 int cmd_repair(int argc, char **argv)

@@ -49,6 +49,11 @@ static const cli_command skin_command = {
 	.opts = { tool_opt_skeleton, tool_opt_motion, tool_opt_mesh, tool_opt_output, skin_cmd_opts, bind_opts },
 	.take = skin_take,
 	.positional = tool_files_skel_motion_mesh,
+	.examples = (const cli_example[]){
+		{ "Frame 100 of a walk skinned with DQBS, as OBJ",
+		  "skintool skin 02.asf 02_01.amc body.obj --frame=100 --algo=dqbs -o pose.obj" },
+		{ NULL, NULL },
+	},
 };
 
 static int parse_args(skin_args *a, int argc, char **argv)

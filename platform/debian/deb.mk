@@ -34,7 +34,7 @@ deb-tree:
 	  UNITDIR=$(DEB_LIBDIR)/systemd/system UDEVDIR=$(DEB_LIBDIR)/udev/rules.d >/dev/null
 	@install -d $(DEB_STAGE)/skinplay-tools/usr/bin $(DEB_STAGE)/skinplay-tools/usr/share/man/man1
 	@mv $(DEB_STAGE)/skinplay/usr/bin/skintool $(DEB_STAGE)/skinplay-tools/usr/bin/
-	@mv $(DEB_STAGE)/skinplay/usr/share/man/man1/skintool.1.gz $(DEB_STAGE)/skinplay-tools/usr/share/man/man1/
+	@mv $(DEB_STAGE)/skinplay/usr/share/man/man1/skintool*.1.gz $(DEB_STAGE)/skinplay-tools/usr/share/man/man1/
 	@install -m 755 platform/debian/postinst platform/debian/prerm platform/debian/postrm -D -t $(DEB_STAGE)/skinplay/DEBIAN/
 	@install -m 644 platform/debian/conffiles $(DEB_STAGE)/skinplay/DEBIAN/
 	@# dpkg-shlibdeps reads debian/control in the directory it runs in

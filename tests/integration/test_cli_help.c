@@ -36,7 +36,7 @@ static void expect_help(const char *tool, const char *cmd)
 	snprintf(want, sizeof want, "Usage: %s%s%s ", tool, cmd[0] ? " " : "", cmd);
 	assert_int_equal(run_tool(tool, args), 0);
 	char *out = slurp("out.txt"), *err = slurp("err.txt");
-	if (strncmp(out, want, strlen(want)) != 0 || !strstr(out, "Exit status: 0") || err[0])
+	if (strncmp(out, want, strlen(want)) != 0 || !strstr(out, "\nExit status:\n  0  done\n") || err[0])
 		fail_msg("%s %s --help: stdout '%.80s...', stderr '%s'", tool, cmd, out, err);
 	/* every option listed has its line of help */
 	assert_non_null(strstr(out, "  -h, --help "));
@@ -62,7 +62,7 @@ static void test_every_command_has_help(void **state)
 	int commands = 0;
 	for (char *line = strtok(list, "\n"); line; line = strtok(NULL, "\n")) {
 		char name[32];
-		if (line[0] == ' ' && line[1] == ' ' && line[2] != ' ' && line[2] != '-' &&
+		if (line[0] == ' ' && line[1] == ' ' && line[2] >= 'a' && line[2] <= 'z' &&
 		    sscanf(line, " %31s", name) == 1) {
 			char cmd[64];
 			snprintf(cmd, sizeof cmd, "%s", name);
