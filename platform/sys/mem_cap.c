@@ -12,6 +12,7 @@
 #endif
 #endif
 
+#ifndef MEM_CAP_OFF
 /* Address space in use now: /proc/self/statm's first field, in pages. */
 static size_t in_use(void)
 {
@@ -24,6 +25,7 @@ static size_t in_use(void)
 	}
 	return (size_t)pages * (size_t)sysconf(_SC_PAGESIZE);
 }
+#endif
 
 int mem_cap_set(mem_cap *c, size_t budget)
 {
