@@ -2,7 +2,7 @@
 #   make fuzz [SECONDS=600]   libFuzzer (clang) on every tests/fuzz/fuzz_*.c
 #   make fuzz-smoke           the same for 10 s each (CI, when clang is there)
 #   make lint                 cppcheck and clang-tidy over app/ and platform/
-#   make soak [SOAK_FRAMES=1000000]   a long headless run of skinplay
+#   make soak [SOAK_FRAMES=1000000]   a long headless run of skinplay, then a week of faults
 #   make import-sweep         every assimp-testmodels sample through skintool bind (ASan+UBSan)
 # None of them is part of `make test`; the fuzzers' regression inputs are
 # (tests/unit/test_fuzz_regressions.c).
@@ -80,11 +80,16 @@ import-sweep:
 	@sh tests/import_sweep.sh $(BUILD)/san/skintool $(SKP_SHARED)/data/mocap/cmu/02.asf
 
 # Soak: tests/soak.sh on the host build (not part of `make test`: about an
-# hour for the default million frames at 160x90).
+# hour for the default million frames at 160x90), then tests/soak_week.sh:
+# a week of the show's clock through rotating faults, nothing drawn (a
+# 7 Hz virtual display; a few minutes).
 SOAK_FRAMES ?= 1000000
 SOAK_EVERY  ?= 5
+SOAK_HZ     ?= 7
+SOAK_DAYS   ?= 7
 soak: all
 	sh tests/soak.sh $(OUT) $(SOAK_FRAMES) $(SOAK_EVERY)
+	sh tests/soak_week.sh $(OUT) $(SOAK_HZ) $(SOAK_DAYS)
 
 # Static analysis (cppcheck and clang-tidy are Debian packages: cppcheck,
 # clang-tidy). Suppressions, each with its reason: tests/lint/*.supp.

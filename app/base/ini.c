@@ -32,12 +32,19 @@ void ini_init(ini_reader *r, skp_reader rd)
 {
 	text_lines_init(&r->lines, rd);
 	r->section[0] = '\0';
+	r->stuck = 0;
+}
+
+int ini_can_go_on(const ini_reader *r)
+{
+	return !r->stuck;
 }
 
 static int header(ini_reader *r, char *s, skp_error *err)
 {
 	long ln = r->lines.line_no;
 	size_t n = strlen(s);
+	memcpy(r->section, "?", 2);   /* until this header is known good */
 	if (s[n - 1] != ']')
 		return -(int)skp_fail(err, SKP_ERR_SYNTAX, ln, "expected ']' to close the section header");
 	s[n - 1] = '\0';
@@ -56,6 +63,9 @@ int ini_next(ini_reader *r, ini_entry *e, skp_error *err)
 	char *line;
 	int rc;
 	while ((rc = text_lines_next(&r->lines, &line, NULL, err)) > 0) {
+		/* a byte order mark from a Windows editor */
+		if (r->lines.line_no == 1 && !strncmp(line, "\xef\xbb\xbf", 3))
+			line += 3;
 		cut_comment(line);
 		char *s = trim(line);
 		if (!*s)
@@ -77,5 +87,6 @@ int ini_next(ini_reader *r, ini_entry *e, skp_error *err)
 		e->line = r->lines.line_no;
 		return 1;
 	}
+	r->stuck = rc < 0;   /* text_lines cannot go past a long line or a NUL */
 	return rc;
 }

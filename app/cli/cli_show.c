@@ -1,5 +1,6 @@
 #include "cli_show.h"
 
+#include <errno.h>
 #include <stdio.h>
 #include <string.h>
 
@@ -52,6 +53,10 @@ int show_image_open(show_image *s, const char *path, skp_error *err)
 {
 	s->path = path;
 	int rc = show_storage_open(&s->sf, path);
+	if (rc == -EINVAL) {
+		skp_fail(err, SKP_ERR_IO, 0, "%s, not an image file or a partition", storage_file_kind(path));
+		return -1;
+	}
 	if (rc < 0) {
 		skp_fail(err, SKP_ERR_IO, 0, "cannot open: %s", strerror(-rc));
 		return -1;
@@ -185,6 +190,7 @@ int show_open(show_source *s, const char *const *paths, int n, bound_body *body)
 	memset(s, 0, sizeof *s);
 	s->clip = -1;
 	s->body = body;
+	skp_ratelimit_init(&s->pass_said, SKP_RATELIMIT_HOUR);
 	s->slot_count = n < SHOW_MAX_SLOTS ? n : SHOW_MAX_SLOTS;
 	int k = by_sequence(s, paths, n, order);
 	play_slot_checks checks = { s, slot_accept, slot_damaged };
@@ -241,10 +247,16 @@ static void log_lost(void *ctx, long block, const char *why, long held)
 static void log_pass(void *ctx)
 {
 	show_source *s = ctx;
-	unsigned long rebuilt = s->slot[s->active].im.rebuilt - s->pass_rebuilt, lost = s->clip_src.pass_lost;
-	if (lost || rebuilt)
-		fprintf(stderr, "image: clip %s: %lu frame%s held over bad blocks, %lu block%s rebuilt this pass\n",
+	unsigned long rebuilt = s->slot[s->active].im.rebuilt - s->pass_rebuilt, lost = s->clip_src.pass_lost, held;
+	/* a short clip loops thousands of times an hour: the first such pass,
+	 * then one line an hour (with how many passes went unsaid) */
+	if ((lost || rebuilt) && skp_ratelimit_take(&s->pass_said, s->now, &held)) {
+		fprintf(stderr, "image: clip %s: %lu frame%s held over bad blocks, %lu block%s rebuilt this pass",
 			s->clip_src.player.c.name, lost, lost == 1 ? "" : "s", rebuilt, rebuilt == 1 ? "" : "s");
+		if (held)
+			fprintf(stderr, " (and %lu passes like it since the last line)", held);
+		fputc('\n', stderr);
+	}
 	s->pass_rebuilt = s->slot[s->active].im.rebuilt;
 }
 

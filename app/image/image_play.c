@@ -46,16 +46,19 @@ skp_status skp_player_open(skp_player *p, skp_image *im, int clip, skp_error *er
 	p->kept_uses = 0;
 	for (int k = 0; k < SKP_IMAGE_CACHE_BLOCKS; k++)
 		p->kept[k] = UINT32_MAX;
+	ring_clear(p);
 	skp_status rc = skp_image_load_quant(im, clip, p->qmin, p->qstep, err);
 	skp_player_seek(p, 0);
 	return rc;
 }
 
+/* The ring keeps its blocks (each slot knows which block it holds): a
+ * short clip looping, or a seek back into what was read, reads nothing
+ * again. */
 void skp_player_seek(skp_player *p, uint32_t index)
 {
 	p->next = index;
 	p->fetch = index / p->c.frames_per_block;
-	ring_clear(p);
 }
 
 /* Reads frame block b (clip-relative) into its ring slot: good when its

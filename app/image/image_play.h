@@ -47,7 +47,8 @@ typedef struct skp_player {
  * quantisation (a bad block there is an error: the clip cannot play). */
 skp_status skp_player_open(skp_player *p, skp_image *im, int clip, skp_error *err);
 
-/* Moves the play head to frame index (0 = the clip's first frame). */
+/* Moves the play head to frame index (0 = the clip's first frame); the
+ * blocks in the ring stay (a short clip looping is read once). */
 void skp_player_seek(skp_player *p, uint32_t index);
 
 /* Returns 1 with the next frame in *f (number = first number + index,

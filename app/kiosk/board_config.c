@@ -3,6 +3,7 @@
 #include <string.h>
 
 #include "ini.h"
+#include "skp_format.h"
 #include "text_tokens.h"
 
 #define STR_(x) #x
@@ -348,6 +349,49 @@ static void resolve(board_config *c, const pending *p)
 	}
 }
 
+void board_config_problem(board_config *c, long line, const char *msg)
+{
+	if (c->problem_count < BOARD_MAX_PROBLEMS) {
+		board_problem *p = &c->problem[c->problem_count];
+		p->line = line;
+		skp_format(p->msg, sizeof p->msg, "%s", msg);
+	}
+	c->problem_count++;
+}
+
+static skp_status apply_key(board_config *c, pending *p, const ini_entry *e, skp_error *err)
+{
+	section_kind k = SEC_NONE;
+	int b;
+	skp_status st = section_of(e, &k, &b, err);
+	if (st != SKP_OK)
+		return st;
+	switch (k) {
+	case SEC_DISPLAY: return display_key(c, e, err);
+	case SEC_INPUT: return input_key(c, p, e, err);
+	case SEC_BUTTON: return button_key(c, p, b, e, err);
+	case SEC_STORAGE: return storage_key(c, e, err);
+	case SEC_SKIN: return skin_key(c, e, err);
+	case SEC_SHOW: return show_key(c, e, err);
+	default: return limits_key(c, e, err);
+	}
+}
+
+/* One key applied; a mistake leaves what was there before (the default)
+ * and is recorded. */
+static void take_key(board_config *c, pending *p, const ini_entry *e)
+{
+	static board_config before; /* a few KiB: not on a small stack */
+	pending was = *p;
+	skp_error err;
+	before = *c;
+	if (apply_key(c, p, e, &err) == SKP_OK)
+		return;
+	*c = before;
+	*p = was;
+	board_config_problem(c, err.line, err.msg);
+}
+
 skp_status board_config_read(board_config *c, skp_reader rd, skp_error *err)
 {
 	static ini_reader ini; /* 5 KiB of line buffers: not on a small stack */
@@ -359,26 +403,18 @@ skp_status board_config_read(board_config *c, skp_reader rd, skp_error *err)
 	for (int i = 0; i < PLAYER_BTN_COUNT; i++)
 		p.debounce[i] = p.long_press[i] = -1;
 	ini_init(&ini, rd);
-	while ((rc = ini_next(&ini, &e, err)) > 0) {
-		section_kind k = SEC_NONE;
-		int b;
-		skp_status st = section_of(&e, &k, &b, err);
-		if (st == SKP_OK) {
-			switch (k) {
-			case SEC_DISPLAY: st = display_key(c, &e, err); break;
-			case SEC_INPUT: st = input_key(c, &p, &e, err); break;
-			case SEC_BUTTON: st = button_key(c, &p, b, &e, err); break;
-			case SEC_STORAGE: st = storage_key(c, &e, err); break;
-			case SEC_SKIN: st = skin_key(c, &e, err); break;
-			case SEC_SHOW: st = show_key(c, &e, err); break;
-			default: st = limits_key(c, &e, err); break;
-			}
+	while ((rc = ini_next(&ini, &e, err)) != 0) {
+		if (rc > 0) {
+			take_key(c, &p, &e);
+			continue;
 		}
-		if (st != SKP_OK)
-			return st;
+		if (err->code == SKP_ERR_IO)
+			return SKP_ERR_IO;
+		board_config_problem(c, err->line, err->msg);
+		if (!ini_can_go_on(&ini))
+			break;
 	}
-	if (rc < 0)
-		return (skp_status)-rc;
+	skp_error_clear(err);
 	resolve(c, &p);
 	return SKP_OK;
 }

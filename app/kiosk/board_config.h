@@ -23,7 +23,11 @@
  *              loop = show | clip   (show: an image's clips play in turn,
  *              the show loops; clip: a clip loops until NEXT)
  *
- * Unknown sections and keys are errors naming the line and the key. */
+ * A kiosk never stops over its config: a mistake (an unknown section or
+ * key, a bad value, a line that is not `key = value`, a UTF-8 byte order
+ * mark from a Windows editor is none) is a problem recorded with its line
+ * and what was expected, and the key keeps its default; the front end says
+ * each problem once and shows the first on the engineer HUD. */
 #ifndef BOARD_CONFIG_H
 #define BOARD_CONFIG_H
 
@@ -101,6 +105,14 @@ typedef struct board_button {
 	debounce_config deb;
 } board_button;
 
+/* A mistake in the file: its line (0: none) and what is wrong, the key's
+ * default kept. */
+#define BOARD_MAX_PROBLEMS 8
+typedef struct board_problem {
+	long line;
+	char msg[200];
+} board_problem;
+
 typedef struct board_config {
 	char platform[16];       /* "" = auto */
 	char device[SKP_MAX_PATH];
@@ -122,6 +134,8 @@ typedef struct board_config {
 	int blend_ms;            /* [show] blend_ms */
 	int root;                /* board_root */
 	int loop;                /* board_loop */
+	int problem_count;       /* all the mistakes found, also past the list */
+	board_problem problem[BOARD_MAX_PROBLEMS];
 } board_config;
 
 #define BOARD_DEBOUNCE_MS 30
@@ -137,8 +151,15 @@ typedef struct board_config {
 
 void board_config_defaults(board_config *c);
 
-/* Parses a board.ini. On error err->line is the line and err->msg names
- * the key (or section) and what was expected. */
+/* Parses a board.ini. Mistakes are recorded in c->problem (each naming
+ * the line, the key or section, and what was expected; the key keeps its
+ * default) and reading goes on; a line too long or a NUL byte ends the
+ * reading there (a problem too). Returns SKP_OK, or SKP_ERR_IO with err
+ * when the reader fails. */
 skp_status board_config_read(board_config *c, skp_reader rd, skp_error *err);
+
+/* Records a problem (the front end's: a config file that cannot be
+ * opened). */
+void board_config_problem(board_config *c, long line, const char *msg);
 
 #endif

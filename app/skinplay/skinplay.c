@@ -32,7 +32,7 @@ static void choose_paths(player *p)
 	p->algo[0] = p->o.algo == SKIN_COMPARE ? SKIN_LBS : one[p->o.algo];
 	p->algo[1] = SKIN_DQBS;
 	for (int i = 0; i < p->panel_count; i++) {
-		p->gpu[i] = p->o.gpu && render_gpu_fits(&p->r, p->algo[i]);
+		p->gpu[i] = p->o.gpu && p->render_ready && render_gpu_fits(&p->r, p->algo[i]);
 		if (p->o.gpu && !p->gpu[i])
 			fprintf(stderr, "skin: %s on the CPU: %s\n", skin_algo_name(p->algo[i]),
 				p->algo[i] == SKIN_DQBS_FIXED
@@ -106,6 +106,13 @@ static void log_measured_threads(player *p)
 		workers_count(p->pool), one, kept ? "all of them" : "one");
 }
 
+/* --platform none: nothing drawn and no GL; the clock, the show and its
+ * logs run as headless (a soak of days of frames in minutes). */
+static int no_display(const player *p)
+{
+	return p->o.platform && !strcmp(p->o.platform, "none");
+}
+
 static int setup(player *p)
 {
 	if (p->o.image_count ? show_open(&p->show, p->o.image, p->o.image_count, &p->body) < 0
@@ -118,7 +125,16 @@ static int setup(player *p)
 	if (p->o.streams == BOARD_STREAMS_COMPACT)
 		cli_skin_use_compact(&p->skin);
 	float floor_y = clips_first(p);
-	if (isnan(floor_y) || open_display(p) < 0)
+	if (isnan(floor_y))
+		return -1;
+	if (no_display(p)) {
+		p->headless = 1;
+		choose_paths(p);
+		if (p->o.out_dir)
+			fprintf(stderr, "skinplay: --platform none draws nothing: no --output\n");
+		return p->o.out_dir ? -1 : 0;
+	}
+	if (open_display(p) < 0)
 		return -1;
 	skp_error err;
 	const mesh *m = &p->body.mesh;
@@ -241,6 +257,9 @@ static void hud_text(player *p, render_frame *f, double fps, char lines[3][128])
 	}
 	if (p->o.hud == BOARD_HUD_OFF)
 		return;
+	/* the engineer sees what the board file got wrong while no notice shows */
+	if (!f->hud[3] && p->kiosk.board_note[0])
+		f->hud[3] = p->kiosk.board_note;
 	const char *where = p->gpu[0] ? "GPU" : "CPU";
 	if (p->panel_count > 1)
 		snprintf(lines[0], 128, "COMPARE LBS | DQBS  %s  %s", where, render_view_name(p->o.view));
@@ -279,9 +298,53 @@ static int write_png(player *p, long n)
 	return 0;
 }
 
-static void log_second(player *p, timing *t, uint64_t now)
+/* --pose-digest: FNV-1a over the joints of every pose shown. */
+static void pose_digest_add(player *p)
+{
+	const uint8_t *b = (const uint8_t *)p->skin.pose.tip;
+	size_t n = sizeof p->skin.pose.tip[0] * (size_t)p->body.skel.count;
+	if (!p->digest)
+		p->digest = 1469598103934665603ull;
+	for (size_t i = 0; i < n; i++)
+		p->digest = (p->digest ^ b[i]) * 1099511628211ull;
+}
+
+/* The second's timings into the run's, and a new second from now. */
+static void account_second(timing *t, uint64_t now)
+{
+	total.decode += t->decode;
+	total.skin += t->skin;
+	total.upload += t->upload;
+	total.draw += t->draw;
+	total.frames += t->frames;
+	memset(t, 0, sizeof *t);
+	t->since = now;
+}
+
+/* The status line: every second of the first minute (start-up, and any
+ * short run whole), then once an hour, so that months on a kiosk do not
+ * fill the journal; the last one always. */
+#define STATUS_EVERY_SECOND_NS 60000000000ull
+
+static int status_due(player *p, uint64_t now, int last)
+{
+	if (!last && now - total.since >= STATUS_EVERY_SECOND_NS && now - p->status_at < SKP_RATELIMIT_HOUR)
+		return 0;
+	if (!last && !p->status_hourly && now - total.since >= STATUS_EVERY_SECOND_NS) {
+		fprintf(cli_note(), "skinplay: status lines from now on once an hour\n");
+		p->status_hourly = 1;
+	}
+	p->status_at = now;
+	return 1;
+}
+
+static void log_second(player *p, timing *t, uint64_t now, int last)
 {
 	double secs = (double)(now - t->since) * 1e-9, n = (double)t->frames;
+	if (!status_due(p, now, last)) {
+		account_second(t, now);
+		return;
+	}
 	fprintf(cli_note(), "frame %ld: clip %.3f s, %.1f fps, decode %.2f ms, skin %.2f ms, upload %.2f ms, draw %.2f ms",
 		shown_number(p), shown_time(p), n / secs, t->decode * 1e-6 / n, t->skin * 1e-6 / n, t->upload * 1e-6 / n,
 		t->draw * 1e-6 / n);
@@ -290,13 +353,7 @@ static void log_second(player *p, timing *t, uint64_t now)
 		fprintf(cli_note(), "; %ld of %ld shown (%.1f%%), %.0f s left", p->shown, p->budget,
 			100.0 * (double)p->shown / (double)p->budget, (double)(p->budget - p->shown) * secs / n);
 	fputc('\n', cli_note());
-	total.decode += t->decode;
-	total.skin += t->skin;
-	total.upload += t->upload;
-	total.draw += t->draw;
-	total.frames += t->frames;
-	memset(t, 0, sizeof *t);
-	t->since = now;
+	account_second(t, now);
 }
 
 static int draw_one(player *p, timing *t, double fps, render_frame *f)
@@ -389,7 +446,9 @@ static int play(player *p)
 		stage_add(&p->stages, STAGE_DECODE, clock_now_ns() - t0);
 		f.dt = (float)((double)(p->now - prev) * 1e-9);
 		prev = p->now;
-		if (draw_one(p, &t, fps, &f) < 0)
+		if (p->o.pose_digest)
+			pose_digest_add(p);
+		if (p->disp && draw_one(p, &t, fps, &f) < 0)
 			return -1;
 		p->drift = ((double)p->now - (double)(clock_now_ns() - p->wall0)) * 1e-9;
 		p->shown = ++shown;
@@ -399,24 +458,26 @@ static int play(player *p)
 			return -1;
 		stage_add(&p->stages, STAGE_SWAP, clock_now_ns() - t_png);
 		stage_frame_done(&p->stages, shown_number(p));
-		if (p->disp->handle_events)
+		if (p->disp && p->disp->handle_events)
 			p->disp->handle_events(&quit);
 		uint64_t now = clock_now_ns();
 		if (now - t.since >= 1000000000u) {
 			fps = (double)t.frames / ((double)(now - t.since) * 1e-9);
-			log_second(p, &t, now);
+			log_second(p, &t, now, 0);
 		}
 	}
 	if (r < 0)
 		return -1;
-	log_second(p, &t, clock_now_ns());
+	log_second(p, &t, clock_now_ns(), 1);
 	double n = total.frames ? (double)total.frames : 1.0;
 	double secs = (double)(clock_now_ns() - total.since) * 1e-9;
 	fprintf(cli_note(), "played %ld frames of %s in %.2f s: %.1f fps; per frame decode %.2f ms, skin %.2f ms, "
 		"upload %.2f ms, draw %.2f ms (%s, %dx%d, %s skinning%s)\n", shown, p->o.amc ? p->o.amc : p->clip, secs,
 		shown / secs, total.decode * 1e-6 / n, total.skin * 1e-6 / n, total.upload * 1e-6 / n,
-		total.draw * 1e-6 / n, p->disp->name, p->info.width, p->info.height, p->gpu[0] ? "GPU" : "CPU",
-		threads_note(p));
+		total.draw * 1e-6 / n, p->disp ? p->disp->name : "none", p->info.width, p->info.height,
+		p->gpu[0] ? "GPU" : "CPU", threads_note(p));
+	if (p->o.pose_digest)
+		fprintf(stderr, "poses: %ld shown, digest %016llx\n", shown, (unsigned long long)p->digest);
 	if (p->o.report_timing)
 		stage_report(&p->stages);
 	if (p->o.sheet_path && sheet_write(&p->contact, p->o.sheet_path) < 0)

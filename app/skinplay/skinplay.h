@@ -14,6 +14,7 @@
 #include "play_engine.h"
 #include "play_survey.h"
 #include "skinplay_kiosk.h"
+#include "skp_ratelimit.h"
 #include "skinplay_opts.h"
 #include "skinplay_timing.h"
 #include "skinplay_sheet.h"
@@ -46,6 +47,11 @@ typedef struct player {
 	display_info info;
 	int headless;
 	int hold;          /* no clip can play: the bind pose, with a message */
+	uint64_t digest;       /* --pose-digest: FNV-1a of the poses shown */
+	uint64_t status_at;    /* when the last status line was said (wall clock) */
+	int status_hourly;     /* past the first minute: status lines once an hour */
+	skp_ratelimit skip_said;  /* "clip X cannot play: showing Y" */
+	skp_ratelimit fail_said;  /* "clip X cannot be read on" */
 	char notice[96];   /* shown on screen until notice_until (ns) */
 	uint64_t notice_until;
 	int panel_count;

@@ -10,6 +10,16 @@
 #include "cli_quiet.h"
 #include "skinplay.h"
 
+/* " (and N more since the last one said)" for a rate-limited line. */
+static const char *said_since(unsigned long held)
+{
+	static char text[64];
+	if (!held)
+		return "";
+	snprintf(text, sizeof text, " (and %lu more like it since the last line)", held);
+	return text;
+}
+
 void clips_notice(player *p, const char *text, double seconds)
 {
 	snprintf(p->notice, sizeof p->notice, "%s", text);
@@ -77,8 +87,11 @@ static void select_clip(player *p, int c)
 		const char *name = show_clip(&p->show, next)->name;
 		if (next != c && c >= 0) {
 			char text[96];
+			unsigned long held;
 			snprintf(text, sizeof text, "CLIP %s SKIPPED: DAMAGED", show_clip(&p->show, c)->name);
-			fprintf(stderr, "image: clip %s cannot play: showing %s\n", show_clip(&p->show, c)->name, name);
+			if (skp_ratelimit_take(&p->skip_said, p->now, &held))
+				fprintf(stderr, "image: clip %s cannot play: showing %s%s\n", show_clip(&p->show, c)->name, name,
+					said_since(held));
 			clips_notice(p, text, 3.0);
 		}
 		if (show_select_clip(&p->show, name, &p->src) == 0 && start_clip(p, name, 1) == 0) {
@@ -105,6 +118,28 @@ static int start_at_frame(player *p, const char *what)
 	return 0;
 }
 
+/* The clip asked for by name (--clip) or frame (--start); one that is not
+ * in the show or cannot play gives way to the next that can, with a
+ * notice: a kiosk never goes dark over it. 1 when it plays as asked. */
+static int open_asked(player *p)
+{
+	if (show_select_clip(&p->show, p->o.clip, &p->src) == 0 &&
+	    start_clip(p, show_clip(&p->show, p->show.clip)->name, 1) == 0) {
+		p->kiosk.ps.clip = p->show.clip;
+		return 1;
+	}
+	int c = 0;
+	for (int i = 0; p->o.clip && i < show_clip_count(&p->show); i++)
+		if (!strcmp(show_clip(&p->show, i)->name, p->o.clip))
+			c = i;
+	char text[96];
+	snprintf(text, sizeof text, "CLIP %s CANNOT PLAY", p->o.clip ? p->o.clip : "");
+	fprintf(stderr, "skinplay: --clip %s cannot play: the next clip that can plays instead\n", p->o.clip ? p->o.clip : "");
+	select_clip(p, c);
+	clips_notice(p, text, 5.0);
+	return 0;
+}
+
 static int open_first(player *p)
 {
 	const char *what = p->o.image_count ? show_path(&p->show) : p->o.amc;
@@ -113,11 +148,8 @@ static int open_first(player *p)
 		    start_clip(p, cli_basename(p->o.amc), 1) < 0)
 			return -1;
 	} else if (p->o.clip || p->o.start >= 0) {
-		/* asked for by name or frame: that, or a message and no show */
-		if (show_select_clip(&p->show, p->o.clip, &p->src) < 0 ||
-		    start_clip(p, show_clip(&p->show, p->show.clip)->name, 1) < 0)
-			return -1;
-		p->kiosk.ps.clip = p->show.clip;
+		if (!open_asked(p))
+			return 0;   /* --start was for the clip asked for */
 	} else
 		select_clip(p, 0);
 	return p->o.start >= 0 && !p->hold ? start_at_frame(p, what) : 0;
@@ -127,6 +159,8 @@ static int open_first(player *p)
 float clips_first(player *p)
 {
 	play_config cfg = { p->o.speed, (uint32_t)p->o.blend_ms, p->o.root, 1 };
+	skp_ratelimit_init(&p->skip_said, SKP_RATELIMIT_HOUR);
+	skp_ratelimit_init(&p->fail_said, SKP_RATELIMIT_HOUR);
 	play_init(&p->eng, &p->body.skel, &cfg);
 	p->now = 0;
 	if (open_first(p) < 0)
@@ -160,6 +194,7 @@ static int next_in_show(player *p)
 int clips_pose(player *p)
 {
 	skp_error err;
+	p->show.now = p->now;   /* the image's log lines are limited on this clock */
 	if (p->hold)
 		return 0;
 	skp_status st = play_update(&p->eng, p->now, &err);
@@ -169,11 +204,14 @@ int clips_pose(player *p)
 		/* headless, a file that cannot be read is an error; a kiosk holds */
 		if (p->headless)
 			return cli_error(p->o.image_count ? show_path(&p->show) : p->o.amc, &err), -1;
-		if (!p->engine_failed) {
+		unsigned long held;
+		if (!p->engine_failed && skp_ratelimit_take(&p->fail_said, p->now, &held)) {
 			cli_error(p->o.image_count ? show_path(&p->show) : p->o.amc, &err);
-			fprintf(stderr, "skinplay: clip %s cannot be read on: holding its last pose\n", p->clip);
-			clips_notice(p, "THIS CLIP CANNOT BE READ ON", 5.0);
+			fprintf(stderr, "skinplay: clip %s cannot be read on: holding its last pose%s\n", p->clip,
+				said_since(held));
 		}
+		if (!p->engine_failed)
+			clips_notice(p, "THIS CLIP CANNOT BE READ ON", 5.0);
 		p->engine_failed = 1;
 		return 0;
 	}

@@ -18,23 +18,43 @@ static int given(int argc, char **argv, const char *opt)
 	return 0;
 }
 
-static int load_board(kiosk *k, const char *path)
+/* Says each of the board file's problems once (the key keeps its
+ * default), and keeps the first for the engineer HUD. */
+static void report_board(kiosk *k, const char *path)
+{
+	const board_config *b = &k->board;
+	int listed = b->problem_count < BOARD_MAX_PROBLEMS ? b->problem_count : BOARD_MAX_PROBLEMS;
+	for (int i = 0; i < listed; i++) {
+		if (b->problem[i].line > 0)
+			fprintf(stderr, "%s:%ld: %s; ignored, the default stays\n", path, b->problem[i].line, b->problem[i].msg);
+		else
+			fprintf(stderr, "%s: %s\n", path, b->problem[i].msg);
+	}
+	if (b->problem_count > listed)
+		fprintf(stderr, "%s: %d more problems not listed\n", path, b->problem_count - listed);
+	if (b->problem_count)
+		snprintf(k->board_note, sizeof k->board_note, "%.24s: %.72s%s", cli_basename(path), b->problem[0].msg,
+			 b->problem_count > 1 ? " (MORE IN THE LOG)" : "");
+}
+
+/* The board file: a kiosk goes on with the defaults over any problem in
+ * it, even a file it cannot open, and says so. */
+static void load_board(kiosk *k, const char *path)
 {
 	file_reader fr;
 	skp_error err;
 	int rc = file_reader_open(&fr, path);
 	if (rc < 0) {
-		fprintf(stderr, "%s: cannot open: %s\n", path, strerror(-rc));
-		return -1;
+		char msg[160];
+		snprintf(msg, sizeof msg, "cannot open: %s; running with the defaults", strerror(-rc));
+		board_config_problem(&k->board, 0, msg);
+	} else {
+		if (board_config_read(&k->board, file_reader_as_reader(&fr), &err) != SKP_OK)
+			board_config_problem(&k->board, err.line, err.msg);
+		file_reader_close(&fr);
+		k->have_board = 1;
 	}
-	skp_status st = board_config_read(&k->board, file_reader_as_reader(&fr), &err);
-	file_reader_close(&fr);
-	if (st != SKP_OK) {
-		cli_error(path, &err);
-		return -1;
-	}
-	k->have_board = 1;
-	return 0;
+	report_board(k, path);
 }
 
 /* The command line wins; the board fills in what it did not say. */
@@ -87,8 +107,8 @@ int kiosk_setup(kiosk *k, play_opts *o, int argc, char **argv)
 	k->sig_fd = -1;
 	k->sd.fd = -1;
 	board_config_defaults(&k->board);
-	if (o->board && load_board(k, o->board) < 0)
-		return -1;
+	if (o->board)
+		load_board(k, o->board);
 	if (k->have_board)
 		apply_board(&k->board, o, argc, argv);
 	playback_defaults(o);
@@ -144,8 +164,12 @@ int kiosk_start(kiosk *k, const play_opts *o, int headless, int clip_count)
 	player_init(&k->ps, o->algo, o->view, o->gpu, clip_count);
 	k->in = input_find(k->input_spec, &arg);
 	if (k->in->init(&k->board, arg, now_ms(k, 0), &err) != 0) {
-		fprintf(stderr, "skinplay: input %s: %s\n", k->in->name, err.msg);
-		return -1;
+		/* a batch run fails; on a display no buttons is no reason to go dark */
+		fprintf(stderr, "skinplay: input %s: %s%s\n", k->in->name, err.msg, headless ? "" : "; running without buttons");
+		if (headless)
+			return -1;
+		k->in = &input_none;
+		k->in->init(&k->board, NULL, now_ms(k, 0), &err);
 	}
 	k->in_started = 1;
 	if (k->in != &input_none)

@@ -38,10 +38,12 @@ typedef struct kiosk {
 	double fps;              /* headless display rate: frame n at n * 1000 / fps ms */
 	uint64_t t0_ns, last_ns;
 	uint64_t play_ms;        /* when PLAY last paused or resumed (the input's clock) */
+	char board_note[128];    /* the board file's first problem, for the engineer HUD; "" none */
 } kiosk;
 
 /* After play_parse: loads --board (display settings not given on the
- * command line come from it), picks the input (--input, else the board's,
+ * command line come from it; its problems are said and the defaults kept,
+ * the first in board_note), picks the input (--input, else the board's,
  * else none) and installs the signal handlers. 0, or -1 after reporting. */
 int kiosk_setup(kiosk *k, play_opts *o, int argc, char **argv);
 

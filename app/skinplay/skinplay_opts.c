@@ -12,7 +12,7 @@ enum {
 	OPT_IMAGE = 1, OPT_CLIP, OPT_ASF, OPT_AMC, OPT_BVH, OPT_MESH, OPT_ALGO, OPT_SKIN, OPT_PLATFORM, OPT_DEVICE,
 	OPT_ROTATION, OPT_SIZE, OPT_FRAMES, OPT_START, OPT_OUT, OPT_EVERY, OPT_SHEET, OPT_VIEW, OPT_FPS,
 	OPT_HUD_FPS, OPT_REPORT_MEMORY, OPT_BOARD, OPT_INPUT, OPT_PRINT_PLATFORM, OPT_HUD, OPT_REPORT_TIMING,
-	OPT_THREADS, OPT_STREAMS, OPT_DISPLAY_RATE, OPT_SPEED, OPT_BLEND, OPT_ROOT, OPT_YAW, OPT_LOOP
+	OPT_THREADS, OPT_STREAMS, OPT_DISPLAY_RATE, OPT_SPEED, OPT_BLEND, OPT_ROOT, OPT_YAW, OPT_LOOP, OPT_POSE_DIGEST
 };
 
 static const cli_opt play_opts_table[] = {
@@ -31,7 +31,8 @@ static const cli_opt play_opts_table[] = {
 	  "board's [skin] split_verts vertices or more (default: the board's, else auto)" },
 	{ "streams", 0, "KIND", OPT_STREAMS, "float, or compact: LBS and DQBS read 16-bit vertex streams (38 bytes a "
 	  "vertex, not 72; default: the board's, else float)" },
-	{ "platform", 0, "NAME", OPT_PLATFORM, "auto, surfaceless, osmesa, kms or x11 (default auto)" },
+	{ "platform", 0, "NAME", OPT_PLATFORM, "auto, surfaceless, osmesa, kms, x11, or none: nothing drawn, the show's "
+	  "clock, images and logs run as headless (soak runs of days of frames; default auto)" },
 	{ "device", 0, "DEV", OPT_DEVICE, "the DRM device for kms (default: the first with a screen)" },
 	{ "rotation", 0, "DEG", OPT_ROTATION, "turn the picture 0, 90, 180 or 270 degrees (portrait screens)" },
 	{ "size", 0, "WxH", OPT_SIZE, "the picture's size headless or in a window (default 1280x720)" },
@@ -59,6 +60,8 @@ static const cli_opt play_opts_table[] = {
 	{ "hud", 0, "MODE", OPT_HUD, "visitor, engineer or off (default: the board's [display] hud, else engineer)" },
 	{ "hud-fps", 0, "on|off", OPT_HUD_FPS, "engineer HUD: show the measured frame rate (off: reproducible pictures)" },
 	{ "report-memory", 0, NULL, OPT_REPORT_MEMORY, "print the peak and current resident memory at the end" },
+	{ "pose-digest", 0, NULL, OPT_POSE_DIGEST, "print at the end a digest of every pose shown (FNV-1a of the joints): "
+	  "two runs showing the same poses print the same" },
 	{ "report-timing", 0, NULL, OPT_REPORT_TIMING, "print per stage (decode, FK, bones, skinning, upload, draw, "
 	  "swap) the mean and worst time at the end" },
 	{ "board", 0, "FILE", OPT_BOARD, "the board's runtime config (board/NAME/board.ini; default: none)" },
@@ -220,6 +223,7 @@ static int take(void *ctx, int id, const char *v)
 		return take_timing(o, id, v);
 	case OPT_REPORT_MEMORY: o->report_memory = 1; return 0;
 	case OPT_REPORT_TIMING: o->report_timing = 1; return 0;
+	case OPT_POSE_DIGEST: o->pose_digest = 1; return 0;
 	case OPT_THREADS: return take_threads(o, v);
 	case OPT_STREAMS:
 		if ((o->streams = board_streams_parse(v)) < 0)

@@ -54,19 +54,37 @@ void storage_file_set_block_size(storage_file *sf, uint32_t block_size)
 	sf->bd.block_count = block_size ? (uint32_t)((sf->size + block_size - 1) / block_size) : 0;
 }
 
+/* Storage is a regular file or a block device (a raw partition, whose
+ * size is where it ends); a FIFO, a socket, a terminal or a directory
+ * would block a reader or make no sense: -EINVAL (storage_file_kind says
+ * which). */
+static int sf_size(int fd, const struct stat *st, uint64_t *size)
+{
+	if (S_ISREG(st->st_mode)) {
+		*size = (uint64_t)st->st_size;
+		return 0;
+	}
+	if (!S_ISBLK(st->st_mode))
+		return -EINVAL;
+	off_t end = lseek(fd, 0, SEEK_END);
+	if (end < 0)
+		return -errno;
+	*size = (uint64_t)end;
+	return 0;
+}
+
 static int sf_init(storage_file *sf, int fd, uint32_t block_size, int writable)
 {
 	struct stat st;
 	sf->fd = fd;
 	if (fd < 0)
 		return -errno;
-	if (fstat(fd, &st) != 0) {
-		int e = errno;
+	int rc = fstat(fd, &st) != 0 ? -errno : sf_size(fd, &st, &sf->size);
+	if (rc < 0) {
 		close(fd);
 		sf->fd = -1;
-		return -e;
+		return rc;
 	}
-	sf->size = (uint64_t)st.st_size;
 	sf->pos = 0;
 	sf->bd.read = sf_read;
 	sf->bd.write = writable ? sf_write : NULL;
@@ -82,7 +100,19 @@ int storage_file_use_fd(storage_file *sf, int fd, uint32_t block_size)
 
 int storage_file_open(storage_file *sf, const char *path, uint32_t block_size)
 {
-	return sf_init(sf, open(path, O_RDONLY | O_CLOEXEC), block_size, 0);
+	/* O_NONBLOCK: a FIFO put where a slot was must not hang start-up in
+	 * open() (sf_init then refuses it); reads of files and block devices
+	 * do not block either way */
+	return sf_init(sf, open(path, O_RDONLY | O_CLOEXEC | O_NONBLOCK), block_size, 0);
+}
+
+const char *storage_file_kind(const char *path)
+{
+	struct stat st;
+	if (stat(path, &st) != 0)
+		return "missing";
+	return S_ISFIFO(st.st_mode) ? "a FIFO" : S_ISSOCK(st.st_mode) ? "a socket" : S_ISCHR(st.st_mode) ? "a character device"
+	       : S_ISDIR(st.st_mode) ? "a directory" : "not a regular file or a block device";
 }
 
 int storage_file_create(storage_file *sf, const char *path, uint32_t block_size)

@@ -15,8 +15,14 @@ typedef struct storage_file {
 	skp_blockdev bd;
 } storage_file;
 
-/* Opens read-only with that block size. Returns 0 or -errno. */
+/* Opens read-only with that block size, never blocking: a regular file or
+ * a block device (a raw partition). Returns 0 or -errno: -EINVAL for
+ * anything else (a FIFO, a socket, a directory: storage_file_kind). */
 int storage_file_open(storage_file *sf, const char *path, uint32_t block_size);
+
+/* What path is when storage_file_open refused it with -EINVAL: "a FIFO",
+ * "a socket", "a character device", "a directory", ... */
+const char *storage_file_kind(const char *path);
 
 /* Block storage over an open read-write fd (an atomic_file's): closing the
  * storage closes it. Returns 0 or -errno. */

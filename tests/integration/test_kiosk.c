@@ -2,7 +2,7 @@
  * algorithm at exactly the frames the script says (log lines and images),
  * systemd hears READY=1 and WATCHDOG=1 on a socket the test opens, SIGHUP
  * restarts the show and SIGTERM ends it cleanly, and a bad board config
- * names its file, line and key. */
+ * names its file, line and key, keeps the defaults and plays on. */
 #include <stdarg.h>
 #include <stddef.h>
 #include <setjmp.h>
@@ -447,18 +447,29 @@ static void test_notify_signals_and_watchdog(void **state)
 	assert_true(dogs >= 2);
 }
 
-static void test_bad_board_config_names_file_line_key(void **state)
+static void test_bad_board_config_is_said_and_played_through(void **state)
 {
 	(void)state;
 	char board[128], extra[256];
 	snprintf(board, sizeof board, "%s/board.ini", dir);
-	assert_int_equal(run_board("bad", "[display]\nsize = 640x480\n\n[button.play]\nline = 27\nbias = sideways\n", "", 1), 1);
-	char *log = read_log(), want[256];
-	snprintf(want, sizeof want, "%s:6: key 'bias' in [button.play]: expected as-is, disable, pull-up or pull-down",
-		 board);
+	/* a kiosk never stops over its config: each mistake said once, the
+	 * key's default kept, the first mistake on the engineer HUD */
+	assert_int_equal(run_board("bad", "\xef\xbb\xbf[display]\r\nhud = engineer\r\n\n[button.play]\nline = 27\n"
+				   "bias = sideways\nwobble = 1\n", "", 1), 0);
+	char *log = read_log(), want[512];
+	snprintf(want, sizeof want, "%s:6: key 'bias' in [button.play]: expected as-is, disable, pull-up or pull-down, "
+		 "found 'sideways'; ignored, the default stays\n%s:7: unknown key 'wobble'", board, board);
 	if (strncmp(log, want, strlen(want)) != 0)
 		fail_msg("log: %s\nwant: %s", log, want);
 	free(log);
+	assert_int_equal(run_board("good", "[display]\nhud = engineer\n", "", 1), 0);
+	load("bad", 1, &a);
+	load("good", 1, &b);
+	assert_true(hud_line_diff(&a, &b, 3) > 0);
+	assert_int_equal(hud_line_diff(&a, &b, 0), 0);
+	snprintf(extra, sizeof extra, "--board %s/none.ini", dir);
+	assert_int_equal(run("gone", extra, 1), 0);
+	expect_log("none.ini: cannot open: No such file or directory; running with the defaults");
 	/* a good one applies its display size unless --size says otherwise */
 	test_write_text(board, "[display]\nsize = 64x48\n[input]\nbackend = none\n");
 	char cmd[1024], amc[512];
@@ -551,7 +562,7 @@ int main(void)
 		cmocka_unit_test(test_skinning_threads),
 		cmocka_unit_test(test_compact_streams),
 		cmocka_unit_test(test_notify_signals_and_watchdog),
-		cmocka_unit_test(test_bad_board_config_names_file_line_key),
+		cmocka_unit_test(test_bad_board_config_is_said_and_played_through),
 	};
 	return cmocka_run_group_tests(tests, setup, teardown);
 }

@@ -1,5 +1,7 @@
-/* board.ini: the real board files parse, and every kind of mistake is an
- * error naming the line and the key. */
+/* board.ini: the real board files parse; every kind of mistake is a
+ * problem naming the line and the key, the key keeping its default and
+ * the reading going on (a kiosk never stops over its config); a UTF-8 byte
+ * order mark is no mistake. */
 #include <stdarg.h>
 #include <stddef.h>
 #include <setjmp.h>
@@ -31,6 +33,8 @@ static void parse_file(const char *path)
 	free(text);
 	if (st != SKP_OK)
 		fail_msg("%s:%ld: %s", path, err.line, err.msg);
+	if (cfg.problem_count)
+		fail_msg("%s:%ld: %s", path, cfg.problem[0].line, cfg.problem[0].msg);
 }
 
 static void test_rpi4_board(void **state)
@@ -154,7 +158,7 @@ typedef struct bad_case {
 	const char *needle;
 } bad_case;
 
-static void test_errors_name_line_and_key(void **state)
+static void test_mistakes_name_line_and_key(void **state)
 {
 	(void)state;
 	static const bad_case cases[] = {
@@ -196,9 +200,42 @@ static void test_errors_name_line_and_key(void **state)
 		if (strstr(cases[i].needle, "NUL"))
 			n += 1 + strlen(t + n + 1);
 		skp_status st = board_config_read(&cfg, skp_mem_reader(&src, t, n), &err);
-		if (st == SKP_OK || err.line != cases[i].line || !strstr(err.msg, cases[i].needle))
-			fail_msg("case %zu: status %d, line %ld, '%s'", i, st, err.line, err.msg);
+		const board_problem *p = &cfg.problem[0];
+		if (st != SKP_OK || cfg.problem_count != 1 || p->line != cases[i].line || !strstr(p->msg, cases[i].needle))
+			fail_msg("case %zu: status %d, %d problems, line %ld, '%s'", i, st, cfg.problem_count, p->line, p->msg);
 	}
+}
+
+/* After a mistake the file goes on, the bad key keeps its default. */
+static void test_mistakes_keep_defaults(void **state)
+{
+	(void)state;
+	skp_error err;
+	assert_int_equal(parse("[display]\nrotation = 45\nhud = engineer\n[skin]\nthreads = 0\nstreams = compact\n"
+			       "[input]\ndebounce_ms = -5\n[storage]\nslot = a\nslot = b\nslot = c\nslot = d\n", &err), SKP_OK);
+	assert_int_equal(cfg.problem_count, 4);
+	assert_int_equal(cfg.rotation, -1);
+	assert_int_equal(cfg.hud, BOARD_HUD_ENGINEER);
+	assert_int_equal(cfg.threads, 0);
+	assert_int_equal(cfg.streams, BOARD_STREAMS_COMPACT);
+	assert_int_equal(cfg.button[PLAYER_BTN_PLAY].deb.debounce_ms, BOARD_DEBOUNCE_MS);
+	assert_int_equal(cfg.slot_count, 3);
+	assert_string_equal(cfg.slot[2], "c");
+	/* a header that does not close: its keys belong nowhere; then on */
+	assert_int_equal(parse("[display\nhud = off\n[skin]\nthreads = 2\n", &err), SKP_OK);
+	assert_int_equal(cfg.problem_count, 2);
+	assert_int_equal(cfg.problem[1].line, 2);
+	assert_non_null(strstr(cfg.problem[1].msg, "unknown section [?]"));
+	assert_int_equal(cfg.hud, -1);
+	assert_int_equal(cfg.threads, 2);
+	/* a Windows editor's byte order mark and CRLF: no mistake */
+	assert_int_equal(parse("\xef\xbb\xbf[display]\r\nhud = visitor\r\n", &err), SKP_OK);
+	assert_int_equal(cfg.problem_count, 0);
+	assert_int_equal(cfg.hud, BOARD_HUD_VISITOR);
+	/* past the list, counted */
+	assert_int_equal(parse("[x]\na=1\nb=1\nc=1\nd=1\ne=1\nf=1\ng=1\nh=1\ni=1\nj=1\n", &err), SKP_OK);
+	assert_int_equal(cfg.problem_count, 10);
+	assert_int_equal(cfg.problem[BOARD_MAX_PROBLEMS - 1].line, 9);
 }
 
 int main(void)
@@ -209,7 +246,8 @@ int main(void)
 		cmocka_unit_test(test_show_section_and_yaw),
 		cmocka_unit_test(test_skin_section),
 		cmocka_unit_test(test_inheritance_and_syntax),
-		cmocka_unit_test(test_errors_name_line_and_key),
+		cmocka_unit_test(test_mistakes_name_line_and_key),
+		cmocka_unit_test(test_mistakes_keep_defaults),
 	};
 	return cmocka_run_group_tests(tests, NULL, NULL);
 }
