@@ -69,7 +69,7 @@ KERNELS_scalar := skin_scalar skin_fixed skin_compact_scalar
 KERNELS_avx2   := $(KERNELS_scalar) skin_avx2 skin_fixed_avx2 skin_compact_avx2
 KERNELS_neon   := $(KERNELS_scalar) skin_neon skin_fixed_neon
 # The fixed-point path, proven free of floating point by `make check-core`.
-FIXED_SRC      := app/math/fixed.c app/skin/kernels/skin_fixed.c
+FIXED_SRC      := app/math/fixed.c app/math/fixed_move.c app/skin/kernels/skin_fixed.c
 
 # platform/: one file per backend, each board listing the ones it builds
 # (board.mk: DISPLAYS, INPUTS); the registries (display.c, input.c) are

@@ -6,24 +6,18 @@
 
 static const fx_quat fx_quat_identity = { FX_Q30_ONE, 0, 0, 0 };
 
-int64_t fx_quat_dot(fx_quat a, fx_quat b)
-{
-	return (int64_t)a.w * b.w + (int64_t)a.x * b.x + (int64_t)a.y * b.y +
-	       (int64_t)a.z * b.z;
-}
-
 /* Hamilton product with every component summed exactly and rounded once by
  * 2^s; int64 results so callers can add two products before saturating. */
 static void qmul_shr(fx_quat a, fx_quat b, int s, int64_t r[4])
 {
-	r[0] = fx_shr_round((int64_t)a.w * b.w - (int64_t)a.x * b.x -
-			    (int64_t)a.y * b.y - (int64_t)a.z * b.z, s);
-	r[1] = fx_shr_round((int64_t)a.w * b.x + (int64_t)a.x * b.w +
-			    (int64_t)a.y * b.z - (int64_t)a.z * b.y, s);
-	r[2] = fx_shr_round((int64_t)a.w * b.y - (int64_t)a.x * b.z +
-			    (int64_t)a.y * b.w + (int64_t)a.z * b.x, s);
-	r[3] = fx_shr_round((int64_t)a.w * b.z + (int64_t)a.x * b.y -
-			    (int64_t)a.y * b.x + (int64_t)a.z * b.w, s);
+	r[0] = fx_shr_round(fx_mul_wide(a.w, b.w) - fx_mul_wide(a.x, b.x) - fx_mul_wide(a.y, b.y) -
+			    fx_mul_wide(a.z, b.z), s);
+	r[1] = fx_shr_round(fx_mul_wide(a.w, b.x) + fx_mul_wide(a.x, b.w) + fx_mul_wide(a.y, b.z) -
+			    fx_mul_wide(a.z, b.y), s);
+	r[2] = fx_shr_round(fx_mul_wide(a.w, b.y) - fx_mul_wide(a.x, b.z) + fx_mul_wide(a.y, b.w) +
+			    fx_mul_wide(a.z, b.x), s);
+	r[3] = fx_shr_round(fx_mul_wide(a.w, b.z) + fx_mul_wide(a.x, b.y) - fx_mul_wide(a.y, b.x) +
+			    fx_mul_wide(a.z, b.w), s);
 }
 
 static fx_quat quat_sat(const int64_t r[4])
@@ -145,20 +139,34 @@ const uint32_t fx_recip_seed_b[FX_RECIP_SEGMENTS] = {
 	881018933u, 755159085u, 654471207u, 572662306u,
 };
 
+/* (x << e) >> 30 for 0 < x < 2^61, e = clz(x) - 3 (into *e), from 32-bit
+ * shifts: a 32-bit core shifts 64 bits by a variable through a call. */
+static uint32_t top31(uint64_t x, int *e)
+{
+	uint32_t hi = (uint32_t)(x >> 32), lo = (uint32_t)x;
+	*e = hi ? __builtin_clz(hi) - 3 : 29 + __builtin_clz(lo);
+	if (*e > 30)
+		return lo << (*e - 30); /* x below 2^30: hi is 0 */
+	int k = 30 - *e;
+	return k ? (lo >> k) | (hi << (32 - k)) : lo; /* k = 0: x below 2^31 */
+}
+
 uint32_t fx_recip_q60(uint64_t x, int *e)
 {
 	*e = 0;
 	if (x == 0 || x >= (uint64_t)1 << 61)
 		return 0;
-	*e = __builtin_clzll(x) - 3; /* x 2^e in [2^60, 2^61) */
-	uint64_t xq = (x << *e) >> 30;  /* X in Q30, below 2^31 */
+	uint32_t xq = top31(x, e); /* X in Q30, below 2^31; x 2^e in [2^60, 2^61) */
 	int s = (int)(xq >> 27) - 8;
-	uint64_t y = fx_recip_seed_a[s] - ((fx_recip_seed_b[s] * xq + (1u << 29)) >> 30);
+	/* y stays below 2^32: the seed is at most a[0] < 2^32, and each step
+	 * keeps it within 0.2% of 1 / X <= 1 (Q31); so X y is within 0.2% of
+	 * 2^31 and 2^32 - X y below 2^32 */
+	uint32_t y = fx_recip_seed_a[s] - (uint32_t)((fx_mulu_wide(fx_recip_seed_b[s], xq) + (1u << 29)) >> 30);
 	for (int i = 0; i < FX_RECIP_STEPS; i++) {
-		uint64_t xy = (xq * y + (1u << 29)) >> 30; /* X y in Q31, near 2^31 */
-		y = (y * (((uint64_t)1 << 32) - xy) + (1u << 30)) >> 31;
+		uint32_t xy = (uint32_t)((fx_mulu_wide(xq, y) + (1u << 29)) >> 30); /* X y in Q31 */
+		y = (uint32_t)((fx_mulu_wide(y, 0u - xy) + (1u << 30)) >> 31);
 	}
-	return (uint32_t)y;
+	return y;
 }
 
 fx_dq fx_dq_from_quat_trans(fx_quat q, fx_vec3 t)
@@ -217,12 +225,39 @@ static fx_quat quat_scale_rs(fx_quat q, uint32_t m, int shift)
  * skin_soa_load writes, but a caller may) can reach |q| = 2^32, whose
  * square does not fit; saturated, it is out of fx_rsqrt_q60's range like
  * any other norm too long. */
+/* c[0]^2 + ... + c[3]^2 for components of at most 2^30.5. On ARMv6-M from
+ * the halves c = h 2^16 + l, l in [0, 2^16): the squares of the high
+ * halves (each below 2^29.1) sum in uint32, the h l products and the
+ * squares of the low halves in 64 bits; elsewhere as it reads. */
+static uint64_t sum_squares(const int32_t c[4])
+{
+#if FX_NARROW_MUL
+	const int32_t h0 = c[0] >> 16, h1 = c[1] >> 16, h2 = c[2] >> 16, h3 = c[3] >> 16;
+	const uint32_t l0 = (uint16_t)c[0], l1 = (uint16_t)c[1], l2 = (uint16_t)c[2], l3 = (uint16_t)c[3];
+	uint32_t hh = (uint32_t)(h0 * h0) + (uint32_t)(h1 * h1) + (uint32_t)(h2 * h2) + (uint32_t)(h3 * h3);
+	int64_t hl = (int64_t)(h0 * (int32_t)l0) + (int64_t)(h1 * (int32_t)l1) + (int64_t)(h2 * (int32_t)l2) +
+		     (int64_t)(h3 * (int32_t)l3);
+	uint64_t ll = (uint64_t)(l0 * l0) + (uint64_t)(l1 * l1) + (uint64_t)(l2 * l2) + (uint64_t)(l3 * l3);
+	return ((uint64_t)hh << 32) + ((uint64_t)hl << 17) + ll;
+#else
+	return (uint64_t)(fx_mul_wide(c[0], c[0]) + fx_mul_wide(c[1], c[1]) + fx_mul_wide(c[2], c[2]) +
+			  fx_mul_wide(c[3], c[3]));
+#endif
+}
+
 static uint64_t quat_norm2_sat(fx_quat q)
 {
 	const int32_t c[4] = { q.w, q.x, q.y, q.z };
+	const int32_t lim = 1518500249; /* floor(2^30.5): its square is below 2^61 */
+	if (c[0] >= -lim && c[0] <= lim && c[1] >= -lim && c[1] <= lim && c[2] >= -lim && c[2] <= lim &&
+	    c[3] >= -lim && c[3] <= lim) {
+		/* the usual case, a blend of unit quaternions: the sum of four
+		 * squares below 2^61 is below 2^63 */
+		return sum_squares(c);
+	}
 	uint64_t sum = 0;
 	for (int i = 0; i < 4; i++) {
-		uint64_t sq = (uint64_t)((int64_t)c[i] * c[i]);
+		uint64_t sq = (uint64_t)fx_mul_wide(c[i], c[i]);
 		sum = sum > UINT64_MAX - sq ? UINT64_MAX : sum + sq;
 	}
 	return sum;
@@ -278,13 +313,12 @@ fx_dq fx_dq_blend(const fx_dq *bone_dqs, const uint16_t *bone_idx,
 		const fx_dq *d = &bone_dqs[bone_idx[i]];
 		/* q and -q are the same rotation: keep every influence on the
 		 * pivot's hemisphere so the sum takes the short way round. */
-		int64_t w = fx_quat_dot(d->real, pivot) < 0 ? -(int64_t)weights[i]
-							    : (int64_t)weights[i];
+		int32_t w = fx_quat_dot(d->real, pivot) < 0 ? -(int32_t)weights[i] : (int32_t)weights[i];
 
-		r[0] += w * d->real.w; r[1] += w * d->real.x;
-		r[2] += w * d->real.y; r[3] += w * d->real.z;
-		u[0] += w * d->dual.w; u[1] += w * d->dual.x;
-		u[2] += w * d->dual.y; u[3] += w * d->dual.z;
+		r[0] += fx_mul_wide(w, d->real.w); r[1] += fx_mul_wide(w, d->real.x);
+		r[2] += fx_mul_wide(w, d->real.y); r[3] += fx_mul_wide(w, d->real.z);
+		u[0] += fx_mul_wide(w, d->dual.w); u[1] += fx_mul_wide(w, d->dual.x);
+		u[2] += fx_mul_wide(w, d->dual.y); u[3] += fx_mul_wide(w, d->dual.z);
 	}
 	for (int k = 0; k < 4; k++) {
 		r[k] = fx_shr_round(r[k], 15);
@@ -307,53 +341,4 @@ int fx_blend_scale(fx_quat real, uint32_t *inv)
 		return 0;
 	*inv = (y + 1) >> 1;
 	return sh;
-}
-
-/* v / 2^s, rounded to nearest or (cut) towards -infinity */
-static int64_t shr(int64_t v, int s, int round)
-{
-	return round ? fx_shr_round(v, s) : v >> s;
-}
-
-/* v + (2 / s) (r x (r x v + w v + dv) + w dv - dw r), dual = (dw, dv) or
- * NULL for a normal. Each sum is a dot product of (part of) the real part,
- * shorter than 2^30.5 for s < 2, with at most 4 int32 values (at most
- * 2^32 long): below 2^62.5, and b inv below 2^61. A normal's shifts cut
- * instead of rounding (3 adds fewer per lane in the SIMD kernel): it leaves
- * in Q16, 14 bits coarser than the Q30 it is moved in, which the cut's
- * bias (under 2 LSB of Q30) does not reach. */
-static fx_vec3 move_blended(const fx_quat *q, const fx_quat *dual, fx_vec3 v, uint32_t inv, int sh)
-{
-	const int round = dual != NULL;
-	const int64_t w = q->w, r[3] = { q->x, q->y, q->z };
-	const int64_t vv[3] = { v.x, v.y, v.z };
-	const int64_t dw = dual ? dual->w : 0;
-	const int64_t dv[3] = { dual ? dual->x : 0, dual ? dual->y : 0, dual ? dual->z : 0 };
-	int64_t a[3], out[3];
-
-	for (int i = 0; i < 3; i++) {
-		int j = (i + 1) % 3, k = (i + 2) % 3;
-		a[i] = fx_sat32(shr(r[j] * vv[k] - r[k] * vv[j] + w * vv[i], 30, round) + dv[i]);
-	}
-	for (int i = 0; i < 3; i++) {
-		int j = (i + 1) % 3, k = (i + 2) % 3;
-		int64_t b = fx_sat32(shr(r[j] * a[k] - r[k] * a[j] + w * dv[i] - dw * r[i], 30, round));
-		out[i] = fx_sat32(vv[i] + shr(b * inv, sh, round));
-	}
-	fx_vec3 o = { (int32_t)out[0], (int32_t)out[1], (int32_t)out[2] };
-	return o;
-}
-
-void fx_dq_transform_blend(const fx_dq *d, fx_vec3 p, fx_vec3 n, fx_vec3 *po, fx_vec3 *no)
-{
-	uint32_t inv;
-	int sh = fx_blend_scale(d->real, &inv);
-
-	if (sh == 0) {
-		*po = p;
-		*no = n;
-		return;
-	}
-	*po = move_blended(&d->real, &d->dual, p, inv, sh);
-	*no = move_blended(&d->real, NULL, n, inv, sh);
 }

@@ -76,6 +76,104 @@ typedef struct fx_dq {
 	fx_quat real, dual;
 } fx_dq;
 
+/* a * b exactly, for int32 a and b: every product in this module goes
+ * through it with 32-bit operands, so a core with a 32 x 32 -> 64 multiply
+ * (SMULL on a Cortex-M3/M4, IMUL on x86-64) gets one instruction. The
+ * Cortex-M0 (ARMv6-M) has none: its MULS keeps the low 32 bits, and GCC
+ * would call libgcc's 64 x 64 multiply; there the product is built from
+ * four 16 x 16 products of the operands' halves, each of which fits 32
+ * bits (a signed high half times an unsigned low half is below 2^31).
+ * FX_NARROW_MUL says which: code that can use 32-bit sums of halves
+ * instead (the fixed kernel's blend) does so where it is 1. */
+#ifndef FX_NARROW_MUL /* a test may set it, to run that path on the host */
+#if defined(__ARM_ARCH_6M__)
+#define FX_NARROW_MUL 1
+#else
+#define FX_NARROW_MUL 0
+#endif
+#endif
+
+static inline int64_t fx_mul_wide(int32_t a, int32_t b)
+{
+#if FX_NARROW_MUL
+	int32_t ah = a >> 16, bh = b >> 16;
+	uint32_t al = (uint16_t)a, bl = (uint16_t)b;
+	int64_t mid = (int64_t)(ah * (int32_t)bl) + (int64_t)((int32_t)al * bh);
+	/* unsigned arithmetic: shifting a negative int64 left is undefined */
+	uint64_t r = ((uint64_t)(int64_t)(ah * bh) << 32) + ((uint64_t)mid << 16) + al * bl;
+	return (int64_t)r;
+#else
+	return (int64_t)a * b;
+#endif
+}
+
+/* The same for unsigned a and b. */
+static inline uint64_t fx_mulu_wide(uint32_t a, uint32_t b)
+{
+#if FX_NARROW_MUL
+	uint32_t ah = a >> 16, bh = b >> 16, al = a & 0xffffu, bl = b & 0xffffu;
+	uint64_t mid = (uint64_t)(ah * bl) + al * bh;
+	return ((uint64_t)(ah * bh) << 32) + (mid << 16) + al * bl;
+#else
+	return (uint64_t)a * b;
+#endif
+}
+
+/* A sum of products, exact (as int64, whose range the caller answers
+ * for): fx_sum_start(c), fx_sum_add(&s, a, b) for each product,
+ * fx_sum_value(&s). Where a 32 x 32 -> 64 multiply-add is an instruction
+ * it is that; on ARMv6-M, where each fx_mul_wide puts its four products
+ * of halves together in 64 bits, the sum keeps those parts apart instead
+ * (the products of high halves, the mixed ones, the low ones: adding an
+ * int32 to an int64 is 2 or 3 instructions) and puts them together once. */
+#if FX_NARROW_MUL
+typedef struct fx_sum {
+	int64_t hi, mid;
+	uint64_t lo;
+} fx_sum;
+
+static inline fx_sum fx_sum_start(int64_t c)
+{
+	fx_sum s = { 0, 0, (uint64_t)c };
+	return s;
+}
+
+static inline void fx_sum_add(fx_sum *s, int32_t a, int32_t b)
+{
+	int32_t ah = a >> 16, bh = b >> 16;
+	uint32_t al = (uint16_t)a, bl = (uint16_t)b;
+	s->hi += ah * bh;
+	s->mid += ah * (int32_t)bl;
+	s->mid += (int32_t)al * bh;
+	s->lo += al * bl;
+}
+
+static inline int64_t fx_sum_value(const fx_sum *s)
+{
+	return (int64_t)(((uint64_t)s->hi << 32) + ((uint64_t)s->mid << 16) + s->lo);
+}
+#else
+typedef struct fx_sum {
+	int64_t v;
+} fx_sum;
+
+static inline fx_sum fx_sum_start(int64_t c)
+{
+	fx_sum s = { c };
+	return s;
+}
+
+static inline void fx_sum_add(fx_sum *s, int32_t a, int32_t b)
+{
+	s->v += fx_mul_wide(a, b);
+}
+
+static inline int64_t fx_sum_value(const fx_sum *s)
+{
+	return s->v;
+}
+#endif
+
 /* v / 2^s rounded to nearest, 1 <= s <= 62, |v| < 2^63 - 2^(s-1). */
 static inline int64_t fx_shr_round(int64_t v, int s)
 {
@@ -91,12 +189,15 @@ static inline int32_t fx_sat32(int64_t v)
  * 2^62 always; the result saturates if it leaves int32 (only if |a| > 1). */
 static inline int32_t fx_mul_q30(fx_q30 a, int32_t b)
 {
-	return fx_sat32(fx_shr_round((int64_t)a * b, 30));
+	return fx_sat32(fx_shr_round(fx_mul_wide(a, b), 30));
 }
 
 /* Dot product in Q60 (Q30+F if b is in F), exact. One operand a unit Q30
  * quaternion (or both shorter than 2): partial sums <= |a| |b| < 2^63. */
-int64_t fx_quat_dot(fx_quat a, fx_quat b);
+static inline int64_t fx_quat_dot(fx_quat a, fx_quat b)
+{
+	return fx_mul_wide(a.w, b.w) + fx_mul_wide(a.x, b.x) + fx_mul_wide(a.y, b.y) + fx_mul_wide(a.z, b.z);
+}
 /* Hamilton product, rotate by b then a. One operand must be a unit Q30
  * quaternion, the other may be Q30 or any format F (the result is then F).
  * Each component is summed exactly in int64 and rounded once. */

@@ -143,6 +143,12 @@ typedef struct skin_bones {
 	fx_dq fdq_signed[SKP_MAX_BONES + 1][2];
 	uint16_t dq8_at[SKP_MAX_BONES + 1][SKP_MAX_BONES + 1];
 #endif
+#if FX_NARROW_MUL
+	/* fdq split once a frame for the fixed kernel of a core without a
+	 * 32 x 32 -> 64 multiply (Cortex-M0): each component c as its high
+	 * half c >> 16 ([0]) and its low half c & 0xffff ([1]). */
+	int32_t fdq_split[SKP_MAX_BONES + 1][2][8];
+#endif
 } skin_bones;
 
 void skin_bones_compute(skin_bones *out, const skel *s, const skel_pose *bind,

@@ -143,6 +143,23 @@ static void compute_signed(skin_bones *out)
 }
 #endif
 
+#if FX_NARROW_MUL
+static void compute_split(skin_bones *out)
+{
+	for (int b = 0; b <= SKP_MAX_BONES; b++) {
+		if (b >= out->count && b != SKIN_IDENTITY_BONE)
+			continue;
+		const fx_dq *d = &out->fdq[b];
+		const int32_t c[8] = { d->real.w, d->real.x, d->real.y, d->real.z,
+				       d->dual.w, d->dual.x, d->dual.y, d->dual.z };
+		for (int i = 0; i < 8; i++) {
+			out->fdq_split[b][0][i] = c[i] >> 16;
+			out->fdq_split[b][1][i] = c[i] & 0xffff;
+		}
+	}
+}
+#endif
+
 void skin_bones_compute(skin_bones *out, const skel *s, const skel_pose *bind,
 			const skel_pose *pose)
 {
@@ -167,5 +184,8 @@ void skin_bones_derive(skin_bones *out)
 #endif
 #ifdef SKP_SIMD_NEON
 	compute_signed(out);
+#endif
+#if FX_NARROW_MUL
+	compute_split(out);
 #endif
 }

@@ -13,6 +13,8 @@ MCU_CPU       := -mcpu=cortex-m4 -mthumb -mfloat-abi=hard -mfpu=fpv4-sp-d16
 # -ffreestanding: no hosted libc assumed (newlib links only what the core
 # calls by name); -fstack-usage feeds `make size`.
 BOARD_CFLAGS  := $(MCU_CPU) -O2 -g -ffreestanding -ffunction-sections -fdata-sections -fstack-usage
+# app/math and app/skin (the skinning kernels): tests/embedded/mcu.mk
+MCU_KERNEL_OPT := -O3
 SIMD          := scalar
 # 1: the test also runs the float pipeline (parse, FK, bind) on the target.
 MCU_FULL      := 1

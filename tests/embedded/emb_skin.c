@@ -28,6 +28,7 @@
 
 #include "emb_port.h"
 #include "emb_tables.h"
+#include "emb_soa.h" /* after emb_tables.h */
 #include "skin_kernels.h" /* the fixed kernel itself: skin_run would link the float ones */
 
 #ifdef EMB_FULL
@@ -107,33 +108,106 @@ static void load_frame_table(int frame)
 		fx_dq d = { { v[0], v[1], v[2], v[3] }, { v[4], v[5], v[6], v[7] } };
 		bones.fdq[b == EMB_BONES ? SKIN_IDENTITY_BONE : b] = d;
 	}
-}
-
-/* The kernel only reads through these pointers (skin_soa has no const
- * variant), so the tables stay in flash. */
-static void table_soa(skin_soa *s)
-{
-	memset(s, 0, sizeof *s);
-	s->count = EMB_VERTS;
-	s->padded = EMB_PADDED;
-	s->fpx = (int32_t *)emb_fpx; s->fpy = (int32_t *)emb_fpy; s->fpz = (int32_t *)emb_fpz;
-	s->fnx = (int32_t *)emb_fnx; s->fny = (int32_t *)emb_fny; s->fnz = (int32_t *)emb_fnz;
-	const uint16_t *bone[4] = { emb_bone0, emb_bone1, emb_bone2, emb_bone3 };
-	const uint16_t *fw[4] = { emb_fw0, emb_fw1, emb_fw2, emb_fw3 };
-	_Static_assert(SKP_MAX_INFLUENCES == 4, "emb_gen writes 4 influences");
-	for (int k = 0; k < SKP_MAX_INFLUENCES; k++) {
-		s->bone[k] = (uint16_t *)bone[k];
-		s->fweight[k] = (uint16_t *)fw[k];
-	}
+	skin_bones_derive(&bones); /* the kernel's per-frame tables, where the board has them */
 }
 
 static uint32_t fixed_checksum(void)
 {
 	skin_soa s;
 	fnv f = { 2166136261u };
-	table_soa(&s);
+	emb_table_soa(&s);
 	for (int fr = 0; fr < EMB_FRAMES; fr++) {
 		load_frame_table(fr);
+		skin_hash(&s, &f);
+	}
+	return f.h;
+}
+
+/* Stress: the fixed kernel on made-up inputs meant to reach every path
+ * of every board's arithmetic (on a Cortex-M0 the split sums of
+ * skin_fixed.c and fixed_move.c, elsewhere 64-bit multiply-adds; in both
+ * the sign test left to the exact dot, saturation, the definition taken
+ * again when a fast path gives up): near-unit and arbitrary quaternions,
+ * bones a quarter turn apart, translations and positions near the
+ * format's ends, weights summing to 1 and past it; rotations within
+ * fx_quat_dot's domain. The same LCG on every
+ * board, so the checksums must be equal. */
+#define STRESS_VERTS 64
+#define STRESS_ROUNDS 48
+
+static uint32_t lcg_state;
+
+static uint32_t lcg(void)
+{
+	lcg_state = lcg_state * 1664525u + 1013904223u;
+	return lcg_state ^ (lcg_state >> 15);
+}
+
+/* A value in [-range, range] (range < 2^31), or any int32 for range 0. */
+static int32_t lcg_in(uint32_t range)
+{
+	uint32_t u = lcg();
+	return range ? (int32_t)(u % (2 * range + 1)) - (int32_t)range : (int32_t)u;
+}
+
+static void stress_bones(int mode)
+{
+	/* rotations within fx_quat_dot's domain (shorter than 2: its int64
+	 * sums would wrap past it) */
+	const uint32_t rot = (1u << 30) - 1, dual = mode == 1 ? 0 : mode == 3 ? (1u << 31) - 1 : 1u << 26;
+	bones.count = EMB_BONES;
+	for (int b = 0; b <= EMB_BONES; b++) {
+		fx_dq d = { { lcg_in(rot), lcg_in(rot), lcg_in(rot), lcg_in(rot) },
+			    { lcg_in(dual), lcg_in(dual), lcg_in(dual), lcg_in(dual) } };
+		if (mode == 2) { /* a quarter turn from bone 0, give or take 2^-20 */
+			fx_quat q = { lcg_in(1024), (int32_t)(1 << 30) + lcg_in(1024), lcg_in(1024), lcg_in(1024) };
+			if (b > 0 && b % 2)
+				d.real = q;
+			else
+				d.real = (fx_quat){ (int32_t)(1 << 30) + lcg_in(1024), lcg_in(1024), lcg_in(1024), lcg_in(1024) };
+		}
+		bones.fdq[b == EMB_BONES ? SKIN_IDENTITY_BONE : b] = d;
+	}
+	skin_bones_derive(&bones);
+}
+
+static int32_t st_p[6][STRESS_VERTS];
+static uint16_t st_bone[SKP_MAX_INFLUENCES][STRESS_VERTS], st_w[SKP_MAX_INFLUENCES][STRESS_VERTS];
+
+static void stress_vertex(int v, int mode)
+{
+	const uint32_t pos = mode == 3 ? 0 : 1u << 27;
+	for (int i = 0; i < 3; i++) {
+		st_p[i][v] = lcg_in(pos);
+		st_p[3 + i][v] = lcg_in(1u << 30);
+	}
+	uint32_t left = FX_W15_ONE + (lcg() % 8 == 0 ? lcg() % 40000 : 0); /* past 1 now and then */
+	for (int k = 0; k < SKP_MAX_INFLUENCES; k++) {
+		uint32_t w = k == SKP_MAX_INFLUENCES - 1 ? left : lcg() % (left + 1);
+		w = w > 65535 ? 65535 : w;
+		st_w[k][v] = (uint16_t)w;
+		left -= w < left ? w : left;
+		st_bone[k][v] = (uint16_t)(lcg() % 9 == 0 ? SKIN_IDENTITY_BONE : lcg() % EMB_BONES);
+	}
+}
+
+static uint32_t stress_checksum(void)
+{
+	skin_soa s;
+	fnv f = { 2166136261u };
+	lcg_state = 12345u;
+	memset(&s, 0, sizeof s);
+	s.count = s.padded = STRESS_VERTS;
+	s.fpx = st_p[0]; s.fpy = st_p[1]; s.fpz = st_p[2];
+	s.fnx = st_p[3]; s.fny = st_p[4]; s.fnz = st_p[5];
+	for (int k = 0; k < SKP_MAX_INFLUENCES; k++) {
+		s.bone[k] = st_bone[k];
+		s.fweight[k] = st_w[k];
+	}
+	for (int round = 0; round < STRESS_ROUNDS; round++) {
+		stress_bones(round % 4);
+		for (int v = 0; v < STRESS_VERTS; v++)
+			stress_vertex(v, round % 4);
 		skin_hash(&s, &f);
 	}
 	return f.h;
@@ -207,7 +281,7 @@ static int bind_on_target(diff *soa_diff, skp_error *err)
 	if (skin_soa_load(&soa, &body, &weights, sk.count, err) != SKP_OK)
 		return fail("skin_soa_load", err);
 	skin_soa t;
-	table_soa(&t);
+	emb_table_soa(&t);
 	for (int v = 0; v < EMB_PADDED; v++) {
 		diff_add(soa_diff, soa.fpx[v], t.fpx[v]); diff_add(soa_diff, soa.fpy[v], t.fpy[v]);
 		diff_add(soa_diff, soa.fpz[v], t.fpz[v]); diff_add(soa_diff, soa.fnx[v], t.fnx[v]);
@@ -360,6 +434,9 @@ int emb_main(void)
 	say(" frames, skinning dqbs-fixed (scalar)");
 	hex32(hex, fixed_checksum());
 	emb_puts("emb: fixed-kernel checksum ");
+	say(hex);
+	hex32(hex, stress_checksum());
+	emb_puts("emb: stress checksum ");
 	say(hex);
 #ifdef EMB_FULL
 	uint32_t sum;
