@@ -1,7 +1,9 @@
 #!/bin/sh
 # The README's commands on a fresh machine: a Debian minbase root with only
 # git and make (debootstrap), a clone of this repository's HEAD, then
-# `make test` and `make run` exactly as the README has them, each timed.
+# `make test` and `make run` exactly as the README has them, each timed;
+# `make run` must show the default show's character (its vertex count in
+# the log, its skin over 2% of the contact sheet: tests/fresh_pixels.c).
 # With --deb it also builds the packages there (`make deb`, lintian) and, in
 # a second, pristine root, installs skinplay alone (`apt install
 # ./skinplay_*.deb`: neither skintool nor Assimp may come with it), plays the
@@ -158,8 +160,14 @@ say "clone of $rev, then the README's commands"
 step build clone "git clone -q /src/repo /root/work/main && git -C /root/work/main log --oneline -1"
 # exactly as the README says, from the clone
 step build "make-test" "cd /root/work/main && make test"
-step build "make-run" "cd /root/work/main && make run && ls out/contact_sheet.png >/dev/null &&
-	echo \"run: \$(ls out/frame_*.png | wc -l) frames and out/contact_sheet.png\""
+# the default show's character: the MakeHuman body (13,380 vertices) named
+# in the log, and its skin on the contact sheet (tests/fresh_pixels.c)
+step build "make-run" "cd /root/work/main && { make run >/root/run.log 2>&1; rc=\$?; cat /root/run.log; [ \$rc = 0 ]; } &&
+	ls out/contact_sheet.png >/dev/null &&
+	grep -q 'a body of 13380 vertices' /root/run.log &&
+	cc -O2 tests/fresh_pixels.c -o /root/fresh_pixels \$(pkg-config --cflags --libs libpng) &&
+	/root/fresh_pixels out/contact_sheet.png 2 &&
+	echo \"run: \$(ls out/frame_*.png | wc -l) frames and out/contact_sheet.png, the MakeHuman body in them\""
 
 if [ "$deb" = 1 ]; then
 	step build "make-deb" "cd /root/work/main && make deb"

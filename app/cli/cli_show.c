@@ -202,8 +202,9 @@ int show_open(show_source *s, const char *const *paths, int n, bound_body *body)
 	}
 	close_others(s, s->active);
 	show_image *img = &s->slot[s->active];
-	fprintf(cli_note(), "image: playing %s (sequence %llu, %d clip%s)\n", img->path,
-		(unsigned long long)img->im.hdr.sequence, img->im.clip_count, img->im.clip_count == 1 ? "" : "s");
+	fprintf(cli_note(), "image: playing %s (sequence %llu, %d clip%s, a body of %d vertices)\n", img->path,
+		(unsigned long long)img->im.hdr.sequence, img->im.clip_count, img->im.clip_count == 1 ? "" : "s",
+		body->mesh.vert_count);
 	show_image_warn(img);
 	accept_clips(s, img, &body->skel, 1);
 	return 0;

@@ -79,13 +79,14 @@ skp_status play_survey_clip(const skel *s, const play_source *src, int stride, a
 	out->facing = 0.0f;
 	out->lo = vec3_make(INFINITY, INFINITY, INFINITY);
 	out->hi = vec3_make(-INFINITY, -INFINITY, -INFINITY);
+	out->first_root = root0;
 	int r = 0;
 	while (st == SKP_OK && (r = src->next(src->ctx, frame, err)) > 0) {
 		if (out->frames++ % (stride > 0 ? stride : 1))
 			continue;
 		fk_pose(s, frame->value, pose);
 		if (out->frames == 1)
-			root0 = pose->tip[0];
+			root0 = out->first_root = pose->tip[0];
 		evidence += play_pose_facing(s, pose, &ss, &cs);
 		grow_bounds(s, pose, root0, out);
 	}

@@ -16,6 +16,8 @@ typedef struct play_survey {
 	int facing_known;        /* 0: no frame said (no feet, no frames) */
 	vec3 lo, hi;             /* joint bounds over the clip, the root's
 	                          * horizontal travel taken out */
+	vec3 first_root;         /* the first frame's root: every frame's
+	                          * root is moved over it for lo, hi */
 } play_survey;
 
 /* Reads src from its first frame to its last (FK every `stride`-th frame,

@@ -1,5 +1,6 @@
 /* A camera that follows the body's root smoothly, so a walk stays in frame
- * without the picture jerking with every step. */
+ * without the picture jerking with every step; given the space the body
+ * takes over a clip, it frames all of it (camera_frame_box). */
 #ifndef CAMERA_H
 #define CAMERA_H
 
@@ -26,5 +27,16 @@ void camera_turn_to(follow_camera *c, float azimuth, int immediate);
 
 /* View-projection for a viewport of the given aspect ratio. */
 mat4 camera_matrix(const follow_camera *c, float aspect);
+
+/* How far a smoothed value moves towards its goal in dt seconds: 1 -
+ * exp(-dt / 0.6 s), the camera's time constant. */
+float camera_ease(float dt);
+
+/* View-projection for a viewport of the given aspect ratio that shows the
+ * whole box [lo, hi] (world space) from the camera's azimuth, a little from
+ * above, as large as it fits between the rows ndc_bottom and ndc_top
+ * (-1..1, bottom to top; the rest of the viewport is kept for text) and
+ * across the whole width, centred in both. */
+mat4 camera_frame_box(const follow_camera *c, vec3 lo, vec3 hi, float aspect, float ndc_bottom, float ndc_top);
 
 #endif

@@ -14,8 +14,8 @@ static const char *const uniform_names[U_COUNT] = {
 };
 GLint render_loc[SHADER_COUNT][U_COUNT];
 
-/* A distinct colour per bone: hues spread by the golden angle. */
-static vec3 bone_color(int bone)
+/* Hues spread by the golden angle. */
+vec3 render_bone_color(int bone)
 {
 	float h = fmodf((float)bone * 0.618034f, 1.0f) * 6.0f;
 	float x = 1.0f - fabsf(fmodf(h, 2.0f) - 1.0f);
@@ -24,7 +24,7 @@ static vec3 bone_color(int bone)
 	return vec3_make(0.25f + 0.7f * rgb.x, 0.25f + 0.7f * rgb.y, 0.25f + 0.7f * rgb.z);
 }
 
-static void static_vertex(const skin_soa *soa, int v, float *o)
+static void static_vertex(renderer *r, const skin_soa *soa, int v, float *o)
 {
 	vec3 col = vec3_make(0, 0, 0);
 	o[0] = soa->px[v]; o[1] = soa->py[v]; o[2] = soa->pz[v];
@@ -32,8 +32,10 @@ static void static_vertex(const skin_soa *soa, int v, float *o)
 	for (int k = 0; k < SKP_MAX_INFLUENCES; k++) {
 		float w = soa->weight[k][v];
 		int b = soa->bone[k][v];
-		if (w > 0.0f && b != SKIN_IDENTITY_BONE)
-			col = vec3_madd(col, bone_color(b), w);
+		if (w > 0.0f && b != SKIN_IDENTITY_BONE) {
+			col = vec3_madd(col, render_bone_color(b), w);
+			r->bone_used[b] = 1;
+		}
 		/* the identity slot has no uniform: point it at bone 0 with its
 		 * zero weight */
 		o[9 + k] = b == SKIN_IDENTITY_BONE ? 0.0f : (float)b;
@@ -53,7 +55,7 @@ static void upload_static(renderer *r, const skin_soa *soa)
 	for (int first = 0; first < soa->count; first += chunk) {
 		int n = soa->count - first < chunk ? soa->count - first : chunk;
 		for (int i = 0; i < n; i++)
-			static_vertex(soa, first + i, r->misc + i * STATIC_FLOATS);
+			static_vertex(r, soa, first + i, r->misc + i * STATIC_FLOATS);
 		gl->BufferSubData(GL_ARRAY_BUFFER, (GLintptr)first * STATIC_STRIDE,
 				  (GLsizeiptr)n * STATIC_STRIDE, r->misc);
 	}
@@ -180,6 +182,17 @@ void render_read_rgba(const renderer *r, uint8_t *rgba)
 {
 	r->gl->PixelStorei(GL_PACK_ALIGNMENT, 1);
 	r->gl->ReadPixels(0, 0, r->width, r->height, GL_RGBA, GL_UNSIGNED_BYTE, rgba);
+}
+
+void render_set_extent(renderer *r, vec3 lo, vec3 hi, int immediate)
+{
+	r->goal_lo = lo;
+	r->goal_hi = hi;
+	if (immediate || !r->framed) {
+		r->ext_lo = lo;
+		r->ext_hi = hi;
+	}
+	r->framed = 1;
 }
 
 void render_set_yaw(renderer *r, float yaw, int immediate)

@@ -1,8 +1,10 @@
 /* The renderer: a lit body (skinned on the CPU or in the vertex shader), a
- * ground grid with a soft blob shadow, a camera following the root, a
- * skeleton overlay, a weight view, a HUD, and a compare view with two
- * algorithms side by side. OpenGL ES 2.0 through gl_api; no allocation:
- * the renderer is one struct the caller owns (keep it static). */
+ * ground grid with a soft blob shadow, a camera following the root (and,
+ * given the space the body takes over the clip, framing all of it above the
+ * captions), a skeleton overlay, a weight view with its colour legend, a
+ * HUD, and a compare view with two algorithms side by side. OpenGL ES 2.0
+ * through gl_api; no allocation: the renderer is one struct the caller owns
+ * (keep it static). */
 #ifndef RENDER_H
 #define RENDER_H
 
@@ -54,6 +56,10 @@ typedef struct renderer {
 	int font_w;
 	float floor_y;
 	follow_camera cam;
+	int framed;              /* render_set_extent was called: frame the box */
+	vec3 ext_lo, ext_hi;     /* the box framed now (eased towards the goal), */
+	vec3 goal_lo, goal_hi;   /* and the one asked for: x, z from the root */
+	uint8_t bone_used[SKP_MAX_BONES]; /* bones with skin: the weights legend */
 	mat4 screen;             /* rotation for screens mounted sideways */
 	float misc[6 * 1024];    /* grid, shadow and overlay vertices */
 	float text[RENDER_MAX_TEXT * 6 * 5];
@@ -82,6 +88,14 @@ void render_draw(renderer *r, const render_frame *f);
 void render_read_rgba(const renderer *r, uint8_t *rgba);
 
 void render_shutdown(renderer *r);
+
+/* The space the body takes (the joints over a whole clip, with room for
+ * the flesh round them): y as it is, x and z from the root's horizontal
+ * position, which the camera follows. From then on the camera frames all
+ * of it, feet and head, above the captions at the foot of each panel and
+ * below the HUD; a larger box is taken at once (nothing leaves the
+ * picture), a smaller one eased into over the next frames, or at once. */
+void render_set_extent(renderer *r, vec3 lo, vec3 hi, int immediate);
 
 /* Turns the camera yaw radians about the vertical from the usual view (a
  * body facing +z seen from the front, RENDER_CAMERA_AZIMUTH to its left):

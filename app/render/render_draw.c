@@ -274,38 +274,197 @@ static int text_width(const char *s, int scale)
 	return (int)strlen(s) * (FONT_GLYPH_W + 1) * scale;
 }
 
-/* The panel's label at its foot, centred; on the visitor's screen larger,
- * with the panel's sentence above it (smaller when it would not fit). */
-static void draw_label(renderer *r, const render_frame *f, int i, render_rect area)
+/* Where the text goes, worked out once a frame for every panel: one size
+ * per role (the methods' names, the visitor's sentences), the largest at
+ * which each panel's fits its width, and the bands at the foot and the top
+ * that the body is framed clear of. Logical pixels. */
+typedef struct layout {
+	int hud;                 /* HUD line scale */
+	int label, caption;      /* 0: not drawn */
+	int foot;                /* the band under the body: labels, captions */
+	int top;                 /* the band over it: HUD lines, the legend */
+	int legend, legend_rows; /* the weights legend's scale and rows (0: none) */
+} layout;
+
+static int fit_scale(const render_frame *f, int n, int panel_w, int scale, int caption)
 {
-	static const float label_rgba[4] = { 1, 1, 1, 1 }, caption_rgba[4] = { 0.95f, 0.85f, 0.55f, 1 };
-	int base = text_scale(area.h), s = base + (f->visitor ? 3 : 1);
-	const char *label = f->panel[i].label;
-	while (s > 1 && text_width(label, s) > area.w - 8)
-		s--;
-	int y = area.h - (FONT_CELL_H + 4) * s;
-	render_text(r, area, (area.w - text_width(label, s)) / 2, y, s, label, label_rgba);
-	const char *caption = f->visitor ? f->caption[i] : NULL;
-	if (!caption)
-		return;
-	int cs = base + 1;
-	while (cs > 1 && text_width(caption, cs) > area.w - 8)
-		cs--;
-	render_text(r, area, (area.w - text_width(caption, cs)) / 2, y - (FONT_CELL_H + 3) * cs, cs, caption,
-		    caption_rgba);
+	for (int i = 0; i < n; i++) {
+		const char *s = caption ? f->caption[i] : f->panel[i].label;
+		while (s && scale > 1 && text_width(s, scale) > panel_w - 8)
+			scale--;
+	}
+	return scale;
 }
 
-static void draw_panel(renderer *r, const render_frame *f, int i, render_rect area)
+static const char legend_title[] = "WEIGHTS: EACH BONE ITS COLOUR, MIXED WHERE BONES SHARE THE SKIN:";
+
+/* Lays the legend's words (its title, then each bone with skin) out in
+ * rows of width w from pen x0; returns the rows. draw: also draws them
+ * from row y0. */
+static int legend_words(renderer *r, render_rect full, int scale, int y0, int draw)
+{
+	static const float title_rgba[4] = { 0.95f, 0.95f, 0.85f, 1.0f };
+	int x0 = 4 * scale, x = x0, rows = 1, line = (FONT_CELL_H + 2) * scale, space = (FONT_GLYPH_W + 1) * scale;
+	for (int b = -1; b < r->bone_count; b++) {
+		if (b >= 0 && !r->bone_used[b])
+			continue;
+		const char *word = b < 0 ? legend_title : r->skel->bone[b].name;
+		int w = text_width(word, scale);
+		if (x > x0 && x + w > full.w - x0) {
+			x = x0;
+			rows++;
+		}
+		if (draw) {
+			vec3 c = b < 0 ? vec3_make(title_rgba[0], title_rgba[1], title_rgba[2]) : render_bone_color(b);
+			float rgba[4] = { c.x, c.y, c.z, 1.0f };
+			render_text(r, full, x, y0 + (rows - 1) * line, scale, word, rgba);
+		}
+		x += w + space;
+	}
+	return rows;
+}
+
+/* Panel i of n: side by side, or on a portrait screen one above the other
+ * (the first on top), so each body is as large as it can be. GL's y. */
+static render_rect panel_rect(int i, int n, int lw, int lh)
+{
+	if (lh > lw) {
+		int y0 = (n - 1 - i) * lh / n, y1 = (n - i) * lh / n;
+		return (render_rect){ 0, y0, lw, y1 - y0 };
+	}
+	return (render_rect){ i * lw / n, 0, (i + 1) * lw / n - i * lw / n, lh };
+}
+
+static layout lay_out(renderer *r, const render_frame *f, int n, int lw, int lh)
+{
+	layout l;
+	memset(&l, 0, sizeof l);
+	l.hud = text_scale(lh);
+	int panel_w = panel_rect(0, n, lw, lh).w;
+	if ((n > 1 || f->visitor) && f->panel[0].label) {
+		l.label = fit_scale(f, n, panel_w, l.hud + (f->visitor ? 3 : 1), 0);
+		l.foot = (FONT_CELL_H + 4) * l.label;
+		if (f->visitor && f->caption[0]) {
+			l.caption = fit_scale(f, n, panel_w, l.hud + 1, 1);
+			l.foot += (FONT_CELL_H + 3) * l.caption;
+		}
+		l.foot += 2 * l.hud;
+	}
+	/* the HUD's lines from the top (the notice below them and the PAUSED
+	 * badge come and go: the body is not moved for them) */
+	int lines = 0;
+	for (int i = 0; i < RENDER_HUD_LINES - 1; i++)
+		if (f->hud[i])
+			lines = i + 1;
+	l.top = lines ? (4 + lines * (FONT_CELL_H + 2)) * l.hud : 0;
+	if (f->view == RENDER_VIEW_WEIGHTS) {
+		render_rect full = { 0, 0, lw, lh };
+		l.legend = (l.hud + 1) / 2;
+		l.legend_rows = legend_words(r, full, l.legend, 0, 0);
+		l.top += (2 + l.legend_rows * (FONT_CELL_H + 2)) * l.legend;
+	}
+	if (l.top + l.foot > panel_rect(0, n, lw, lh).h / 2) /* a tiny screen: the body first */
+		l.top = l.foot = 0;
+	return l;
+}
+
+/* The panel's label at its foot, centred; on the visitor's screen with the
+ * panel's sentence above it. */
+static void draw_label(renderer *r, const render_frame *f, const layout *l, int i, render_rect area)
+{
+	static const float label_rgba[4] = { 1, 1, 1, 1 }, caption_rgba[4] = { 0.95f, 0.85f, 0.55f, 1 };
+	const char *label = f->panel[i].label;
+	int y = area.h - (FONT_CELL_H + 4) * l->label;
+	render_text(r, area, (area.w - text_width(label, l->label)) / 2, y, l->label, label, label_rgba);
+	const char *caption = l->caption ? f->caption[i] : NULL;
+	if (caption)
+		render_text(r, area, (area.w - text_width(caption, l->caption)) / 2, y - (FONT_CELL_H + 3) * l->caption,
+			    l->caption, caption, caption_rgba);
+}
+
+/* Eases the framed box towards the one asked for: it grows at once (the
+ * body never leaves the picture), shrinks over the next frames. */
+static float ease_down(float now, float goal, float k)
+{
+	return goal < now ? goal : now + (goal - now) * k;
+}
+
+static float ease_up(float now, float goal, float k)
+{
+	return goal > now ? goal : now + (goal - now) * k;
+}
+
+static void ease_extent(renderer *r, float dt)
+{
+	float k = camera_ease(dt);
+	vec3 *lo = &r->ext_lo, *hi = &r->ext_hi, glo = r->goal_lo, ghi = r->goal_hi;
+	*lo = vec3_make(ease_down(lo->x, glo.x, k), ease_down(lo->y, glo.y, k), ease_down(lo->z, glo.z, k));
+	*hi = vec3_make(ease_up(hi->x, ghi.x, k), ease_up(hi->y, ghi.y, k), ease_up(hi->z, ghi.z, k));
+}
+
+/* The panel's camera: the box the body takes, placed at the followed root,
+ * between the bands (the top one where the panel meets the screen's top);
+ * without one, the camera following the body. */
+static mat4 panel_camera(const renderer *r, const layout *l, render_rect area, int lh)
+{
+	float aspect = (float)area.w / (float)area.h;
+	if (!r->framed)
+		return camera_matrix(&r->cam, aspect);
+	vec3 at = vec3_make(r->cam.target.x, 0.0f, r->cam.target.z);
+	vec3 lo = vec3_add(r->ext_lo, at), hi = vec3_add(r->ext_hi, at);
+	int top = area.y + area.h == lh ? l->top : 0;
+	float bottom = -1.0f + 2.0f * (float)l->foot / (float)area.h, ceiling = 1.0f - 2.0f * (float)top / (float)area.h;
+	return camera_frame_box(&r->cam, lo, hi, aspect, bottom, ceiling);
+}
+
+static void draw_panel(renderer *r, const render_frame *f, const layout *l, int i, render_rect area, int lh)
 {
 	render_set_viewport(r, area);
-	mat4 cam = camera_matrix(&r->cam, (float)area.w / (float)area.h);
+	mat4 cam = panel_camera(r, l, area, lh);
 	mat4 vp = mat4_mul(&r->screen, &cam);
 	render_grid_and_shadow(r, &vp, f->pose->tip[0]);
 	render_body(r, &vp, f, i);
 	if (f->view == RENDER_VIEW_SKELETON)
 		render_skeleton(r, &vp, f->pose);
-	if ((f->panel_count > 1 || f->visitor) && f->panel[i].label)
-		draw_label(r, f, i, area);
+	if (l->label)
+		draw_label(r, f, l, i, area);
+}
+
+/* A line between the two panels: down the middle, or across on a portrait
+ * screen. */
+static void draw_divider(renderer *r, int lw, int lh)
+{
+	const gl_api *gl = r->gl;
+	static const float line_rgba[4] = { 0.8f, 0.8f, 0.8f, 1.0f };
+	mat4 px = mat4_ortho(0, (float)lw, 0, (float)lh, -1, 1);
+	mat4 m = mat4_mul(&r->screen, &px);
+	float x = (float)lw / 2, y = (float)lh / 2;
+	float line[6] = { x, 0, 0, x, (float)lh, 0 };
+	if (lh > lw) {
+		float across[6] = { 0, y, 0, (float)lw, y, 0 };
+		memcpy(line, across, sizeof line);
+	}
+	use_flat(r, &m, line_rgba, 1.0f);
+	stream(r, line, 6);
+	attrib(gl, ATTR_POS, 3, 12, 0);
+	gl->DrawArrays(GL_LINES, 0, 2);
+	disable_attribs(gl);
+}
+
+/* The HUD lines at the top left, the legend under them, the badge. */
+static void draw_hud(renderer *r, const render_frame *f, const layout *l, render_rect full)
+{
+	static const float hud_rgba[4] = { 0.95f, 0.95f, 0.85f, 1.0f }, badge_rgba[4] = { 1.0f, 0.8f, 0.2f, 1.0f };
+	int s = l->hud, line = (FONT_CELL_H + 2) * s;
+	for (int i = 0; i < RENDER_HUD_LINES; i++)
+		if (f->hud[i])
+			render_text(r, full, 4 * s, 4 * s + i * line, s, f->hud[i], hud_rgba);
+	if (l->legend_rows)
+		legend_words(r, full, l->legend, l->top - (l->legend_rows * (FONT_CELL_H + 2)) * l->legend, 1);
+	if (f->badge) {
+		int bs = s + 3;
+		render_text(r, full, (full.w - text_width(f->badge, bs)) / 2, 8 * s + 2 * line, bs, f->badge, badge_rgba);
+	}
 }
 
 void render_draw(renderer *r, const render_frame *f)
@@ -313,7 +472,12 @@ void render_draw(renderer *r, const render_frame *f)
 	const gl_api *gl = r->gl;
 	int lw, lh;
 	render_logical_size(r, &lw, &lh);
-	camera_follow(&r->cam, fk_tip_centre(f->pose, r->bone_count), f->dt);
+	if (r->framed) {
+		ease_extent(r, f->dt);
+		camera_follow(&r->cam, f->pose->tip[0], f->dt);
+	} else {
+		camera_follow(&r->cam, fk_tip_centre(f->pose, r->bone_count), f->dt);
+	}
 	gl->Enable(GL_DEPTH_TEST);
 	gl->Enable(GL_CULL_FACE);
 	gl->CullFace(GL_BACK);
@@ -325,32 +489,12 @@ void render_draw(renderer *r, const render_frame *f)
 	 * make screenshots see-through */
 	gl->ColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_FALSE);
 	int n = f->panel_count < 1 ? 1 : f->panel_count;
-	for (int i = 0; i < n; i++) {
-		render_rect area = { i * lw / n, 0, (i + 1) * lw / n - i * lw / n, lh };
-		draw_panel(r, f, i, area);
-	}
+	layout l = lay_out(r, f, n, lw, lh);
+	for (int i = 0; i < n; i++)
+		draw_panel(r, f, &l, i, panel_rect(i, n, lw, lh), lh);
 	render_rect full = { 0, 0, lw, lh };
 	render_set_viewport(r, full);
-	if (n > 1) {
-		/* a divider between the halves */
-		static const float line_rgba[4] = { 0.8f, 0.8f, 0.8f, 1.0f };
-		mat4 px = mat4_ortho(0, (float)lw, 0, (float)lh, -1, 1);
-		mat4 m = mat4_mul(&r->screen, &px);
-		float l[6] = { (float)lw / 2, 0, 0, (float)lw / 2, (float)lh, 0 };
-		use_flat(r, &m, line_rgba, 1.0f);
-		stream(r, l, 6);
-		attrib(gl, ATTR_POS, 3, 12, 0);
-		gl->DrawArrays(GL_LINES, 0, 2);
-		disable_attribs(gl);
-	}
-	static const float hud_rgba[4] = { 0.95f, 0.95f, 0.85f, 1.0f }, badge_rgba[4] = { 1.0f, 0.8f, 0.2f, 1.0f };
-	int s = text_scale(lh);
-	for (int i = 0; i < RENDER_HUD_LINES; i++)
-		if (f->hud[i])
-			render_text(r, full, 4 * s, (4 + i * (FONT_CELL_H + 2)) * s, s, f->hud[i], hud_rgba);
-	if (f->badge) {
-		int bs = s + 3;
-		render_text(r, full, (lw - text_width(f->badge, bs)) / 2, (8 + 2 * (FONT_CELL_H + 2)) * s, bs,
-			    f->badge, badge_rgba);
-	}
+	if (n > 1)
+		draw_divider(r, lw, lh);
+	draw_hud(r, f, &l, full);
 }

@@ -22,6 +22,9 @@ typedef struct render_rect {
 void render_logical_size(const renderer *r, int *w, int *h);
 void render_set_viewport(const renderer *r, render_rect rect);
 
+/* A distinct colour per bone (the weight view's and its legend's). */
+vec3 render_bone_color(int bone);
+
 void render_grid_and_shadow(renderer *r, const mat4 *vp, vec3 root);
 void render_skeleton(renderer *r, const mat4 *vp, const skel_pose *pose);
 void render_body(renderer *r, const mat4 *vp, const render_frame *f, int panel);

@@ -145,6 +145,7 @@ static int setup(player *p)
 	}
 	render_set_yaw(&p->r, p->yaw, 1);
 	p->render_ready = 1;
+	clips_frame(p, 1);
 	choose_paths(p);
 	sheet_init(&p->contact, p->info.width, p->info.height);
 	if (p->o.out_dir && (p->info.width > SKP_DISPLAY_MAX_W || p->info.height > SKP_DISPLAY_MAX_H)) {

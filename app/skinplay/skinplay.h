@@ -40,6 +40,7 @@ typedef struct player {
 	int engine_failed; /* a source error was logged for this clip: hold, say it once */
 	double start_time; /* --start: the clip time the first frame shows */
 	float yaw;         /* the camera's turn for this clip (radians) */
+	float flesh;       /* how far the body reaches past its joints (first frame) */
 	int render_ready;  /* the renderer is up: clip changes turn its camera */
 	renderer r;
 	gl_api gl;
@@ -89,6 +90,10 @@ long clips_pass_frames(player *p);
 /* loop = show and an image with more than one clip that can play: its
  * clips play in turn (a pass's end starts the next). */
 int clips_show_loops(const player *p);
+
+/* Tells the renderer the space the body takes over the clip playing (the
+ * survey's joints, grown by p->flesh), so the camera frames all of it. */
+void clips_frame(player *p, int immediate);
 
 /* Shows text on screen for about seconds. */
 void clips_notice(player *p, const char *text, double seconds);

@@ -31,23 +31,53 @@ static void bind_pose(player *p)
 	fk_pose(&p->body.skel, p->body.pose_value, &p->skin.pose);
 }
 
+/* The joints' bounds in one pose (the held bind pose), as a survey's. */
+static void survey_pose(player *p, const skel_pose *pose)
+{
+	play_survey *s = &p->survey;
+	s->frames = 1;
+	s->first_root = s->lo = s->hi = pose->tip[0];
+	for (int b = 0; b < p->body.skel.count; b++) {
+		const vec3 q[2] = { pose->head[b], pose->tip[b] };
+		for (int k = 0; k < 2; k++) {
+			s->lo = vec3_make(fminf(s->lo.x, q[k].x), fminf(s->lo.y, q[k].y), fminf(s->lo.z, q[k].z));
+			s->hi = vec3_make(fmaxf(s->hi.x, q[k].x), fmaxf(s->hi.y, q[k].y), fmaxf(s->hi.z, q[k].z));
+		}
+	}
+}
+
+void clips_frame(player *p, int immediate)
+{
+	const play_survey *s = &p->survey;
+	if (!p->render_ready || s->frames <= 0 || !(s->hi.y >= s->lo.y))
+		return;
+	vec3 pad = vec3_make(p->flesh, p->flesh, p->flesh), root = vec3_make(s->first_root.x, 0.0f, s->first_root.z);
+	render_set_extent(&p->r, vec3_sub(vec3_sub(s->lo, root), pad), vec3_add(vec3_sub(s->hi, root), pad), immediate);
+}
+
 /* No clip can play: the bind pose, for ever (until SIGTERM). */
 static void hold_bind_pose(player *p)
 {
 	p->hold = 1;
 	bind_pose(p);
+	survey_pose(p, &p->skin.pose);
+	clips_frame(p, 0);
 	snprintf(p->clip, sizeof p->clip, "NO CLIP");
 	fprintf(stderr, "image: no clip of %s can play: holding the bind pose\n", show_path(&p->show));
 	clips_notice(p, "NO PLAYABLE CLIP IN THIS SHOW", 1e9);
 }
 
-/* The camera's turn for this clip: --yaw, or its mean facing (one pass). */
+/* One pass over the clip: the space the body takes, which the camera
+ * frames, and the camera's turn: --yaw, or the clip's mean facing. */
 static void face_clip(player *p)
 {
 	skp_error err;
 	float yaw = p->o.yaw_mode == 1 ? p->o.yaw_deg * (float)(M_PI / 180.0) : 0.0f;
-	if (p->o.yaw_mode == 0 && play_survey_clip(&p->body.skel, &p->src, 30, &p->scratch_frame, &p->scratch_pose,
-						   &p->survey, &err) == SKP_OK && p->survey.facing_known)
+	/* every other frame: the peak of a kick is not missed */
+	if (play_survey_clip(&p->body.skel, &p->src, 2, &p->scratch_frame, &p->scratch_pose, &p->survey, &err) !=
+	    SKP_OK)
+		p->survey.frames = 0;
+	if (p->o.yaw_mode == 0 && p->survey.frames > 0 && p->survey.facing_known)
 		yaw = p->survey.facing;
 	p->yaw = yaw;
 	fprintf(cli_note(), "clip: %ld frames at %.6g Hz (%.2f s); camera yaw %.0f degrees%s\n", p->src.frames, p->src.rate,
@@ -55,6 +85,7 @@ static void face_clip(player *p)
 		p->o.yaw_mode == 1 ? " (--yaw)" : p->survey.facing_known ? " (the clip's mean facing)" : "");
 	if (p->render_ready)
 		render_set_yaw(&p->r, yaw, 0);
+	clips_frame(p, 0);
 }
 
 /* The engine on p->src from its first frame, fading from what is shown;
@@ -155,6 +186,19 @@ static int open_first(player *p)
 	return p->o.start >= 0 && !p->hold ? start_at_frame(p, what) : 0;
 }
 
+/* How far the body's bounds [lo, hi] reach past its joints' in the pose
+ * shown, on the side where it is most: the head over its bone, a foot's
+ * sole under its joints. The camera grows every clip's bounds by it. */
+static float flesh_past_joints(player *p, vec3 lo, vec3 hi)
+{
+	play_survey saved = p->survey;
+	survey_pose(p, &p->skin.pose);
+	vec3 a = vec3_sub(p->survey.lo, lo), b = vec3_sub(hi, p->survey.hi);
+	p->survey = saved;
+	float f = fmaxf(fmaxf(fmaxf(a.x, a.y), a.z), fmaxf(fmaxf(b.x, b.y), b.z));
+	return f > 0.0f ? f : 0.0f;
+}
+
 /* The lowest point of the body in the clip's first frame: the floor. */
 float clips_first(player *p)
 {
@@ -169,10 +213,14 @@ float clips_first(player *p)
 		return NAN;
 	cli_skin_pose(&p->skin, &p->skin.pose);
 	cli_skin_run(&p->skin, SKIN_DQBS, p->pos[0], p->nrm[0]);
-	float lo = INFINITY;
-	for (int v = 0; v < p->body.mesh.vert_count; v++)
-		lo = fminf(lo, p->pos[0][3 * v + 1]);
-	return lo;
+	vec3 lo = vec3_make(INFINITY, INFINITY, INFINITY), hi = vec3_scale(lo, -1.0f);
+	for (int v = 0; v < p->body.mesh.vert_count; v++) {
+		const float *q = &p->pos[0][3 * v];
+		lo = vec3_make(fminf(lo.x, q[0]), fminf(lo.y, q[1]), fminf(lo.z, q[2]));
+		hi = vec3_make(fmaxf(hi.x, q[0]), fmaxf(hi.y, q[1]), fmaxf(hi.z, q[2]));
+	}
+	p->flesh = flesh_past_joints(p, lo, hi);
+	return lo.y;
 }
 
 int clips_show_loops(const player *p)

@@ -1,6 +1,8 @@
 /* Rendering for real, headless (surfaceless EGL and OSMesa on Mesa's
- * llvmpipe): golden images, CPU against GPU skinning, and the compare
- * view of a twisted joint. Images come from the built skinplay. */
+ * llvmpipe): golden images, CPU against GPU skinning, the compare view of
+ * a twisted joint, and the default show framed whole above its captions on
+ * a landscape, a portrait and a rotated screen. Images come from the built
+ * skinplay. */
 #include <stdarg.h>
 #include <stddef.h>
 #include <setjmp.h>
@@ -18,7 +20,7 @@
 #include "png_writer.h"
 #include "test_paths.h"
 
-#define MAX_PIXELS (640 * 360)
+#define MAX_PIXELS (960 * 540)
 
 typedef struct image {
 	int w, h;
@@ -223,9 +225,211 @@ static void test_compare_view_of_a_twist(void **state)
 	unlink(tube);
 }
 
+/* ---- the default show's layout ---- */
+
+/* The visitor's text colours (render_draw.c): the methods' names white,
+ * the sentences above them gold; exact, the font being drawn unfiltered. */
+static int near(const uint8_t *p, int r, int g, int b)
+{
+	return abs(p[0] - r) <= 2 && abs(p[1] - g) <= 2 && abs(p[2] - b) <= 2;
+}
+
+static int is_label(const uint8_t *p)
+{
+	return near(p, 255, 255, 255);
+}
+
+static int is_caption(const uint8_t *p)
+{
+	return near(p, 242, 217, 140);
+}
+
+/* The body, lit or in shade: red well over blue (the floor, the grid, the
+ * shadow and the background are blue-grey), and not caption text. */
+static int is_body(const uint8_t *p)
+{
+	return p[0] > 40 && p[0] > p[2] + 15 && !is_caption(p);
+}
+
+typedef struct rows {
+	int top, bottom;  /* first and last row from the top; top > bottom: none */
+} rows;
+
+typedef struct panel_check {
+	int x0, y0, x1, y1;      /* the panel, rows from the top, [x0, x1) x [y0, y1) */
+	int bx0, by0, bx1, by1;  /* the body's box (inclusive); bx0 > bx1: no body */
+	rows label, caption;     /* the text's rows */
+	long body;               /* body pixels */
+} panel_check;
+
+static const uint8_t *px(const image *im, int x, int y)
+{
+	return im->px + ((size_t)y * im->w + x) * 4;
+}
+
+static void measure_panel(const image *im, panel_check *c)
+{
+	c->bx0 = c->by0 = INT32_MAX;
+	c->bx1 = c->by1 = -1;
+	c->label = c->caption = (rows){ INT32_MAX, -1 };
+	c->body = 0;
+	for (int y = c->y0; y < c->y1; y++)
+		for (int x = c->x0; x < c->x1; x++) {
+			const uint8_t *p = px(im, x, y);
+			rows *t = is_label(p) ? &c->label : is_caption(p) ? &c->caption : NULL;
+			if (t) {
+				t->top = y < t->top ? y : t->top;
+				t->bottom = y > t->bottom ? y : t->bottom;
+			} else if (is_body(p)) {
+				c->body++;
+				c->bx0 = x < c->bx0 ? x : c->bx0;
+				c->bx1 = x > c->bx1 ? x : c->bx1;
+				c->by0 = y < c->by0 ? y : c->by0;
+				c->by1 = y > c->by1 ? y : c->by1;
+			}
+		}
+}
+
+typedef struct show_stats {
+	int frames;
+	double worst_gap;     /* the least room between the feet and the captions, rows */
+	double least_edge;    /* the least room between the body and its panel's edge */
+	double least_height;  /* the smallest body, as a share of its panel's height */
+} show_stats;
+
+/* One frame of the compare view: in each panel the body lies inside, clear
+ * of the edges, and wholly above the captions and names (so no caption
+ * pixel covers a body pixel), and both panels' texts are in one size. */
+static void check_frame(const image *im, int portrait, int n, show_stats *st)
+{
+	panel_check c[2];
+	for (int i = 0; i < 2; i++) {
+		memset(&c[i], 0, sizeof c[i]);
+		c[i].x0 = portrait ? 0 : i * im->w / 2;
+		c[i].x1 = portrait ? im->w : (i + 1) * im->w / 2;
+		c[i].y0 = portrait ? i * im->h / 2 : 0;
+		c[i].y1 = portrait ? (i + 1) * im->h / 2 : im->h;
+		/* the divider's line is the panels' border: left out */
+		c[i].x0 += !portrait && i;
+		c[i].y0 += portrait && i;
+		measure_panel(im, &c[i]);
+		if (c[i].body < 200 || c[i].caption.top > c[i].caption.bottom || c[i].label.top > c[i].label.bottom)
+			fail_msg("frame %d panel %d: %ld body pixels, caption rows %d..%d, label rows %d..%d", n, i, c[i].body,
+				 c[i].caption.top, c[i].caption.bottom, c[i].label.top, c[i].label.bottom);
+		int text_top = c[i].caption.top < c[i].label.top ? c[i].caption.top : c[i].label.top;
+		int edge = c[i].bx0 - c[i].x0;
+		edge = c[i].x1 - 1 - c[i].bx1 < edge ? c[i].x1 - 1 - c[i].bx1 : edge;
+		edge = c[i].by0 - c[i].y0 < edge ? c[i].by0 - c[i].y0 : edge;
+		if (edge < 1 || c[i].by1 >= text_top)
+			fail_msg("frame %d panel %d (%dx%d from %d,%d): body box x %d..%d y %d..%d, the text from row %d", n, i,
+				 c[i].x1 - c[i].x0, c[i].y1 - c[i].y0, c[i].x0, c[i].y0, c[i].bx0, c[i].bx1, c[i].by0,
+				 c[i].by1, text_top);
+		st->worst_gap = fmin(st->worst_gap, text_top - 1 - c[i].by1);
+		st->least_edge = fmin(st->least_edge, edge);
+		st->least_height = fmin(st->least_height, (double)(c[i].by1 - c[i].by0 + 1) / (c[i].y1 - c[i].y0));
+	}
+	/* one size per role: the same rows in both panels, offset by the panel */
+	int dy = portrait ? im->h / 2 : 0;
+	if (c[1].caption.bottom - c[1].caption.top != c[0].caption.bottom - c[0].caption.top ||
+	    c[1].label.bottom - c[1].label.top != c[0].label.bottom - c[0].label.top ||
+	    c[1].label.top - dy != c[0].label.top || c[1].caption.top - dy != c[0].caption.top)
+		fail_msg("frame %d: caption rows %d..%d and %d..%d, label rows %d..%d and %d..%d: not one size", n,
+			 c[0].caption.top, c[0].caption.bottom, c[1].caption.top, c[1].caption.bottom, c[0].label.top,
+			 c[0].label.bottom, c[1].label.top, c[1].label.bottom);
+	st->frames++;
+}
+
+/* The default show once, two frames a second, visitor screen, compare view. */
+static void show_run(const char *size, const char *more, const char *dir)
+{
+	char cmd[2048], show[512]; /* test_tool_path's buffer is shared */
+	snprintf(show, sizeof show, "%s", test_tool_path("assets/demo.skn"));
+	snprintf(cmd, sizeof cmd, "rm -rf %s && ASAN_OPTIONS=detect_leaks=0 %s --image %s --platform surfaceless "
+		 "--algo compare --hud visitor --hud-fps off --input none --size %s --display-rate 2 %s --out %s 2>/dev/null",
+		 dir, test_tool_path("skinplay"), show, size, more, dir);
+	int status = system(cmd);
+	if (!WIFEXITED(status) || WEXITSTATUS(status) != 0)
+		fail_msg("failed: %s", cmd);
+}
+
+static void load_frame(const char *dir, int n, image *im)
+{
+	char path[512];
+	skp_error err;
+	snprintf(path, sizeof path, "%s/frame_%06d.png", dir, n);
+	if (png_read_rgba(path, im->px, sizeof im->px, &im->w, &im->h, &err) != 0)
+		fail_msg("%s: %s", path, err.msg);
+}
+
+static void show_layout(const char *size, int portrait)
+{
+	char dir[128];
+	snprintf(dir, sizeof dir, "%s/show", tmpdir());
+	show_run(size, "", dir);
+	show_stats st = { 0, 1e9, 1e9, 1e9 };
+	for (int n = 1;; n++) {
+		char path[512];
+		snprintf(path, sizeof path, "%s/frame_%06d.png", dir, n);
+		if (access(path, R_OK) != 0)
+			break;
+		load_frame(dir, n, &got);
+		check_frame(&got, portrait, n, &st);
+	}
+	print_message("default show at %s: %d frames, each panel's body inside it (%.0f px from its edge at least) and "
+		      "above the captions (%.0f rows at least), at least %.0f%% of the panel's height\n", size, st.frames,
+		      st.least_edge, st.worst_gap, 100 * st.least_height);
+	assert_true(st.frames >= 70); /* 37 s of show */
+	char cmd[256];
+	snprintf(cmd, sizeof cmd, "rm -rf %s", dir);
+	assert_int_equal(system(cmd), 0);
+}
+
+static void test_show_landscape(void **state)
+{
+	(void)state;
+	show_layout("960x540", 0);
+}
+
+static void test_show_portrait(void **state)
+{
+	(void)state;
+	show_layout("540x960", 1);
+}
+
+/* A landscape panel turned a quarter (--rotation 90) shows what a portrait
+ * screen of its size shows, turned. */
+static void test_show_rotated(void **state)
+{
+	(void)state;
+	char a[128], b[128];
+	snprintf(a, sizeof a, "%s/upright", tmpdir());
+	snprintf(b, sizeof b, "%s/turned", tmpdir());
+	show_run("540x960", "--frames 20 --every 19", a);
+	show_run("960x540", "--rotation 90 --frames 20 --every 19", b);
+	load_frame(a, 20, &want);
+	load_frame(b, 20, &got);
+	assert_int_equal(got.w, want.h);
+	assert_int_equal(got.h, want.w);
+	long off = 0;
+	show_stats st = { 0, 1e9, 1e9, 1e9 };
+	check_frame(&want, 1, 20, &st);
+	for (int y = 0; y < want.h; y++)
+		for (int x = 0; x < want.w; x++) {
+			/* mat4_rotate_z90 turns the picture a quarter counter-clockwise:
+			 * logical column x, row y to physical column y, row h - 1 - x */
+			const uint8_t *p = px(&want, x, y), *q = px(&got, y, got.h - 1 - x);
+			off += abs(p[0] - q[0]) > 3 || abs(p[1] - q[1]) > 3 || abs(p[2] - q[2]) > 3;
+		}
+	print_message("--rotation 90: %ld of %d pixels differ from the portrait picture turned\n", off, want.w * want.h);
+	assert_true(off < want.w * want.h / 200);
+}
+
 int main(void)
 {
 	const struct CMUnitTest tests[] = {
+		cmocka_unit_test(test_show_landscape),
+		cmocka_unit_test(test_show_portrait),
+		cmocka_unit_test(test_show_rotated),
 		cmocka_unit_test(test_golden_surfaceless),
 		cmocka_unit_test(test_golden_osmesa),
 		cmocka_unit_test(test_cpu_and_gpu_skinning_agree),
