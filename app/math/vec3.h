@@ -25,5 +25,8 @@ static inline vec3 vec3_madd(vec3 a, vec3 b, float s)
 float vec3_length(vec3 a);
 /* Unit vector along a; the zero vector stays zero. */
 vec3 vec3_normalize(vec3 a);
+/* Component by component: the corners of a bounding box. */
+vec3 vec3_min(vec3 a, vec3 b);
+vec3 vec3_max(vec3 a, vec3 b);
 
 #endif

@@ -63,8 +63,8 @@ static void grow_bounds(const skel *s, const skel_pose *p, vec3 root0, play_surv
 	vec3 shift = vec3_make(root0.x - p->tip[0].x, 0.0f, root0.z - p->tip[0].z);
 	for (int b = 0; b < s->count; b++) {
 		vec3 q = vec3_add(p->tip[b], shift);
-		out->lo = vec3_make(fminf(out->lo.x, q.x), fminf(out->lo.y, q.y), fminf(out->lo.z, q.z));
-		out->hi = vec3_make(fmaxf(out->hi.x, q.x), fmaxf(out->hi.y, q.y), fmaxf(out->hi.z, q.z));
+		out->lo = vec3_min(out->lo, q);
+		out->hi = vec3_max(out->hi, q);
 	}
 }
 

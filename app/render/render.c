@@ -116,8 +116,9 @@ static float body_extent(const skin_soa *soa)
 {
 	vec3 lo = vec3_make(soa->px[0], soa->py[0], soa->pz[0]), hi = lo;
 	for (int v = 1; v < soa->count; v++) {
-		lo = vec3_make(fminf(lo.x, soa->px[v]), fminf(lo.y, soa->py[v]), fminf(lo.z, soa->pz[v]));
-		hi = vec3_make(fmaxf(hi.x, soa->px[v]), fmaxf(hi.y, soa->py[v]), fmaxf(hi.z, soa->pz[v]));
+		vec3 q = vec3_make(soa->px[v], soa->py[v], soa->pz[v]);
+		lo = vec3_min(lo, q);
+		hi = vec3_max(hi, q);
 	}
 	vec3 d = vec3_sub(hi, lo);
 	return fmaxf(d.x, fmaxf(d.y, d.z));

@@ -38,11 +38,8 @@ static void survey_pose(player *p, const skel_pose *pose)
 	s->frames = 1;
 	s->first_root = s->lo = s->hi = pose->tip[0];
 	for (int b = 0; b < p->body.skel.count; b++) {
-		const vec3 q[2] = { pose->head[b], pose->tip[b] };
-		for (int k = 0; k < 2; k++) {
-			s->lo = vec3_make(fminf(s->lo.x, q[k].x), fminf(s->lo.y, q[k].y), fminf(s->lo.z, q[k].z));
-			s->hi = vec3_make(fmaxf(s->hi.x, q[k].x), fmaxf(s->hi.y, q[k].y), fmaxf(s->hi.z, q[k].z));
-		}
+		s->lo = vec3_min(s->lo, vec3_min(pose->head[b], pose->tip[b]));
+		s->hi = vec3_max(s->hi, vec3_max(pose->head[b], pose->tip[b]));
 	}
 }
 
@@ -216,8 +213,8 @@ float clips_first(player *p)
 	vec3 lo = vec3_make(INFINITY, INFINITY, INFINITY), hi = vec3_scale(lo, -1.0f);
 	for (int v = 0; v < p->body.mesh.vert_count; v++) {
 		const float *q = &p->pos[0][3 * v];
-		lo = vec3_make(fminf(lo.x, q[0]), fminf(lo.y, q[1]), fminf(lo.z, q[2]));
-		hi = vec3_make(fmaxf(hi.x, q[0]), fmaxf(hi.y, q[1]), fmaxf(hi.z, q[2]));
+		lo = vec3_min(lo, vec3_make(q[0], q[1], q[2]));
+		hi = vec3_max(hi, vec3_make(q[0], q[1], q[2]));
 	}
 	p->flesh = flesh_past_joints(p, lo, hi);
 	return lo.y;

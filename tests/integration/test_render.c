@@ -18,6 +18,7 @@
 #include <unistd.h>
 
 #include "png_writer.h"
+#include "render_internal.h"
 #include "test_paths.h"
 
 #define MAX_PIXELS (960 * 540)
@@ -424,9 +425,39 @@ static void test_show_rotated(void **state)
 	assert_true(off < want.w * want.h / 200);
 }
 
+/* The weights view names its colours: over the body, in the band at the
+ * top, each bone that carries skin written in the colour the body takes
+ * where that bone alone moves it (20 of the CMU skeleton's 31 bones carry
+ * the MakeHuman body's own weights). */
+static void test_weights_legend(void **state)
+{
+	(void)state;
+	char dir[128];
+	snprintf(dir, sizeof dir, "%s/weights", tmpdir());
+	show_run("960x540", "--view weights --frames 1", dir);
+	load_frame(dir, 1, &got);
+	int named = 0, lowest = 0;
+	for (int b = 0; b < 31; b++) {
+		vec3 c = render_bone_color(b);
+		int r = (int)lroundf(c.x * 255), g = (int)lroundf(c.y * 255), bl = (int)lroundf(c.z * 255);
+		long n = 0;
+		for (int y = 0; y < 48; y++)
+			for (int x = 0; x < got.w; x++)
+				if (near(px(&got, x, y), r, g, bl)) {
+					n++;
+					lowest = y > lowest ? y : lowest;
+				}
+		named += n >= 20;
+	}
+	print_message("weights view: %d of 31 bones named in their colour in the top 48 rows (down to row %d)\n", named,
+		      lowest);
+	assert_true(named >= 18);
+}
+
 int main(void)
 {
 	const struct CMUnitTest tests[] = {
+		cmocka_unit_test(test_weights_legend),
 		cmocka_unit_test(test_show_landscape),
 		cmocka_unit_test(test_show_portrait),
 		cmocka_unit_test(test_show_rotated),
