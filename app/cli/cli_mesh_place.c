@@ -4,9 +4,11 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "bind_shape.h"
 #include "cli_mesh_io.h"
 #include "cli_quiet.h"
 #include "cli_scratch.h"
+#include "skel_roles.h"
 #include "skel_tpose.h"
 
 /* Sizes within 3% and places within 3% of the height are left alone. */
@@ -64,9 +66,44 @@ static void set_pose(bound_body *body, const float *values)
 	fk_pose(&body->skel, body->pose_value, &body->pose);
 }
 
+int cli_skel_is_biped(const skel *s, const skel_pose *pose)
+{
+	static skel_roles r;
+	if (s->count < 2)
+		return 0;
+	skel_find_roles(s, pose, &r);
+	return skel_roles_biped(s, &r);
+}
+
+/* A mesh without a rig is judged by its shape (bind_shape.h): 0 when it
+ * stands like a biped or --force binds it anyway, -1 after refusing. */
+static int check_shape(const bind_args *a, const char *obj, const bound_body *body)
+{
+	bind_shape sh;
+	if (!cli_skel_is_biped(&body->skel, &body->pose))
+		return 0;   /* a test arm, a robot arm: any shape goes */
+	bind_shape_measure(body->mesh.pos, body->mesh.vert_count, &sh);
+	if (sh.biped || !(sh.height > 0.0f))
+		return 0;
+	float wide = fmaxf(sh.foot_x, sh.foot_z) / sh.height, narrow = fminf(sh.foot_x, sh.foot_z) / sh.height;
+	if (wide > BIND_SHAPE_SPAN || narrow > BIND_SHAPE_FEET)
+		fprintf(stderr, "%s: not a biped: what touches the ground spans %.0f%% by %.0f%% of its height (two "
+			"feet %.0f%% by %.0f%% at most): a quadruped, a prop, or a figure lying down", obj,
+			100.0 * (double)wide, 100.0 * (double)narrow, 100.0 * (double)BIND_SHAPE_SPAN,
+			100.0 * (double)BIND_SHAPE_FEET);
+	else
+		fprintf(stderr, "%s: not a biped: it is %.0f%% as wide as it is tall (a body %.0f%% or more): a pole or "
+			"a prop", obj, 100.0 * (double)(sh.width / sh.height), 100.0 * (double)BIND_SHAPE_WIDE);
+	fprintf(stderr, "; skintool plays human motion on standing bipeds, Y up%s\n",
+		a->force ? " (--force: bound anyway)" : " (--force binds it anyway)");
+	return a->force ? 0 : -1;
+}
+
 int cli_place_mesh(const bind_args *a, const char *obj, bound_body *body)
 {
 	int generated = cli_obj_is_generated(obj);
+	if (!generated && check_shape(a, obj, body) < 0)
+		return -1;
 	if (a->fit ? fit_mesh(obj, body) < 0 : !a->no_fit && !generated && auto_fit(obj, body) < 0)
 		return -1;
 	if (a->pose_path || a->rest_pose)

@@ -9,6 +9,11 @@
 
 #include "cli_bind_args.h"
 
+/* 1 when the skeleton (posed as pose) has a human's two legs and two
+ * arms: only then is a mesh refused for not being a biped (bind_shape.h,
+ * rig_biped.h). */
+int cli_skel_is_biped(const skel *s, const skel_pose *pose);
+
 /* Returns 0, or -1 after reporting the error. */
 int cli_place_mesh(const bind_args *a, const char *obj, bound_body *body);
 

@@ -12,6 +12,7 @@
 #include "clock.h"
 #include "mesh_normals.h"
 #include "rig_align.h"
+#include "rig_biped.h"
 #include "rig_makehuman.h"
 #include "rig_map_file.h"
 #include "rig_pose.h"
@@ -313,9 +314,22 @@ static int bind_unrigged(const bind_args *a, const char *path, bound_body *body)
 	return bind_args_weights(a, 0, path, body);
 }
 
+/* A rig that is not a biped's (rig_biped.h): 0 when it is, or --force
+ * binds it anyway; -1 after refusing. */
+static int check_biped(const bind_args *a, const char *path, const bound_body *body)
+{
+	char why[256];
+	if (!cli_skel_is_biped(&body->skel, &body->pose) || rig_biped_check(&scene, why, sizeof why))
+		return 0;
+	fprintf(stderr, "%s: not a biped: %s; skintool plays human motion on bipeds%s\n", path, why,
+		a->force ? " (--force: bound anyway)" : " (--force binds it anyway)");
+	return a->force ? 0 : -1;
+}
+
 int rig_load_mesh(const bind_args *a, const char *path, bound_body *body)
 {
-	if (import_scene(a, path, body) < 0 || (scene.joint_count && load_map(a, path, body) < 0))
+	if (import_scene(a, path, body) < 0 || (scene.joint_count && check_biped(a, path, body) < 0) ||
+	    (scene.joint_count && load_map(a, path, body) < 0))
 		return -1;
 	if (!scene.joint_count || (map.limbs < 2 && !a->joint_map))
 		return bind_unrigged(a, path, body);

@@ -203,24 +203,51 @@ static void name_limb(const topo *t, int start, int leg, rig_side side, rig_name
 		names[chain[u - 1]] = (rig_name){ RIG_CLAVICLE, side, RIG_FAMILY_SHAPE };
 }
 
+/* The pairs, hips, chest and head; 0 when the shape has no two limb pairs. */
+static int find_shape(topo *t, const rig_scene *r)
+{
+	memset(t, 0, sizeof *t);
+	t->r = r;
+	if (r->joint_count < 5)
+		return 0;
+	t->extent = extent_of(r);
+	for (int j = 0; j < r->joint_count; j++)
+		if (r->joint[j].parent < 0)
+			measure(t, j, 0);
+	if (!(t->extent > 0.0f) || !find_limbs(t) || (t->head = find_head(t)) < 0)
+		return 0;
+	vec3 up = vec3_sub(r->joint[t->head].head, r->joint[t->hips].head);
+	if (!(vec3_length(up) > 0.0f))
+		return 0;
+	t->up = vec3_normalize(up);
+	return 1;
+}
+
+int rig_topology_parts(const rig_scene *r, rig_shape_parts *out)
+{
+	static topo t;
+	memset(out, 0, sizeof *out);
+	if (!find_shape(&t, r))
+		return 0;
+	for (int k = 0; k < 2; k++) {
+		int chain[RIG_MAX_JOINTS] = { 0 };
+		int n = chain_of(&t, t.leg[k], chain);
+		out->leg_end[k] = chain[n > 0 ? n - 1 : 0];
+		n = chain_of(&t, t.arm[k], chain);
+		out->arm_end[k] = chain[n > 0 ? n - 1 : 0];
+	}
+	out->hips = t.hips;
+	out->chest = t.chest;
+	out->head = t.head;
+	return 1;
+}
+
 int rig_topology_names(const rig_scene *r, rig_name *names)
 {
 	static topo t;
-	memset(&t, 0, sizeof t);
 	memset(names, 0, sizeof *names * (size_t)r->joint_count);
-	t.r = r;
-	if (r->joint_count < 5)
+	if (!find_shape(&t, r))
 		return 0;
-	t.extent = extent_of(r);
-	for (int j = 0; j < r->joint_count; j++)
-		if (r->joint[j].parent < 0)
-			measure(&t, j, 0);
-	if (!(t.extent > 0.0f) || !find_limbs(&t) || (t.head = find_head(&t)) < 0)
-		return 0;
-	vec3 up = vec3_sub(r->joint[t.head].head, r->joint[t.hips].head);
-	if (!(vec3_length(up) > 0.0f))
-		return 0;
-	t.up = vec3_normalize(up);
 	vec3 front = feet_front(&t);
 	int legs_left = first_is_left(&t, t.leg, front), arms_left = first_is_left(&t, t.arm, front);
 	for (int k = 0; k < 2; k++) {

@@ -16,13 +16,25 @@
  *     along an arm the upper arm is the first such (0.3) bone starting out
  *     to the side of the spine by 0.3 of its length or more, the clavicle
  *     the joint before it, then forearm and hand.
- * A quadruped has the same topology: bind_shape/rig_biped tell it by its
+ * A quadruped has the same topology: rig_biped.h tells it by its
  * geometry. */
 #ifndef RIG_TOPOLOGY_H
 #define RIG_TOPOLOGY_H
 
 #include "rig_names.h"
 #include "rig_scene.h"
+
+/* The joints a biped's shape is judged by: the hips (the legs' parent),
+ * the chest (the arms'), the head, and the last joint of each leg and
+ * arm (by the chain reaching furthest). */
+typedef struct rig_shape_parts {
+	int hips, chest, head;
+	int leg_end[2], arm_end[2];
+} rig_shape_parts;
+
+/* 1 when the joints have a biped's topology (two limb pairs and a neck),
+ * with out filled; 0 when not. */
+int rig_topology_parts(const rig_scene *r, rig_shape_parts *out);
 
 /* Fills names[j] (slot, side, rig RIG_FAMILY_SHAPE) for the joints the
  * shape says are parts; the others get RIG_NONE. Returns the limbs found

@@ -97,3 +97,14 @@ void skel_find_roles(const skel *s, const skel_pose *p, skel_roles *out)
 	find_reach(s, p, out);
 	find_axes(s, p, out);
 }
+
+int skel_roles_biped(const skel *s, const skel_roles *r)
+{
+	int legs = 0, arms = 0;
+	for (int b = 1; b < s->count; b++)
+		if (skel_branch_start(s, r, b) == b) {
+			legs += r->leg[b];
+			arms += r->arm[b];
+		}
+	return legs >= 2 && arms >= 2;
+}

@@ -26,6 +26,10 @@ typedef struct skel_roles {
 /* Needs a skeleton of at least two bones with finite joints. */
 void skel_find_roles(const skel *s, const skel_pose *p, skel_roles *out);
 
+/* 1 when the skeleton has two leg branches and two arm branches or more:
+ * a human's (a test arm, a robot arm has none). */
+int skel_roles_biped(const skel *s, const skel_roles *r);
+
 /* The first bone of b's branch: the one whose parent is on the spine. */
 int skel_branch_start(const skel *s, const skel_roles *r, int b);
 

@@ -205,6 +205,9 @@ static const err_case err_cases[] = {
 	  "vertex,bone,weight\n0,root,1\n1,root,1\n2,root,-1\n", "bad.csv:4: negative weight" },
 	{ "tests/data/tiny.asf %s/tri.obj --bind-pose tests/data/tiny.amc:9 -o %s/out.csv%s", NULL,
 	  "tests/data/tiny.amc: no frame 9" },
+	/* on a human skeleton a triangle is no body (tiny.asf's arm takes any shape) */
+	{ "assets/demo.asf %s/tri.obj -o %s/out.csv%s", NULL,
+	  "tri.obj: not a biped: what touches the ground spans 100% by 0% of its height" },
 	{ "tests/data/tiny.asf %s/tri.obj --group nothere -o %s/out.csv%s", NULL, "tri.obj" },
 	{ "tests/data/tiny.asf %s/tri.obj%s%s", NULL, "skintool bind: give SKELETON, MESH and -o W.csv" },
 	{ "tests/data/tiny.asf %s/tri.obj --frobnicate -o %s/out.csv%s", NULL, "unknown option '--frobnicate'" },

@@ -1,0 +1,41 @@
+#include "rig_biped.h"
+
+#include <math.h>
+#include <stdio.h>
+
+#include "rig_topology.h"
+
+#define BIPED_SPINE_LEGS_COS (-0.5f) /* 120 degrees or more between spine and legs */
+#define BIPED_HANDS_UP       0.25f  /* hands this share of the leg's length above the feet */
+
+static vec3 at(const rig_scene *r, int j)
+{
+	return r->joint[j].head;
+}
+
+int rig_biped_check(const rig_scene *r, char *why, size_t n)
+{
+	rig_shape_parts p;
+	if (!rig_topology_parts(r, &p))
+		return 1;
+	vec3 feet = vec3_scale(vec3_add(at(r, p.leg_end[0]), at(r, p.leg_end[1])), 0.5f);
+	vec3 down = vec3_sub(feet, at(r, p.hips)), up = vec3_sub(at(r, p.head), at(r, p.hips));
+	float leg = vec3_length(down);
+	if (!(leg > 0.0f) || !(vec3_length(up) > 0.0f))
+		return 1;
+	float c = vec3_dot(vec3_normalize(up), vec3_scale(down, 1.0f / leg));
+	if (c > BIPED_SPINE_LEGS_COS) {
+		snprintf(why, n, "its spine and legs are %.0f degrees apart (a biped's hang the other way from it: 120 "
+			 "or more): a quadruped, or a figure lying down", acos((double)c) * 180.0 / M_PI);
+		return 0;
+	}
+	float hands = 0.0f;
+	for (int k = 0; k < 2; k++)
+		hands = fmaxf(hands, -vec3_dot(vec3_sub(at(r, p.arm_end[k]), feet), down) / (leg * leg));
+	if (hands < BIPED_HANDS_UP) {
+		snprintf(why, n, "its arms reach the floor like its legs (their ends %.0f%% of a leg above the feet, a "
+			 "biped's %.0f%% or more): a quadruped", 100.0 * (double)hands, 100.0 * (double)BIPED_HANDS_UP);
+		return 0;
+	}
+	return 1;
+}
