@@ -69,7 +69,7 @@ $(OBJ_import): MOD_FLAGS += $(IMPORT_CFLAGS)
 PLAT_SRC := platform/display/display.c platform/display/display_common.c \
             $(if $(filter-out osmesa,$(DISPLAYS)),platform/display/display_egl.c) \
             $(DISPLAYS:%=platform/display/display_%.c) \
-            platform/input/input.c $(INPUTS:%=platform/input/input_%.c) \
+            platform/input/input.c platform/input/input_common.c $(INPUTS:%=platform/input/input_%.c) \
             $(if $(filter gpio,$(INPUTS)),platform/input/input_gpiod$(GPIOD_API).c) \
             $(wildcard platform/storage/*.c platform/sys/*.c)
 PLAT_OBJ := $(PLAT_SRC:%.c=$(OUT)/%.o)
@@ -79,13 +79,15 @@ CORE_OBJ := $(foreach m,$(CORE_MODULES),$(OBJ_$(m)))
 FIXED_OBJ := $(FIXED_SRC:%.c=$(OUT)/%.o) $(if $(filter avx2 neon,$(SIMD)),$(OUT)/app/skin/kernels/skin_fixed_$(SIMD).o)
 APP_OBJ  := $(foreach m,$(APP_MODULES),$(OBJ_$(m)))
 
-# Libraries per layer: skinplay links core + cli + platform; skintool adds
-# the importer, analysis and its report code.
-CORE_LIB     := $(OUT)/libskp_core.a
-CLI_LIB      := $(OUT)/libskp_cli.a
-ANALYSIS_LIB := $(OUT)/libskp_analysis.a
-IMPORT_LIB   := $(OUT)/libskp_import.a
-PLAT_LIB     := $(OUT)/libskp_platform.a
+# One archive per module (app/sources.mk; platform's backends are one), and
+# every link takes only the archives of the DEPS_ list of what it links,
+# top layer first (app/sources.mk: LAYER_ORDER): skinplay links cli,
+# platform and the core, skintool adds import and analysis.
+LIB_MODULES  := $(filter-out $(PROGRAM_MODULES),$(APP_MODULES)) platform
+$(foreach m,$(LIB_MODULES),$(eval LIB_$(m) := $$(OUT)/libskp_$(m).a))
+OBJ_platform  = $(PLAT_OBJ)
+libs_of      = $(foreach l,$(LAYER_ORDER),$(if $(filter $(l),$(DEPS_$(1))),$(LIB_$(l))))
+LAYER_LINKS  := $(LIB_MODULES:%=$(OUT)/layers/%)
 SKINTOOL     := $(OUT)/skintool
 SKINPLAY     := $(OUT)/skinplay
 # the man pages (made by the board's programs: see $(RUN_DIR) below)
@@ -114,8 +116,8 @@ SHOW_BODY  := --mesh $(SHOW_MESH) --rig $(SHOW_RIG) --weights mesh
 CMOCKA_CFLAGS = $(shell $(PKG_CONFIG) --cflags cmocka 2>/dev/null)
 CMOCKA_LIBS   = $(shell $(PKG_CONFIG) --libs cmocka 2>/dev/null || echo -lcmocka)
 
-.PHONY: all test run size install clean help check-core check-layers check-lean
-all: $(SKINTOOL) $(SKINPLAY) $(DEMO_AMC) $(SHOW_TOUR) $(MAN_STAMP)
+.PHONY: all test run size install clean help check-core check-layers check-link check-lean
+all: $(SKINTOOL) $(SKINPLAY) $(DEMO_AMC) $(SHOW_TOUR) $(MAN_STAMP) $(LAYER_LINKS)
 
 $(OUT)/assets/demo_motion: assets/demo_motion.c
 	@mkdir -p $(@D)
@@ -134,12 +136,21 @@ ifneq ($(strip $(shell cat $(FLAGS_STAMP) 2>/dev/null)),$(strip $(FLAGS_NOW)))
 endif
 $(APP_OBJ) $(PLAT_OBJ): $(FLAGS_STAMP)
 
+# $(call compile_module,SOURCE,OBJECT,FLAGS). A header reached through
+# ".." (#include "../kiosk/player.h" finds app/kiosk from app/base's own
+# folder, whatever the include path allows) is refused: the dependency
+# file the compiler writes lists every header by the path it was found by.
+define compile_module
+	@mkdir -p $(dir $(2))
+	$(CC) $(CPPFLAGS) $(3) -c $(1) -o $(2)
+	@if grep -q '/\.\./' $(2:.o=.d); then \
+	  echo "$(1): includes $$(grep -o '[^ ]*/\.\./[^ ]*' $(2:.o=.d) | head -n 1), a path through '..': include a header by its name alone, from the module itself or one its DEPS_ in app/sources.mk allows"; \
+	  rm -f $(2); exit 1; fi
+endef
 $(OUT)/app/%.o: app/%.c
-	@mkdir -p $(@D)
-	$(CC) $(CPPFLAGS) $(MOD_FLAGS) -c $< -o $@
+	$(call compile_module,$<,$@,$(MOD_FLAGS))
 $(OUT)/platform/%.o: platform/%.c
-	@mkdir -p $(@D)
-	$(CC) $(CPPFLAGS) $(MOD_FLAGS) -c $< -o $@
+	$(call compile_module,$<,$@,$(MOD_FLAGS))
 
 $(OUT)/app/skin/kernels/%_avx2.o: CPPFLAGS += $(SIMD_FLAGS)
 
@@ -169,25 +180,74 @@ $(OUT)/tests/support/%.o: tests/support/%.c
 	@mkdir -p $(@D)
 	$(CC) $(TEST_CFLAGS) -c $< -o $@
 
-$(CORE_LIB): $(CORE_OBJ)
-$(CLI_LIB): $(OBJ_cli)
-$(ANALYSIS_LIB): $(OBJ_analysis)
-$(IMPORT_LIB): $(OBJ_import)
-$(PLAT_LIB): $(PLAT_OBJ)
-$(CORE_LIB) $(CLI_LIB) $(ANALYSIS_LIB) $(IMPORT_LIB) $(PLAT_LIB):
+$(foreach m,$(LIB_MODULES),$(eval $(LIB_$(m)): $$(OBJ_$(m))))
+$(foreach m,$(LIB_MODULES),$(LIB_$(m))):
 	@mkdir -p $(@D)
 	rm -f $@ && $(AR) rcs $@ $^
 
 # the link map feeds `make size` (static RAM per module)
-$(SKINPLAY): $(OBJ_skinplay) $(CLI_LIB) $(PLAT_LIB) $(CORE_LIB)
+$(SKINPLAY): $(OBJ_skinplay) $(call libs_of,skinplay)
 	$(CC) $(LDFLAGS) -Wl,-Map=$@.map -o $@ $^ $(LDLIBS)
-$(SKINTOOL): $(OBJ_skintool) $(IMPORT_LIB) $(CLI_LIB) $(ANALYSIS_LIB) $(PLAT_LIB) $(CORE_LIB)
+$(SKINTOOL): $(OBJ_skintool) $(call libs_of,skintool)
 	$(CC) $(LDFLAGS) -o $@ $^ $(IMPORT_LIBS) $(LDLIBS)
 
-# Test programs link every library.
-$(OUT)/tests/%: $(OUT)/tests/obj/%.o $(TESTLIB_OBJ) $(IMPORT_LIB) $(CLI_LIB) $(ANALYSIS_LIB) $(PLAT_LIB) $(CORE_LIB)
+# Test programs are white-box: they may use every module (DEPS_tests).
+$(OUT)/tests/%: $(OUT)/tests/obj/%.o $(TESTLIB_OBJ) $(call libs_of,tests)
 	@mkdir -p $(@D)
 	$(CC) $(LDFLAGS) -o $@ $^ $(CMOCKA_LIBS) $(IMPORT_LIBS) $(LDLIBS)
+
+# The layers at link time: each module's archive, whole, linked with the
+# archives of its DEPS_ only (and a main() that calls nothing): a call into
+# a module above it or beside it, even through a prototype written by
+# hand, is an undefined reference and the build stops. `make check-link`
+# (part of `make test`) shows that it does.
+LAYER_MAIN  := $(OUT)/layers/main.o
+$(LAYER_MAIN):
+	@mkdir -p $(@D)
+	@printf 'int main(void)\n{\n\treturn 0;\n}\n' > $(@:.o=.c)
+	@$(CC) $(CFLAGS_CORE) -c $(@:.o=.c) -o $@
+define layer_link
+	@mkdir -p $(dir $(1))
+	@$(CC) $(LDFLAGS) -o $(1) $(LAYER_MAIN) -Wl,--whole-archive $(2) -Wl,--no-whole-archive $(3) \
+	  $(IMPORT_LIBS) $(LDLIBS) 2> $(1).log || { \
+	  echo "layers: $(4) calls what its DEPS_ in app/sources.mk do not give it ($(or $(DEPS_$(4)),nothing)):"; \
+	  grep -o "undefined reference to .*" $(1).log | sort -u | sed 's/^/  /'; rm -f $(1); exit 1; }
+endef
+.SECONDEXPANSION:
+$(LAYER_LINKS): $(OUT)/layers/%: $(LAYER_MAIN) $$(LIB_$$*) $$(call libs_of,$$*)
+	$(call layer_link,$@,$(LIB_$*),$(call libs_of,$*),$*)
+
+# check-link: the two rules above at work on scratch copies in $(PROBE)
+# (nothing in the tree changes). A copy of app/base/crc32.c that calls
+# skin_soa_bytes (app/skin) through a prototype written by hand compiles,
+# and base's link check refuses it; the same archive links once app/skin's
+# archives are given (the call is real: one archive for the whole core
+# linked it). A copy with #include "../kiosk/player.h" does not build.
+PROBE := $(OUT)/probe
+$(PROBE)/app/base/%.o: $(PROBE)/app/base/%.c
+	$(call compile_module,$<,$@,$(call mod_inc,base) $(CFLAGS_CORE))
+$(PROBE)/layers/base: $(LAYER_MAIN) $(PROBE)/libskp_base.a
+	$(call layer_link,$@,$(PROBE)/libskp_base.a,$(call libs_of,base),base)
+$(PROBE)/layers/base+skin: $(LAYER_MAIN) $(PROBE)/libskp_base.a $(LIB_skin) $(call libs_of,skin)
+	$(call layer_link,$@,$(PROBE)/libskp_base.a,$(LIB_skin) $(call libs_of,skin),base)
+$(PROBE)/libskp_base.a: $(LIB_base) $(PROBE)/app/base/crc32.o
+	cp $(LIB_base) $@ && $(AR) rs $@ $(PROBE)/app/base/crc32.o
+check-link: $(LAYER_LINKS)
+	@rm -rf $(PROBE) && mkdir -p $(PROBE)/app/base
+	@{ cat app/base/crc32.c; printf '%s\n' '' '#include <stddef.h>' 'size_t skin_soa_bytes(int count);' \
+	  'int crc32_probe(void);' 'int crc32_probe(void) { return (int)skin_soa_bytes(1); }'; } > $(PROBE)/app/base/crc32.c
+	@{ echo '#include "../kiosk/player.h"'; cat app/base/crc32.c; } > $(PROBE)/app/base/dotdot.c
+	@$(MAKE) --no-print-directory -s $(PROBE)/layers/base+skin > $(PROBE)/control.log 2>&1 || \
+	  { cat $(PROBE)/control.log; echo "check-link: the probe does not link even with app/skin"; exit 1; }
+	@if $(MAKE) --no-print-directory -s $(PROBE)/layers/base > $(PROBE)/up.log 2>&1 || \
+	  ! grep -q "undefined reference to .skin_soa_bytes" $(PROBE)/up.log; then \
+	  cat $(PROBE)/up.log; echo "check-link: app/base calling app/skin linked"; exit 1; fi
+	@if $(MAKE) --no-print-directory -s $(PROBE)/app/base/dotdot.o > $(PROBE)/dotdot.log 2>&1 || \
+	  ! grep -q "a path through '..'" $(PROBE)/dotdot.log; then \
+	  cat $(PROBE)/dotdot.log; echo "check-link: an include through '..' built"; exit 1; fi
+	@echo "check-link: $(words $(LAYER_LINKS)) modules link with their DEPS_ only; app/base calling" \
+	  "app/skin's skin_soa_bytes by a hand-written prototype does not link, #include \"../kiosk/player.h\" does not build"
+	@grep -h "undefined reference\|through '..'" $(PROBE)/up.log $(PROBE)/dotdot.log | sed 's/^ */  /'
 
 # The core must not allocate or do stdio (the runtime is fixed-memory), the
 # fixed-point path has no floating point, and no module includes above its
@@ -196,15 +256,16 @@ check-core: $(CORE_OBJ)
 	@sh tests/check_core_symbols.sh $(CORE_OBJ)
 	@for f in $(FIXED_SRC); do sh tests/check_fixed_integer.sh $(CC) $(call mod_inc,skin) -Iboard/$(BOARD) $$f || exit 1; done
 	@OBJDUMP=$(CROSS_COMPILE)objdump sh tests/check_simd_integer.sh $(FIXED_OBJ)
-check-layers:
+check-layers: $(APP_OBJ) $(PLAT_OBJ)
 	@sh tests/check_layers.sh "$(CC) -Iboard/$(BOARD) $(CFLAGS_CORE)" \
 	  "$(foreach m,$(APP_MODULES),$(m)=$(DEPS_$(m)))" "$(DEPS_platform)" "$(PORT_HEADERS)" "$(PLATFORM_DIRS)"
+	@sh tests/check_file_cycles.sh $(NM) $(foreach m,$(APP_MODULES) platform,"$(m)=$(OBJ_$(m))")
 
 # skinplay, the device program, links none of the tool's code: no symbol
 # the analysis library or the report defines may be in it.
 REPORT_OBJ := $(filter $(OUT)/app/skintool/report/%,$(OBJ_skintool))
-check-lean: $(SKINPLAY) $(ANALYSIS_LIB) $(IMPORT_LIB) $(REPORT_OBJ)
-	@$(NM) --defined-only $(ANALYSIS_LIB) $(IMPORT_LIB) $(REPORT_OBJ) | awk '$$2 ~ /^[TDBR]$$/ { print $$3 }' | sort -u > $(OUT)/tool-symbols.txt
+check-lean: $(SKINPLAY) $(LIB_analysis) $(LIB_import) $(REPORT_OBJ)
+	@$(NM) --defined-only $(LIB_analysis) $(LIB_import) $(REPORT_OBJ) | awk '$$2 ~ /^[TDBR]$$/ { print $$3 }' | sort -u > $(OUT)/tool-symbols.txt
 	@leaked=$$($(NM) --defined-only $(SKINPLAY) | awk '{ print $$3 }' | grep -xFf $(OUT)/tool-symbols.txt | tr '\n' ' '); \
 	if [ -n "$$leaked" ]; then echo "check-lean: skinplay links tool-only code: $$leaked"; exit 1; fi; \
 	echo "check-lean: skinplay links none of the $$(wc -l < $(OUT)/tool-symbols.txt) symbols of the importer, analysis and report code"; \
@@ -213,7 +274,7 @@ check-lean: $(SKINPLAY) $(ANALYSIS_LIB) $(IMPORT_LIB) $(REPORT_OBJ)
 # The default show is rendered by test_render (natively: a cross board's
 # rendering tests are skipped under its emulator).
 test: deps
-	@$(MAKE) --no-print-directory all $(if $(TARGET_RUN),,$(DEMO_SKN)) $(UNIT_BIN) check-core check-layers check-lean
+	@$(MAKE) --no-print-directory all $(if $(TARGET_RUN),,$(DEMO_SKN)) $(UNIT_BIN) check-core check-layers check-link check-lean
 	@$(TEST_WRAP) sh tests/run_tests.sh $(OUT) $(UNIT_BIN)
 
 # On a console or desktop: the default show on the display. Without one:

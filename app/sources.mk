@@ -58,6 +58,12 @@ DEPS_skinplay := cli $(CORE_MODULES) platform
 DEPS_skintool := import cli analysis $(CORE_MODULES) platform
 HOST_MODULES  := analysis cli import skinplay skintool
 APP_MODULES   := $(CORE_MODULES) $(HOST_MODULES)
+PROGRAM_MODULES := skinplay skintool
+# The tests are white-box: every module but the programs (which they run).
+DEPS_tests    := import cli analysis $(CORE_MODULES) platform
+# The modules top down: the order of the archives on a link line (each
+# archive is searched once, so a module's calls resolve only downwards).
+LAYER_ORDER   := import analysis cli platform play kiosk render image bind skin mesh motion math base
 
 # A module's private folders: on its own include path, nobody else's.
 PRIVATE_skin     := kernels

@@ -4,7 +4,7 @@
 #include <string.h>
 #include <sys/stat.h>
 
-#include "cli_opts.h"
+#include "cli_program.h"
 
 #define MAX_INPUTS 640
 

@@ -4,6 +4,7 @@
 #include <string.h>
 
 #include "cli_inputs.h"
+#include "cli_program.h"
 #include "cli_quiet.h"
 #include "cli_version.h"
 
@@ -90,18 +91,11 @@ static int answer(const cli_command *c, const cli_opt *o)
 	return 1;
 }
 
-static char program[32] = "skintool";
-
 /* Options whose value names a file written: every other value and every
  * file is an input (cli_inputs.h). */
 static int writes(const cli_opt *o)
 {
 	return !strcmp(o->name, "output") || !strcmp(o->name, "out") || !strcmp(o->name, "sheet");
-}
-
-const char *cli_program(void)
-{
-	return program;
 }
 
 int cli_parse(const cli_command *c, void *ctx, int argc, char **argv, int first)
@@ -116,7 +110,7 @@ int cli_parse(const cli_command *c, void *ctx, int argc, char **argv, int first)
 	for (int i = first; i < argc; i++)
 		args[n++] = argv[i];
 	args[n] = NULL;
-	snprintf(program, sizeof program, "%.*s", (int)strcspn(c->prog, " "), c->prog);
+	cli_set_program(c->prog);
 	build(c, &x);
 	cli_inputs_reset();
 	optind = 0;     /* GNU: start afresh (a second parse in one process) */

@@ -12,6 +12,8 @@
 
 #include <stdio.h>
 
+#include "cli_program.h"
+
 typedef struct cli_opt {
 	const char *name;       /* long name without the dashes; NULL ends a table */
 	char short_name;        /* 0: none */
@@ -46,10 +48,6 @@ typedef struct cli_command {
  * answered (exit 0), or -1 after reporting a usage error on stderr with a
  * hint to --help (exit 1). */
 int cli_parse(const cli_command *c, void *ctx, int argc, char **argv, int first);
-
-/* "skinplay" or "skintool": the program whose command line cli_parse
- * read last, for messages that only know an option's name. */
-const char *cli_program(void);
 
 /* The --help text. */
 void cli_help(const cli_command *c, FILE *f);

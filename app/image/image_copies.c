@@ -2,7 +2,7 @@
 
 #include <string.h>
 
-#include "image_section.h"
+#include "image_error.h"
 
 void skp_header_block_frame(uint8_t *buf, const skp_image_header *h)
 {
@@ -76,52 +76,6 @@ int skp_image_copy_header(skp_image *im, skp_image_header *h)
 	skp_blockdev_stream st;
 	skp_reader rd = skp_blockdev_reader(&st, dev, im->scratch, 0, (uint64_t)dev->block_count * bs);
 	return skp_image_find_copy(rd, im->buf, SKP_IMAGE_BLOCK_SIZE, h, &at) && h->block_size == bs;
-}
-
-/* Which directory block b is (0-based), or -1. */
-static long dir_index(const skp_image_header *h, uint32_t b, uint32_t first)
-{
-	uint32_t count = h->sec[SKP_SEC_DIRECTORY].count;
-	return b >= first && b - first < count ? (long)(b - first) : -1;
-}
-
-/* A directory block from the other copy: the primary (from parity at
- * most) for a copy block, the copy for a primary block. */
-static skp_block_state dir_from_other(skp_image *im, uint32_t block, long i, int to_copy, uint8_t *buf)
-{
-	const skp_image_header *h = &im->hdr;
-	uint32_t from = to_copy ? h->sec[SKP_SEC_DIRECTORY].first + (uint32_t)i : h->dir_copy + (uint32_t)i;
-	skp_block_state st = skp_image_check_block(im, from, SKP_KIND_DIRECTORY, to_copy ? 0 : 1, buf);
-	if (st != SKP_BLOCK_OK && to_copy)
-		st = skp_image_rebuild(im, from, SKP_KIND_DIRECTORY, 0, buf);
-	if (st == SKP_BLOCK_OK)
-		skp_dir_block_reframe(buf, h, block, to_copy ? 1 : 0);
-	return st;
-}
-
-skp_block_state skp_image_recover(skp_image *im, uint32_t block, int kind, unsigned item, uint8_t *buf)
-{
-	const skp_image_header *h = &im->hdr;
-	skp_block_state st = block < h->data_blocks ? skp_image_rebuild(im, block, kind, item, buf) : SKP_BLOCK_CRC;
-	long i;
-	im->rebuilt_from = "parity";
-	if (st == SKP_BLOCK_OK)
-		return st;
-	if (block == 0 || block == h->copy_block) {
-		(block == 0 ? skp_header_block_frame : skp_header_copy_frame)(buf, h);
-		im->rebuilt_from = "the header";
-	} else if ((i = dir_index(h, block, h->sec[SKP_SEC_DIRECTORY].first)) >= 0) {
-		if (dir_from_other(im, block, i, 0, buf) != SKP_BLOCK_OK)
-			return st;
-		im->rebuilt_from = "the directory copy";
-	} else if ((i = dir_index(h, block, h->dir_copy)) >= 0) {
-		if ((st = dir_from_other(im, block, i, 1, buf)) != SKP_BLOCK_OK)
-			return st;
-		im->rebuilt_from = "the directory";
-	} else {
-		return st;
-	}
-	return skp_image_frame_check(im, block, kind, item, buf);
 }
 
 skp_status skp_image_write_copies(const skp_blockdev *dev, const skp_image_header *h, uint8_t *buf,

@@ -5,6 +5,7 @@
 #include <math.h>
 #include <string.h>
 
+#include "image_error.h"
 #include "image_section.h"
 #include "skin_compact.h"
 

@@ -3,10 +3,9 @@
  * an image is written or repaired. Fixed memory: the caller's block buffers. */
 #include "image_parity.h"
 
-#include "image_section.h"
-
 #include <string.h>
 
+#include "image_error.h"
 #include "image_read.h"
 
 static void xor_into(uint8_t *acc, const uint8_t *b, uint32_t n)

@@ -1,11 +1,18 @@
-/* Parity for the image writer and repair (image_format.h). The reader's
- * side, skp_image_rebuild, is declared in image_read.h. */
+/* XOR parity (image_format.h): the reader's rebuild of a data block, and
+ * the parity blocks the writer and repair compute. */
 #ifndef IMAGE_PARITY_H
 #define IMAGE_PARITY_H
 
 #include "blockdev.h"
+#include "image_block.h"
 #include "image_format.h"
 #include "skp_error.h"
+
+/* Rebuilds data block `block` into buf from its parity group (the other
+ * data blocks of the group and the group's parity block, read through
+ * im->scratch) and checks it. SKP_BLOCK_OK when the result is the block;
+ * else why not (no parity, another bad block in the group). */
+skp_block_state skp_image_rebuild(skp_image *im, uint32_t block, int kind, unsigned item, uint8_t *buf);
 
 /* P for D data blocks and groups of at most `group` blocks (0: the default,
  * 8, or larger so that parity and the header copy stay within 15%). */

@@ -1,6 +1,6 @@
 #include "image_play.h"
 
-#include "image_section.h"
+#include "image_error.h"
 
 #include <string.h>
 

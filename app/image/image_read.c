@@ -5,22 +5,8 @@
 
 #include "crc32.h"
 #include "image_copies.h"
+#include "image_error.h"
 #include "image_section.h"
-
-static const char *const state_names[] = {
-	"good", "I/O error", "short read", "CRC mismatch", "block of another image",
-	"block out of place", "frame count differs from the directory's"
-};
-
-const char *skp_block_state_name(skp_block_state st)
-{
-	return (unsigned)st < sizeof state_names / sizeof state_names[0] ? state_names[st] : "?";
-}
-
-int skp_block_crc_ok(const uint8_t *block, uint32_t block_size)
-{
-	return crc32_compute(block, block_size - 4) == le_get32(block + block_size - 4);
-}
 
 static int block_size_ok(uint32_t bs)
 {
@@ -33,47 +19,6 @@ uint32_t skp_image_block_size_hint(const uint8_t *block0, uint32_t n)
 	if (n < SKP_IMAGE_BLOCK_HDR || !skp_image_header_get(block0 + SKP_IMAGE_BLOCK_HDR, n - SKP_IMAGE_BLOCK_HDR, &h))
 		return 0;
 	return block_size_ok(h.block_size) ? h.block_size : 0;
-}
-
-skp_block_state skp_image_frame_check(const skp_image *im, uint32_t block, int kind, unsigned item,
-				      const uint8_t *buf)
-{
-	uint32_t bs = im->hdr.block_size;
-	if (!skp_block_crc_ok(buf, bs))
-		return SKP_BLOCK_CRC;
-	if (memcmp(buf, im->hdr.id, SKP_IMAGE_ID_BYTES))
-		return SKP_BLOCK_FOREIGN;
-	if (le_get32(buf + SKP_IMAGE_AT_INDEX) != block ||
-	    (kind > 0 && (buf[SKP_IMAGE_AT_KIND] != kind || le_get16(buf + SKP_IMAGE_AT_ITEM) != item)))
-		return SKP_BLOCK_MISPLACED;
-	return SKP_BLOCK_OK;
-}
-
-skp_block_state skp_image_read_raw(const skp_image *im, uint32_t block, uint8_t *buf)
-{
-	int n = im->dev->read(im->dev->ctx, block, buf);
-	if (n < 0)
-		return n == SKP_BD_ERANGE ? SKP_BLOCK_SHORT : SKP_BLOCK_IO;
-	return (uint32_t)n < im->hdr.block_size ? SKP_BLOCK_SHORT : SKP_BLOCK_OK;
-}
-
-skp_block_state skp_image_check_block(skp_image *im, uint32_t block, int kind, unsigned item,
-				      uint8_t *buf)
-{
-	skp_block_state st = skp_image_read_raw(im, block, buf);
-	return st != SKP_BLOCK_OK ? st : skp_image_frame_check(im, block, kind, item, buf);
-}
-
-skp_block_state skp_image_read_block(skp_image *im, uint32_t block, int kind, unsigned item,
-				     uint8_t *buf)
-{
-	skp_block_state st = skp_image_check_block(im, block, kind, item, buf);
-	if (st == SKP_BLOCK_OK || skp_image_recover(im, block, kind, item, buf) != SKP_BLOCK_OK)
-		return st;
-	im->rebuilt++;
-	if (im->on_rebuild)
-		im->on_rebuild(im->on_rebuild_ctx, block);
-	return SKP_BLOCK_OK;
 }
 
 /* Images before version 4 carry no id (their blocks' frames were 12 bytes,

@@ -1,36 +1,21 @@
 /* Reads a flash image (app/image/image_format.h) from a skp_blockdev with fixed
  * memory: the header and the clip directory at open, then the skeleton and
  * the bound body into the caller's structs. Every block read is checked
- * (CRC, image id, index, kind); a block that fails is rebuilt from its
- * parity group, or from its copy (block 0 from the header, a directory
- * block from the directory copy), else the error names it. Playback of the
- * clips is app/image/image_play.h. */
+ * (image_block.h: CRC, image id, index, kind); a block that fails is
+ * rebuilt (image_recover.h) from its parity group, or from its copy (block
+ * 0 from the header, a directory block from the directory copy), else the
+ * error names it. Playback of the clips is app/image/image_play.h. */
 #ifndef IMAGE_READ_H
 #define IMAGE_READ_H
 
 #include "blockdev.h"
+#include "image_block.h"
 #include "image_format.h"
 #include "mesh.h"
 #include "skel.h"
+#include "image_recover.h"
 #include "skin_weights.h"
 #include "skp_error.h"
-
-/* Why a block is not usable. */
-typedef enum skp_block_state {
-	SKP_BLOCK_OK = 0,
-	SKP_BLOCK_IO,        /* the storage reported an error */
-	SKP_BLOCK_SHORT,     /* fewer bytes than a block (truncated storage) */
-	SKP_BLOCK_CRC,       /* CRC mismatch */
-	SKP_BLOCK_FOREIGN,   /* good CRC, but another image's (its id) */
-	SKP_BLOCK_MISPLACED, /* good CRC, but its index or kind is not this one's */
-	SKP_BLOCK_COUNT      /* a frames block whose frame count is not the directory's */
-} skp_block_state;
-
-/* "CRC mismatch", "I/O error", ... */
-const char *skp_block_state_name(skp_block_state st);
-
-/* Whether a raw block's CRC-32 matches (no other check). */
-int skp_block_crc_ok(const uint8_t *block, uint32_t block_size);
 
 /* The block size in a raw first block when it holds a whole header of this
  * version (magic, version, CRC) with a size in range, else 0. Front ends
@@ -86,36 +71,6 @@ typedef struct skp_image {
  * blocks of the image's end the storage lacks (it still opens). dev must
  * stay valid while im is used. */
 skp_status skp_image_open(skp_image *im, const skp_blockdev *dev, skp_error *err);
-
-/* Reads block into buf and checks it: its CRC, the image's id, its index,
- * and when kind > 0 its kind and item. A block that fails is recovered when
- * it can be (skp_image_recover: then SKP_BLOCK_OK, on_rebuild told);
- * otherwise the first failure is returned. */
-skp_block_state skp_image_read_block(skp_image *im, uint32_t block, int kind, unsigned item,
-				     uint8_t *buf);
-
-/* The same without the recovery: what the storage holds. */
-skp_block_state skp_image_check_block(skp_image *im, uint32_t block, int kind, unsigned item,
-				      uint8_t *buf);
-
-/* Only the read (a whole block, no check): parity blocks have no frame. */
-skp_block_state skp_image_read_raw(const skp_image *im, uint32_t block, uint8_t *buf);
-
-/* The frame check of a block already in buf (CRC, id, index, kind). */
-skp_block_state skp_image_frame_check(const skp_image *im, uint32_t block, int kind, unsigned item,
-				      const uint8_t *buf);
-
-/* Rebuilds data block `block` into buf from its parity group (the other
- * data blocks of the group and the group's parity block, read through
- * im->scratch) and checks it. SKP_BLOCK_OK when the result is the block;
- * else why not (no parity, another bad block in the group). */
-skp_block_state skp_image_rebuild(skp_image *im, uint32_t block, int kind, unsigned item, uint8_t *buf);
-
-/* Recovers a bad block into buf: a data block from its parity group, else
- * from its copy (block 0 from the header; a directory block from the
- * directory copy); a copy from what it copies. SKP_BLOCK_OK when buf now
- * holds the block as packed, else why not. */
-skp_block_state skp_image_recover(skp_image *im, uint32_t block, int kind, unsigned item, uint8_t *buf);
 
 /* The skeleton, exactly as packed. */
 skp_status skp_image_load_skel(skp_image *im, skel *s, skp_error *err);

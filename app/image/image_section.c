@@ -1,20 +1,10 @@
 #include "image_section.h"
 
-#include <stdarg.h>
 #include <string.h>
 
+#include "image_error.h"
+#include "image_recover.h"
 #include "skp_format.h"
-
-skp_status image_block_fail(skp_error *err, skp_status code, uint32_t block, const char *fmt, ...)
-{
-	va_list ap;
-	va_start(ap, fmt);
-	skp_vfail(err, code, 0, fmt, ap);
-	va_end(ap);
-	if (err)
-		err->block = (long)block;
-	return code;
-}
 
 void sec_open(skp_image *im, const skp_image_section *sec, uint8_t kind, uint16_t item)
 {

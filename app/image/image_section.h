@@ -1,14 +1,10 @@
 /* Inside the image reader: a section read as one byte stream across its
- * blocks (each block checked as it is read); and the error helper all of
- * app/image shares. Private to app/image. */
+ * blocks (each block checked, and recovered, as it is read). Private to
+ * app/image. */
 #ifndef IMAGE_SECTION_H
 #define IMAGE_SECTION_H
 
 #include "image_read.h"
-
-/* skp_fail with code, naming block in err->block: every file of app/image
- * that reports a block (reader, writer, parity, player) fails through it. */
-skp_status image_block_fail(skp_error *err, skp_status code, uint32_t block, const char *fmt, ...);
 
 /* Starts reading section sec, whose blocks are of kind and item. */
 void sec_open(skp_image *im, const skp_image_section *sec, uint8_t kind, uint16_t item);

@@ -6,7 +6,7 @@
 #include "crc32.h"
 #include "image_copies.h"
 #include "image_parity.h"
-#include "image_section.h"
+#include "image_error.h"
 #include "skin_compact.h"
 
 void skp_clip_range_init(skp_clip_range *r, const skel *s)

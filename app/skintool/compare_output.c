@@ -10,6 +10,8 @@
 #include "report_chart.h"
 #include "report_render.h"
 
+const char *const compare_algo_label[NALGO] = { "LBS", "DQBS", "DQBS fixed" };
+
 /* ---- charts --------------------------------------------------------- */
 
 static const rgba8 algo_color[NALGO] = { { 214, 69, 65, 255 }, { 38, 110, 190, 255 },

@@ -22,8 +22,6 @@
 #include "skintool_cmds.h"
 #include "tool_args.h"
 
-const char *const compare_algo_label[NALGO] = { "LBS", "DQBS", "DQBS fixed" };
-
 enum { OPT_RENDERS = 1 };
 
 static const cli_opt compare_cmd_opts[] = {
