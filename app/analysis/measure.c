@@ -19,9 +19,9 @@ int measure_init(measure_state *t, const mesh *m, const skel_pose *bind, int bon
 	vec3 ext = vec3_sub(hi, lo);
 	float size = ext.x > ext.y ? ext.x : ext.y;
 	t->min_rest = 1e-4f * (size > ext.z ? size : ext.z);
-	t->rest_volume = skin_mesh_volume(t->bind_xyz, (const uint32_t (*)[3])m->tri, m->tri_count);
+	t->rest_volume = metrics_mesh_volume(t->bind_xyz, (const uint32_t (*)[3])m->tri, m->tri_count);
 	measure_pose(t, bind);
-	skin_metrics_distances(&t->seg, t->bind_xyz, m->vert_count, t->rest_dist);
+	metrics_distances(&t->seg, t->bind_xyz, m->vert_count, t->rest_dist);
 	if (t->rest_volume == 0.0) {
 		fprintf(stderr, "%s: the mesh encloses no volume\n", what);
 		return -1;
@@ -31,11 +31,11 @@ int measure_init(measure_state *t, const mesh *m, const skel_pose *bind, int bon
 
 void measure_pose(measure_state *t, const skel_pose *pose)
 {
-	skin_segments_from_pose(&t->seg, pose, t->bone_count);
+	metrics_segments_from_pose(&t->seg, pose, t->bone_count);
 }
 
 /* Squared distance from each vertex to the nearest segment, 4 vertices at
- * a time: the arithmetic of skin_segments_distance (skin_metrics.c) step
+ * a time: the arithmetic of metrics_segment_distance (metrics.c) step
  * for step, so the result is the same to the bit (no FMA: the host
  * compiler has none to contract to), only 3-4 times faster. */
 typedef float v4f __attribute__((vector_size(16)));
@@ -43,7 +43,7 @@ typedef int32_t v4i __attribute__((vector_size(16)));
 
 #define SELECT(m, a, b) ((v4f)(((v4i)(a) & (m)) | ((v4i)(b) & ~(m))))
 
-static void nearest2(const skin_segments *g, const float *xyz, int n, float *out)
+static void nearest2(const metrics_segments *g, const float *xyz, int n, float *out)
 {
 	static float sx[SKP_MAX_VERTS + 4], sy[SKP_MAX_VERTS + 4], sz[SKP_MAX_VERTS + 4];
 	for (int v = 0; v < n; v++)
@@ -77,10 +77,10 @@ static void nearest2(const skin_segments *g, const float *xyz, int n, float *out
 double measure_volume(const measure_state *t, const float *xyz)
 {
 	const mesh *m = t->mesh;
-	return skin_mesh_volume(xyz, (const uint32_t (*)[3])m->tri, m->tri_count) / t->rest_volume;
+	return metrics_mesh_volume(xyz, (const uint32_t (*)[3])m->tri, m->tri_count) / t->rest_volume;
 }
 
-/* skin_radius_ratio's loop, keeping each ratio and the worst vertex. */
+/* metrics_radius_ratio's loop, keeping each ratio and the worst vertex. */
 measure_row measure_skinned(const measure_state *t, const float *xyz, float *ratio)
 {
 	static float d2[SKP_MAX_VERTS + 4];

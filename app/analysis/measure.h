@@ -1,6 +1,6 @@
 /* The artifact measures of a skinned pose against the mesh as bound, shared
  * by skintool metrics and skintool compare so that both print the same
- * numbers for the same inputs (skin_metrics.h has the measures):
+ * numbers for the same inputs (metrics.h has the measures):
  *   volume_ratio   enclosed volume / the volume as bound
  *   radius ratios  a vertex's distance to the nearest posed bone segment
  *                  over the same distance in the bind pose, for vertices
@@ -9,7 +9,7 @@
 #define MEASURE_H
 
 #include "mesh.h"
-#include "skin_metrics.h"
+#include "metrics.h"
 
 /* About 1 MB: keep it static. */
 typedef struct measure_state {
@@ -18,13 +18,13 @@ typedef struct measure_state {
 	double rest_volume;
 	float min_rest;                 /* rest distances at or below are skipped */
 	float rest_dist[SKP_MAX_VERTS];
-	skin_segments seg;              /* the current pose's bones */
+	metrics_segments seg;              /* the current pose's bones */
 	float bind_xyz[3 * SKP_MAX_VERTS];
 } measure_state;
 
 typedef struct measure_row {
 	double volume_ratio;
-	skin_radius radius;
+	metrics_radius radius;
 	int worst_vertex;               /* the smallest ratio's vertex, -1 if none */
 } measure_row;
 

@@ -1,5 +1,5 @@
-/* Shared by the skintool commands: loading inputs and reporting errors as
- * FILE:LINE: message on stderr. */
+/* Shared by both programs (skinplay, skintool): loading skeletons and
+ * motion, and reporting errors as FILE:LINE: message on stderr. */
 #ifndef CLI_COMMON_H
 #define CLI_COMMON_H
 

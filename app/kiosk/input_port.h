@@ -2,9 +2,9 @@
  * (platform/input/, kmscube style: one struct of function pointers per
  * backend, static state, one active at a time). Every backend delivers
  * debounced player_events (press, release, long press) with timestamps in
- * the caller's millisecond clock; the main loop polls the backend's fds
- * together with its own and calls read() once per frame (read never
- * blocks, so calling it without poll() is fine too). */
+ * the caller's millisecond clock. The frame loop calls read() once a frame
+ * and polls nothing: read never blocks, and the debounce and long-press
+ * timers fire inside it. */
 #ifndef INPUT_PORT_H
 #define INPUT_PORT_H
 
@@ -14,7 +14,6 @@
 #include "player.h"
 #include "skp_error.h"
 
-#define INPUT_MAX_FDS PLAYER_BTN_COUNT
 #define INPUT_MAX_EVENTS 32   /* a good size for read()'s event array */
 
 typedef struct input_backend {
@@ -23,9 +22,6 @@ typedef struct input_backend {
 	 * now_ms: the current time of the clock read() will be given. On
 	 * failure nothing is left open. */
 	int (*init)(const board_config *cfg, const char *arg, uint64_t now_ms, skp_error *err);
-	/* The fds to poll for input (at most max, INPUT_MAX_FDS is enough);
-	 * returns the count. */
-	int (*fds)(int *fd, int max);
 	/* Reads what is pending and fires timers due at now_ms. Returns the
 	 * number of events written to ev (at most max; the rest waits for the
 	 * next call), or -1 with err filled. */

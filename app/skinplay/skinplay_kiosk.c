@@ -219,7 +219,7 @@ unsigned kiosk_frame(kiosk *k, long n)
 	skp_error err;
 	unsigned act = 0;
 	pace(k);
-	/* the input fds need no poll: read() never blocks and runs every frame */
+	/* the buttons need no poll: read() never blocks and runs every frame */
 	struct pollfd sig = { .fd = k->sig_fd, .events = POLLIN };
 	if (poll(&sig, 1, 0) > 0 && (sig.revents & POLLIN))
 		act |= take_signals(k);

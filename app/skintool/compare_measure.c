@@ -13,7 +13,7 @@
 #include "cli_progress.h"
 #include "cli_quiet.h"
 #include "compare.h"
-#include "skin_overlap.h"
+#include "overlap.h"
 
 #define OVERLAP_GRID 256
 #define OVERLAP_HITS (1 << 22)
@@ -22,23 +22,23 @@
 
 int compare_measure_scenes(compare_run *c)
 {
-	static skin_scene sc;
+	static scene_rig sc;
 	static skel_pose pose;
 	static const int angles[REPORT_ANGLES] = { 45, 90, 135, 180 };
 	report *r = &c->rep;
-	skin_scene_build(&sc);
+	scene_build(&sc);
 	if (cli_skin_init(&c->sk, &sc.skel, &sc.bind, &sc.mesh, &sc.weights, "scene") < 0 ||
 	    measure_init(&c->meas, &sc.mesh, &sc.bind, sc.skel.count, "scene") < 0)
 		return -1;
 	r->scene_count = 0;
-	for (int k = 0; k < SKIN_SCENE_KIND_COUNT; k++)
+	for (int k = 0; k < SCENE_KIND_COUNT; k++)
 		for (int i = 0; i < REPORT_ANGLES; i++) {
 			report_scene *s = &r->scene[r->scene_count++];
-			s->kind = (skin_scene_kind)k;
+			s->kind = (scene_kind)k;
 			s->angle_deg = angles[i];
 			/* as skintool metrics --scene computes the angle */
 			double deg = angles[i];
-			skin_scene_pose(&sc, s->kind, (float)(deg * (3.14159265358979323846 / 180.0)), &pose);
+			scene_pose(&sc, s->kind, (float)(deg * (3.14159265358979323846 / 180.0)), &pose);
 			cli_skin_pose(&c->sk, &pose);
 			measure_pose(&c->meas, &c->sk.pose);
 			for (int a = 0; a < NALGO; a++) {
@@ -350,14 +350,14 @@ static void measure_overlap(compare_run *c, const float *values)
 	static int ray_start[OVERLAP_GRID * OVERLAP_GRID + 1];
 	static float hit_z[OVERLAP_HITS];
 	static signed char hit_dir[OVERLAP_HITS];
-	static const skin_overlap_work work = { OVERLAP_GRID, OVERLAP_HITS, ray_start, hit_z, hit_dir };
+	static const overlap_work work = { OVERLAP_GRID, OVERLAP_HITS, ray_start, hit_z, hit_dir };
 	if (!(c->meas.rest_volume > 0.0))
 		return;
 	cli_skin_frame(&c->sk, values);
 	cli_skin_run(&c->sk, SKIN_DQBS, c->pos, c->nrm);
 	const mesh *m = &c->body.mesh;
 	int ok;
-	double excess = skin_mesh_overlap(c->pos, m->vert_count, (const uint32_t (*)[3])m->tri, m->tri_count,
+	double excess = overlap_of_mesh(c->pos, m->vert_count, (const uint32_t (*)[3])m->tri, m->tri_count,
 					  &work, &ok);
 	if (ok)
 		c->rep.dqbs_overlap = excess / c->meas.rest_volume;

@@ -4,7 +4,7 @@
  *   frame,algo,volume_ratio,min_radius_ratio,max_radius_ratio
  * volume_ratio: enclosed volume over that of the mesh as bound; the radius
  * ratios: range over vertices of the distance to the nearest posed bone
- * over the same distance as bound (skin_metrics.h). The scene (skin_scene.h)
+ * over the same distance as bound (metrics.h). The scene (scene.h)
  * prints one row per algorithm, frame 0. */
 #include <math.h>
 #include <stdio.h>
@@ -16,15 +16,15 @@
 #include "cli_progress.h"
 #include "measure.h"
 #include "cli_skin.h"
-#include "skin_metrics.h"
-#include "skin_scene.h"
+#include "metrics.h"
+#include "scene.h"
 #include "skintool_cmds.h"
 #include "tool_args.h"
 #include "text_tokens.h"
 
 typedef struct metrics_args {
 	tool_common c;
-	int scene;                        /* skin_scene_kind, -1: a clip */
+	int scene;                        /* scene_kind, -1: a clip */
 	double angle_deg;
 	int have_angle;
 	int algo_count;
@@ -66,7 +66,7 @@ static int parse_algos(metrics_args *a, const char *list)
 
 static int parse_scene(metrics_args *a, const char *name)
 {
-	if ((a->scene = skin_scene_parse(name)) < 0) {
+	if ((a->scene = scene_parse(name)) < 0) {
 		fprintf(stderr, "skintool metrics: unknown --scene '%s' (twist or bend)\n", name);
 		return -1;
 	}
@@ -169,13 +169,13 @@ static void metrics_pose(metrics_run *r, const metrics_args *a, long frame)
 
 static int run_scene(metrics_run *r, const metrics_args *a)
 {
-	static skin_scene sc;
+	static scene_rig sc;
 	static skel_pose pose;
-	skin_scene_build(&sc);
+	scene_build(&sc);
 	if (start(r, &sc.skel, &sc.bind, &sc.mesh, &sc.weights, "scene") < 0)
 		return -1;
 	float rad = (float)(a->angle_deg * (3.14159265358979323846 / 180.0));
-	skin_scene_pose(&sc, (skin_scene_kind)a->scene, rad, &pose);
+	scene_pose(&sc, (scene_kind)a->scene, rad, &pose);
 	cli_skin_pose(&r->sk, &pose);
 	metrics_pose(r, a, 0);
 	return 0;

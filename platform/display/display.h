@@ -38,10 +38,9 @@ typedef struct display_backend {
 	/* Shows the frame: swap or page flip (kms waits for the previous flip
 	 * first); surfaceless and osmesa only finish rendering. */
 	int (*present)(skp_error *err);
-	/* fd the main loop polls for input/display events, or -1. */
-	int (*event_fd)(void);
-	/* Never blocks; safe to call every frame even when poll() said nothing
-	 * (Xlib buffers events it already read). Sets *quit on a close request. */
+	/* Never blocks: the frame loop calls it every frame (Xlib buffers
+	 * events it already read, so nothing polls the connection). Sets *quit
+	 * on a close request. */
 	int (*handle_events)(int *quit);
 	/* Releases everything init took (kms: restores the saved CRTC). */
 	void (*shutdown)(void);

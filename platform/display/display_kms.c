@@ -354,11 +354,6 @@ fail:
 	return rc;
 }
 
-static int kms_event_fd(void)
-{
-	return s.fd;
-}
-
 static int kms_handle_events(int *quit)
 {
 	(void)quit;
@@ -391,7 +386,6 @@ const display_backend display_kms = {
 	.init = kms_init,
 	.get_proc = display_egl_get_proc,
 	.present = kms_present,
-	.event_fd = kms_event_fd,
 	.handle_events = kms_handle_events,
 	.shutdown = kms_shutdown,
 };

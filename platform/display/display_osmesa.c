@@ -149,11 +149,6 @@ static int osmesa_present(skp_error *err)
 	return SKP_OK;
 }
 
-static int osmesa_event_fd(void)
-{
-	return -1;
-}
-
 static int osmesa_handle_events(int *quit)
 {
 	(void)quit;
@@ -165,7 +160,6 @@ const display_backend display_osmesa = {
 	.init = osmesa_init,
 	.get_proc = osmesa_get_proc,
 	.present = osmesa_present,
-	.event_fd = osmesa_event_fd,
 	.handle_events = osmesa_handle_events,
 	.shutdown = osmesa_shutdown,
 };

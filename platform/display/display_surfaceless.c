@@ -103,11 +103,6 @@ static int surfaceless_present(skp_error *err)
 	return SKP_OK;
 }
 
-static int surfaceless_event_fd(void)
-{
-	return -1;
-}
-
 static int surfaceless_handle_events(int *quit)
 {
 	(void)quit;
@@ -119,7 +114,6 @@ const display_backend display_surfaceless = {
 	.init = surfaceless_init,
 	.get_proc = display_egl_get_proc,
 	.present = surfaceless_present,
-	.event_fd = surfaceless_event_fd,
 	.handle_events = surfaceless_handle_events,
 	.shutdown = surfaceless_shutdown,
 };

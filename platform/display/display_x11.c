@@ -121,11 +121,6 @@ static int x11_present(skp_error *err)
 	return SKP_OK;
 }
 
-static int x11_event_fd(void)
-{
-	return s.dpy ? ConnectionNumber(s.dpy) : -1;
-}
-
 static void handle_key(XKeyEvent *ev, int *quit)
 {
 	KeySym sym = XLookupKeysym(ev, 0);
@@ -164,7 +159,6 @@ const display_backend display_x11 = {
 	.init = x11_init,
 	.get_proc = display_egl_get_proc,
 	.present = x11_present,
-	.event_fd = x11_event_fd,
 	.handle_events = x11_handle_events,
 	.shutdown = x11_shutdown,
 };

@@ -12,12 +12,6 @@ static int none_init(const board_config *cfg, const char *arg, uint64_t now_ms, 
 	return 0;
 }
 
-static int none_fds(int *fd, int max)
-{
-	(void)fd, (void)max;
-	return 0;
-}
-
 static int none_read(uint64_t now_ms, player_event *ev, int max, skp_error *err)
 {
 	(void)now_ms, (void)ev, (void)max, (void)err;
@@ -28,7 +22,7 @@ static void none_shutdown(void)
 {
 }
 
-const input_backend input_none = { "none", none_init, none_fds, none_read, none_shutdown };
+const input_backend input_none = { "none", none_init, none_read, none_shutdown };
 
 const input_backend *input_find(const char *spec, const char **arg)
 {

@@ -105,14 +105,6 @@ fail:
 	return -1;
 }
 
-static int gpio_fds(int *fd, int max)
-{
-	int n = 0;
-	for (int i = 0; i < g.count && n < max; i++)
-		fd[n++] = g.btn[i].fd;
-	return n;
-}
-
 /* A kernel timestamp far from now is from another clock (kernels before
  * 5.7 stamp v1 events with CLOCK_REALTIME): use the time of reading. */
 static uint64_t event_ms(const input_gpio_edge *e, uint64_t now_ms)
@@ -158,4 +150,4 @@ static int gpio_read(uint64_t now_ms, player_event *ev, int max, skp_error *err)
 	return n;
 }
 
-const input_backend input_gpio = { "gpio", gpio_init, gpio_fds, gpio_read, gpio_shutdown };
+const input_backend input_gpio = { "gpio", gpio_init, gpio_read, gpio_shutdown };

@@ -44,14 +44,6 @@ static int kb_init(const board_config *cfg, const char *arg, uint64_t now_ms, sk
 	return 0;
 }
 
-static int kb_fds(int *fd, int max)
-{
-	if (k.fd < 0 || max < 1)
-		return 0;
-	*fd = k.fd;
-	return 1;
-}
-
 /* The button of a key and whether it is the long press; -1 for others. */
 static int key_button(int c, int *is_long)
 {
@@ -115,4 +107,4 @@ static void kb_shutdown(void)
 	k.fd = -1;
 }
 
-const input_backend input_keyboard = { "keyboard", kb_init, kb_fds, kb_read, kb_shutdown };
+const input_backend input_keyboard = { "keyboard", kb_init, kb_read, kb_shutdown };

@@ -96,12 +96,6 @@ static int script_init(const board_config *cfg, const char *arg, uint64_t now_ms
 	return load(arg, err);
 }
 
-static int script_fds(int *fd, int max)
-{
-	(void)fd, (void)max;
-	return 0; /* driven by time alone */
-}
-
 /* Fires every button's timers up to t, in time order with the lines. */
 static int tick_all(uint64_t t, player_event *ev)
 {
@@ -133,4 +127,4 @@ static void script_shutdown(void)
 	s.count = s.next = 0;
 }
 
-const input_backend input_script = { "script", script_init, script_fds, script_read, script_shutdown };
+const input_backend input_script = { "script", script_init, script_read, script_shutdown };

@@ -31,7 +31,7 @@
 #include "skin_compact.h"
 #include "skin_kernels.h"
 #include "test_diff.h"
-#include "skin_scene.h"
+#include "scene.h"
 #include "test_parse.h"
 #include "test_paths.h"
 
@@ -408,16 +408,16 @@ static void test_cmu_walk_every_frame(void **state)
 static void test_scenes(void **state)
 {
 	(void)state;
-	static skin_scene sc;
+	static scene_rig sc;
 	static skel_pose pose;
 	static body b;
-	skin_scene_build(&sc);
+	scene_build(&sc);
 	b = (body){ .skel = &sc.skel, .bind = &sc.bind, .mesh = &sc.mesh, .w = &sc.weights, .height = 2.0,
 		    .lbs_collapses = 1 /* the 180-degree twist */ };
 	load_body(&b);
-	for (int k = 0; k < SKIN_SCENE_KIND_COUNT; k++)
+	for (int k = 0; k < SCENE_KIND_COUNT; k++)
 		for (int deg = -180; deg <= 360; deg += 15) {
-			skin_scene_pose(&sc, (skin_scene_kind)k, (float)(deg * PI / 180), &pose);
+			scene_pose(&sc, (scene_kind)k, (float)(deg * PI / 180), &pose);
 			compare_pose(&b, &pose);
 		}
 	check(&b, "twist and bend scenes, -180..360 degrees");

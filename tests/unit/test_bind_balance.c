@@ -16,7 +16,7 @@
 #include "bind_balance.h"
 #include "dq.h"
 #include "mesh.h"
-#include "skin_metrics.h"
+#include "metrics.h"
 #include "test_skel.h"
 
 #define PI 3.14159265358979323846
@@ -114,7 +114,7 @@ static void bind_tube(float cx)
 
 static double volume_of(const float *xyz)
 {
-	return skin_mesh_volume(xyz, (const uint32_t (*)[3])tube.tri, tube.tri_count);
+	return metrics_mesh_volume(xyz, (const uint32_t (*)[3])tube.tri, tube.tri_count);
 }
 
 /* DQBS with "lower" turned by deg about axis through the joint. */

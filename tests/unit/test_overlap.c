@@ -1,4 +1,4 @@
-/* skin_mesh_overlap on boxes whose overlap is known: none for one box, the
+/* overlap_of_mesh on boxes whose overlap is known: none for one box, the
  * intersection for two that overlap (also turned to an odd angle), minus
  * the volume for a box turned inside out; and a full scratch reported. */
 #include <stdarg.h>
@@ -9,8 +9,8 @@
 
 #include <math.h>
 
-#include "skin_metrics.h"
-#include "skin_overlap.h"
+#include "metrics.h"
+#include "overlap.h"
 
 #define GRID 256
 #define MAX_HITS 200000
@@ -21,7 +21,7 @@ static int verts, tris;
 static int ray_start[GRID * GRID + 1];
 static float hit_z[MAX_HITS];
 static signed char hit_dir[MAX_HITS];
-static const skin_overlap_work work = { GRID, MAX_HITS, ray_start, hit_z, hit_dir };
+static const overlap_work work = { GRID, MAX_HITS, ray_start, hit_z, hit_dir };
 
 static void reset(void)
 {
@@ -93,14 +93,14 @@ static void rotate_all(const double axis[3], double angle)
 static double overlap(void)
 {
 	int ok;
-	double e = skin_mesh_overlap(xyz, verts, (const uint32_t (*)[3])tri, tris, &work, &ok);
+	double e = overlap_of_mesh(xyz, verts, (const uint32_t (*)[3])tri, tris, &work, &ok);
 	assert_true(ok);
 	return e;
 }
 
 static double signed_volume(void)
 {
-	return skin_mesh_volume(xyz, (const uint32_t (*)[3])tri, tris);
+	return metrics_mesh_volume(xyz, (const uint32_t (*)[3])tri, tris);
 }
 
 static void test_one_box_has_none(void **state)
@@ -150,11 +150,11 @@ static void test_scratch_too_small(void **state)
 {
 	(void)state;
 	two_boxes();
-	const skin_overlap_work tiny = { GRID, 1000, ray_start, hit_z, hit_dir };
+	const overlap_work tiny = { GRID, 1000, ray_start, hit_z, hit_dir };
 	int ok = 1;
-	skin_mesh_overlap(xyz, verts, (const uint32_t (*)[3])tri, tris, &tiny, &ok);
+	overlap_of_mesh(xyz, verts, (const uint32_t (*)[3])tri, tris, &tiny, &ok);
 	assert_false(ok);
-	skin_mesh_overlap(xyz, 0, (const uint32_t (*)[3])tri, 0, &work, &ok);
+	overlap_of_mesh(xyz, 0, (const uint32_t (*)[3])tri, 0, &work, &ok);
 	assert_false(ok);
 }
 
@@ -166,7 +166,7 @@ static void test_nan_vertex_left_out(void **state)
 	two_boxes();
 	xyz[3 * 9] = NAN;
 	int ok;
-	double e = skin_mesh_overlap(xyz, verts, (const uint32_t (*)[3])tri, tris, &work, &ok);
+	double e = overlap_of_mesh(xyz, verts, (const uint32_t (*)[3])tri, tris, &work, &ok);
 	assert_true(ok);
 	assert_true(isfinite(e));
 }

@@ -1,7 +1,7 @@
 /* The skinning kernels on hand-made cases with known answers: the DQBS
  * hemisphere fix, vertices without influence, rigid single influences,
  * normals, fixed point against float, and the synthetic scene's classic
- * artifacts (skin_scene.h) with the metrics that measure them. */
+ * artifacts (scene.h) with the metrics that measure them. */
 #include <stdarg.h>
 #include <stddef.h>
 #include <setjmp.h>
@@ -13,14 +13,14 @@
 #include <string.h>
 
 #include "skin.h"
-#include "skin_metrics.h"
-#include "skin_scene.h"
+#include "metrics.h"
+#include "scene.h"
 
 #define PI 3.14159265358979323846
 #define MAXV 4096
 
 static _Alignas(SKIN_ALIGN) unsigned char block[SKIN_SOA_BYTES(MAXV)];
-static skin_scene sc;            /* its 2-bone skeleton and bind pose serve every case */
+static scene_rig sc;            /* its 2-bone skeleton and bind pose serve every case */
 static mesh m;
 static skin_weights w;
 static skin_soa soa;
@@ -272,26 +272,26 @@ static void test_fixed_matches_float(void **state)
 }
 
 /* Runs the scene posed by kind/deg with algo and measures it. */
-static skin_radius scene_radius(skin_scene_kind kind, double deg, skin_algo algo, double *vol)
+static metrics_radius scene_radius(scene_kind kind, double deg, skin_algo algo, double *vol)
 {
 	static skel_pose pose;
-	static float xyz[3 * SKIN_SCENE_VERTS], rest[SKIN_SCENE_VERTS];
-	static skin_segments seg;
+	static float xyz[3 * SCENE_VERTS], rest[SCENE_VERTS];
+	static metrics_segments seg;
 	m = sc.mesh;
 	w = sc.weights;
 	for (int v = 0; v < m.vert_count; v++) {
 		xyz[3 * v] = m.pos[v].x; xyz[3 * v + 1] = m.pos[v].y; xyz[3 * v + 2] = m.pos[v].z;
 	}
-	double rest_vol = skin_mesh_volume(xyz, (const uint32_t (*)[3])m.tri, m.tri_count);
-	skin_segments_from_pose(&seg, &sc.bind, 2);
-	skin_metrics_distances(&seg, xyz, m.vert_count, rest);
-	skin_scene_pose(&sc, kind, (float)(deg * PI / 180), &pose);
+	double rest_vol = metrics_mesh_volume(xyz, (const uint32_t (*)[3])m.tri, m.tri_count);
+	metrics_segments_from_pose(&seg, &sc.bind, 2);
+	metrics_distances(&seg, xyz, m.vert_count, rest);
+	scene_pose(&sc, kind, (float)(deg * PI / 180), &pose);
 	run(algo, &sc.skel, &sc.bind, &pose);
 	for (int i = 0; i < 3 * m.vert_count; i++)
 		xyz[i] = algo == SKIN_DQBS_FIXED ? (float)fpos[i] / 65536.0f : pos[i];
-	*vol = skin_mesh_volume(xyz, (const uint32_t (*)[3])m.tri, m.tri_count) / rest_vol;
-	skin_segments_from_pose(&seg, &pose, 2);
-	return skin_radius_ratio(&seg, xyz, rest, m.vert_count, 1e-4f);
+	*vol = metrics_mesh_volume(xyz, (const uint32_t (*)[3])m.tri, m.tri_count) / rest_vol;
+	metrics_segments_from_pose(&seg, &pose, 2);
+	return metrics_radius_ratio(&seg, xyz, rest, m.vert_count, 1e-4f);
 }
 
 /* The scene's rest volume is that of a 48-gon prism of length 2; the cap
@@ -300,18 +300,18 @@ static void test_scene_rest(void **state)
 {
 	(void)state;
 	double vol;
-	assert_int_equal(sc.mesh.vert_count, SKIN_SCENE_VERTS);
-	assert_int_equal(sc.mesh.tri_count, SKIN_SCENE_TRIS);
-	skin_radius r = scene_radius(SKIN_SCENE_TWIST, 0, SKIN_LBS, &vol);
-	static float xyz[3 * SKIN_SCENE_VERTS];
+	assert_int_equal(sc.mesh.vert_count, SCENE_VERTS);
+	assert_int_equal(sc.mesh.tri_count, SCENE_TRIS);
+	metrics_radius r = scene_radius(SCENE_TWIST, 0, SKIN_LBS, &vol);
+	static float xyz[3 * SCENE_VERTS];
 	for (int v = 0; v < m.vert_count; v++) {
 		xyz[3 * v] = m.pos[v].x; xyz[3 * v + 1] = m.pos[v].y; xyz[3 * v + 2] = m.pos[v].z;
 	}
-	double prism = 2 * 0.5 * SKIN_SCENE_SEGMENTS * 0.04 * sin(2 * PI / SKIN_SCENE_SEGMENTS);
-	double v0 = skin_mesh_volume(xyz, (const uint32_t (*)[3])m.tri, m.tri_count);
+	double prism = 2 * 0.5 * SCENE_SEGMENTS * 0.04 * sin(2 * PI / SCENE_SEGMENTS);
+	double v0 = metrics_mesh_volume(xyz, (const uint32_t (*)[3])m.tri, m.tri_count);
 	assert_true(fabs(v0 / prism - 1) < 1e-6);
 	assert_true(fabs(vol - 1) < 1e-6);
-	assert_int_equal(r.counted, SKIN_SCENE_VERTS - 2);
+	assert_int_equal(r.counted, SCENE_VERTS - 2);
 	assert_true(fabs(r.min - 1) < 1e-5 && fabs(r.max - 1) < 1e-5);
 }
 
@@ -323,9 +323,9 @@ static void test_scene_twist(void **state)
 	print_message("twist  angle  analytic LBS  LBS min radius  DQBS min radius  fixed min  LBS volume  DQBS volume\n");
 	for (int deg = 45; deg <= 180; deg += 45) {
 		double vl, vd, vf;
-		skin_radius l = scene_radius(SKIN_SCENE_TWIST, deg, SKIN_LBS, &vl);
-		skin_radius d = scene_radius(SKIN_SCENE_TWIST, deg, SKIN_DQBS, &vd);
-		skin_radius f = scene_radius(SKIN_SCENE_TWIST, deg, SKIN_DQBS_FIXED, &vf);
+		metrics_radius l = scene_radius(SCENE_TWIST, deg, SKIN_LBS, &vl);
+		metrics_radius d = scene_radius(SCENE_TWIST, deg, SKIN_DQBS, &vd);
+		metrics_radius f = scene_radius(SCENE_TWIST, deg, SKIN_DQBS_FIXED, &vf);
 		double analytic = fabs(cos(deg * PI / 360));
 		print_message("       %5d  %12.6f  %14.6f  %15.6f  %9.6f  %10.6f  %11.6f\n", deg, analytic,
 			      (double)l.min, (double)d.min, (double)f.min, vl, vd);
@@ -336,8 +336,8 @@ static void test_scene_twist(void **state)
 		assert_true(vl < vd);
 	}
 	double v;
-	assert_true(scene_radius(SKIN_SCENE_TWIST, 180, SKIN_LBS, &v).min < 1e-3);
-	assert_true(scene_radius(SKIN_SCENE_TWIST, 180, SKIN_DQBS, &v).min > 0.999);
+	assert_true(scene_radius(SCENE_TWIST, 180, SKIN_LBS, &v).min < 1e-3);
+	assert_true(scene_radius(SCENE_TWIST, 180, SKIN_DQBS, &v).min > 0.999);
 }
 
 /* Bending: LBS loses volume at the elbow, DQBS keeps it (and bulges). */
@@ -347,8 +347,8 @@ static void test_scene_bend(void **state)
 	print_message("bend   angle  LBS min radius  DQBS min radius  DQBS max radius  LBS volume  DQBS volume\n");
 	for (int deg = 45; deg <= 180; deg += 45) {
 		double vl, vd;
-		skin_radius l = scene_radius(SKIN_SCENE_BEND, deg, SKIN_LBS, &vl);
-		skin_radius d = scene_radius(SKIN_SCENE_BEND, deg, SKIN_DQBS, &vd);
+		metrics_radius l = scene_radius(SCENE_BEND, deg, SKIN_LBS, &vl);
+		metrics_radius d = scene_radius(SCENE_BEND, deg, SKIN_DQBS, &vd);
 		print_message("       %5d  %14.6f  %15.6f  %15.6f  %10.6f  %11.6f\n", deg, (double)l.min,
 			      (double)d.min, (double)d.max, vl, vd);
 		assert_true(vl < vd);
@@ -368,19 +368,19 @@ static void test_segment_distance(void **state)
 	p.head[0] = p.tip[0] = vec3_make(5, 5, 5);
 	p.head[1] = vec3_make(0, 0, 0); p.tip[1] = vec3_make(0, 2, 0);
 	p.head[2] = vec3_make(0, 2, 0); p.tip[2] = vec3_make(2, 2, 0);
-	skin_segments g;
-	skin_segments_from_pose(&g, &p, 3);
+	metrics_segments g;
+	metrics_segments_from_pose(&g, &p, 3);
 	assert_int_equal(g.count, 2);
-	assert_float_equal(skin_segments_distance(&g, vec3_make(5, 5, 5)), sqrtf(9 + 9 + 25), 1e-5);
-	assert_float_equal(skin_segments_distance(&g, vec3_make(0.5f, 1, 0)), 0.5f, 1e-6);
-	assert_float_equal(skin_segments_distance(&g, vec3_make(0, -3, 4)), 5, 1e-6);
-	assert_float_equal(skin_segments_distance(&g, vec3_make(1, 2.25f, 0)), 0.25f, 1e-6);
+	assert_float_equal(metrics_segment_distance(&g, vec3_make(5, 5, 5)), sqrtf(9 + 9 + 25), 1e-5);
+	assert_float_equal(metrics_segment_distance(&g, vec3_make(0.5f, 1, 0)), 0.5f, 1e-6);
+	assert_float_equal(metrics_segment_distance(&g, vec3_make(0, -3, 4)), 5, 1e-6);
+	assert_float_equal(metrics_segment_distance(&g, vec3_make(1, 2.25f, 0)), 0.25f, 1e-6);
 }
 
 static int setup(void **state)
 {
 	(void)state;
-	skin_scene_build(&sc);
+	scene_build(&sc);
 	return 0;
 }
 

@@ -4,9 +4,11 @@
  * skin_fixed.c and skin_compact_scalar.c (portable, always built; the SIMD
  * kernels fall back to them), skin_avx2.c, skin_fixed_avx2.c and
  * skin_compact_avx2.c (x86-64 AVX2 + FMA, SIMD=avx2), skin_neon.c (float
- * and compact) and skin_fixed_neon.c (AArch64, SIMD=neon). A new kernel: a file here, its
- * declaration below, its case in skin.c, its board in board.mk. Each skins
- * vertices [first, end) of in with bones b into out. */
+ * and compact) and skin_fixed_neon.c (AArch64, SIMD=neon). A new kernel: a
+ * file here, its declaration below, its case in skin.c, and its name in the
+ * KERNELS_<simd> list of the SIMD settings that build it (app/sources.mk; a
+ * board picks its setting with SIMD in board.mk). Each skins vertices
+ * [first, end) of in with bones b into out. */
 #ifndef SKIN_KERNELS_H
 #define SKIN_KERNELS_H
 

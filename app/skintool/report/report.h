@@ -9,7 +9,7 @@
 #include "cli_skin.h"
 #include "skel.h"
 #include "skin.h"
-#include "skin_scene.h"
+#include "scene.h"
 
 /* Joint regions. A vertex belongs to the region of the joint nearest to it
  * in the bind pose, a joint being a bone's head; the bone's name gives the
@@ -62,7 +62,7 @@ typedef struct report_algo {
 
 #define REPORT_ANGLES 4
 typedef struct report_scene {
-	skin_scene_kind kind;
+	scene_kind kind;
 	int angle_deg;
 	double vol[SKIN_ALGO_COUNT], rmin[SKIN_ALGO_COUNT], rmax[SKIN_ALGO_COUNT];
 } report_scene;
@@ -134,7 +134,7 @@ typedef struct report {
 	report_extreme rel_min;     /* worst LBS - DQBS over the clip */
 	/* at DQBS's largest volume deviation: the volume where the skin passes
 	 * through itself, which the signed volume counts twice, over the bound
-	 * volume (skin_overlap.h); NAN when not measured */
+	 * volume (overlap.h); NAN when not measured */
 	double dqbs_overlap;
 	/* LBS at its worst volume loss, DQBS at its largest deviation */
 	report_joints vol_joints[2];

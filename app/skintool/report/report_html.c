@@ -448,7 +448,7 @@ static void scenes(FILE *f, const report *r)
 	      "<th>fixed min radius</th><th>LBS volume</th><th>DQBS volume</th><th>fixed volume</th></tr>\n", f);
 	for (int i = 0; i < r->scene_count; i++) {
 		const report_scene *s = &r->scene[i];
-		if (s->kind != SKIN_SCENE_TWIST)
+		if (s->kind != SCENE_TWIST)
 			continue;
 		double an = fabs(cos(s->angle_deg * 3.14159265358979323846 / 360.0));
 		fprintf(f, "<tr><td>%d&deg;</td><td>%.6f</td><td>%.6f</td><td>1</td><td>%.6f</td><td>%.6f</td>"
@@ -460,7 +460,7 @@ static void scenes(FILE *f, const report *r)
 	      "<th>DQBS max radius</th><th>LBS volume</th><th>DQBS volume</th><th>fixed volume</th></tr>\n", f);
 	for (int i = 0; i < r->scene_count; i++) {
 		const report_scene *s = &r->scene[i];
-		if (s->kind != SKIN_SCENE_BEND)
+		if (s->kind != SCENE_BEND)
 			continue;
 		fprintf(f, "<tr><td>%d&deg;</td><td>%.6f</td><td>%.6f</td><td>%.6f</td><td>%.6f</td><td>%.6f</td>"
 			"<td>%.6f</td><td>%.6f</td><td>%.6f</td></tr>\n", s->angle_deg, s->rmin[0], s->rmin[1],

@@ -9,43 +9,43 @@
  *
  * The poses are built directly, not through fk_pose: bone 0 stands for a
  * root with a length, which an Acclaim root does not have. */
-#ifndef SKIN_SCENE_H
-#define SKIN_SCENE_H
+#ifndef SCENE_H
+#define SCENE_H
 
 #include "fk.h"
 #include "mesh.h"
 #include "skin_weights.h"
 
-#define SKIN_SCENE_RADIUS   0.2f
-#define SKIN_SCENE_BLEND    0.3f  /* half-width of the weight ramp */
-#define SKIN_SCENE_RINGS    65    /* x = 0, 1/32, ..., 2: one ring on the joint */
-#define SKIN_SCENE_SEGMENTS 48    /* vertices around a ring */
-#define SKIN_SCENE_VERTS    (SKIN_SCENE_RINGS * SKIN_SCENE_SEGMENTS + 2)
-#define SKIN_SCENE_TRIS     (2 * SKIN_SCENE_RINGS * SKIN_SCENE_SEGMENTS)
+#define SCENE_RADIUS   0.2f
+#define SCENE_BLEND    0.3f  /* half-width of the weight ramp */
+#define SCENE_RINGS    65    /* x = 0, 1/32, ..., 2: one ring on the joint */
+#define SCENE_SEGMENTS 48    /* vertices around a ring */
+#define SCENE_VERTS    (SCENE_RINGS * SCENE_SEGMENTS + 2)
+#define SCENE_TRIS     (2 * SCENE_RINGS * SCENE_SEGMENTS)
 
-typedef enum skin_scene_kind {
-	SKIN_SCENE_TWIST,
-	SKIN_SCENE_BEND,
-	SKIN_SCENE_KIND_COUNT
-} skin_scene_kind;
+typedef enum scene_kind {
+	SCENE_TWIST,
+	SCENE_BEND,
+	SCENE_KIND_COUNT
+} scene_kind;
 
 /* "twist", "bend" */
-const char *skin_scene_name(skin_scene_kind k);
+const char *scene_name(scene_kind k);
 /* -1 when the name is not a scene */
-int skin_scene_parse(const char *name);
+int scene_parse(const char *name);
 
 /* About 5 MB (the mesh and weights are board-sized): keep it static. */
-typedef struct skin_scene {
+typedef struct scene_rig {
 	skel skel;            /* "upper" (bone 0) and its child "lower" */
 	skel_pose bind;       /* both bones along +X, identity rotations */
 	mesh mesh;            /* ring-major, then the caps' centres at x = 0, 2 */
 	skin_weights weights;
-} skin_scene;
+} scene_rig;
 
-void skin_scene_build(skin_scene *out);
+void scene_build(scene_rig *out);
 
 /* The bind pose with bone 1 turned by radians about its head (twist: +X,
  * bend: +Z). */
-void skin_scene_pose(const skin_scene *sc, skin_scene_kind k, float radians, skel_pose *out);
+void scene_pose(const scene_rig *sc, scene_kind k, float radians, skel_pose *out);
 
 #endif

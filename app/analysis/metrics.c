@@ -1,8 +1,8 @@
-#include "skin_metrics.h"
+#include "metrics.h"
 
 #include <math.h>
 
-void skin_segments_from_pose(skin_segments *out, const skel_pose *p, int bone_count)
+void metrics_segments_from_pose(metrics_segments *out, const skel_pose *p, int bone_count)
 {
 	float longest = 0.0f;
 	for (int b = 0; b < bone_count; b++) {
@@ -23,7 +23,7 @@ void skin_segments_from_pose(skin_segments *out, const skel_pose *p, int bone_co
 }
 
 /* The metrics run this for every vertex, segment and frame: no division. */
-static float segment_distance2(const skin_segments *g, int i, vec3 q)
+static float segment_distance2(const metrics_segments *g, int i, vec3 q)
 {
 	vec3 aq = vec3_sub(q, g->head[i]);
 	float s = vec3_dot(aq, g->axis[i]) * g->inv_len2[i];
@@ -32,7 +32,7 @@ static float segment_distance2(const skin_segments *g, int i, vec3 q)
 	return vec3_dot(d, d);
 }
 
-float skin_segments_distance(const skin_segments *g, vec3 q)
+float metrics_segment_distance(const metrics_segments *g, vec3 q)
 {
 	if (g->count == 0)
 		return 0.0f;
@@ -50,10 +50,10 @@ static vec3 vertex(const float *xyz, uint32_t v)
 	return vec3_make(xyz[3 * v], xyz[3 * v + 1], xyz[3 * v + 2]);
 }
 
-void skin_metrics_distances(const skin_segments *g, const float *xyz, int n, float *out)
+void metrics_distances(const metrics_segments *g, const float *xyz, int n, float *out)
 {
 	for (int v = 0; v < n; v++)
-		out[v] = skin_segments_distance(g, vertex(xyz, (uint32_t)v));
+		out[v] = metrics_segment_distance(g, vertex(xyz, (uint32_t)v));
 }
 
 /* Corner c relative to the origin o, in double. */
@@ -63,7 +63,7 @@ static void rel(const float *xyz, uint32_t c, const double o[3], double r[3])
 		r[k] = (double)xyz[3 * c + k] - o[k];
 }
 
-double skin_mesh_volume(const float *xyz, const uint32_t (*tri)[3], int tri_count)
+double metrics_mesh_volume(const float *xyz, const uint32_t (*tri)[3], int tri_count)
 {
 	if (tri_count <= 0)
 		return 0.0;
@@ -82,14 +82,14 @@ double skin_mesh_volume(const float *xyz, const uint32_t (*tri)[3], int tri_coun
 	return sum / 6.0;
 }
 
-skin_radius skin_radius_ratio(const skin_segments *posed, const float *xyz, const float *rest,
+metrics_radius metrics_radius_ratio(const metrics_segments *posed, const float *xyz, const float *rest,
 			      int n, float min_rest)
 {
-	skin_radius r = { INFINITY, -INFINITY, 0 };
+	metrics_radius r = { INFINITY, -INFINITY, 0 };
 	for (int v = 0; v < n; v++) {
 		if (!(rest[v] > min_rest))
 			continue;
-		float ratio = skin_segments_distance(posed, vertex(xyz, (uint32_t)v)) / rest[v];
+		float ratio = metrics_segment_distance(posed, vertex(xyz, (uint32_t)v)) / rest[v];
 		if (ratio < r.min)
 			r.min = ratio;
 		if (ratio > r.max)

@@ -1,4 +1,4 @@
-#include "skin_overlap.h"
+#include "overlap.h"
 
 #include <math.h>
 
@@ -45,7 +45,7 @@ static void ray_range(double lo, double hi, double origin, double h, double offs
 }
 
 typedef struct crossing_pass {
-	const skin_overlap_work *w;
+	const overlap_work *w;
 	int fill;     /* 0: count into ray_start[ray + 1]; 1: place the hits */
 } crossing_pass;
 
@@ -123,8 +123,8 @@ static double sweep(float *z, signed char *dir, int n)
 	return excess;
 }
 
-double skin_mesh_overlap(const float *xyz, int vert_count, const uint32_t (*tri)[3], int tri_count,
-			 const skin_overlap_work *w, int *ok)
+double overlap_of_mesh(const float *xyz, int vert_count, const uint32_t (*tri)[3], int tri_count,
+			 const overlap_work *w, int *ok)
 {
 	ray_grid g;
 	*ok = 0;

@@ -5,8 +5,8 @@
  *   - each vertex's distance to the posed skeleton's bone segments, and the
  *     range over vertices of posed distance / rest distance (how much the
  *     limbs thin or swell; 1 everywhere for a rigid motion). */
-#ifndef SKIN_METRICS_H
-#define SKIN_METRICS_H
+#ifndef METRICS_H
+#define METRICS_H
 
 #include <stdint.h>
 
@@ -15,39 +15,39 @@
 /* The bone segments head -> tip of a posed skeleton, zero-length bones
  * (the root, Acclaim's dummy bones) left out: a point has no side to
  * measure a radius from. */
-typedef struct skin_segments {
+typedef struct metrics_segments {
 	int count;
 	vec3 head[SKP_MAX_BONES];
 	vec3 tip[SKP_MAX_BONES];
 	vec3 axis[SKP_MAX_BONES];      /* tip - head */
 	float inv_len2[SKP_MAX_BONES]; /* 1 / |axis|^2 */
-} skin_segments;
+} metrics_segments;
 
 /* Keeps the bones of p (bone_count of them) longer than 1e-6 of the
  * longest one. */
-void skin_segments_from_pose(skin_segments *out, const skel_pose *p, int bone_count);
+void metrics_segments_from_pose(metrics_segments *out, const skel_pose *p, int bone_count);
 
 /* Distance from q to the nearest segment (0 when there is none). */
-float skin_segments_distance(const skin_segments *g, vec3 q);
+float metrics_segment_distance(const metrics_segments *g, vec3 q);
 
-/* out[v] = skin_segments_distance(g, vertex v) for n vertices. */
-void skin_metrics_distances(const skin_segments *g, const float *xyz, int n, float *out);
+/* out[v] = metrics_segment_distance(g, vertex v) for n vertices. */
+void metrics_distances(const metrics_segments *g, const float *xyz, int n, float *out);
 
 /* Signed volume enclosed by the triangles (counter-clockwise seen from
  * outside: positive), by the divergence theorem, summed in double about
  * the first corner so that the result does not depend on where the mesh
  * is. Only meaningful for a closed mesh. */
-double skin_mesh_volume(const float *xyz, const uint32_t (*tri)[3], int tri_count);
+double metrics_mesh_volume(const float *xyz, const uint32_t (*tri)[3], int tri_count);
 
-typedef struct skin_radius {
+typedef struct metrics_radius {
 	float min, max;  /* of posed / rest distance; both 1 when counted is 0 */
 	int counted;     /* vertices measured */
-} skin_radius;
+} metrics_radius;
 
-/* Range of skin_segments_distance(posed, vertex v) / rest[v] over the n
+/* Range of metrics_segment_distance(posed, vertex v) / rest[v] over the n
  * vertices whose rest distance exceeds min_rest (a vertex on a bone has
  * no radius to keep). */
-skin_radius skin_radius_ratio(const skin_segments *posed, const float *xyz, const float *rest,
+metrics_radius metrics_radius_ratio(const metrics_segments *posed, const float *xyz, const float *rest,
 			      int n, float min_rest);
 
 #endif

@@ -1,20 +1,20 @@
-#include "skin_scene.h"
+#include "scene.h"
 
 #include <math.h>
 #include <string.h>
 
 #define TWO_PI 6.28318530717958647692f
 
-static const char *const names[SKIN_SCENE_KIND_COUNT] = { "twist", "bend" };
+static const char *const names[SCENE_KIND_COUNT] = { "twist", "bend" };
 
-const char *skin_scene_name(skin_scene_kind k)
+const char *scene_name(scene_kind k)
 {
-	return (unsigned)k < SKIN_SCENE_KIND_COUNT ? names[k] : "?";
+	return (unsigned)k < SCENE_KIND_COUNT ? names[k] : "?";
 }
 
-int skin_scene_parse(const char *name)
+int scene_parse(const char *name)
 {
-	for (int k = 0; k < SKIN_SCENE_KIND_COUNT; k++)
+	for (int k = 0; k < SCENE_KIND_COUNT; k++)
 		if (strcmp(name, names[k]) == 0)
 			return k;
 	return -1;
@@ -57,7 +57,7 @@ static void scene_bind(skel_pose *p)
 
 static void set_weights(skin_weights *w, int v, float x)
 {
-	float w1 = (x - (1.0f - SKIN_SCENE_BLEND)) / (2.0f * SKIN_SCENE_BLEND);
+	float w1 = (x - (1.0f - SCENE_BLEND)) / (2.0f * SCENE_BLEND);
 	w1 = w1 < 0.0f ? 0.0f : w1 > 1.0f ? 1.0f : w1;
 	float w0 = 1.0f - w1;
 	int big = w1 > w0; /* largest first, as bind writes them */
@@ -68,7 +68,7 @@ static void set_weights(skin_weights *w, int v, float x)
 	w->count[v] = w->weight[v][1] > 0.0f ? 2 : 1;
 }
 
-static void add_vertex(skin_scene *sc, vec3 p, vec3 n)
+static void add_vertex(scene_rig *sc, vec3 p, vec3 n)
 {
 	int v = sc->mesh.vert_count++;
 	sc->mesh.pos[v] = p;
@@ -82,41 +82,41 @@ static void add_tri(mesh *m, int a, int b, int c)
 	t[0] = (uint32_t)a; t[1] = (uint32_t)b; t[2] = (uint32_t)c;
 }
 
-static void build_rings(skin_scene *sc)
+static void build_rings(scene_rig *sc)
 {
-	for (int i = 0; i < SKIN_SCENE_RINGS; i++) {
-		float x = 2.0f * (float)i / (float)(SKIN_SCENE_RINGS - 1);
-		for (int j = 0; j < SKIN_SCENE_SEGMENTS; j++) {
-			float a = TWO_PI * (float)j / (float)SKIN_SCENE_SEGMENTS;
+	for (int i = 0; i < SCENE_RINGS; i++) {
+		float x = 2.0f * (float)i / (float)(SCENE_RINGS - 1);
+		for (int j = 0; j < SCENE_SEGMENTS; j++) {
+			float a = TWO_PI * (float)j / (float)SCENE_SEGMENTS;
 			vec3 n = vec3_make(0, cosf(a), sinf(a));
-			add_vertex(sc, vec3_make(x, SKIN_SCENE_RADIUS * n.y, SKIN_SCENE_RADIUS * n.z), n);
+			add_vertex(sc, vec3_make(x, SCENE_RADIUS * n.y, SCENE_RADIUS * n.z), n);
 		}
 	}
 }
 
 static int ring_vertex(int i, int j)
 {
-	return i * SKIN_SCENE_SEGMENTS + j % SKIN_SCENE_SEGMENTS;
+	return i * SCENE_SEGMENTS + j % SCENE_SEGMENTS;
 }
 
 /* Counter-clockwise seen from outside: the angle grows about +X. */
 static void build_faces(mesh *m)
 {
-	int c0 = SKIN_SCENE_RINGS * SKIN_SCENE_SEGMENTS, c1 = c0 + 1, last = SKIN_SCENE_RINGS - 1;
+	int c0 = SCENE_RINGS * SCENE_SEGMENTS, c1 = c0 + 1, last = SCENE_RINGS - 1;
 	for (int i = 0; i < last; i++)
-		for (int j = 0; j < SKIN_SCENE_SEGMENTS; j++) {
+		for (int j = 0; j < SCENE_SEGMENTS; j++) {
 			int a = ring_vertex(i, j), b = ring_vertex(i + 1, j);
 			int c = ring_vertex(i + 1, j + 1), d = ring_vertex(i, j + 1);
 			add_tri(m, a, d, c);
 			add_tri(m, a, c, b);
 		}
-	for (int j = 0; j < SKIN_SCENE_SEGMENTS; j++) {
+	for (int j = 0; j < SCENE_SEGMENTS; j++) {
 		add_tri(m, c0, ring_vertex(0, j + 1), ring_vertex(0, j));
 		add_tri(m, c1, ring_vertex(last, j), ring_vertex(last, j + 1));
 	}
 }
 
-void skin_scene_build(skin_scene *sc)
+void scene_build(scene_rig *sc)
 {
 	scene_skel(&sc->skel);
 	scene_bind(&sc->bind);
@@ -129,10 +129,10 @@ void skin_scene_build(skin_scene *sc)
 	sc->weights.vert_count = sc->mesh.vert_count;
 }
 
-void skin_scene_pose(const skin_scene *sc, skin_scene_kind k, float radians, skel_pose *out)
+void scene_pose(const scene_rig *sc, scene_kind k, float radians, skel_pose *out)
 {
 	*out = sc->bind;
-	quat q = quat_from_basis_angle(k == SKIN_SCENE_BEND ? 2 : 0, radians);
+	quat q = quat_from_basis_angle(k == SCENE_BEND ? 2 : 0, radians);
 	out->rot[1] = quat_mul(q, sc->bind.rot[1]);
 	out->tip[1] = vec3_add(out->head[1], quat_rotate(q, vec3_sub(sc->bind.tip[1], sc->bind.head[1])));
 }
