@@ -402,16 +402,18 @@ static void ease_extent(renderer *r, float dt)
 	*hi = vec3_make(ease_up(hi->x, ghi.x, k), ease_up(hi->y, ghi.y, k), ease_up(hi->z, ghi.z, k));
 }
 
-/* The panel's camera: the box the body takes, placed at the followed root,
+/* The panel's camera: the box the body takes, placed at the followed root
+ * and stretched to where the root is now (travelling, the camera lags it),
  * between the bands (the top one where the panel meets the screen's top);
  * without one, the camera following the body. */
-static mat4 panel_camera(const renderer *r, const layout *l, render_rect area, int lh)
+static mat4 panel_camera(const renderer *r, const layout *l, render_rect area, int lh, vec3 root)
 {
 	float aspect = (float)area.w / (float)area.h;
 	if (!r->framed)
 		return camera_matrix(&r->cam, aspect);
-	vec3 at = vec3_make(r->cam.target.x, 0.0f, r->cam.target.z);
-	vec3 lo = vec3_add(r->ext_lo, at), hi = vec3_add(r->ext_hi, at);
+	vec3 at = vec3_make(r->cam.target.x, 0.0f, r->cam.target.z), now = vec3_make(root.x, 0.0f, root.z);
+	vec3 lo = vec3_min(vec3_add(r->ext_lo, at), vec3_add(r->ext_lo, now));
+	vec3 hi = vec3_max(vec3_add(r->ext_hi, at), vec3_add(r->ext_hi, now));
 	int top = area.y + area.h == lh ? l->top : 0;
 	float bottom = -1.0f + 2.0f * (float)l->foot / (float)area.h, ceiling = 1.0f - 2.0f * (float)top / (float)area.h;
 	return camera_frame_box(&r->cam, lo, hi, aspect, bottom, ceiling);
@@ -420,7 +422,7 @@ static mat4 panel_camera(const renderer *r, const layout *l, render_rect area, i
 static void draw_panel(renderer *r, const render_frame *f, const layout *l, int i, render_rect area, int lh)
 {
 	render_set_viewport(r, area);
-	mat4 cam = panel_camera(r, l, area, lh);
+	mat4 cam = panel_camera(r, l, area, lh, f->pose->tip[0]);
 	mat4 vp = mat4_mul(&r->screen, &cam);
 	render_grid_and_shadow(r, &vp, f->pose->tip[0]);
 	render_body(r, &vp, f, i);
