@@ -158,6 +158,22 @@ skp_status render_init(renderer *r, const gl_api *gl, int width, int height, int
 					      : skp_fail(err, SKP_ERR_RANGE, 0, "OpenGL error while uploading the body");
 }
 
+skp_status render_init_notice(renderer *r, const gl_api *gl, int width, int height, int rotation, skp_error *err)
+{
+	memset(r, 0, sizeof *r);
+	r->gl = gl;
+	r->width = width;
+	r->height = height;
+	r->rotation = ((rotation / 90) % 4 + 4) % 4;
+	r->screen = mat4_rotate_z90(r->rotation);
+	skp_status rc = build_programs(r, err);
+	if (rc)
+		return rc;
+	upload_font(r);
+	gl->GenBuffers(1, &r->vbo_misc);
+	return gl->GetError() == GL_NO_ERROR ? SKP_OK : skp_fail(err, SKP_ERR_RANGE, 0, "OpenGL error at start-up");
+}
+
 int render_gpu_fits(const renderer *r, skin_algo algo)
 {
 	int per_bone = algo == SKIN_LBS ? 3 : 2;

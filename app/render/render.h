@@ -97,6 +97,13 @@ void render_shutdown(renderer *r);
  * picture), a smaller one eased into over the next frames, or at once. */
 void render_set_extent(renderer *r, vec3 lo, vec3 hi, int immediate);
 
+/* A renderer for text alone (render_draw_notice): when there is no body to
+ * show (no valid show in any image slot), the screen still says why. */
+skp_status render_init_notice(renderer *r, const gl_api *gl, int width, int height, int rotation, skp_error *err);
+
+/* Clears the screen and draws the lines centred, the first larger. */
+void render_draw_notice(renderer *r, const char *const *lines, int count);
+
 /* Turns the camera yaw radians about the vertical from the usual view (a
  * body facing +z seen from the front, RENDER_CAMERA_AZIMUTH to its left):
  * smoothly over the next frames, or at once. */

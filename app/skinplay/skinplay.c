@@ -41,7 +41,7 @@ static void choose_paths(player *p)
 	}
 }
 
-static int open_display(player *p)
+int open_display(player *p)
 {
 	skp_error err;
 	const char *name = p->o.platform;
@@ -115,8 +115,11 @@ static int no_display(const player *p)
 
 static int setup(player *p)
 {
-	if (p->o.image_count ? show_open(&p->show, p->o.image, p->o.image_count, &p->body) < 0
-			     : bind_args_load(&p->o.bind, p->o.asf, p->o.mesh, &p->body) < 0)
+	if (p->o.image_count && show_open(&p->show, p->o.image, p->o.image_count, &p->body) < 0) {
+		p->no_show = 1; /* a kiosk waits for one (skinplay_wait.c) */
+		return -1;
+	}
+	if (!p->o.image_count && bind_args_load(&p->o.bind, p->o.asf, p->o.mesh, &p->body) < 0)
 		return -1;
 	if (cli_skin_init(&p->skin, &p->body.skel, &p->body.pose, &p->body.mesh, &p->body.weights,
 			   p->o.image_count ? show_path(&p->show) : p->o.mesh ? p->o.mesh : "generated body") < 0)
@@ -500,9 +503,11 @@ int main(int argc, char **argv)
 	}
 	if (kiosk_setup(&p.kiosk, &p.o, argc, argv) < 0)
 		return 1;
-	rc = setup(&p) == 0 &&
-	     kiosk_start(&p.kiosk, &p.o, p.headless, p.o.image_count ? show_clip_count(&p.show) : 1) == 0 &&
-	     play(&p) == 0 ? 0 : 1;
+	if (setup(&p) != 0)
+		rc = p.no_show ? wait_for_show(&p) : 1;
+	else
+		rc = kiosk_start(&p.kiosk, &p.o, p.headless, p.o.image_count ? show_clip_count(&p.show) : 1) == 0 &&
+		     play(&p) == 0 ? 0 : 1;
 	/* headless, the show had nothing to play: the held frame was rendered,
 	 * the status says the show is damaged (a kiosk keeps holding instead) */
 	if (rc == 0 && p.hold)

@@ -65,7 +65,8 @@ typedef struct player {
 	char clip[64];
 	sheet contact;
 	kiosk kiosk;       /* --board, --input, signals, systemd */
-	int reload;        /* SIGHUP: start over (main re-executes) */
+	int reload;        /* SIGHUP, or a slot changed while waiting: start over (main re-executes) */
+	int no_show;       /* no image slot holds a show that can play */
 } player;
 
 /* Opens the first clip (--clip, --start) and computes its first pose into
@@ -94,6 +95,16 @@ int clips_show_loops(const player *p);
 /* Tells the renderer the space the body takes over the clip playing (the
  * survey's joints, grown by p->flesh), so the camera frames all of it. */
 void clips_frame(player *p, int immediate);
+
+/* Opens the display --platform names (auto: what display_auto picks; where
+ * headless EGL is missing, OSMesa). 0, or -1 after reporting. */
+int open_display(player *p);
+
+/* No image slot holds a show that can play. On a screen, says so there and
+ * waits, feeding the watchdog, until a slot file changes (a new show copied
+ * in: p->reload, main starts over) or SIGHUP or SIGTERM; headless, and with
+ * no display at all, it is an error. Returns the exit status. */
+int wait_for_show(player *p);
 
 /* Shows text on screen for about seconds. */
 void clips_notice(player *p, const char *text, double seconds);
