@@ -41,38 +41,6 @@ static void choose_paths(player *p)
 	}
 }
 
-int open_display(player *p)
-{
-	skp_error err;
-	const char *name = p->o.platform;
-	p->disp = !name || !strcmp(name, "auto") ? display_auto() : display_find(name);
-	if (!p->disp) {
-		fprintf(stderr, "skinplay: unknown platform '%s' (surfaceless, osmesa, kms, x11, auto)\n", name);
-		return -1;
-	}
-	display_config cfg = { p->o.width, p->o.height, p->o.device, p->o.rotation };
-	if (p->disp->init(&cfg, &p->info, &err) != 0) {
-		fprintf(stderr, "skinplay: %s: %s\n", p->disp->name, err.msg);
-		/* headless EGL can be missing where Mesa's OSMesa still works */
-		if (name && strcmp(name, "auto"))
-			return -1;
-		p->disp = display_find("osmesa");
-		if (p->disp->init(&cfg, &p->info, &err) != 0) {
-			fprintf(stderr, "skinplay: osmesa: %s\n", err.msg);
-			return -1;
-		}
-	}
-	if (gl_api_load(&p->gl, p->disp->get_proc, &err) != SKP_OK) {
-		fprintf(stderr, "skinplay: %s: %s\n", p->disp->name, err.msg);
-		p->disp->shutdown();
-		return -1;
-	}
-	p->headless = !strcmp(p->disp->name, "surfaceless") || !strcmp(p->disp->name, "osmesa");
-	fprintf(cli_note(), "display: %s %dx%d, %s\n", p->disp->name, p->info.width, p->info.height,
-		p->info.gl_renderer ? p->info.gl_renderer : "?");
-	return 0;
-}
-
 /* Skinning threads when the board has the cores and the mesh the size for
  * them to pay (the board's [skin] split_verts; auto: the first frames try
  * them against one thread); otherwise, or when they cannot start, the
