@@ -24,10 +24,14 @@ const char *test_data_path(const char *rel)
 
 const char *test_tool_path(const char *tool)
 {
-	static char buf[1024];
+	/* rotating, so that one printf may name several: the order its
+	 * arguments are evaluated in differs between compilers and targets */
+	static char buf[8][1024];
+	static int next;
 	const char *b = getenv("SKP_BUILD");
-	snprintf(buf, sizeof buf, "%s/%s", b && *b ? b : "build", tool);
-	return buf;
+	char *out = buf[next++ % 8];
+	snprintf(out, sizeof buf[0], "%s/%s", b && *b ? b : "build", tool);
+	return out;
 }
 
 char *test_read_file(const char *path, size_t *size)

@@ -8,7 +8,7 @@
  * shared data directory is absent (tests then skip()). */
 const char *test_data_path(const char *rel);
 
-/* "<SKP_BUILD or build>/<tool>" in a static buffer. */
+/* "<SKP_BUILD or build>/<tool>" in one of 8 rotating static buffers. */
 const char *test_tool_path(const char *tool);
 
 /* 1 when the file at path holds text (0 also when it cannot be read). */
