@@ -16,14 +16,6 @@
 #include "png_writer.h"
 #include "skinplay.h"
 
-typedef struct timing {
-	uint64_t decode, skin, upload, draw;
-	long frames;
-	uint64_t since;
-} timing;
-
-static timing total; /* the whole run, for the summary line */
-
 /* Which kernels each panel runs, and where (GPU when asked and it fits). */
 static void choose_paths(player *p)
 {
@@ -281,18 +273,6 @@ static void pose_digest_add(player *p)
 		p->digest = (p->digest ^ b[i]) * 1099511628211ull;
 }
 
-/* The second's timings into the run's, and a new second from now. */
-static void account_second(timing *t, uint64_t now)
-{
-	total.decode += t->decode;
-	total.skin += t->skin;
-	total.upload += t->upload;
-	total.draw += t->draw;
-	total.frames += t->frames;
-	memset(t, 0, sizeof *t);
-	t->since = now;
-}
-
 /* The status line: every second of the first minute (start-up, and any
  * short run whole), then once an hour, so that months on a kiosk do not
  * fill the journal; the last one always. */
@@ -300,9 +280,10 @@ static void account_second(timing *t, uint64_t now)
 
 static int status_due(player *p, uint64_t now, int last)
 {
-	if (!last && now - total.since >= STATUS_EVERY_SECOND_NS && now - p->status_at < SKP_RATELIMIT_HOUR)
+	uint64_t since = now - p->stages.start_ns;
+	if (!last && since >= STATUS_EVERY_SECOND_NS && now - p->status_at < SKP_RATELIMIT_HOUR)
 		return 0;
-	if (!last && !p->status_hourly && now - total.since >= STATUS_EVERY_SECOND_NS) {
+	if (!last && !p->status_hourly && since >= STATUS_EVERY_SECOND_NS) {
 		fprintf(cli_note(), "skinplay: status lines from now on once an hour\n");
 		p->status_hourly = 1;
 	}
@@ -310,29 +291,33 @@ static int status_due(player *p, uint64_t now, int last)
 	return 1;
 }
 
-static void log_second(player *p, timing *t, uint64_t now, int last)
+/* The stages in the status and summary lines: decode (and pose), skin
+ * (bone transforms and kernels), upload, draw. */
+#define TIMES_FMT "decode %.2f ms, skin %.2f ms, upload %.2f ms, draw %.2f ms"
+#define TIMES(t, mean) mean(t, STAGE_POSE, STAGE_POSE), mean(t, STAGE_BONES, STAGE_SKIN), \
+	mean(t, STAGE_UPLOAD, STAGE_UPLOAD), mean(t, STAGE_DRAW, STAGE_DRAW)
+
+/* The last second's status line (when due), and a new second from now. */
+static void log_second(player *p, uint64_t now, int last)
 {
-	double secs = (double)(now - t->since) * 1e-9, n = (double)t->frames;
-	if (!status_due(p, now, last)) {
-		account_second(t, now);
-		return;
+	const stage_times *t = &p->stages;
+	double fps = stage_window_fps(t, now);
+	if (status_due(p, now, last)) {
+		fprintf(cli_note(), "frame %ld: clip %.3f s, %.1f fps, " TIMES_FMT, shown_number(p), shown_time(p), fps,
+			TIMES(t, stage_window_ms));
+		/* a run of known length (headless, --frames: make soak): how far, how long left */
+		if (p->budget > 0 && fps > 0)
+			fprintf(cli_note(), "; %ld of %ld shown (%.1f%%), %.0f s left", p->shown, p->budget,
+				100.0 * (double)p->shown / (double)p->budget, (double)(p->budget - p->shown) / fps);
+		fputc('\n', cli_note());
 	}
-	fprintf(cli_note(), "frame %ld: clip %.3f s, %.1f fps, decode %.2f ms, skin %.2f ms, upload %.2f ms, draw %.2f ms",
-		shown_number(p), shown_time(p), n / secs, t->decode * 1e-6 / n, t->skin * 1e-6 / n, t->upload * 1e-6 / n,
-		t->draw * 1e-6 / n);
-	/* a run of known length (headless, --frames: make soak): how far, how long left */
-	if (p->budget > 0 && n > 0)
-		fprintf(cli_note(), "; %ld of %ld shown (%.1f%%), %.0f s left", p->shown, p->budget,
-			100.0 * (double)p->shown / (double)p->budget, (double)(p->budget - p->shown) * secs / n);
-	fputc('\n', cli_note());
-	account_second(t, now);
+	stage_window_reset(&p->stages, now);
 }
 
-static int draw_one(player *p, timing *t, double fps, render_frame *f)
+static int draw_one(player *p, double fps, render_frame *f)
 {
 	char lines[3][128];
 	skp_error err;
-	uint64_t t0 = clock_now_ns();
 	skin_panels(p, f);
 	uint64_t t1 = clock_now_ns();
 	render_upload(&p->r, f);
@@ -342,9 +327,6 @@ static int draw_one(player *p, timing *t, double fps, render_frame *f)
 	memset(f->hud, 0, sizeof f->hud); /* the lines live on this stack frame */
 	p->gl.Finish();
 	uint64_t t3 = clock_now_ns();
-	t->skin += t1 - t0;
-	t->upload += t2 - t1;
-	t->draw += t3 - t2;
 	stage_add(&p->stages, STAGE_UPLOAD, t2 - t1);
 	stage_add(&p->stages, STAGE_DRAW, t3 - t2);
 	if (p->disp->present(&err) != 0) {
@@ -386,8 +368,7 @@ static uint64_t frame_time(player *p, long n)
 
 static int play(player *p)
 {
-	timing t = { 0, 0, 0, 0, 0, clock_now_ns() };
-	total.since = t.since;
+	stage_start(&p->stages, clock_now_ns());
 	render_frame f;
 	memset(&f, 0, sizeof f);
 	f.view = p->o.view;
@@ -414,17 +395,15 @@ static int play(player *p)
 			r = -1;
 			break;
 		}
-		t.decode += clock_now_ns() - t0;
-		stage_add(&p->stages, STAGE_DECODE, clock_now_ns() - t0);
+		stage_add(&p->stages, STAGE_POSE, clock_now_ns() - t0);
 		f.dt = (float)((double)(p->now - prev) * 1e-9);
 		prev = p->now;
 		if (p->o.pose_digest)
 			pose_digest_add(p);
-		if (p->disp && draw_one(p, &t, fps, &f) < 0)
+		if (p->disp && draw_one(p, fps, &f) < 0)
 			return -1;
 		p->drift = ((double)p->now - (double)(clock_now_ns() - p->wall0)) * 1e-9;
 		p->shown = ++shown;
-		t.frames++;
 		uint64_t t_png = clock_now_ns();
 		if (p->o.out_dir && (shown - 1) % p->o.every == 0 && write_png(p, shown) < 0)
 			return -1;
@@ -433,21 +412,19 @@ static int play(player *p)
 		if (p->disp && p->disp->handle_events)
 			p->disp->handle_events(&quit);
 		uint64_t now = clock_now_ns();
-		if (now - t.since >= 1000000000u) {
-			fps = (double)t.frames / ((double)(now - t.since) * 1e-9);
-			log_second(p, &t, now, 0);
+		if (now - p->stages.window_ns >= 1000000000u) {
+			fps = stage_window_fps(&p->stages, now);
+			log_second(p, now, 0);
 		}
 	}
 	if (r < 0)
 		return -1;
-	log_second(p, &t, clock_now_ns(), 1);
-	double n = total.frames ? (double)total.frames : 1.0;
-	double secs = (double)(clock_now_ns() - total.since) * 1e-9;
-	fprintf(cli_note(), "played %ld frames of %s in %.2f s: %.1f fps; per frame decode %.2f ms, skin %.2f ms, "
-		"upload %.2f ms, draw %.2f ms (%s, %dx%d, %s skinning%s)\n", shown, p->o.amc ? p->o.amc : p->clip, secs,
-		shown / secs, total.decode * 1e-6 / n, total.skin * 1e-6 / n, total.upload * 1e-6 / n,
-		total.draw * 1e-6 / n, p->disp ? p->disp->name : "none", p->info.width, p->info.height,
-		p->gpu[0] ? "GPU" : "CPU", threads_note(p));
+	log_second(p, clock_now_ns(), 1);
+	double secs = (double)(clock_now_ns() - p->stages.start_ns) * 1e-9;
+	fprintf(cli_note(), "played %ld frames of %s in %.2f s: %.1f fps; per frame " TIMES_FMT " (%s, %dx%d, %s skinning%s)\n",
+		shown, p->o.amc ? p->o.amc : p->clip, secs, shown / secs, TIMES(&p->stages, stage_run_ms),
+		p->disp ? p->disp->name : "none", p->info.width, p->info.height, p->gpu[0] ? "GPU" : "CPU",
+		threads_note(p));
 	if (p->o.pose_digest)
 		fprintf(stderr, "poses: %ld shown, digest %016llx\n", shown, (unsigned long long)p->digest);
 	if (p->o.report_timing)
