@@ -137,7 +137,7 @@ endif
 $(APP_OBJ) $(PLAT_OBJ): $(FLAGS_STAMP)
 
 # $(call compile_module,SOURCE,OBJECT,FLAGS). A header reached through
-# ".." (#include "../kiosk/player.h" finds app/kiosk from app/base's own
+# ".." (#include "../kiosk/controls.h" finds app/kiosk from app/base's own
 # folder, whatever the include path allows) is refused: the dependency
 # file the compiler writes lists every header by the path it was found by.
 define compile_module
@@ -222,7 +222,7 @@ $(LAYER_LINKS): $(OUT)/layers/%: $(LAYER_MAIN) $$(LIB_$$*) $$(call libs_of,$$*)
 # skin_soa_bytes (app/skin) through a prototype written by hand compiles,
 # and base's link check refuses it; the same archive links once app/skin's
 # archives are given (the call is real: one archive for the whole core
-# linked it). A copy with #include "../kiosk/player.h" does not build.
+# linked it). A copy with #include "../kiosk/controls.h" does not build.
 PROBE := $(OUT)/probe
 $(PROBE)/app/base/%.o: $(PROBE)/app/base/%.c
 	$(call compile_module,$<,$@,$(call mod_inc,base) $(CFLAGS_CORE))
@@ -236,7 +236,7 @@ check-link: $(LAYER_LINKS)
 	@rm -rf $(PROBE) && mkdir -p $(PROBE)/app/base
 	@{ cat app/base/crc32.c; printf '%s\n' '' '#include <stddef.h>' 'size_t skin_soa_bytes(int count);' \
 	  'int crc32_probe(void);' 'int crc32_probe(void) { return (int)skin_soa_bytes(1); }'; } > $(PROBE)/app/base/crc32.c
-	@{ echo '#include "../kiosk/player.h"'; cat app/base/crc32.c; } > $(PROBE)/app/base/dotdot.c
+	@{ echo '#include "../kiosk/controls.h"'; cat app/base/crc32.c; } > $(PROBE)/app/base/dotdot.c
 	@$(MAKE) --no-print-directory -s $(PROBE)/layers/base+skin > $(PROBE)/control.log 2>&1 || \
 	  { cat $(PROBE)/control.log; echo "check-link: the probe does not link even with app/skin"; exit 1; }
 	@if $(MAKE) --no-print-directory -s $(PROBE)/layers/base > $(PROBE)/up.log 2>&1 || \
@@ -246,7 +246,7 @@ check-link: $(LAYER_LINKS)
 	  ! grep -q "a path through '..'" $(PROBE)/dotdot.log; then \
 	  cat $(PROBE)/dotdot.log; echo "check-link: an include through '..' built"; exit 1; fi
 	@echo "check-link: $(words $(LAYER_LINKS)) modules link with their DEPS_ only; app/base calling" \
-	  "app/skin's skin_soa_bytes by a hand-written prototype does not link, #include \"../kiosk/player.h\" does not build"
+	  "app/skin's skin_soa_bytes by a hand-written prototype does not link, #include \"../kiosk/controls.h\" does not build"
 	@grep -h "undefined reference\|through '..'" $(PROBE)/up.log $(PROBE)/dotdot.log | sed 's/^ */  /'
 
 # The core must not allocate or do stdio (the runtime is fixed-memory), the

@@ -28,9 +28,9 @@
 #   mesh      meshes, normals, OBJ, the generated body
 #   skin      weights, SoA vertices, bone transforms, skin_run; kernels/
 #   bind      automatic and balanced weights, fitting, pose guessing, the weights CSV
-#   image     the flash image: format, block device port, reader, writer, player
+#   image     the flash image: format, block device port, reader, writer, clip stream
 #   render    the GLES2 renderer, camera, font, shaders, GL entry points
-#   kiosk     player state machine, debounce, board config, input port
+#   kiosk     controls (the buttons' state machine), debounce, board config, input port
 #   play      the playback engine: clock, sampler, crossfades, root motion, facing, slot and clip policy
 #   analysis  tool-only measures: volume, radius, overlap, scenes
 #   import    tool-only: rigged glTF/FBX/COLLADA meshes through libassimp, joint maps

@@ -1,5 +1,5 @@
 /* What a show can be set to, named once for every layer: the skinning
- * algorithm (the kernels, app/skin, and the player's ALGO button, which adds
+ * algorithm (the kernels, app/skin, and the kiosk's ALGO button, which adds
  * the side-by-side comparison) and the view (app/render, VIEW button).
  * Here, at the bottom, so that the kiosk, the renderer and the programs
  * share one list without depending on each other. */

@@ -253,7 +253,7 @@ static void log_pass(void *ctx)
 	 * then one line an hour (with how many passes went unsaid) */
 	if ((lost || rebuilt) && skp_ratelimit_take(&s->pass_said, s->now, &held)) {
 		fprintf(stderr, "image: clip %s: %lu frame%s held over bad blocks, %lu block%s rebuilt this pass",
-			s->clip_src.player.c.name, lost, lost == 1 ? "" : "s", rebuilt, rebuilt == 1 ? "" : "s");
+			s->clip_src.stream.c.name, lost, lost == 1 ? "" : "s", rebuilt, rebuilt == 1 ? "" : "s");
 		if (held)
 			fprintf(stderr, " (and %lu passes like it since the last line)", held);
 		fputc('\n', stderr);

@@ -80,7 +80,7 @@ typedef struct show_source {
 	uint8_t playable[SKP_IMAGE_MAX_CLIPS];  /* accepted clips of the active slot */
 	play_image_source clip_src; /* the clip playing, as the engine's source */
 	unsigned long pass_rebuilt; /* im.rebuilt when the pass began */
-	uint64_t now;               /* the player's clock (ns), set each frame: log lines */
+	uint64_t now;               /* skinplay's clock (ns), set each frame: log lines */
 	skp_ratelimit pass_said;    /* a pass's summary line: the first, then hourly */
 	bound_body *body;           /* filled by show_open (the slot choice) */
 } show_source;

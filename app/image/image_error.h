@@ -1,5 +1,5 @@
 /* The error every file of app/image that reports a block (reader, writer,
- * parity, copies, player) fails through. Private to app/image. */
+ * parity, copies, clip stream) fails through. Private to app/image. */
 #ifndef IMAGE_ERROR_H
 #define IMAGE_ERROR_H
 

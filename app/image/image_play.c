@@ -4,7 +4,7 @@
 
 #include <string.h>
 
-static void ring_clear(skp_player *p)
+static void ring_clear(skp_clip_stream *p)
 {
 	for (int i = 0; i < SKP_IMAGE_RING_BLOCKS; i++)
 		p->slot[i].block = UINT32_MAX;
@@ -12,7 +12,7 @@ static void ring_clear(skp_player *p)
 
 /* Block read into buf: as the storage holds it; when bad, the copy kept
  * from an earlier rebuild, else rebuilt (and kept). */
-static skp_block_state read_frames_block(skp_player *p, uint32_t block, uint8_t *buf)
+static skp_block_state read_frames_block(skp_clip_stream *p, uint32_t block, uint8_t *buf)
 {
 	unsigned item = (unsigned)p->clip;
 	skp_block_state st = skp_image_check_block(p->im, block, SKP_KIND_FRAMES, item, buf);
@@ -33,7 +33,7 @@ static skp_block_state read_frames_block(skp_player *p, uint32_t block, uint8_t 
 	return st;
 }
 
-skp_status skp_player_open(skp_player *p, skp_image *im, int clip, skp_error *err)
+skp_status skp_clip_stream_open(skp_clip_stream *p, skp_image *im, int clip, skp_error *err)
 {
 	skp_error_clear(err);
 	if (clip < 0 || clip >= im->clip_count)
@@ -48,14 +48,14 @@ skp_status skp_player_open(skp_player *p, skp_image *im, int clip, skp_error *er
 		p->kept[k] = UINT32_MAX;
 	ring_clear(p);
 	skp_status rc = skp_image_load_quant(im, clip, p->qmin, p->qstep, err);
-	skp_player_seek(p, 0);
+	skp_clip_stream_seek(p, 0);
 	return rc;
 }
 
 /* The ring keeps its blocks (each slot knows which block it holds): a
  * short clip looping, or a seek back into what was read, reads nothing
  * again. */
-void skp_player_seek(skp_player *p, uint32_t index)
+void skp_clip_stream_seek(skp_clip_stream *p, uint32_t index)
 {
 	p->next = index;
 	p->fetch = index / p->c.frames_per_block;
@@ -63,9 +63,9 @@ void skp_player_seek(skp_player *p, uint32_t index)
 
 /* Reads frame block b (clip-relative) into its ring slot: good when its
  * frame and its count of frames are what the directory says. */
-static skp_player_slot *load(skp_player *p, uint32_t b)
+static skp_clip_slot *load(skp_clip_stream *p, uint32_t b)
 {
-	skp_player_slot *s = &p->slot[b % SKP_IMAGE_RING_BLOCKS];
+	skp_clip_slot *s = &p->slot[b % SKP_IMAGE_RING_BLOCKS];
 	uint8_t *block = p->ring[b % SKP_IMAGE_RING_BLOCKS];
 	if (s->block == b)
 		return s;
@@ -79,7 +79,7 @@ static skp_player_slot *load(skp_player *p, uint32_t b)
 
 /* Keeps the ring full ahead of the head, one block per frame at most, so a
  * slow medium costs a little every frame rather than a stall per block. */
-static void prefetch(skp_player *p, uint32_t head)
+static void prefetch(skp_clip_stream *p, uint32_t head)
 {
 	if (p->fetch <= head)
 		p->fetch = head + 1;
@@ -87,7 +87,7 @@ static void prefetch(skp_player *p, uint32_t head)
 		load(p, p->fetch++);
 }
 
-static void decode(const skp_player *p, const uint8_t *block, uint32_t index, amc_frame *f)
+static void decode(const skp_clip_stream *p, const uint8_t *block, uint32_t index, amc_frame *f)
 {
 	uint32_t at = SKP_IMAGE_BLOCK_HDR + SKP_IMAGE_FRAMES_COUNT + (index % p->c.frames_per_block) * 2u * p->c.dofs;
 	const uint8_t *q = block + at;
@@ -97,12 +97,12 @@ static void decode(const skp_player *p, const uint8_t *block, uint32_t index, am
 	f->line = 0;
 }
 
-int skp_player_next(skp_player *p, amc_frame *f, skp_error *err)
+int skp_clip_stream_next(skp_clip_stream *p, amc_frame *f, skp_error *err)
 {
 	if (p->next >= p->c.frame_count)
 		return 0;
 	uint32_t index = p->next++, b = index / p->c.frames_per_block;
-	skp_player_slot *s = load(p, b);
+	skp_clip_slot *s = load(p, b);
 	int state = s->state;
 	if (state == SKP_BLOCK_OK)
 		decode(p, p->ring[b % SKP_IMAGE_RING_BLOCKS], index, f);
@@ -111,5 +111,5 @@ int skp_player_next(skp_player *p, amc_frame *f, skp_error *err)
 		return 1;
 	image_block_fail(err, state == SKP_BLOCK_IO ? SKP_ERR_IO : SKP_ERR_CORRUPT, p->c.frames_first + b, "%s",
 			 skp_block_state_name((skp_block_state)state));
-	return SKP_PLAYER_LOST;
+	return SKP_CLIP_LOST;
 }

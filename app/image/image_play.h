@@ -5,8 +5,8 @@
  * plays AMC text.
  *
  * A frame in a block that fails its check (CRC, I/O error, short read, a
- * block of another image) is not decoded: skp_player_next returns
- * SKP_PLAYER_LOST with the block in err, and the caller keeps showing its
+ * block of another image) is not decoded: skp_clip_stream_next returns
+ * SKP_CLIP_LOST with the block in err, and the caller keeps showing its
  * last good frame; playback goes on at the next good block.
  *
  * A block rebuilt from parity is kept (SKP_IMAGE_CACHE_BLOCKS of them, for
@@ -20,41 +20,41 @@
 #include "amc.h"
 #include "image_read.h"
 
-#define SKP_PLAYER_LOST 2
+#define SKP_CLIP_LOST 2
 
-typedef struct skp_player_slot {
+typedef struct skp_clip_slot {
 	uint32_t block;          /* frame block (0-based within the clip), UINT32_MAX empty */
 	uint8_t state;           /* skp_block_state */
-} skp_player_slot;
+} skp_clip_slot;
 
-typedef struct skp_player {
+typedef struct skp_clip_stream {
 	skp_image *im;
 	int clip;
 	skp_image_clip c;
 	uint32_t next;           /* index of the next frame */
 	uint32_t fetch;          /* next frame block to prefetch */
 	float qmin[SKP_MAX_DOF], qstep[SKP_MAX_DOF];
-	skp_player_slot slot[SKP_IMAGE_RING_BLOCKS];
+	skp_clip_slot slot[SKP_IMAGE_RING_BLOCKS];
 	uint8_t ring[SKP_IMAGE_RING_BLOCKS][SKP_IMAGE_BLOCK_SIZE];
 	uint32_t kept[SKP_IMAGE_CACHE_BLOCKS];  /* image blocks rebuilt, UINT32_MAX none */
 	uint8_t keep[SKP_IMAGE_CACHE_BLOCKS][SKP_IMAGE_BLOCK_SIZE];
 	int keep_next;           /* the slot the next rebuilt block takes */
 	unsigned long kept_uses; /* reads of a bad block served from a kept copy */
 	unsigned long reads;     /* blocks read, for the figures */
-} skp_player;
+} skp_clip_stream;
 
 /* Opens clip (an index into im->clip) at its first frame; loads its
  * quantisation (a bad block there is an error: the clip cannot play). */
-skp_status skp_player_open(skp_player *p, skp_image *im, int clip, skp_error *err);
+skp_status skp_clip_stream_open(skp_clip_stream *p, skp_image *im, int clip, skp_error *err);
 
 /* Moves the play head to frame index (0 = the clip's first frame); the
  * blocks in the ring stay (a short clip looping is read once). */
-void skp_player_seek(skp_player *p, uint32_t index);
+void skp_clip_stream_seek(skp_clip_stream *p, uint32_t index);
 
 /* Returns 1 with the next frame in *f (number = first number + index,
  * values in the clip's dof order), 0 after the last frame, or
- * SKP_PLAYER_LOST when the frame's block is bad: *f is untouched,
+ * SKP_CLIP_LOST when the frame's block is bad: *f is untouched,
  * err->block is the image block and err->msg why; the head still advances. */
-int skp_player_next(skp_player *p, amc_frame *f, skp_error *err);
+int skp_clip_stream_next(skp_clip_stream *p, amc_frame *f, skp_error *err);
 
 #endif

@@ -14,7 +14,7 @@ typedef enum { SEC_NONE, SEC_DISPLAY, SEC_INPUT, SEC_BUTTON, SEC_STORAGE, SEC_LI
 
 /* Per-button timing given in the file; -1 inherits [input]'s. */
 typedef struct pending {
-	long debounce[PLAYER_BTN_COUNT], long_press[PLAYER_BTN_COUNT];
+	long debounce[CONTROL_BTN_COUNT], long_press[CONTROL_BTN_COUNT];
 	long debounce_all, long_all;
 } pending;
 
@@ -29,7 +29,7 @@ void board_config_defaults(board_config *c)
 	c->blend_ms = BOARD_BLEND_MS;
 	c->root = BOARD_ROOT_IN_PLACE;
 	c->loop = BOARD_LOOP_SHOW;
-	for (int i = 0; i < PLAYER_BTN_COUNT; i++) {
+	for (int i = 0; i < CONTROL_BTN_COUNT; i++) {
 		c->button[i].active_low = 1;
 		c->button[i].bias = BOARD_BIAS_PULL_UP;
 		c->button[i].deb.debounce_ms = BOARD_DEBOUNCE_MS;
@@ -309,12 +309,12 @@ static skp_status show_key(board_config *c, const ini_entry *e, skp_error *err)
 	return skp_fail(err, SKP_ERR_SYNTAX, e->line, "unknown key '%s' in [show] (speed, blend_ms, root, loop)", e->key);
 }
 
-/* "button.algo" -> PLAYER_BTN_ALGO; -1 when not a button section. */
+/* "button.algo" -> CONTROL_BTN_ALGO; -1 when not a button section. */
 static int button_section(const char *s)
 {
 	if (strncmp(s, "button.", 7) && strncmp(s, "Button.", 7))
 		return -1;
-	return player_button_find(s + 7);
+	return control_button_find(s + 7);
 }
 
 static skp_status section_of(const ini_entry *e, section_kind *k, int *b, skp_error *err)
@@ -339,7 +339,7 @@ static skp_status section_of(const ini_entry *e, section_kind *k, int *b, skp_er
 
 static void resolve(board_config *c, const pending *p)
 {
-	for (int i = 0; i < PLAYER_BTN_COUNT; i++) {
+	for (int i = 0; i < CONTROL_BTN_COUNT; i++) {
 		long d = p->debounce[i] >= 0 ? p->debounce[i] : p->debounce_all;
 		long l = p->long_press[i] >= 0 ? p->long_press[i] : p->long_all;
 		if (d >= 0)
@@ -400,7 +400,7 @@ skp_status board_config_read(board_config *c, skp_reader rd, skp_error *err)
 	int rc;
 	board_config_defaults(c);
 	p.debounce_all = p.long_all = -1;
-	for (int i = 0; i < PLAYER_BTN_COUNT; i++)
+	for (int i = 0; i < CONTROL_BTN_COUNT; i++)
 		p.debounce[i] = p.long_press[i] = -1;
 	ini_init(&ini, rd);
 	while ((rc = ini_next(&ini, &e, err)) != 0) {

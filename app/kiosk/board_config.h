@@ -35,7 +35,7 @@
 
 #include "board_limits.h"
 #include "debounce.h"
-#include "player.h"
+#include "controls.h"
 #include "skp_error.h"
 #include "skp_reader.h"
 
@@ -121,7 +121,7 @@ typedef struct board_config {
 	int hud;                 /* board_hud, -1: not given */
 	char input[SKP_MAX_PATH]; /* gpio | keyboard | none | script:FILE; "" = none */
 	char chip[SKP_MAX_PATH]; /* gpiochip name, path, label or number */
-	board_button button[PLAYER_BTN_COUNT];
+	board_button button[CONTROL_BTN_COUNT];
 	char slot[SKP_MAX_SLOTS][SKP_MAX_PATH];
 	int slot_count;
 	int max_fps;             /* 0: no cap beyond the display's */

@@ -1,7 +1,7 @@
 /* The button input port: the interface a platform input backend implements
  * (platform/input/, kmscube style: one struct of function pointers per
  * backend, static state, one active at a time). Every backend delivers
- * debounced player_events (press, release, long press) with timestamps in
+ * debounced control_events (press, release, long press) with timestamps in
  * the caller's millisecond clock. The frame loop calls read() once a frame
  * and polls nothing: read never blocks, and the debounce and long-press
  * timers fire inside it. */
@@ -11,7 +11,7 @@
 #include <stdint.h>
 
 #include "board_config.h"
-#include "player.h"
+#include "controls.h"
 #include "skp_error.h"
 
 #define INPUT_MAX_EVENTS 32   /* a good size for read()'s event array */
@@ -25,7 +25,7 @@ typedef struct input_backend {
 	/* Reads what is pending and fires timers due at now_ms. Returns the
 	 * number of events written to ev (at most max; the rest waits for the
 	 * next call), or -1 with err filled. */
-	int (*read)(uint64_t now_ms, player_event *ev, int max, skp_error *err);
+	int (*read)(uint64_t now_ms, control_event *ev, int max, skp_error *err);
 	/* Releases the lines, restores the terminal. */
 	void (*shutdown)(void);
 } input_backend;

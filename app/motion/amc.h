@@ -29,7 +29,7 @@ typedef struct amc_stream {
 	long cut_frame, cut_line;    /* a last frame cut short and dropped, else -1 */
 } amc_stream;
 
-/* Frame numbers an image stores (i32) and the players count with. */
+/* Frame numbers an image stores (i32) and playback counts with. */
 #define AMC_MAX_FRAME_NUMBER 2147483647L
 
 void amc_open(amc_stream *a, const skel *s, text_lines *tl);

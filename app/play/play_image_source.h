@@ -10,7 +10,7 @@
 #include "play_source.h"
 
 typedef struct play_image_source {
-	skp_player player;
+	skp_clip_stream stream;
 	amc_frame last;          /* the last good frame */
 	int have_last;
 	unsigned long lost_frames; /* frames held in place of a lost one, ever */

@@ -17,7 +17,7 @@
 #include "skinplay.h"
 
 /* Which kernels each panel runs, and where (GPU when asked and it fits). */
-static void choose_paths(player *p)
+static void choose_paths(skinplay *p)
 {
 	static const skin_algo one[3] = { SKIN_LBS, SKIN_DQBS, SKIN_DQBS_FIXED };
 	p->panel_count = p->o.algo == SKIN_COMPARE ? 2 : 1;
@@ -37,7 +37,7 @@ static void choose_paths(player *p)
  * them to pay (the board's [skin] split_verts; auto: the first frames try
  * them against one thread); otherwise, or when they cannot start, the
  * frame loop's thread skins alone. */
-static void start_workers(player *p)
+static void start_workers(skinplay *p)
 {
 	int n = p->o.threads > 0 ? p->o.threads : workers_cpu_count();
 	int split = p->kiosk.board.split_verts;
@@ -55,7 +55,7 @@ static void start_workers(player *p)
 }
 
 /* Once, when the measurement of start_workers has chosen: what it chose. */
-static void log_measured_threads(player *p)
+static void log_measured_threads(skinplay *p)
 {
 	double one, pool;
 	if (p->threads_logged || cli_skin_measured(&p->skin, &one, &pool) < 0)
@@ -68,12 +68,12 @@ static void log_measured_threads(player *p)
 
 /* --platform none: nothing drawn and no GL; the clock, the show and its
  * logs run as headless (a soak of days of frames in minutes). */
-static int no_display(const player *p)
+static int no_display(const skinplay *p)
 {
 	return p->o.platform && !strcmp(p->o.platform, "none");
 }
 
-static int setup(player *p)
+static int setup(skinplay *p)
 {
 	if (p->o.image_count && show_open(&p->show, p->o.image, p->o.image_count, &p->body) < 0) {
 		p->no_show = 1; /* a kiosk waits for one (skinplay_wait.c) */
@@ -125,7 +125,7 @@ static int setup(player *p)
 
 /* " on 2 threads" when the CPU kernels share the mesh, ", compact
  * streams" when LBS and DQBS read them, else "" */
-static const char *threads_note(const player *p)
+static const char *threads_note(const skinplay *p)
 {
 	static char note[48];
 	int n = cli_skin_threads(&p->skin), at = 0;
@@ -137,7 +137,7 @@ static const char *threads_note(const player *p)
 	return note;
 }
 
-static void skin_panels(player *p, render_frame *f)
+static void skin_panels(skinplay *p, render_frame *f)
 {
 	uint64_t t1 = clock_now_ns();
 	cli_skin_pose(&p->skin, &p->skin.pose);
@@ -175,9 +175,9 @@ static const char *const visitor_name[SKIN_ALGO_COUNT] = {
 	"LINEAR BLEND", "DUAL QUATERNION", "DUAL QUATERNION (FIXED)",
 };
 
-static const char *button_legend(const player *p)
+static const char *button_legend(const skinplay *p)
 {
-	const kiosk *k = &p->kiosk;
+	const skinplay_kiosk *k = &p->kiosk;
 	if (!strcmp(k->in->name, "keyboard"))
 		return "KEYS: 1 METHOD   2 PAUSE   3 NEXT CLIP   4 VIEW";
 	if (!strcmp(k->in->name, "gpio"))
@@ -185,7 +185,7 @@ static const char *button_legend(const player *p)
 	return NULL;
 }
 
-static void visitor_hud(player *p, render_frame *f)
+static void visitor_hud(skinplay *p, render_frame *f)
 {
 	f->visitor = 1;
 	for (int i = 0; i < p->panel_count; i++) {
@@ -197,17 +197,17 @@ static void visitor_hud(player *p, render_frame *f)
 }
 
 /* The captured frame on screen (its number in the file) and the clip time. */
-static long shown_number(const player *p)
+static long shown_number(const skinplay *p)
 {
 	return p->hold ? 0 : p->eng.number;
 }
 
-static double shown_time(const player *p)
+static double shown_time(const skinplay *p)
 {
 	return p->hold ? 0.0 : p->eng.clip_time;
 }
 
-static void hud_text(player *p, render_frame *f, double fps, char lines[3][128])
+static void hud_text(skinplay *p, render_frame *f, double fps, char lines[3][128])
 {
 	f->visitor = 0;
 	f->badge = NULL;
@@ -245,7 +245,7 @@ static void hud_text(player *p, render_frame *f, double fps, char lines[3][128])
 	f->hud[2] = p->o.hud_fps ? lines[2] : NULL;
 }
 
-static int write_png(player *p, long n)
+static int write_png(skinplay *p, long n)
 {
 	char path[1024];
 	skp_error err;
@@ -263,7 +263,7 @@ static int write_png(player *p, long n)
 }
 
 /* --pose-digest: FNV-1a over the joints of every pose shown. */
-static void pose_digest_add(player *p)
+static void pose_digest_add(skinplay *p)
 {
 	const uint8_t *b = (const uint8_t *)p->skin.pose.tip;
 	size_t n = sizeof p->skin.pose.tip[0] * (size_t)p->body.skel.count;
@@ -278,7 +278,7 @@ static void pose_digest_add(player *p)
  * fill the journal; the last one always. */
 #define STATUS_EVERY_SECOND_NS 60000000000ull
 
-static int status_due(player *p, uint64_t now, int last)
+static int status_due(skinplay *p, uint64_t now, int last)
 {
 	uint64_t since = now - p->stages.start_ns;
 	if (!last && since >= STATUS_EVERY_SECOND_NS && now - p->status_at < SKP_RATELIMIT_HOUR)
@@ -298,7 +298,7 @@ static int status_due(player *p, uint64_t now, int last)
 	mean(t, STAGE_UPLOAD, STAGE_UPLOAD), mean(t, STAGE_DRAW, STAGE_DRAW)
 
 /* The last second's status line (when due), and a new second from now. */
-static void log_second(player *p, uint64_t now, int last)
+static void log_second(skinplay *p, uint64_t now, int last)
 {
 	const stage_times *t = &p->stages;
 	double fps = stage_window_fps(t, now);
@@ -314,7 +314,7 @@ static void log_second(player *p, uint64_t now, int last)
 	stage_window_reset(&p->stages, now);
 }
 
-static int draw_one(player *p, double fps, render_frame *f)
+static int draw_one(skinplay *p, double fps, render_frame *f)
 {
 	char lines[3][128];
 	skp_error err;
@@ -338,27 +338,27 @@ static int draw_one(player *p, double fps, render_frame *f)
 }
 
 /* The buttons' state machine (skinplay_kiosk.h) drives what is shown. */
-static void apply_input(player *p, render_frame *f, unsigned act)
+static void apply_input(skinplay *p, render_frame *f, unsigned act)
 {
-	const player_state *s = &p->kiosk.ps;
+	const controls_state *s = &p->kiosk.ps;
 	p->o.algo = (skin_algo)s->algo;
 	p->o.view = f->view = (render_view)s->view;
 	p->o.gpu = s->gpu;
-	if (act & (KIOSK_ALGO | KIOSK_GPU))
+	if (act & (SKINPLAY_ACT_ALGO | SKINPLAY_ACT_GPU))
 		choose_paths(p);
-	if (act & KIOSK_PLAY) {
+	if (act & SKINPLAY_ACT_PLAY) {
 		/* headless, at the scripted time itself (script time is display
 		 * time): a run pauses on the same pose however it is rendered */
 		uint64_t at = p->kiosk.play_ms * 1000000u;
 		play_pause(&p->eng, !s->playing, p->headless && at < p->now ? at : p->now);
 	}
-	if (act & (KIOSK_RESTART | KIOSK_CLIP))
-		clips_restart(p, act & KIOSK_CLIP ? s->clip : -1);
+	if (act & (SKINPLAY_ACT_RESTART | SKINPLAY_ACT_CLIP))
+		clips_restart(p, act & SKINPLAY_ACT_CLIP ? s->clip : -1);
 }
 
 /* Frame n's time: headless, n / display rate exactly (reproducible); on a
  * screen, the monotonic clock since the first frame. */
-static uint64_t frame_time(player *p, long n)
+static uint64_t frame_time(skinplay *p, long n)
 {
 	uint64_t wall = clock_now_ns();
 	if (n == 0)
@@ -366,7 +366,7 @@ static uint64_t frame_time(player *p, long n)
 	return p->headless ? play_display_time(n, p->o.display_rate) : wall - p->wall0;
 }
 
-static int play(player *p)
+static int play(skinplay *p)
 {
 	stage_start(&p->stages, clock_now_ns());
 	render_frame f;
@@ -382,9 +382,9 @@ static int play(player *p)
 	p->eng.cfg.loop = budget < 0 || p->o.frames >= 0 || clips_show_loops(p);
 	uint64_t prev = 0;
 	while (!quit && (budget < 0 || shown < budget)) {
-		unsigned act = kiosk_frame(&p->kiosk, shown);
-		if (act & (KIOSK_QUIT | KIOSK_RELOAD)) {
-			p->reload = !(act & KIOSK_QUIT);
+		unsigned act = skinplay_kiosk_frame(&p->kiosk, shown);
+		if (act & (SKINPLAY_ACT_QUIT | SKINPLAY_ACT_RELOAD)) {
+			p->reload = !(act & SKINPLAY_ACT_QUIT);
 			break;
 		}
 		p->now = frame_time(p, shown);
@@ -436,7 +436,7 @@ static int play(player *p)
 
 int main(int argc, char **argv)
 {
-	static player p;
+	static skinplay p;
 	if (cli_wants_version(argc, argv))
 		return cli_print_version("skinplay"), 0;
 	int rc = play_parse(&p.o, argc, argv);
@@ -446,18 +446,18 @@ int main(int argc, char **argv)
 		puts(display_auto()->name);
 		return 0;
 	}
-	if (kiosk_setup(&p.kiosk, &p.o, argc, argv) < 0)
+	if (skinplay_kiosk_setup(&p.kiosk, &p.o, argc, argv) < 0)
 		return 1;
 	if (setup(&p) != 0)
 		rc = p.no_show ? wait_for_show(&p) : 1;
 	else
-		rc = kiosk_start(&p.kiosk, &p.o, p.headless, p.o.image_count ? show_clip_count(&p.show) : 1) == 0 &&
+		rc = skinplay_kiosk_start(&p.kiosk, &p.o, p.headless, p.o.image_count ? show_clip_count(&p.show) : 1) == 0 &&
 		     play(&p) == 0 ? 0 : 1;
 	/* headless, the show had nothing to play: the held frame was rendered,
 	 * the status says the show is damaged (a kiosk keeps holding instead) */
 	if (rc == 0 && p.hold)
 		rc = 2;
-	kiosk_shutdown(&p.kiosk);
+	skinplay_kiosk_shutdown(&p.kiosk);
 	cli_clip_source_close(&p.text);
 	show_close(&p.show);
 	if (p.o.report_memory)

@@ -19,7 +19,7 @@
 #include "skinplay_timing.h"
 #include "skinplay_sheet.h"
 
-typedef struct player {
+typedef struct skinplay {
 	play_opts o;
 	long budget, shown;  /* frames to show (-1: until closed) and shown so far */
 	stage_times stages;  /* --report-timing */
@@ -64,49 +64,49 @@ typedef struct player {
 	uint8_t rgba[SKP_DISPLAY_MAX_W * SKP_DISPLAY_MAX_H * 4]; /* one frame read back for --out */
 	char clip[64];
 	sheet contact;
-	kiosk kiosk;       /* --board, --input, signals, systemd */
+	skinplay_kiosk kiosk;       /* --board, --input, signals, systemd */
 	int reload;        /* SIGHUP, or a slot changed while waiting: start over (main re-executes) */
 	int no_show;       /* no image slot holds a show that can play */
-} player;
+} skinplay;
 
 /* Opens the first clip (--clip, --start) and computes its first pose into
  * p->skin.pose; returns the lowest point of the body in it (the floor), or
  * NAN after reporting when the clip cannot be read at all. */
-float clips_first(player *p);
+float clips_first(skinplay *p);
 
 /* The pose at p->now into p->skin.pose (the engine's; the bind pose when
  * no clip can play). A source that fails mid-clip (an AMC read error) is
  * logged once and the last pose held: a kiosk never stops on bad data.
  * Headless, that is an error instead: -1 after reporting, else 0. */
-int clips_pose(player *p);
+int clips_pose(skinplay *p);
 
 /* PLAY long (clip < 0: this clip from its start) or NEXT (clip i, or the
  * next one that can play), crossfading from the pose on screen. */
-void clips_restart(player *p, int clip);
+void clips_restart(skinplay *p, int clip);
 
 /* Display frames that play the clip once from where it starts; with loop
  * = show, every playable clip of the image once. */
-long clips_pass_frames(player *p);
+long clips_pass_frames(skinplay *p);
 
 /* loop = show and an image with more than one clip that can play: its
  * clips play in turn (a pass's end starts the next). */
-int clips_show_loops(const player *p);
+int clips_show_loops(const skinplay *p);
 
 /* Tells the renderer the space the body takes over the clip playing (the
  * survey's joints, grown by p->flesh), so the camera frames all of it. */
-void clips_frame(player *p, int immediate);
+void clips_frame(skinplay *p, int immediate);
 
 /* Opens the display --platform names (auto: what display_auto picks; where
  * headless EGL is missing, OSMesa). 0, or -1 after reporting. */
-int open_display(player *p);
+int open_display(skinplay *p);
 
 /* No image slot holds a show that can play. On a screen, says so there and
  * waits, feeding the watchdog, until a slot file changes (a new show copied
  * in: p->reload, main starts over) or SIGHUP or SIGTERM; headless, and with
  * no display at all, it is an error. Returns the exit status. */
-int wait_for_show(player *p);
+int wait_for_show(skinplay *p);
 
 /* Shows text on screen for about seconds. */
-void clips_notice(player *p, const char *text, double seconds);
+void clips_notice(skinplay *p, const char *text, double seconds);
 
 #endif

@@ -20,19 +20,19 @@ static const char *said_since(unsigned long held)
 	return text;
 }
 
-void clips_notice(player *p, const char *text, double seconds)
+void clips_notice(skinplay *p, const char *text, double seconds)
 {
 	snprintf(p->notice, sizeof p->notice, "%s", text);
 	p->notice_until = p->now + (uint64_t)(seconds * 1e9);
 }
 
-static void bind_pose(player *p)
+static void bind_pose(skinplay *p)
 {
 	fk_pose(&p->body.skel, p->body.pose_value, &p->skin.pose);
 }
 
 /* The joints' bounds in one pose (the held bind pose), as a survey's. */
-static void survey_pose(player *p, const skel_pose *pose)
+static void survey_pose(skinplay *p, const skel_pose *pose)
 {
 	play_survey *s = &p->survey;
 	s->frames = 1;
@@ -43,7 +43,7 @@ static void survey_pose(player *p, const skel_pose *pose)
 	}
 }
 
-void clips_frame(player *p, int immediate)
+void clips_frame(skinplay *p, int immediate)
 {
 	const play_survey *s = &p->survey;
 	if (!p->render_ready || s->frames <= 0 || !(s->hi.y >= s->lo.y))
@@ -53,7 +53,7 @@ void clips_frame(player *p, int immediate)
 }
 
 /* No clip can play: the bind pose, for ever (until SIGTERM). */
-static void hold_bind_pose(player *p)
+static void hold_bind_pose(skinplay *p)
 {
 	p->hold = 1;
 	bind_pose(p);
@@ -66,7 +66,7 @@ static void hold_bind_pose(player *p)
 
 /* One pass over the clip: the space the body takes, which the camera
  * frames, and the camera's turn: --yaw, or the clip's mean facing. */
-static void face_clip(player *p)
+static void face_clip(skinplay *p)
 {
 	skp_error err;
 	float yaw = p->o.yaw_mode == 1 ? p->o.yaw_deg * (float)(M_PI / 180.0) : 0.0f;
@@ -87,7 +87,7 @@ static void face_clip(player *p)
 
 /* The engine on p->src from its first frame, fading from what is shown;
  * a new clip (not a restart of this one) also turns the camera to it. */
-static int start_clip(player *p, const char *name, int new_clip)
+static int start_clip(skinplay *p, const char *name, int new_clip)
 {
 	skp_error err;
 	if (new_clip)
@@ -106,7 +106,7 @@ static int start_clip(player *p, const char *name, int new_clip)
 
 /* Opens clip c of the image, or the next one that can play when it cannot
  * (or fails now, the medium worse than at acceptance). */
-static void select_clip(player *p, int c)
+static void select_clip(skinplay *p, int c)
 {
 	for (int tries = show_clip_count(&p->show); tries > 0; tries--) {
 		int next = show_next_playable(&p->show, c);
@@ -134,7 +134,7 @@ static void select_clip(player *p, int c)
 }
 
 /* --start FRAME: the clip's clock set to that frame's time. */
-static int start_at_frame(player *p, const char *what)
+static int start_at_frame(skinplay *p, const char *what)
 {
 	long first = p->eng.cur.number_a, index = p->o.start - first;
 	if (index < 0 || index > p->eng.cur.last) {
@@ -149,7 +149,7 @@ static int start_at_frame(player *p, const char *what)
 /* The clip asked for by name (--clip) or frame (--start); one that is not
  * in the show or cannot play gives way to the next that can, with a
  * notice: a kiosk never goes dark over it. 1 when it plays as asked. */
-static int open_asked(player *p)
+static int open_asked(skinplay *p)
 {
 	if (show_select_clip(&p->show, p->o.clip, &p->src) == 0 &&
 	    start_clip(p, show_clip(&p->show, p->show.clip)->name, 1) == 0) {
@@ -168,7 +168,7 @@ static int open_asked(player *p)
 	return 0;
 }
 
-static int open_first(player *p)
+static int open_first(skinplay *p)
 {
 	const char *what = p->o.image_count ? show_path(&p->show) : p->o.amc;
 	if (!p->o.image_count) {
@@ -186,7 +186,7 @@ static int open_first(player *p)
 /* How far the body's bounds [lo, hi] reach past its joints' in the pose
  * shown, on the side where it is most: the head over its bone, a foot's
  * sole under its joints. The camera grows every clip's bounds by it. */
-static float flesh_past_joints(player *p, vec3 lo, vec3 hi)
+static float flesh_past_joints(skinplay *p, vec3 lo, vec3 hi)
 {
 	play_survey saved = p->survey;
 	survey_pose(p, &p->skin.pose);
@@ -197,7 +197,7 @@ static float flesh_past_joints(player *p, vec3 lo, vec3 hi)
 }
 
 /* The lowest point of the body in the clip's first frame: the floor. */
-float clips_first(player *p)
+float clips_first(skinplay *p)
 {
 	play_config cfg = { p->o.speed, (uint32_t)p->o.blend_ms, p->o.root, 1 };
 	skp_ratelimit_init(&p->skip_said, SKP_RATELIMIT_HOUR);
@@ -220,7 +220,7 @@ float clips_first(player *p)
 	return lo.y;
 }
 
-int clips_show_loops(const player *p)
+int clips_show_loops(const skinplay *p)
 {
 	return p->o.loop == BOARD_LOOP_SHOW && p->o.image_count && !p->hold &&
 	       show_next_playable(&p->show, (p->show.clip + 1) % show_clip_count(&p->show)) != p->show.clip;
@@ -228,7 +228,7 @@ int clips_show_loops(const player *p)
 
 /* The pass ended and the show goes on: the next clip, round the end,
  * crossfading from the pose on screen. 1 when it changed. */
-static int next_in_show(player *p)
+static int next_in_show(skinplay *p)
 {
 	if (p->eng.pass == 0 || !clips_show_loops(p))
 		return 0;
@@ -236,7 +236,7 @@ static int next_in_show(player *p)
 	return !p->hold;
 }
 
-int clips_pose(player *p)
+int clips_pose(skinplay *p)
 {
 	skp_error err;
 	p->show.now = p->now;   /* the image's log lines are limited on this clock */
@@ -264,7 +264,7 @@ int clips_pose(player *p)
 	return 0;
 }
 
-void clips_restart(player *p, int clip)
+void clips_restart(skinplay *p, int clip)
 {
 	if (p->hold)
 		return;
@@ -277,13 +277,13 @@ void clips_restart(player *p, int clip)
 
 /* Display frames before a looping clip of that many seconds wraps: those
  * whose time is short of its end (the next clip shows at the end's time). */
-static long frames_before_end(const player *p, double seconds)
+static long frames_before_end(const skinplay *p, double seconds)
 {
 	long n = (long)ceil(seconds * p->o.display_rate / p->o.speed - 1e-9);
 	return n > 0 ? n : 1;
 }
 
-long clips_pass_frames(player *p)
+long clips_pass_frames(skinplay *p)
 {
 	if (p->hold)
 		return 1;

@@ -8,7 +8,7 @@
 #include "cli_quiet.h"
 #include "skinplay.h"
 
-int open_display(player *p)
+int open_display(skinplay *p)
 {
 	skp_error err;
 	const char *name = p->o.platform;

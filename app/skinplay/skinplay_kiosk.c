@@ -20,7 +20,7 @@ static int given(int argc, char **argv, const char *opt)
 
 /* Says each of the board file's problems once (the key keeps its
  * default), and keeps the first for the engineer HUD. */
-static void report_board(kiosk *k, const char *path)
+static void report_board(skinplay_kiosk *k, const char *path)
 {
 	const board_config *b = &k->board;
 	int listed = b->problem_count < BOARD_MAX_PROBLEMS ? b->problem_count : BOARD_MAX_PROBLEMS;
@@ -39,7 +39,7 @@ static void report_board(kiosk *k, const char *path)
 
 /* The board file: a kiosk goes on with the defaults over any problem in
  * it, even a file it cannot open, and says so. */
-static void load_board(kiosk *k, const char *path)
+static void load_board(skinplay_kiosk *k, const char *path)
 {
 	file_reader fr;
 	skp_error err;
@@ -101,7 +101,7 @@ static void playback_defaults(play_opts *o)
 		o->yaw_mode = 0;
 }
 
-int kiosk_setup(kiosk *k, play_opts *o, int argc, char **argv)
+int skinplay_kiosk_setup(skinplay_kiosk *k, play_opts *o, int argc, char **argv)
 {
 	memset(k, 0, sizeof *k);
 	k->sig_fd = -1;
@@ -144,7 +144,7 @@ int kiosk_setup(kiosk *k, play_opts *o, int argc, char **argv)
 	return 0;
 }
 
-static uint64_t now_ms(const kiosk *k, long n)
+static uint64_t now_ms(const skinplay_kiosk *k, long n)
 {
 	/* headless: display frame n is at n * 1000 / display rate ms exactly
 	 * (the epsilon keeps 100.0 from rounding down to 99), so scripted runs
@@ -154,14 +154,14 @@ static uint64_t now_ms(const kiosk *k, long n)
 	return (clock_now_ns() - k->t0_ns) / 1000000u;
 }
 
-int kiosk_start(kiosk *k, const play_opts *o, int headless, int clip_count)
+int skinplay_kiosk_start(skinplay_kiosk *k, const play_opts *o, int headless, int clip_count)
 {
 	skp_error err;
 	const char *arg;
 	k->headless = headless;
 	k->fps = o->display_rate > 0 ? o->display_rate : 60.0;
 	k->t0_ns = k->last_ns = clock_now_ns();
-	player_init(&k->ps, o->algo, o->view, o->gpu, clip_count);
+	controls_init(&k->ps, o->algo, o->view, o->gpu, clip_count);
 	k->in = input_find(k->input_spec, &arg);
 	if (k->in->init(&k->board, arg, now_ms(k, 0), &err) != 0) {
 		/* a batch run fails; on a display no buttons is no reason to go dark */
@@ -181,29 +181,29 @@ int kiosk_start(kiosk *k, const play_opts *o, int headless, int clip_count)
 	return 0;
 }
 
-static unsigned act_bit(player_action a)
+static unsigned act_bit(control_action a)
 {
-	static const unsigned bits[] = { 0, KIOSK_ALGO, KIOSK_PLAY, KIOSK_RESTART, KIOSK_CLIP, KIOSK_VIEW, KIOSK_GPU };
+	static const unsigned bits[] = { 0, SKINPLAY_ACT_ALGO, SKINPLAY_ACT_PLAY, SKINPLAY_ACT_RESTART, SKINPLAY_ACT_CLIP, SKINPLAY_ACT_VIEW, SKINPLAY_ACT_GPU };
 	return bits[a];
 }
 
-static unsigned take_signals(kiosk *k)
+static unsigned take_signals(skinplay_kiosk *k)
 {
 	unsigned s = signals_take(), act = 0;
 	if (s & SIGNALS_RELOAD) {
 		fprintf(cli_note(), "signal: SIGHUP -> reopen the show\n");
 		sdnotify_send(&k->sd, "RELOADING=1");
-		act |= KIOSK_RELOAD;
+		act |= SKINPLAY_ACT_RELOAD;
 	}
 	if (s & SIGNALS_QUIT) {
 		fprintf(cli_note(), "signal: quit -> clean exit\n");
-		act |= KIOSK_QUIT;
+		act |= SKINPLAY_ACT_QUIT;
 	}
 	return act;
 }
 
 /* Frame-rate cap on a display (the board's max_fps). */
-static void pace(kiosk *k)
+static void pace(skinplay_kiosk *k)
 {
 	if (k->headless || k->board.max_fps <= 0)
 		return;
@@ -213,9 +213,9 @@ static void pace(kiosk *k)
 	k->last_ns = clock_now_ns();
 }
 
-unsigned kiosk_frame(kiosk *k, long n)
+unsigned skinplay_kiosk_frame(skinplay_kiosk *k, long n)
 {
-	player_event ev[INPUT_MAX_EVENTS];
+	control_event ev[INPUT_MAX_EVENTS];
 	skp_error err;
 	unsigned act = 0;
 	pace(k);
@@ -234,10 +234,10 @@ unsigned kiosk_frame(kiosk *k, long n)
 	}
 	for (int i = 0; i < got; i++) {
 		char line[96];
-		player_action a = player_handle(&k->ps, &ev[i], line, sizeof line);
-		if (a != PLAYER_ACT_NONE)
+		control_action a = controls_handle(&k->ps, &ev[i], line, sizeof line);
+		if (a != CONTROL_ACT_NONE)
 			fprintf(cli_note(), "%s\n", line);
-		if (a == PLAYER_ACT_PLAY)
+		if (a == CONTROL_ACT_PLAY)
 			k->play_ms = ev[i].t_ms;
 		act |= act_bit(a);
 	}
@@ -245,7 +245,7 @@ unsigned kiosk_frame(kiosk *k, long n)
 	return act;
 }
 
-void kiosk_shutdown(kiosk *k)
+void skinplay_kiosk_shutdown(skinplay_kiosk *k)
 {
 	if (k->in_started)
 		k->in->shutdown();

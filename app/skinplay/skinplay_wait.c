@@ -81,7 +81,7 @@ static int notice_lines(const play_opts *o, char slots[160], const char *lines[5
 	return 5;
 }
 
-static int show_notice(player *p, const char *const *lines, int n)
+static int show_notice(skinplay *p, const char *const *lines, int n)
 {
 	skp_error err;
 	render_draw_notice(&p->r, lines, n);
@@ -93,15 +93,15 @@ static int show_notice(player *p, const char *const *lines, int n)
 	return 0;
 }
 
-static int wait_loop(player *p, slot_watch *w)
+static int wait_loop(skinplay *p, slot_watch *w)
 {
 	char slots[160];
 	const char *lines[5];
 	int n = notice_lines(&p->o, slots, lines), quit = 0;
 	for (long frame = 0; !quit; frame++) {
-		unsigned act = kiosk_frame(&p->kiosk, frame);
-		if (act & (KIOSK_QUIT | KIOSK_RELOAD)) {
-			p->reload = !(act & KIOSK_QUIT);
+		unsigned act = skinplay_kiosk_frame(&p->kiosk, frame);
+		if (act & (SKINPLAY_ACT_QUIT | SKINPLAY_ACT_RELOAD)) {
+			p->reload = !(act & SKINPLAY_ACT_QUIT);
 			return 0;
 		}
 		uint64_t now = clock_now_ns();
@@ -119,7 +119,7 @@ static int wait_loop(player *p, slot_watch *w)
 	return 0;
 }
 
-int wait_for_show(player *p)
+int wait_for_show(skinplay *p)
 {
 	skp_error err;
 	slot_watch w;
@@ -133,7 +133,7 @@ int wait_for_show(player *p)
 		fprintf(stderr, "skinplay: renderer: %s\n", err.msg);
 		return 1;
 	}
-	if (kiosk_start(&p->kiosk, &p->o, 0, 1) < 0)
+	if (skinplay_kiosk_start(&p->kiosk, &p->o, 0, 1) < 0)
 		return 1;
 	fprintf(stderr, "skinplay: no image slot holds a show that can play: saying so on the screen, waiting for one\n");
 	return wait_loop(p, &w);

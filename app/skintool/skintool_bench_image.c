@@ -26,7 +26,7 @@ typedef struct first_frame_ns {
 static int time_first_frame(const char *path, first_frame_ns *t)
 {
 	static show_image img;
-	static skp_player pl;
+	static skp_clip_stream pl;
 	static bound_body body;
 	static amc_frame f;
 	static float values[SKP_MAX_DOF];
@@ -43,7 +43,7 @@ static int time_first_frame(const char *path, first_frame_ns *t)
 	if (ok)
 		fk_pose(&body.skel, values, &body.pose); /* values are 0 for the rest pose */
 	uint64_t t2 = clock_now_ns();
-	ok = ok && skp_player_open(&pl, &img.im, 0, &err) == SKP_OK && skp_player_next(&pl, &f, &err) == 1;
+	ok = ok && skp_clip_stream_open(&pl, &img.im, 0, &err) == SKP_OK && skp_clip_stream_next(&pl, &f, &err) == 1;
 	uint64_t t3 = clock_now_ns();
 	show_image_close(&img);
 	if (!ok) {
@@ -59,15 +59,15 @@ static int time_first_frame(const char *path, first_frame_ns *t)
 /* Decodes every frame of clip c; returns ns per frame. */
 static double time_decode(show_image *img, int c)
 {
-	static skp_player pl;
+	static skp_clip_stream pl;
 	static amc_frame f;
 	skp_error err;
-	if (skp_player_open(&pl, &img->im, c, &err) != SKP_OK)
+	if (skp_clip_stream_open(&pl, &img->im, c, &err) != SKP_OK)
 		return -1;
 	uint64_t t0 = clock_now_ns();
 	long n = 0;
 	int r;
-	while ((r = skp_player_next(&pl, &f, &err)) != 0)
+	while ((r = skp_clip_stream_next(&pl, &f, &err)) != 0)
 		n++;
 	return n ? (double)(clock_now_ns() - t0) / (double)n : 0;
 }

@@ -12,7 +12,7 @@ static int none_init(const board_config *cfg, const char *arg, uint64_t now_ms, 
 	return 0;
 }
 
-static int none_read(uint64_t now_ms, player_event *ev, int max, skp_error *err)
+static int none_read(uint64_t now_ms, control_event *ev, int max, skp_error *err)
 {
 	(void)now_ms, (void)ev, (void)max, (void)err;
 	return 0;

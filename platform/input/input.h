@@ -21,7 +21,7 @@ const input_backend *input_find(const char *spec, const char **arg);
 
 /* For backends: appends the events of DEBOUNCE_* bits (in their order)
  * to ev; returns how many (at most 3). */
-int input_emit(unsigned bits, int button, uint64_t t_ms, player_event *ev);
+int input_emit(unsigned bits, int button, uint64_t t_ms, control_event *ev);
 
 /* The seam between the gpio backend and libgpiod, so that tests can hand it
  * pipes instead of line event fds. One implementation per libgpiod API,

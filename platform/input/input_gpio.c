@@ -14,7 +14,7 @@
 #define CONSUMER "skinplay"
 
 typedef struct gpio_button {
-	int button;              /* player_button */
+	int button;              /* control_button */
 	void *line;
 	int fd;
 	debounce_config cfg;
@@ -24,7 +24,7 @@ typedef struct gpio_button {
 static struct {
 	const input_gpio_ops *ops;
 	void *chip;
-	gpio_button btn[PLAYER_BTN_COUNT];
+	gpio_button btn[CONTROL_BTN_COUNT];
 	int count;
 } g;
 
@@ -66,7 +66,7 @@ static int request_button(const board_config *cfg, int b, uint64_t now_ms, skp_e
 	gb->line = ops()->request(g.chip, bb->line, input_gpio_flags(bb), CONSUMER);
 	if (!gb->line)
 		return skp_fail(err, SKP_ERR_IO, 0, "%s line %u (%s button): %s", cfg->chip, bb->line,
-				player_button_name(b), strerror(errno)), -1;
+				control_button_name(b), strerror(errno)), -1;
 	g.count++;
 	gb->button = b;
 	gb->cfg = bb->deb;
@@ -92,7 +92,7 @@ static int gpio_init(const board_config *cfg, const char *arg, uint64_t now_ms, 
 	g.chip = ops()->open_chip(cfg->chip);
 	if (!g.chip)
 		return skp_fail(err, SKP_ERR_IO, 0, "cannot open GPIO chip '%s': %s", cfg->chip, strerror(errno)), -1;
-	for (int b = 0; b < PLAYER_BTN_COUNT; b++)
+	for (int b = 0; b < CONTROL_BTN_COUNT; b++)
 		if (cfg->button[b].present && request_button(cfg, b, now_ms, err) < 0)
 			goto fail;
 	if (g.count == 0) {
@@ -114,7 +114,7 @@ static uint64_t event_ms(const input_gpio_edge *e, uint64_t now_ms)
 }
 
 /* Drains one line's fd while there is room for one edge's events. */
-static int drain(gpio_button *gb, uint64_t now_ms, player_event *ev, int room, skp_error *err)
+static int drain(gpio_button *gb, uint64_t now_ms, control_event *ev, int room, skp_error *err)
 {
 	input_gpio_edge e;
 	int n = 0;
@@ -123,7 +123,7 @@ static int drain(gpio_button *gb, uint64_t now_ms, player_event *ev, int room, s
 			if (errno == EAGAIN || errno == EWOULDBLOCK)
 				break;
 			return skp_fail(err, SKP_ERR_IO, 0, "reading %s button events: %s",
-					player_button_name(gb->button), strerror(errno)), -1;
+					control_button_name(gb->button), strerror(errno)), -1;
 		}
 		int level = e.rising;
 		unsigned bits = debounce_update(&gb->cfg, &gb->deb, event_ms(&e, now_ms), level);
@@ -132,7 +132,7 @@ static int drain(gpio_button *gb, uint64_t now_ms, player_event *ev, int room, s
 	return n;
 }
 
-static int gpio_read(uint64_t now_ms, player_event *ev, int max, skp_error *err)
+static int gpio_read(uint64_t now_ms, control_event *ev, int max, skp_error *err)
 {
 	int n = 0;
 	for (int i = 0; i < g.count; i++) {

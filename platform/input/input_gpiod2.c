@@ -23,7 +23,7 @@ typedef struct gpiod2_line {
 	unsigned int offset;
 } gpiod2_line;
 
-static gpiod2_line lines[PLAYER_BTN_COUNT];
+static gpiod2_line lines[CONTROL_BTN_COUNT];
 
 static struct gpiod_chip *open_path(const char *path)
 {
@@ -116,7 +116,7 @@ out:;
 static void *lg_request(void *chip, unsigned int offset, int flags, const char *consumer)
 {
 	gpiod2_line *l = NULL;
-	for (int i = 0; i < PLAYER_BTN_COUNT && !l; i++)
+	for (int i = 0; i < CONTROL_BTN_COUNT && !l; i++)
 		if (!lines[i].req)
 			l = &lines[i];
 	if (!l) {

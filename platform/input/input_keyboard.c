@@ -52,7 +52,7 @@ static int key_button(int c, int *is_long)
 	*is_long = 0;
 	if (c == 'r' || c == 'g') {
 		*is_long = 1;
-		return c == 'r' ? PLAYER_BTN_PLAY : PLAYER_BTN_VIEW;
+		return c == 'r' ? CONTROL_BTN_PLAY : CONTROL_BTN_VIEW;
 	}
 	const char *p = c ? strchr(keys, c) : NULL;
 	if (p)
@@ -79,7 +79,7 @@ static int key_of(char c)
 	return c;
 }
 
-static int kb_read(uint64_t now_ms, player_event *ev, int max, skp_error *err)
+static int kb_read(uint64_t now_ms, control_event *ev, int max, skp_error *err)
 {
 	int n = 0;
 	(void)err;

@@ -25,8 +25,8 @@ static struct {
 	script_line ev[SCRIPT_MAX_EVENTS];
 	int count, next;
 	uint64_t base;
-	debounce_config cfg[PLAYER_BTN_COUNT];
-	debounce_data deb[PLAYER_BTN_COUNT];
+	debounce_config cfg[CONTROL_BTN_COUNT];
+	debounce_data deb[CONTROL_BTN_COUNT];
 	text_lines lines;
 } s;
 
@@ -45,7 +45,7 @@ static int parse_line(const char *path, char *line, long ln, uint64_t prev, skp_
 	if ((uint64_t)t < prev)
 		return skp_fail(err, SKP_ERR_SYNTAX, ln, "%s:%ld: time %ld is before the previous line's %lu", path, ln,
 				t, (unsigned long)prev), -1;
-	int b = player_button_find(tok[1]);
+	int b = control_button_find(tok[1]);
 	if (b < 0)
 		return skp_fail(err, SKP_ERR_SYNTAX, ln, "%s:%ld: unknown button '%s' (ALGO, PLAY, NEXT, VIEW)", path,
 				ln, tok[1]), -1;
@@ -88,7 +88,7 @@ static int script_init(const board_config *cfg, const char *arg, uint64_t now_ms
 {
 	s.count = s.next = 0;
 	s.base = now_ms;
-	for (int b = 0; b < PLAYER_BTN_COUNT; b++) {
+	for (int b = 0; b < CONTROL_BTN_COUNT; b++) {
 		s.cfg[b].debounce_ms = 0;
 		s.cfg[b].long_press_ms = cfg ? cfg->button[b].deb.long_press_ms : BOARD_LONG_PRESS_MS;
 		debounce_init(&s.deb[b], 0, now_ms);
@@ -97,27 +97,27 @@ static int script_init(const board_config *cfg, const char *arg, uint64_t now_ms
 }
 
 /* Fires every button's timers up to t, in time order with the lines. */
-static int tick_all(uint64_t t, player_event *ev)
+static int tick_all(uint64_t t, control_event *ev)
 {
 	int n = 0;
-	for (int b = 0; b < PLAYER_BTN_COUNT; b++)
+	for (int b = 0; b < CONTROL_BTN_COUNT; b++)
 		n += input_emit(debounce_update(&s.cfg[b], &s.deb[b], t, DEBOUNCE_TICK), b, t, ev + n);
 	return n;
 }
 
-static int script_read(uint64_t now_ms, player_event *ev, int max, skp_error *err)
+static int script_read(uint64_t now_ms, control_event *ev, int max, skp_error *err)
 {
 	int n = 0;
 	(void)err;
 	/* room for a line's events plus every button's timers */
-	while (s.next < s.count && s.base + s.ev[s.next].t_ms <= now_ms && max - n >= 3 + 3 * PLAYER_BTN_COUNT) {
+	while (s.next < s.count && s.base + s.ev[s.next].t_ms <= now_ms && max - n >= 3 + 3 * CONTROL_BTN_COUNT) {
 		const script_line *e = &s.ev[s.next++];
 		uint64_t t = s.base + e->t_ms;
 		n += tick_all(t, ev + n);
 		n += input_emit(debounce_update(&s.cfg[e->button], &s.deb[e->button], t, e->level), e->button, t,
 				ev + n);
 	}
-	if (max - n >= 3 * PLAYER_BTN_COUNT)
+	if (max - n >= 3 * CONTROL_BTN_COUNT)
 		n += tick_all(now_ms, ev + n);
 	return n;
 }

@@ -146,7 +146,7 @@ int fuzz_image(const uint8_t *data, size_t size)
 {
 	static uint8_t buf[FUZZ_IMAGE_MAX];
 	static skp_image im;
-	static skp_player player;
+	static skp_clip_stream stream;
 	static mesh m;
 	static skin_weights w;
 	static float bind_values[SKP_MAX_DOF];
@@ -173,14 +173,14 @@ int fuzz_image(const uint8_t *data, size_t size)
 		skp_accept_body(&sk, &pose, &m, &err);
 	}
 	for (int c = 0; c < im.clip_count; c++) {
-		if (skp_player_open(&player, &im, c, &err) != SKP_OK)
+		if (skp_clip_stream_open(&stream, &im, c, &err) != SKP_OK)
 			continue;
-		skp_accept_clip(&sk, &im.clip[c], player.qmin, player.qstep, &err);
+		skp_accept_clip(&sk, &im.clip[c], stream.qmin, stream.qstep, &err);
 		skp_image_check_frames(&im, c, &err);
-		for (int i = 0; i < 4096 && skp_player_next(&player, &frame, &err) > 0; i++)
+		for (int i = 0; i < 4096 && skp_clip_stream_next(&stream, &frame, &err) > 0; i++)
 			;
-		skp_player_seek(&player, 1);
-		skp_player_next(&player, &frame, &err);
+		skp_clip_stream_seek(&stream, 1);
+		skp_clip_stream_next(&stream, &frame, &err);
 	}
 	for (uint32_t b = 0; b < im.hdr.block_count && b < 64; b++)
 		skp_image_survey(&im, b, &report, block);

@@ -95,7 +95,7 @@ static void compare_clip(const char *image, const char *asf_path, const char *am
 	static skel s, s2;
 	static storage_file sf;
 	static skp_image im;
-	static skp_player pl;
+	static skp_clip_stream pl;
 	static file_reader fr;
 	static text_lines tl;
 	static amc_stream as;
@@ -108,7 +108,7 @@ static void compare_clip(const char *image, const char *asf_path, const char *am
 	assert_int_equal(s2.count, s.count);
 	assert_int_equal(s2.dof_count, s.dof_count);
 	assert_memory_equal(s2.bone, s.bone, sizeof(skel_bone) * (size_t)s.count);
-	assert_int_equal(skp_player_open(&pl, &im, 0, &err), SKP_OK);
+	assert_int_equal(skp_clip_stream_open(&pl, &im, 0, &err), SKP_OK);
 	assert_int_equal(im.clip[0].frame_count, frames);
 	assert_int_equal(file_reader_open(&fr, amc_path), 0);
 	text_lines_init(&tl, file_reader_as_reader(&fr));
@@ -116,7 +116,7 @@ static void compare_clip(const char *image, const char *asf_path, const char *am
 	double worst = 0, bound = 0;
 	long n = 0;
 	while (amc_next(&as, &want, &err) > 0) {
-		assert_int_equal(skp_player_next(&pl, &got, &err), 1);
+		assert_int_equal(skp_clip_stream_next(&pl, &got, &err), 1);
 		assert_int_equal(got.number, want.number);
 		for (int d = 0; d < s.dof_count; d++) {
 			double e = fabs((double)got.value[d] - want.value[d]);
@@ -130,7 +130,7 @@ static void compare_clip(const char *image, const char *asf_path, const char *am
 		n++;
 	}
 	assert_int_equal(n, frames);
-	assert_int_equal(skp_player_next(&pl, &got, &err), 0);
+	assert_int_equal(skp_clip_stream_next(&pl, &got, &err), 0);
 	printf("%s: %ld frames, worst error %.3g (stated bound %.3g)\n", amc_path, n, worst, bound);
 	file_reader_close(&fr);
 	storage_file_close(&sf);

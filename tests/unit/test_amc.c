@@ -134,7 +134,7 @@ static const bad_case bad[] = {
 	{ "1\nroot 1 2 3e39 4 5 6\n", 2, "beyond a float's range" },
 	/* a float, but a pose that far holds no finite joint */
 	{ "1\nroot 1e30 2 3 4 5 6\n", 2, "translation '1e30' is beyond the skeleton's range" },
-	/* a frame number too big for the players: not a bone's name */
+	/* a frame number too big for playback: not a bone's name */
 	{ "1\nb 1\n99999999999999999999\n", 3, "frame number '99999999999999999999' out of range" },
 	{ "2147483648\n", 1, "out of range (at most 2147483647)" },
 	/* control characters in a quoted token are escaped */

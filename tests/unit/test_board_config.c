@@ -41,7 +41,7 @@ static void test_rpi4_board(void **state)
 {
 	(void)state;
 	parse_file("board/rpi4/board.ini");
-	static const unsigned lines[PLAYER_BTN_COUNT] = { 17, 27, 22, 23 };
+	static const unsigned lines[CONTROL_BTN_COUNT] = { 17, 27, 22, 23 };
 	assert_string_equal(cfg.platform, "kms");
 	assert_string_equal(cfg.input, "gpio");
 	assert_string_equal(cfg.chip, "pinctrl-bcm2711");
@@ -49,7 +49,7 @@ static void test_rpi4_board(void **state)
 	assert_int_equal(cfg.height, 1080);
 	assert_int_equal(cfg.rotation, 0);
 	assert_int_equal(cfg.hud, BOARD_HUD_VISITOR);
-	for (int b = 0; b < PLAYER_BTN_COUNT; b++) {
+	for (int b = 0; b < CONTROL_BTN_COUNT; b++) {
 		assert_true(cfg.button[b].present);
 		assert_int_equal(cfg.button[b].line, lines[b]);
 		assert_true(cfg.button[b].active_low);
@@ -71,7 +71,7 @@ static void test_host_board(void **state)
 	(void)state;
 	parse_file("board/host/board.ini");
 	assert_string_equal(cfg.input, "keyboard");
-	assert_false(cfg.button[PLAYER_BTN_ALGO].present);
+	assert_false(cfg.button[CONTROL_BTN_ALGO].present);
 	assert_int_equal(cfg.slot_count, 3);
 	assert_string_equal(cfg.slot[2], "/usr/share/skinplay/demo.skn");
 	assert_int_equal(cfg.threads, 0); /* not given: auto */
@@ -138,7 +138,7 @@ static void test_inheritance_and_syntax(void **state)
 			   "[input]\n"
 			   "long_press_ms = 600\n";
 	assert_int_equal(parse(text, &err), SKP_OK);
-	board_button *v = &cfg.button[PLAYER_BTN_VIEW], *a = &cfg.button[PLAYER_BTN_ALGO];
+	board_button *v = &cfg.button[CONTROL_BTN_VIEW], *a = &cfg.button[CONTROL_BTN_ALGO];
 	assert_int_equal(v->line, 4);
 	assert_false(v->active_low);
 	assert_int_equal(v->bias, BOARD_BIAS_PULL_DOWN);
@@ -146,7 +146,7 @@ static void test_inheritance_and_syntax(void **state)
 	assert_int_equal(v->deb.long_press_ms, 1500); /* its own, over [input]'s later 600 */
 	assert_int_equal(a->deb.debounce_ms, 0);
 	assert_int_equal(a->deb.long_press_ms, 600);
-	assert_false(cfg.button[PLAYER_BTN_PLAY].present);
+	assert_false(cfg.button[CONTROL_BTN_PLAY].present);
 	assert_string_equal(cfg.slot[0], "/data/a#1.skn");
 	assert_int_equal(cfg.rotation, -1);            /* not given */
 	assert_int_equal(cfg.hud, -1);
@@ -218,7 +218,7 @@ static void test_mistakes_keep_defaults(void **state)
 	assert_int_equal(cfg.hud, BOARD_HUD_ENGINEER);
 	assert_int_equal(cfg.threads, 0);
 	assert_int_equal(cfg.streams, BOARD_STREAMS_COMPACT);
-	assert_int_equal(cfg.button[PLAYER_BTN_PLAY].deb.debounce_ms, BOARD_DEBOUNCE_MS);
+	assert_int_equal(cfg.button[CONTROL_BTN_PLAY].deb.debounce_ms, BOARD_DEBOUNCE_MS);
 	assert_int_equal(cfg.slot_count, 3);
 	assert_string_equal(cfg.slot[2], "c");
 	/* a header that does not close: its keys belong nowhere; then on */

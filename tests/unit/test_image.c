@@ -34,7 +34,7 @@ static skin_weights w, w2;
 static uint8_t img[CAP];
 static size_t img_size;
 static skp_image im;
-static skp_player pl;
+static skp_clip_stream pl;
 static skp_image_writer wr;
 static skp_clip_range range;
 static amc_frame frames[64];
@@ -195,16 +195,16 @@ static void check_clip(int clip, const amc_frame *f, int n)
 {
 	skp_error err;
 	static amc_frame got;
-	assert_int_equal(skp_player_open(&pl, &im, clip, &err), SKP_OK);
+	assert_int_equal(skp_clip_stream_open(&pl, &im, clip, &err), SKP_OK);
 	for (int i = 0; i < n; i++) {
-		assert_int_equal(skp_player_next(&pl, &got, &err), 1);
+		assert_int_equal(skp_clip_stream_next(&pl, &got, &err), 1);
 		assert_int_equal(got.number, f[i].number);
 		for (int d = 0; d < s.dof_count; d++) {
 			double tol = pl.qstep[d] * 0.5 * (1 + 1e-6) + 1e-6 * fabs(f[i].value[d]);
 			assert_true(fabs((double)got.value[d] - f[i].value[d]) <= tol);
 		}
 	}
-	assert_int_equal(skp_player_next(&pl, &got, &err), 0);
+	assert_int_equal(skp_clip_stream_next(&pl, &got, &err), 0);
 }
 
 static void test_round_trip(void **state)
@@ -319,13 +319,13 @@ static void test_bad_frame_block_holds(void **state)
 	uint32_t fpb = wr.dir[1].frames_per_block, bad = wr.dir[1].frames_first + 2;
 	img[(size_t)bad * BS + 40] ^= 0x10;
 	assert_int_equal(open_image(img_size, &err), SKP_OK);
-	assert_int_equal(skp_player_open(&pl, &im, 1, &err), SKP_OK);
+	assert_int_equal(skp_clip_stream_open(&pl, &im, 1, &err), SKP_OK);
 	int lost = 0, good = 0, r;
 	long last_good = -1;
-	for (int i = 0; (r = skp_player_next(&pl, &f, &err)) != 0; i++) {
+	for (int i = 0; (r = skp_clip_stream_next(&pl, &f, &err)) != 0; i++) {
 		int in_bad = (uint32_t)i / fpb == 2;
 		if (in_bad) {
-			assert_int_equal(r, SKP_PLAYER_LOST);
+			assert_int_equal(r, SKP_CLIP_LOST);
 			assert_int_equal(err.block, bad);
 			assert_string_equal(err.msg, "CRC mismatch");
 			assert_int_equal(f.number, last_good); /* untouched: the caller holds it */
@@ -340,8 +340,8 @@ static void test_bad_frame_block_holds(void **state)
 	assert_int_equal(lost, (int)fpb);
 	assert_int_equal(good + lost, 200);
 	/* the ring never holds more than its blocks, and seeking restarts it */
-	skp_player_seek(&pl, 199);
-	assert_int_equal(skp_player_next(&pl, &f, &err), 1);
+	skp_clip_stream_seek(&pl, 199);
+	assert_int_equal(skp_clip_stream_next(&pl, &f, &err), 1);
 	assert_int_equal(f.number, 209);
 }
 
@@ -435,7 +435,7 @@ static void test_foreign_block(void **state)
 	assert_memory_equal(im.hdr.id, img + BS, SKP_IMAGE_ID_BYTES);
 }
 
-/* FNV-1a over everything a player gets from the image: skeleton, body,
+/* FNV-1a over everything playback gets from the image: skeleton, body,
  * every frame of every clip. */
 static uint64_t fnv(uint64_t h, const void *p, size_t n)
 {
@@ -459,10 +459,10 @@ static uint64_t decoded_hash(void)
 	h = fnv(h, w2.weight, sizeof w2.weight[0] * (size_t)m2.vert_count);
 	h = fnv(h, bind2, sizeof(float) * (size_t)s2.dof_count);
 	for (int c = 0; c < im.clip_count; c++) {
-		if (skp_player_open(&pl, &im, c, &err) != SKP_OK)
+		if (skp_clip_stream_open(&pl, &im, c, &err) != SKP_OK)
 			return 0;
 		int r;
-		while ((r = skp_player_next(&pl, &f, &err)) == 1)
+		while ((r = skp_clip_stream_next(&pl, &f, &err)) == 1)
 			h = fnv(h, f.value, sizeof(float) * (size_t)s2.dof_count);
 		if (r != 0)
 			return 0;
@@ -497,7 +497,7 @@ static void test_parity_layout(void **state)
 }
 
 /* Any one data block flipped, or zeroed, is rebuilt bit-identical: what the
- * player gets is the same as from the undamaged image. */
+ * playback gets is the same as from the undamaged image. */
 static void test_parity_rebuilds_any_one_block(void **state)
 {
 	(void)state;
@@ -549,12 +549,12 @@ static void test_rebuilt_block_kept_for_next_passes(void **state)
 	skp_blockdev counted = rdev;
 	counted.read = counting_read;
 	im.dev = &counted;
-	assert_int_equal(skp_player_open(&pl, &im, 1, &err), SKP_OK);
+	assert_int_equal(skp_clip_stream_open(&pl, &im, 1, &err), SKP_OK);
 	unsigned long per_pass[3];
 	for (int pass = 0; pass < 3; pass++) {
 		reads_done = 0;
-		skp_player_seek(&pl, 0);
-		for (int i = 0; skp_player_next(&pl, &f, &err) == 1; i++) {
+		skp_clip_stream_seek(&pl, 0);
+		for (int i = 0; skp_clip_stream_next(&pl, &f, &err) == 1; i++) {
 			if (pass == 0)
 				first[i] = f;
 			else
@@ -571,11 +571,11 @@ static void test_rebuilt_block_kept_for_next_passes(void **state)
 	assert_true(per_pass[0] > per_pass[1]);
 	/* a clip within the ring (tiny: one block) is read once, whatever
 	 * its passes */
-	assert_int_equal(skp_player_open(&pl, &im, 0, &err), SKP_OK);
+	assert_int_equal(skp_clip_stream_open(&pl, &im, 0, &err), SKP_OK);
 	for (int pass = 0; pass < 3; pass++) {
 		reads_done = 0;
-		skp_player_seek(&pl, 0);
-		while (skp_player_next(&pl, &f, &err) == 1)
+		skp_clip_stream_seek(&pl, 0);
+		while (skp_clip_stream_next(&pl, &f, &err) == 1)
 			;
 		per_pass[pass] = reads_done;
 	}

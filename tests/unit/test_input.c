@@ -102,8 +102,8 @@ static int setup(void **state)
 	fake.fail_offset = -1;
 	board_config_defaults(&board);
 	snprintf(board.chip, sizeof board.chip, "gpiochip0");
-	static const unsigned lines[PLAYER_BTN_COUNT] = { 17, 27, 22, 23 };
-	for (int b = 0; b < PLAYER_BTN_COUNT; b++) {
+	static const unsigned lines[CONTROL_BTN_COUNT] = { 17, 27, 22, 23 };
+	for (int b = 0; b < CONTROL_BTN_COUNT; b++) {
 		board.button[b].present = 1;
 		board.button[b].line = lines[b];
 	}
@@ -136,7 +136,7 @@ static void edge(int button, int rising, uint64_t t_ms)
 	assert_int_equal(write(fake.line[button].pipe[1], &e, sizeof e), (ssize_t)sizeof e);
 }
 
-static int read_at(uint64_t now, player_event *ev)
+static int read_at(uint64_t now, control_event *ev)
 {
 	skp_error err;
 	int n = input_gpio.read(now, ev, INPUT_MAX_EVENTS, &err);
@@ -149,9 +149,9 @@ static void test_gpio_requests_lines_with_flags(void **state)
 {
 	(void)state;
 	skp_error err;
-	board.button[PLAYER_BTN_NEXT].active_low = 0;
-	board.button[PLAYER_BTN_NEXT].bias = BOARD_BIAS_DISABLE;
-	board.button[PLAYER_BTN_VIEW].present = 0;
+	board.button[CONTROL_BTN_NEXT].active_low = 0;
+	board.button[CONTROL_BTN_NEXT].bias = BOARD_BIAS_DISABLE;
+	board.button[CONTROL_BTN_VIEW].present = 0;
 	assert_int_equal(input_gpio.init(&board, NULL, 1000, &err), 0);
 	assert_string_equal(fake.chip_name, "gpiochip0");
 	assert_int_equal(fake.count, 3);
@@ -170,28 +170,28 @@ static void test_gpio_bouncing_press_through_libgpiod(void **state)
 {
 	(void)state;
 	skp_error err;
-	player_event ev[INPUT_MAX_EVENTS];
+	control_event ev[INPUT_MAX_EVENTS];
 	assert_int_equal(input_gpio.init(&board, NULL, 1000, &err), 0);
-	edge(PLAYER_BTN_PLAY, 1, 1100);
-	edge(PLAYER_BTN_PLAY, 0, 1102);
-	edge(PLAYER_BTN_PLAY, 1, 1105);
-	edge(PLAYER_BTN_PLAY, 0, 1106);
-	edge(PLAYER_BTN_PLAY, 1, 1110);
+	edge(CONTROL_BTN_PLAY, 1, 1100);
+	edge(CONTROL_BTN_PLAY, 0, 1102);
+	edge(CONTROL_BTN_PLAY, 1, 1105);
+	edge(CONTROL_BTN_PLAY, 0, 1106);
+	edge(CONTROL_BTN_PLAY, 1, 1110);
 	assert_int_equal(read_at(1120, ev), 0);
 	assert_int_equal(read_at(1139, ev), 0);
 	assert_int_equal(read_at(1140, ev), 1);
-	assert_int_equal(ev[0].button, PLAYER_BTN_PLAY);
-	assert_int_equal(ev[0].kind, PLAYER_PRESS);
+	assert_int_equal(ev[0].button, CONTROL_BTN_PLAY);
+	assert_int_equal(ev[0].kind, CONTROL_PRESS);
 	assert_int_equal(ev[0].t_ms, 1140);
 	assert_int_equal(read_at(1909, ev), 0);
 	assert_int_equal(read_at(1910, ev), 1);
-	assert_int_equal(ev[0].kind, PLAYER_LONG);
-	edge(PLAYER_BTN_PLAY, 0, 2500);
-	edge(PLAYER_BTN_PLAY, 1, 2501);
-	edge(PLAYER_BTN_PLAY, 0, 2503);
+	assert_int_equal(ev[0].kind, CONTROL_LONG);
+	edge(CONTROL_BTN_PLAY, 0, 2500);
+	edge(CONTROL_BTN_PLAY, 1, 2501);
+	edge(CONTROL_BTN_PLAY, 0, 2503);
 	assert_int_equal(read_at(2520, ev), 0);
 	assert_int_equal(read_at(2540, ev), 1);
-	assert_int_equal(ev[0].kind, PLAYER_RELEASE);
+	assert_int_equal(ev[0].kind, CONTROL_RELEASE);
 	input_gpio.shutdown();
 }
 
@@ -201,28 +201,28 @@ static void test_gpio_two_buttons_and_late_reads(void **state)
 {
 	(void)state;
 	skp_error err;
-	player_event ev[INPUT_MAX_EVENTS];
+	control_event ev[INPUT_MAX_EVENTS];
 	assert_int_equal(input_gpio.init(&board, NULL, 0, &err), 0);
-	edge(PLAYER_BTN_ALGO, 1, 100);
-	edge(PLAYER_BTN_VIEW, 1, 101);
-	edge(PLAYER_BTN_ALGO, 0, 200);
-	edge(PLAYER_BTN_VIEW, 0, 250);
+	edge(CONTROL_BTN_ALGO, 1, 100);
+	edge(CONTROL_BTN_VIEW, 1, 101);
+	edge(CONTROL_BTN_ALGO, 0, 200);
+	edge(CONTROL_BTN_VIEW, 0, 250);
 	int n = read_at(400, ev);
 	assert_int_equal(n, 4);
-	int seen[PLAYER_BTN_COUNT][3] = { { 0 } };
+	int seen[CONTROL_BTN_COUNT][3] = { { 0 } };
 	for (int i = 0; i < n; i++)
 		seen[ev[i].button][ev[i].kind]++;
-	assert_int_equal(seen[PLAYER_BTN_ALGO][PLAYER_PRESS], 1);
-	assert_int_equal(seen[PLAYER_BTN_ALGO][PLAYER_RELEASE], 1);
-	assert_int_equal(seen[PLAYER_BTN_VIEW][PLAYER_PRESS], 1);
-	assert_int_equal(seen[PLAYER_BTN_VIEW][PLAYER_RELEASE], 1);
-	assert_int_equal(seen[PLAYER_BTN_ALGO][PLAYER_LONG] + seen[PLAYER_BTN_VIEW][PLAYER_LONG], 0);
+	assert_int_equal(seen[CONTROL_BTN_ALGO][CONTROL_PRESS], 1);
+	assert_int_equal(seen[CONTROL_BTN_ALGO][CONTROL_RELEASE], 1);
+	assert_int_equal(seen[CONTROL_BTN_VIEW][CONTROL_PRESS], 1);
+	assert_int_equal(seen[CONTROL_BTN_VIEW][CONTROL_RELEASE], 1);
+	assert_int_equal(seen[CONTROL_BTN_ALGO][CONTROL_LONG] + seen[CONTROL_BTN_VIEW][CONTROL_LONG], 0);
 	/* press stamped in 1970 wall-clock terms: counted at the read time */
-	edge(PLAYER_BTN_NEXT, 1, 1700000000000ull);
+	edge(CONTROL_BTN_NEXT, 1, 1700000000000ull);
 	assert_int_equal(read_at(500, ev), 0);
 	assert_int_equal(read_at(530, ev), 1);
-	assert_int_equal(ev[0].button, PLAYER_BTN_NEXT);
-	assert_int_equal(ev[0].kind, PLAYER_PRESS);
+	assert_int_equal(ev[0].button, CONTROL_BTN_NEXT);
+	assert_int_equal(ev[0].kind, CONTROL_PRESS);
 	input_gpio.shutdown();
 }
 
@@ -240,7 +240,7 @@ static void test_gpio_errors_release_everything(void **state)
 	assert_true(fake.line[0].released && fake.line[1].released);
 	assert_false(fake.chip_open);
 	fake.fail_offset = -1;
-	for (int b = 0; b < PLAYER_BTN_COUNT; b++)
+	for (int b = 0; b < CONTROL_BTN_COUNT; b++)
 		board.button[b].present = 0;
 	assert_int_equal(input_gpio.init(&board, NULL, 0, &err), -1);
 	assert_non_null(strstr(err.msg, "no [button.*]"));
@@ -249,7 +249,7 @@ static void test_gpio_errors_release_everything(void **state)
 	setup(NULL);
 	assert_int_equal(input_gpio.init(&board, NULL, 0, &err), 0);
 	assert_int_equal(write(fake.line[0].pipe[1], "abc", 3), 3);
-	player_event ev[INPUT_MAX_EVENTS];
+	control_event ev[INPUT_MAX_EVENTS];
 	assert_int_equal(input_gpio.read(10, ev, INPUT_MAX_EVENTS, &err), -1);
 	assert_non_null(strstr(err.msg, "ALGO"));
 	input_gpio.shutdown();
@@ -270,7 +270,7 @@ static void test_script_events_at_their_times(void **state)
 {
 	(void)state;
 	skp_error err;
-	player_event ev[INPUT_MAX_EVENTS];
+	control_event ev[INPUT_MAX_EVENTS];
 	const char *path = write_script("# demo\n"
 					"100 ALGO press\n"
 					"150 algo release\n"
@@ -283,20 +283,20 @@ static void test_script_events_at_their_times(void **state)
 	unlink(path);
 	assert_int_equal(input_script.read(5099, ev, INPUT_MAX_EVENTS, &err), 0);
 	assert_int_equal(input_script.read(5100, ev, INPUT_MAX_EVENTS, &err), 1);
-	assert_int_equal(ev[0].button, PLAYER_BTN_ALGO);
-	assert_int_equal(ev[0].kind, PLAYER_PRESS);
+	assert_int_equal(ev[0].button, CONTROL_BTN_ALGO);
+	assert_int_equal(ev[0].kind, CONTROL_PRESS);
 	assert_int_equal(ev[0].t_ms, 5100);
 	assert_int_equal(input_script.read(5999, ev, INPUT_MAX_EVENTS, &err), 2); /* ALGO up, PLAY down */
-	assert_int_equal(ev[1].kind, PLAYER_PRESS);
+	assert_int_equal(ev[1].kind, CONTROL_PRESS);
 	assert_int_equal(input_script.read(6000, ev, INPUT_MAX_EVENTS, &err), 1);
-	assert_int_equal(ev[0].button, PLAYER_BTN_PLAY);
-	assert_int_equal(ev[0].kind, PLAYER_LONG);
+	assert_int_equal(ev[0].button, CONTROL_BTN_PLAY);
+	assert_int_equal(ev[0].kind, CONTROL_LONG);
 	int n = input_script.read(9000, ev, INPUT_MAX_EVENTS, &err);
 	assert_int_equal(n, 3);
-	assert_int_equal(ev[0].kind, PLAYER_RELEASE);
-	assert_int_equal(ev[1].button, PLAYER_BTN_VIEW);
-	assert_int_equal(ev[1].kind, PLAYER_PRESS);
-	assert_int_equal(ev[2].kind, PLAYER_RELEASE);
+	assert_int_equal(ev[0].kind, CONTROL_RELEASE);
+	assert_int_equal(ev[1].button, CONTROL_BTN_VIEW);
+	assert_int_equal(ev[1].kind, CONTROL_PRESS);
+	assert_int_equal(ev[2].kind, CONTROL_RELEASE);
 	assert_int_equal(input_script.read(99999, ev, INPUT_MAX_EVENTS, &err), 0);
 	input_script.shutdown();
 }
@@ -340,7 +340,7 @@ static void test_find_backends(void **state)
 	assert_null(input_find("mouse", &arg));
 	/* keyboard without a terminal: no events, no error */
 	skp_error err;
-	player_event ev[4];
+	control_event ev[4];
 	if (!isatty(STDIN_FILENO)) {
 		assert_int_equal(input_keyboard.init(&board, NULL, 0, &err), 0);
 		assert_int_equal(input_keyboard.read(0, ev, 4, &err), 0);

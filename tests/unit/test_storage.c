@@ -1,7 +1,7 @@
 /* Storage backends: a file as block storage (pread/pwrite, partial last
  * block, sequential reader for raw text) and the fault-injecting wrapper,
  * one test per fault, each checked on raw reads and through the image
- * player (bad blocks reported with their number, playback going on). */
+ * clip stream (bad blocks reported with their number, playback going on). */
 #include <stdarg.h>
 #include <stddef.h>
 #include <setjmp.h>
@@ -33,7 +33,7 @@ static skin_weights w;
 static skp_image_writer wr;
 static skp_clip_range range;
 static skp_image im;
-static skp_player pl;
+static skp_clip_stream pl;
 static amc_frame synth[300];
 
 static int write_file(int parity);
@@ -111,9 +111,9 @@ static int play_all(long *bad_block, char *why)
 	int lost = 0, r, i = 0;
 	*bad_block = -1;
 	assert_int_equal(skp_image_open(&im, &fy.bd, &err), SKP_OK);
-	assert_int_equal(skp_player_open(&pl, &im, 0, &err), SKP_OK);
-	while ((r = skp_player_next(&pl, &f, &err)) != 0) {
-		if (r == SKP_PLAYER_LOST) {
+	assert_int_equal(skp_clip_stream_open(&pl, &im, 0, &err), SKP_OK);
+	while ((r = skp_clip_stream_next(&pl, &f, &err)) != 0) {
+		if (r == SKP_CLIP_LOST) {
 			if (*bad_block < 0) {
 				*bad_block = err.block;
 				strcpy(why, err.msg);
@@ -219,12 +219,12 @@ static void test_fault_random_rate(void **state)
 	/* the header and directory may be hit too: retry opening as a device would */
 	int opened = 0;
 	for (int t = 0; t < 20 && !opened; t++)
-		opened = skp_image_open(&im, &fy.bd, &err) == SKP_OK && skp_player_open(&pl, &im, 0, &err) == SKP_OK;
+		opened = skp_image_open(&im, &fy.bd, &err) == SKP_OK && skp_clip_stream_open(&pl, &im, 0, &err) == SKP_OK;
 	assert_true(opened);
 	int lost = 0, r;
 	static amc_frame f;
-	while ((r = skp_player_next(&pl, &f, &err)) != 0) {
-		if (r == SKP_PLAYER_LOST) {
+	while ((r = skp_clip_stream_next(&pl, &f, &err)) != 0) {
+		if (r == SKP_CLIP_LOST) {
 			assert_true(err.block >= (long)wr.dir[0].frames_first);
 			assert_true(err.block < (long)(wr.dir[0].frames_first + wr.dir[0].frame_blocks));
 			lost++;
