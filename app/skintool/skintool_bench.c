@@ -1,4 +1,4 @@
-/* skintool bench [--verts N] [--threads T] [--rounds R]: skinning throughput per
+/* skintool bench [--verts N] [--threads T] [--rounds R] [--ozz PROGRAM]: skinning throughput per
  * algorithm on a synthetic mesh, next to the memory-bandwidth bound for the
  * bytes each vertex reads and writes, measured in the same run. */
 #include <math.h>
@@ -14,6 +14,7 @@
 #include "skin.h"
 #include "skin_compact.h"
 #include "skintool_cmds.h"
+#include "tool_anchor.h"
 #include "tool_args.h"
 #include "workers.h"
 
@@ -218,7 +219,10 @@ static double round_seconds_per_pass(workers *w, bench *b)
  * algorithm more chances to be timed in the machine's fast phases. With
  * more than one thread, each round times the caller's thread alone too
  * (best[1]), so that the scaling is a ratio within the run. */
-static void best_seconds_per_pass(workers *w, bench *b, int rounds, double best[2][K_COUNT])
+static double ozz_rate(const char *ozz, long verts);
+
+static void best_seconds_per_pass(workers *w, bench *b, int rounds, double best[2][K_COUNT], const char *ozz,
+				  double *ozz_best)
 {
 	static cli_progress pr;
 	const int pools = workers_count(w) > 1 ? 2 : 1;
@@ -235,6 +239,8 @@ static void best_seconds_per_pass(workers *w, bench *b, int rounds, double best[
 					best[p][k] = s;
 			}
 		}
+		if (ozz) /* the anchor takes its turn too: one round of its own */
+			*ozz_best = fmax(*ozz_best, ozz_rate(ozz, b->soa.count));
 		cli_progress_step(&pr, round + 1);
 	}
 	cli_progress_end(&pr, " of the 5 kernels");
@@ -286,14 +292,17 @@ typedef struct bench_args {
 	tool_common c; /* first: tool_files_skel_mesh reads it */
 	long verts, threads, rounds;
 	int verts_given;
+	const char *ozz;  /* the anchor's program, or NULL */
 } bench_args;
 
-enum { OPT_VERTS = 1, OPT_THREADS, OPT_ROUNDS };
+enum { OPT_VERTS = 1, OPT_THREADS, OPT_ROUNDS, OPT_OZZ };
 
 static const cli_opt bench_opts[] = {
 	{ "verts", 0, "N", OPT_VERTS, "vertices to skin (default 1000000)" },
 	{ "threads", 0, "T", OPT_THREADS, "worker threads (default 1); above 1, one thread is timed too" },
 	{ "rounds", 0, "R", OPT_ROUNDS, "timed rounds of 50 ms per kernel; the best counts (default 20)" },
+	{ "ozz", 0, "PROGRAM", OPT_OZZ,
+	  "also time ozz-animation's LBS (../shared/tools/ozz-bench, built) on the same case, a round after each of ours" },
 	{ NULL, 0, NULL, 0, NULL },
 };
 
@@ -304,6 +313,10 @@ static int bench_take(void *ctx, int id, const char *v)
 	int r = tool_common_take(&a->c, id, v);
 	if (r <= 0)
 		return r;
+	if (id == OPT_OZZ) {
+		a->ozz = v;
+		return 0;
+	}
 	long *const dst[] = { NULL, &a->verts, &a->threads, &a->rounds };
 	a->verts_given |= id == OPT_VERTS;
 	return cli_parse_long(names[id], v, dst[id]);
@@ -324,6 +337,8 @@ static const cli_command bench_command = {
 	.examples = (const cli_example[]){
 		{ "Every kernel on 1M synthetic vertices, on two threads",
 		  "skintool bench --threads=2" },
+		{ "Against ozz-animation's LBS in the same run (the anchor built as ../shared/tools/README.md says)",
+		  "skintool bench --ozz=anchors/ozz_bench" },
 		{ "The kernels on your own body, posed in a clip's first frame",
 		  "skintool bench 02.asf body.obj --motion=02_01.amc" },
 		{ NULL, NULL },
@@ -339,8 +354,8 @@ static int parse(int argc, char **argv, bench_args *a)
 	cli_bvh_slots(&a->c.asf, &a->c.amc, &a->c.mesh);
 	if (!a->c.asf && (a->c.mesh || a->c.amc))
 		return -tool_missing(&a->c, "SKELETON with MESH or --motion");
-	if (a->c.asf && a->verts_given) {
-		fprintf(stderr, "skintool bench: --verts is for the synthetic mesh, not SKELETON [MESH]\n");
+	if (a->c.asf && (a->verts_given || a->ozz)) {
+		fprintf(stderr, "skintool bench: --verts and --ozz are for the synthetic mesh, not SKELETON [MESH]\n");
 		return -1;
 	}
 	if (a->verts < SKIN_LANES || a->verts > 50000000 || a->threads < 1 || a->threads > WORKERS_MAX ||
@@ -430,6 +445,33 @@ static double compact_box(const skin_compact *c)
 	return side;
 }
 
+/* M vertices/s of one round of the ozz anchor on the same case (verts,
+ * one thread), or 0 after saying why not. */
+static double ozz_rate(const char *ozz, long verts)
+{
+	char n[24], out[512];
+	snprintf(n, sizeof n, "%ld", verts);
+	char *const argv[] = { (char *)ozz, n, "1", NULL };
+	int rc = tool_anchor_run(argv, out, sizeof out);
+	const char *at = strstr(out, "ozz lbs P+N:");
+	double rate = 0;
+	if (rc != 0 || !at || sscanf(at, "ozz lbs P+N: %lf", &rate) != 1 || !(rate > 0)) {
+		fprintf(stderr, "skintool bench: %s: no rate in its output (exit %d)\n", ozz, rc);
+		return 0;
+	}
+	return rate;
+}
+
+/* The anchor against LBS and float DQBS on one thread. */
+static void print_ozz(const bench_args *a, double ozz, const double best[K_COUNT])
+{
+	if (!(ozz > 0))
+		return;
+	double lbs = (double)a->verts / best[K_LBS] * 1e-6, dqbs = (double)a->verts / best[K_DQBS] * 1e-6;
+	printf("ozz-animation LBS (%s, the same case, one round after each of ours, best): %.1f M vertices/s; "
+	       "lbs %.2fx its speed, dqbs %.2fx\n", a->ozz, ozz, lbs / ozz, dqbs / ozz);
+}
+
 int cmd_bench(int argc, char **argv)
 {
 	static bench b;
@@ -448,9 +490,11 @@ int cmd_bench(int argc, char **argv)
 	}
 	rc = 1;
 	if (prepare(&b, &a, block, workers_count(w)) == 0) {
-		double best[2][K_COUNT];
-		best_seconds_per_pass(w, &b, (int)a.rounds, best);
+		double best[2][K_COUNT], ozz = 0;
+		best_seconds_per_pass(w, &b, (int)a.rounds, best, a.ozz, &ozz);
 		print_table(w, &a, best);
+		if (a.ozz)
+			print_ozz(&a, ozz, workers_count(w) > 1 ? best[1] : best[0]);
 		printf("compact streams: positions within %.3g of the float ones (half a 16-bit step of the "
 		       "%.3g-unit box)\n", (double)skin_compact_position_bound(&b.compact), compact_box(&b.compact));
 		rc = 0;
