@@ -25,6 +25,8 @@
 #   base      errors, readers, tokens, lines, CRC-32, INI, algorithm/view names
 #   math      vec3, quat, rigid, dual quaternions, mat4, fixed point
 #   motion    skeleton, ASF, streaming AMC and BVH, forward kinematics, roles, T-pose
+#   codec     compressed motion clips: the format and its fixed-memory decoder
+#   encode    tool-only: the clip encoder (grid steps within an error budget, segments)
 #   mesh      meshes, normals, OBJ, the generated body
 #   skin      weights, SoA vertices, bone transforms, skin_run; kernels/
 #   bind      automatic and balanced weights, fitting, pose guessing, the weights CSV
@@ -38,8 +40,9 @@
 #   skinplay  the device program; skintool: the host tool (+ report/)
 
 # The portable core, bottom up: no malloc, no stdio (make check-core).
-CORE_MODULES  := base math motion mesh skin bind image render kiosk play
+CORE_MODULES  := base math motion codec mesh skin bind image render kiosk play
 DEPS_base     :=
+DEPS_codec    := base
 DEPS_math     := base
 DEPS_motion   := math base
 DEPS_mesh     := motion math base
@@ -52,18 +55,19 @@ DEPS_play     := image skin mesh motion math base
 # Host code, which may allocate and print: the tool-only measures, the layer
 # both programs share (loading, binding, showing, --version), the programs.
 DEPS_analysis := skin mesh motion math base
+DEPS_encode   := codec motion math base
 DEPS_cli      := $(CORE_MODULES) platform
 DEPS_import   := cli $(CORE_MODULES) platform
 DEPS_skinplay := cli $(CORE_MODULES) platform
-DEPS_skintool := import cli analysis $(CORE_MODULES) platform
-HOST_MODULES  := analysis cli import skinplay skintool
+DEPS_skintool := import cli analysis encode $(CORE_MODULES) platform
+HOST_MODULES  := analysis encode cli import skinplay skintool
 APP_MODULES   := $(CORE_MODULES) $(HOST_MODULES)
 PROGRAM_MODULES := skinplay skintool
 # The tests are white-box: every module but the programs (which they run).
-DEPS_tests    := import cli analysis $(CORE_MODULES) platform
+DEPS_tests    := import cli analysis encode $(CORE_MODULES) platform
 # The modules top down: the order of the archives on a link line (each
 # archive is searched once, so a module's calls resolve only downwards).
-LAYER_ORDER   := import analysis cli platform play kiosk render image bind skin mesh motion math base
+LAYER_ORDER   := import analysis encode cli platform play kiosk render image bind skin mesh motion codec math base
 
 # A module's private folders: on its own include path, nobody else's.
 PRIVATE_skin     := kernels

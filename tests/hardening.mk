@@ -49,6 +49,7 @@ FUZZ_SEEDS_image := tests/fuzz/seeds/image
 FUZZ_SEEDS_joint_map := tests/fuzz/seeds/joint_map
 FUZZ_SEEDS_makehuman := tests/fuzz/seeds/makehuman
 FUZZ_SEEDS_mesh_format := tests/fuzz/seeds/mesh_format
+FUZZ_SEEDS_codec := tests/fuzz/seeds/codec
 
 # Each target runs SECONDS on a corpus kept in the build directory. A crash
 # leaves its input in $(FUZZ_OUT)/crash/<target>/: fix the parser, copy the

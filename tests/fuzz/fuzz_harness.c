@@ -9,6 +9,7 @@
 #include "asf.h"
 #include "board_config.h"
 #include "bvh.h"
+#include "codec_decode.h"
 #include "crc32.h"
 #include "fk.h"
 #include "image_accept.h"
@@ -258,6 +259,38 @@ int fuzz_mesh_format(const uint8_t *data, size_t size)
 	return 0;
 }
 
+/* A compressed segment (app/codec): the first bytes make the clip's
+ * header (tracks, frames a segment, each track's bits, base and step), the
+ * rest is the segment. Every frame decoded must be on the tracks' grids. */
+int fuzz_codec(const uint8_t *data, size_t size)
+{
+	static codec_clip c;
+	static codec_decoder d;
+	static float values[SKP_MAX_DOF];
+	if (size < 2)
+		return 0;
+	memset(&c, 0, sizeof c);
+	c.tracks = (uint16_t)(1 + data[0] % 16);
+	c.segment_frames = (uint16_t)(1 + data[1] % 64);
+	c.frames = c.segment_frames;
+	size_t at = 2;
+	for (int t = 0; t < c.tracks && at + 9 <= size; t++, at += 9) {
+		c.track[t].bits = data[at] % 32;
+		memcpy(&c.track[t].base, data + at + 1, 4);
+		memcpy(&c.track[t].step, data + at + 5, 4);
+	}
+	if (codec_clip_check(&c, &err) != SKP_OK || codec_begin(&d, &c, 0, data + at, (uint32_t)(size - at), &err))
+		return 0;
+	while (codec_next(&d, values, &err) == 1)
+		for (int t = 0; t < c.tracks; t++) {
+			int32_t q = codec_last_q(&d, t);
+			if (q < 0 || (c.track[t].bits ? q >= (1 << c.track[t].bits) : q != 0) ||
+			    values[t] != codec_value(&c.track[t], q))
+				__builtin_trap();
+		}
+	return 0;
+}
+
 const fuzz_target fuzz_targets[] = {
 	{ "asf", fuzz_asf },
 	{ "amc", fuzz_amc },
@@ -269,5 +302,6 @@ const fuzz_target fuzz_targets[] = {
 	{ "joint_map", fuzz_joint_map },
 	{ "makehuman", fuzz_makehuman },
 	{ "mesh_format", fuzz_mesh_format },
+	{ "codec", fuzz_codec },
 	{ NULL, NULL },
 };

@@ -25,6 +25,7 @@ int fuzz_image(const uint8_t *data, size_t size);
 int fuzz_joint_map(const uint8_t *data, size_t size);
 int fuzz_makehuman(const uint8_t *data, size_t size);
 int fuzz_mesh_format(const uint8_t *data, size_t size);
+int fuzz_codec(const uint8_t *data, size_t size);
 
 /* Every harness, NULL-terminated. */
 extern const fuzz_target fuzz_targets[];
