@@ -21,7 +21,7 @@
 #           |
 #     mesh -> motion -> math -> base
 
-# What each module owns (README "Architecture" has the whole map):
+# What each module owns (app/README.md has the whole map):
 #   base      errors, readers, tokens, lines, CRC-32, INI, algorithm/view names
 #   math      vec3, quat, rigid, dual quaternions, mat4, fixed point
 #   motion    skeleton, ASF, streaming AMC and BVH, forward kinematics, roles, T-pose

@@ -15,7 +15,7 @@
 #                          [--keep] [--cache=DIR] [--mirror=URL] [--quiet]
 #
 # --cross=BOARD then cross-builds that board in the same root, as its README
-# section says: `make deps BOARD=rpi4`, `make BOARD=rpi4 test` (unit tests
+# (board/rpi4/README.md) says: `make deps BOARD=rpi4`, `make BOARD=rpi4 test` (unit tests
 # under qemu-user), `make BOARD=rpi4 deb` (arm64 package, lintian): on
 # trixie, the system Raspberry Pi OS trixie is built from.
 #

@@ -28,7 +28,7 @@ static const char *fix_for(const bind_args *a, const bound_body *body, unsigned 
 	int unmapped = check & (BIND_GATE_ROOT | BIND_GATE_RIGID);
 	if (body->rigged && a->weights_mesh)
 		return unmapped ? "name the joints of that part in a map file (--joint-map FILE, lines MESH_JOINT = "
-				  "SKELETON_BONE; README \"Rigged meshes\"), or leave out --weights mesh to have the "
+				  "SKELETON_BONE; app/import/README.md), or leave out --weights mesh to have the "
 				  "weights computed"
 				: "check the joints mapped onto that part (--joint-map FILE overrides them), or leave out "
 				  "--weights mesh to have the weights computed";

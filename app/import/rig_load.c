@@ -302,7 +302,7 @@ static int bind_unrigged(const bind_args *a, const char *path, bound_body *body)
 	}
 	if (a->weights_mesh) {
 		fprintf(stderr, "%s: --weights mesh: its arms and legs did not map onto the skeleton; name its joints "
-			"in a map file (--joint-map FILE, lines MESH_JOINT = SKELETON_BONE; README \"Rigged meshes\") "
+			"in a map file (--joint-map FILE, lines MESH_JOINT = SKELETON_BONE; app/import/README.md) "
 			"or leave out --weights to have skintool compute them\n", path);
 		return -1;
 	}

@@ -1,6 +1,8 @@
-/* The README's command blocks run as written: every ```sh block, in order,
- * in one shell from the repository root (its first block sets PATH to the
- * built programs and D to ../shared/data), stopping at the first failure.
+/* The documentation's command blocks run as written: every ```sh block of
+ * README.md, then of the folder docs (app/NAME/README.md, board/NAME/README.md,
+ * tests/README.md, assets/README.md, each group in name order), in one shell
+ * from the repository root (README's first block sets PATH to the built
+ * programs and D to ../shared/data), stopping at the first failure.
  * Skips without ../shared/data or without build/skintool (a cross build). */
 #include <stdarg.h>
 #include <stddef.h>
@@ -45,6 +47,26 @@ static char *sh_blocks(const char *text, int *blocks, int *lines)
 	return out;
 }
 
+/* README.md first: its first block sets what the others use. */
+static const char *const doc_globs = "README.md app/*/README.md board/*/README.md tests/README.md assets/README.md";
+
+/* Appends the ```sh blocks of one file to script; counts docs with blocks. */
+static void add_blocks(FILE *script, const char *path, int *docs, int *blocks, int *lines)
+{
+	char *text = test_read_file(path, NULL);
+	assert_non_null(text);
+	int b, l;
+	char *sh = sh_blocks(text, &b, &l);
+	free(text);
+	if (b) {
+		fprintf(script, "# %s\n%s", path, sh);
+		++*docs;
+	}
+	*blocks += b;
+	*lines += l;
+	free(sh);
+}
+
 static void test_readme_blocks_run(void **state)
 {
 	(void)state;
@@ -52,30 +74,48 @@ static void test_readme_blocks_run(void **state)
 		print_message("README blocks: need ../shared/data and build/skintool (make): skipped\n");
 		skip();
 	}
-	char *readme = test_read_file("README.md", NULL);
-	assert_non_null(readme);
-	int blocks, lines;
-	char *script = sh_blocks(readme, &blocks, &lines);
-	free(readme);
-	assert_true(blocks >= 5);
+	const char *list = test_scratch("docs.txt");
+	assert_int_equal(test_run("for f in %s; do [ -f \"$f\" ] && echo \"$f\"; done > %s", doc_globs, list), 0);
+	char *files = test_read_file(list, NULL);
+	assert_non_null(files);
 	const char *path = test_scratch("readme.sh"), *log = test_scratch("readme.log");
 	FILE *f = fopen(path, "w");
 	assert_non_null(f);
-	fputs(script, f);
+	int docs = 0, blocks = 0, lines = 0, readme_blocks = -1;
+	char *save;
+	for (char *doc = strtok_r(files, "\n", &save); doc; doc = strtok_r(NULL, "\n", &save)) {
+		add_blocks(f, doc, &docs, &blocks, &lines);
+		if (readme_blocks < 0)
+			readme_blocks = blocks;
+	}
 	fclose(f);
-	free(script);
+	free(files);
+	/* the README's five tasks, and the folder docs' examples */
+	assert_true(readme_blocks >= 6);
+	assert_true(docs >= 4);
+	/* what the blocks make, made afresh */
+	static const char *const made = "out/motion out/bvh out/walk out/glb out/kiosk out/report out/show-b.skn "
+					"out/glb_report out/mh_report out/135_06.bvh";
+	assert_int_equal(test_run("rm -rf %s", made), 0);
 	int rc = test_run("timeout 900 sh -e -x %s > %s 2>&1", path, log);
 	if (rc != 0) {
 		char *text = test_read_file(log, NULL);
 		size_t len = text ? strlen(text) : 0;
-		fail_msg("README block failed (exit %d); the end of its log:\n%s", rc,
+		fail_msg("a documentation block failed (exit %d); the end of its log:\n%s", rc,
 			 text ? text + (len > 3000 ? len - 3000 : 0) : "(none)");
 	}
-	printf("README: %d blocks, %d lines ran\n", blocks, lines);
-	/* what they say they make */
+	printf("docs: %d blocks in %d files (%d in README.md), %d lines ran\n", blocks, docs, readme_blocks, lines);
+	/* what they say they make: README.md's tasks */
+	assert_int_equal(access("out/motion/frame_000061.png", R_OK), 0);
+	assert_int_equal(access("out/bvh/frame_000031.png", R_OK), 0);
 	assert_int_equal(access("out/walk/frame_000001.png", R_OK), 0);
+	assert_int_equal(access("out/glb/frame_000031.png", R_OK), 0);
+	assert_int_equal(access("out/kiosk/frame_000046.png", R_OK), 0);
 	assert_int_equal(access("out/report/index.html", R_OK), 0);
+	assert_int_equal(access("out/show-b.skn", R_OK), 0);
+	/* app/import's, app/motion's */
 	assert_int_equal(access("out/glb_report/index.html", R_OK), 0);
+	assert_int_equal(access("out/mh_report/index.html", R_OK), 0);
 	assert_int_equal(access("out/135_06.bvh", R_OK), 0);
 }
 
