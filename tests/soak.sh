@@ -13,7 +13,7 @@
 # fixed seed, spread over the expected run time, from 20 s on: the first loop
 # of the clip plays through every damaged block.
 set -u
-out=$1; frames=$2; every=${3:-5}
+out=$1; frames=$2; every=${3:-1}
 tool=$out/skintool; play=$out/skinplay; amc=$out/assets/demo.amc
 dir=$out/soak
 mkdir -p "$dir" || exit 1
