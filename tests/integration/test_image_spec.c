@@ -1,0 +1,304 @@
+/* app/image/FORMAT.md is a specification a reader can be written from: this
+ * is such a reader, written from FORMAT.md alone (no app/image code, its own
+ * CRC-32 from the parameters the spec gives; SHA-256 from app/base), run on
+ * the default show pack makes. It checks every block's frame and CRC, the
+ * header and its copy, the directory and its copy, the parity and the
+ * digest; parses the skeleton, bind and directory to their exact ends; and
+ * decodes a clip's first frame, whose root must be where `skintool fk` puts
+ * it. A change of the format that FORMAT.md does not follow fails here. */
+#include <stdarg.h>
+#include <stddef.h>
+#include <setjmp.h>
+#include <stdint.h>
+#include <cmocka.h>
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+#include "sha256.h"
+#include "test_paths.h"
+#include "test_run.h"
+
+/* "CRC-32: reflected polynomial 0xEDB88320, initial value and final XOR
+ * 0xFFFFFFFF", bit by bit. */
+static uint32_t spec_crc(const uint8_t *p, size_t n)
+{
+	uint32_t c = 0xffffffffu;
+	while (n--) {
+		c ^= *p++;
+		for (int k = 0; k < 8; k++)
+			c = (c >> 1) ^ (0xedb88320u & (0u - (c & 1u)));
+	}
+	return ~c;
+}
+
+static uint32_t le16(const uint8_t *p)
+{
+	return (uint32_t)p[0] | (uint32_t)p[1] << 8;
+}
+
+static uint32_t le32(const uint8_t *p)
+{
+	return le16(p) | le16(p + 2) << 16;
+}
+
+static float lef(const uint8_t *p)
+{
+	uint32_t u = le32(p);
+	float f;
+	memcpy(&f, &u, 4);
+	return f;
+}
+
+typedef struct image {
+	const uint8_t *data;
+	size_t size;
+	uint32_t bs, count, dofs, verts, tris, clips, bones, d, p, dir_copy, copy;
+	uint32_t sec[4][3];     /* skeleton, bind, directory, clips: first, count, bytes */
+	uint8_t id[16];
+} image;
+
+static const uint8_t *block(const image *im, uint32_t i)
+{
+	assert_true(i < im->count);
+	return im->data + (size_t)i * im->bs;
+}
+
+/* A framed block: CRC, id, index, kind, item. */
+static const uint8_t *framed(const image *im, uint32_t i, int kind, unsigned item)
+{
+	const uint8_t *b = block(im, i);
+	assert_int_equal(spec_crc(b, im->bs - 4), le32(b + im->bs - 4));
+	assert_memory_equal(b, im->id, 16);
+	assert_int_equal(le32(b + 16), i);
+	assert_int_equal(b[20], kind);
+	assert_int_equal(b[21], 0);
+	assert_int_equal(le16(b + 22), item);
+	return b;
+}
+
+/* A section: the payloads of its blocks joined, cut to its bytes. */
+typedef struct stream {
+	uint8_t *buf;
+	uint32_t len, at;
+} stream;
+
+static void stream_open(stream *s, const image *im, uint32_t first, uint32_t n, uint32_t bytes, int kind, unsigned item)
+{
+	uint32_t payload = im->bs - 28;
+	assert_true((uint64_t)n * payload >= bytes);
+	s->buf = malloc((size_t)n * payload + 1);
+	assert_non_null(s->buf);
+	for (uint32_t i = 0; i < n; i++)
+		memcpy(s->buf + (size_t)i * payload, framed(im, first + i, kind, item) + 24, payload);
+	s->len = bytes;
+	s->at = 0;
+}
+
+static const uint8_t *take(stream *s, uint32_t n)
+{
+	assert_true(s->at + n <= s->len);
+	s->at += n;
+	return s->buf + s->at - n;
+}
+
+static void skip_str(stream *s)
+{
+	take(s, *take(s, 1));
+}
+
+static void read_header(image *im)
+{
+	assert_true(im->size >= 512);
+	const uint8_t *h = im->data + 24;
+	assert_memory_equal(h, "SKPIMAGE", 8);
+	assert_int_equal(le16(h + 8), 4);
+	assert_int_equal(le16(h + 10), 168);
+	assert_int_equal(spec_crc(h, 164), le32(h + 164));
+	im->bs = le32(h + 12);
+	im->count = le32(h + 16);
+	memcpy(im->id, h + 28, 16);
+	im->bones = le32(h + 44);
+	im->dofs = le32(h + 48);
+	im->verts = le32(h + 52);
+	im->tris = le32(h + 56);
+	assert_int_equal(le32(h + 60), 4);
+	im->clips = le32(h + 64);
+	for (int i = 0; i < 4; i++)
+		for (int k = 0; k < 3; k++)
+			im->sec[i][k] = le32(h + 68 + 12 * i + 4 * k);
+	im->d = le32(h + 116);
+	im->p = le32(h + 120);
+	im->dir_copy = le32(h + 124);
+	im->copy = le32(h + 128);
+	assert_true(im->bs >= 512 && im->bs % 16 == 0);
+	assert_int_equal((uint64_t)im->count * im->bs, im->size);
+	assert_int_equal(im->d + im->p + im->sec[2][1] + 1, im->count);
+	assert_int_equal(im->dir_copy, im->d + im->p);
+	assert_int_equal(im->copy, im->count - 1);
+	assert_int_equal(im->sec[3][2], 0);
+	framed(im, 0, 1, 0);
+	/* the copy: the header at bytes B-172..B-5 of the last block */
+	assert_memory_equal(framed(im, im->copy, 1, 1) + im->bs - 172, h, 168);
+}
+
+static void check_parity_and_digest(const image *im)
+{
+	uint8_t *acc = malloc(im->bs);
+	assert_non_null(acc);
+	for (uint32_t g = 0; g < im->p; g++) {
+		memset(acc, 0, im->bs);
+		for (uint32_t b = g; b < im->d; b += im->p)
+			for (uint32_t k = 0; k < im->bs; k++)
+				acc[k] ^= block(im, b)[k];
+		assert_memory_equal(acc, block(im, im->d + g), im->bs);
+	}
+	free(acc);
+	sha256_ctx ctx;
+	uint8_t digest[32];
+	sha256_init(&ctx);
+	for (uint32_t b = 1; b < im->d; b++)
+		sha256_update(&ctx, block(im, b), im->bs);
+	sha256_final(&ctx, digest);
+	assert_memory_equal(digest, im->data + 24 + 132, 32);
+	for (uint32_t i = 0; i < im->sec[2][1]; i++)
+		assert_memory_equal(framed(im, im->sec[2][0] + i, 4, 0) + 24, framed(im, im->dir_copy + i, 4, 1) + 24,
+				    im->bs - 28);
+}
+
+static void read_skeleton(const image *im)
+{
+	stream s;
+	stream_open(&s, im, im->sec[0][0], im->sec[0][1], im->sec[0][2], 2, 0);
+	skip_str(&s);
+	skip_str(&s);
+	take(&s, 4 + 4 + 1 + 12);
+	uint32_t n = le16(take(&s, 2)), dofs = le16(take(&s, 2)), sum = 0;
+	assert_int_equal(n, im->bones);
+	assert_int_equal(dofs, im->dofs);
+	assert_int_equal(take(&s, n)[0], 0); /* eval_order: the root first */
+	for (uint32_t i = 0; i < n; i++) {
+		skip_str(&s);
+		take(&s, 4);
+		int16_t parent = (int16_t)le16(take(&s, 2));
+		assert_true(i == 0 ? parent == -1 : parent >= 0 && (uint32_t)parent < n);
+		take(&s, 12 + 4 + 12 + 3);
+		uint32_t channels = *take(&s, 1);
+		assert_true(channels <= 7);
+		take(&s, channels + 1 + 8 * channels);
+		assert_int_equal(le16(take(&s, 2)), sum);
+		sum += channels;
+		take(&s, 16 + 12);
+	}
+	assert_int_equal(sum, dofs);
+	assert_int_equal(s.at, s.len);
+	free(s.buf);
+}
+
+static void read_bind(const image *im)
+{
+	stream s;
+	stream_open(&s, im, im->sec[1][0], im->sec[1][1], im->sec[1][2], 3, 0);
+	uint32_t v = le32(take(&s, 4)), t = le32(take(&s, 4)), posed = *take(&s, 1);
+	assert_int_equal(v, im->verts);
+	assert_int_equal(t, im->tris);
+	assert_true(posed <= 1);
+	take(&s, 4 + (posed ? 4 * im->dofs : 0) + 24 + 6 * v + 4 * v);
+	for (uint32_t i = 0; i < 3 * t; i++)
+		assert_true(le32(take(&s, 4)) < v);
+	for (uint32_t i = 0; i < v; i++) {
+		const uint8_t *r = take(&s, 13);
+		uint32_t sum = 0;
+		assert_true(r[0] >= 1 && r[0] <= 4);
+		for (int k = 0; k < r[0]; k++) {
+			assert_true(r[1 + k] < im->bones);
+			sum += le16(r + 5 + 2 * k);
+		}
+		assert_int_equal(sum, 65535);
+	}
+	assert_int_equal(s.at, s.len);
+	free(s.buf);
+}
+
+/* The directory; the first clip's first frame decoded into root[3]. */
+static void read_clips(const image *im, float root[3])
+{
+	stream s;
+	stream_open(&s, im, im->sec[2][0], im->sec[2][1], im->sec[2][2], 4, 0);
+	uint32_t n = le16(take(&s, 2));
+	assert_int_equal(n, im->clips);
+	for (uint32_t c = 0; c < n; c++) {
+		skip_str(&s);
+		const uint8_t *e = take(&s, 4 + 4 + 4 + 2 + 2 + 16 + 8);
+		uint32_t frames = le32(e + 4), dofs = le16(e + 12), fpb = le16(e + 14);
+		uint32_t qf = le32(e + 16), qn = le32(e + 20), ff = le32(e + 24), fn = le32(e + 28);
+		assert_true(lef(e) > 0.0f);
+		assert_int_equal(dofs, im->dofs);
+		assert_int_equal(fpb, (im->bs - 30) / (2 * dofs));
+		assert_int_equal(fn, (frames + fpb - 1) / fpb);
+		for (uint32_t b = 0; b < fn; b++) {
+			uint32_t holds = frames - b * fpb < fpb ? frames - b * fpb : fpb;
+			assert_int_equal(le16(framed(im, ff + b, 6, c) + 24), holds);
+		}
+		stream q;
+		stream_open(&q, im, qf, qn, 8 * dofs, 5, c);
+		if (c == 0)
+			for (int k = 0; k < 3; k++) {
+				const uint8_t *mq = take(&q, 8);
+				root[k] = lef(mq) + (float)le16(block(im, ff) + 26 + 2 * k) * lef(mq + 4);
+			}
+		free(q.buf);
+	}
+	assert_int_equal(s.at, s.len);
+	free(s.buf);
+}
+
+static void test_a_reader_from_the_spec(void **state)
+{
+	(void)state;
+	const char *skn = test_tool_path("assets/demo.skn");
+	if (access(skn, R_OK) != 0 || access(test_tool_path("skintool"), X_OK) != 0) {
+		print_message("%s: not built here (a cross build): skipped\n", skn);
+		skip();
+	}
+	image im = { 0 };
+	uint8_t check[9];
+	memcpy(check, "123456789", 9);
+	assert_int_equal(spec_crc(check, 9), 0xcbf43926u);
+	im.data = (const uint8_t *)test_read_file(skn, &im.size);
+	assert_non_null(im.data);
+	read_header(&im);
+	check_parity_and_digest(&im);
+	read_skeleton(&im);
+	read_bind(&im);
+	float root[3];
+	read_clips(&im, root);
+	/* the default show's first clip is 02_01 (assets/README.md) */
+	const char *out = test_scratch("fk.csv");
+	assert_int_equal(test_run("%s fk assets/cmu/02.asf assets/cmu/02_01.amc --frame=1 > %s", test_tool_path("skintool"), out),
+			 0);
+	char *csv = test_read_file(out, NULL);
+	assert_non_null(csv);
+	float x, y, z;
+	const char *row = strstr(csv, "\n1,root,");
+	assert_non_null(row);
+	assert_int_equal(sscanf(row, "\n1,root,%f,%f,%f", &x, &y, &z), 3);
+	free(csv);
+	print_message("%s: %u blocks of %u, %u data, %u parity, %u clips; root of 02_01's first frame %.4f %.4f %.4f, "
+		      "fk %.4f %.4f %.4f\n", skn, im.count, im.bs, im.d, im.p, im.clips, (double)root[0], (double)root[1],
+		      (double)root[2], (double)x, (double)y, (double)z);
+	/* quantised within half a step of 65535 over the clip's range */
+	assert_true(fabsf(root[0] - x) < 1e-3f && fabsf(root[1] - y) < 1e-3f && fabsf(root[2] - z) < 1e-3f);
+	free((void *)im.data);
+}
+
+int main(void)
+{
+	const struct CMUnitTest tests[] = {
+		cmocka_unit_test(test_a_reader_from_the_spec),
+	};
+	return cmocka_run_group_tests(tests, test_scratch_setup, test_scratch_teardown);
+}
