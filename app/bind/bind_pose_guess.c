@@ -4,11 +4,13 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "bind_pose_ends.h"
 #include "skel_roles.h"
 #include "skel_tpose.h"
 
 #define GUESS_OUT          0.35f  /* arm vertices: this far out past the shoulder, of the arm's length */
 #define GUESS_MIN_VERTS    50
+#define GUESS_RING_ROUNDS  3      /* a ring centred on the bone's axis is pulled to the limb's: repeat */
 #define GUESS_MIN_TURN_DEG 8.0f   /* smaller differences are left as the skeleton has them */
 #define DEG                0.017453292519943295f
 
@@ -124,10 +126,7 @@ static int mesh_lower_dir(const guess_ctx *c, int leg, int u, int l, vec3 *dir)
 		sum = vec3_add(sum, d);
 		n++;
 	}
-	if (n < GUESS_MIN_VERTS || !(vec3_length(sum) > 0.0f))
-		return 0;
-	*dir = vec3_normalize(sum);
-	return 1;
+	return bind_guess_mean_dir(sum, n, GUESS_MIN_VERTS, dir);
 }
 
 static void turn_upper(guess_ctx *c, int leg, int u, float *values, bind_guess_arm *out)
@@ -168,10 +167,19 @@ static void guess_limb(guess_ctx *c, int start, float *values, bind_guess_arm *o
 		return;
 	vec3 now = vec3_normalize(vec3_sub(w->pose.tip[l], w->pose.head[l]));
 	float turn = acosf(fmaxf(-1.0f, fminf(1.0f, vec3_dot(now, dir)))) / DEG;
-	if (turn < GUESS_MIN_TURN_DEG)
-		return;
-	skel_aim(c->s, l, dir, values, &w->pose);
-	out->lower_turn_deg = turn;
+	if (turn >= GUESS_MIN_TURN_DEG) {
+		skel_aim(c->s, l, dir, values, &w->pose);
+		out->lower_turn_deg = turn;
+	}
+	/* the silhouette gives elevations; the limb's cross-sections at the
+	 * knee and ankle (elbow and wrist) say where its middle is */
+	for (int k = 0; k < GUESS_RING_ROUNDS; k++) {
+		out->ends += bind_guess_ring(c->s, c->m, u, values, &w->pose);
+		out->ends += bind_guess_ring(c->s, c->m, l, values, &w->pose);
+	}
+	for (int k = 1; k < c->s->count; k++)
+		if (c->s->bone[k].parent == l)
+			out->ends += bind_guess_ends(c->s, &c->roles, c->m, k, values, &w->pose);
 }
 
 void bind_guess_pose(const skel *s, const mesh *m, float *values, bind_guess_work *w,
@@ -195,6 +203,6 @@ void bind_guess_pose(const skel *s, const mesh *m, float *values, bind_guess_wor
 			continue;
 		bind_guess_arm *a = &out->arm[out->arm_count++];
 		guess_limb(&c, b, values, a);
-		out->turned += a->to_deg != a->from_deg || a->lower_turn_deg != 0.0f;
+		out->turned += a->to_deg != a->from_deg || a->lower_turn_deg != 0.0f || a->ends;
 	}
 }

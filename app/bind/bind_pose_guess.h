@@ -21,6 +21,7 @@ typedef struct bind_guess_arm {
 	float from_deg, to_deg; /* its elevation before and after (+ above the horizontal) */
 	int lower;              /* the bone after it (forearm, shin), or -1 */
 	float lower_turn_deg;   /* how far that was turned, 0: not */
+	int ends;               /* bones below it turned (bind_pose_ends.h: hand, thumb, foot, toes) */
 } bind_guess_arm;
 
 typedef struct bind_guess_result {

@@ -47,6 +47,7 @@ static int auto_fit(const char *obj, bound_body *body)
 
 static void say_guess(const char *obj, const bound_body *body, const bind_guess_result *g)
 {
+	int ends = 0;
 	fprintf(cli_note(), "%s: bound in the mesh's own pose:", obj);
 	for (int i = 0, n = 0; i < g->arm_count; i++) {
 		const bind_guess_arm *a = &g->arm[i];
@@ -56,7 +57,11 @@ static void say_guess(const char *obj, const bound_body *body, const bind_guess_
 		if (a->lower_turn_deg != 0.0f)
 			fprintf(cli_note(), "%s '%s' turned %.0f degrees", n++ ? "," : "",
 				body->skel.bone[a->lower].name, (double)a->lower_turn_deg);
+		ends += a->ends;
 	}
+	if (ends)
+		fprintf(cli_note(), "; %d turns of limbs, hands, thumbs, feet and toes to the mesh's cross-sections and "
+			"ends", ends);
 	fprintf(cli_note(), " (--bind-pose P.amc[:F] or --bind-pose rest chooses)\n");
 }
 
@@ -115,7 +120,9 @@ int cli_place_mesh(const bind_args *a, const char *obj, bound_body *body)
 		set_pose(body, values);
 		return 0;
 	}
-	memcpy(values, body->pose_value, sizeof values);
+	static float start[SKP_MAX_DOF];
+	memcpy(start, body->pose_value, sizeof start);
+	memcpy(values, start, sizeof values);
 	bind_guess_pose(&body->skel, &body->mesh, values, w, &body->guess);
 	if (body->guess.turned) {
 		set_pose(body, values);

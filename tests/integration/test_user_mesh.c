@@ -93,10 +93,10 @@ static char *run_bind(const char *extra, const char *csv)
 }
 
 /* The tolerance: over the torso, head and limbs (the vertices the
- * hand-flagged run gives to a bone that is not a hand's or a foot's: the
- * hand-made pose also turns thumbs and toes, which no guess from the
- * silhouette can), at least 90% keep their dominant bone and the mean
- * weight change (half the L1 distance) stays within 0.10. */
+ * hand-flagged run gives to a bone that is not a hand's or a foot's), at
+ * least 90% keep their dominant bone and the mean weight change (half the
+ * L1 distance) stays within 0.10; over every vertex, 82% (issue 33 asks
+ * 90%: app/bind/README.md says what is missing). */
 static void test_makehuman_without_flags(void **state)
 {
 	(void)state;
@@ -117,10 +117,11 @@ static void test_makehuman_without_flags(void **state)
 	free(run_bind("--group body --fit --bind-pose tests/data/makehuman_apose.amc", test_scratch("hand.csv")));
 	load_dense(test_scratch("auto.csv"), &auto_w);
 	load_dense(test_scratch("hand.csv"), &hand_w);
-	long n = 0, same = 0;
+	long n = 0, same = 0, all_same = 0;
 	double change = 0;
 	for (long v = 0; v < MH_VERTS; v++) {
 		const char *dom = hand_w.bone[dominant(&hand_w, v)];
+		all_same += !strcmp(auto_w.bone[dominant(&auto_w, v)], dom);
 		if (is_extremity(dom))
 			continue;
 		n++;
@@ -136,6 +137,10 @@ static void test_makehuman_without_flags(void **state)
 	print_message("MakeHuman without flags against the hand-flagged run: %ld body vertices, %.1f%% keep "
 		      "their dominant bone, mean weight change %.3f\n", n, 100.0 * (double)same / (double)n,
 		      change / (double)n);
+	/* every vertex, hands and feet included (bind_pose_ends.h): 65.6% before
+	 * the guess turned hands, thumbs, feet and toes, 83.1% after */
+	print_message("and of all %d vertices %.1f%%\n", MH_VERTS, 100.0 * (double)all_same / MH_VERTS);
+	assert_true((double)all_same >= 0.82 * MH_VERTS);
 	assert_true(n > 7000);
 	assert_true((double)same >= 0.90 * (double)n);
 	assert_true(change / (double)n <= 0.10);
