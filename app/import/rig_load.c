@@ -276,6 +276,17 @@ static void pose_skeleton(const bind_args *a, const char *path, bound_body *body
 			scene.joint[res.worst_joint].name);
 }
 
+/* Parts with no skin and no joint above them in the file's node tree
+ * cannot follow a limb: named, so that a prop meant for a hand is not
+ * left behind unnoticed. */
+static void say_loose_parts(const char *path)
+{
+	for (int p = 0; p < scene.part_count; p++)
+		if (scene.part_used[p] && !scene.part_skinned[p] && scene.part_joint[p] < 0)
+			fprintf(stderr, "%s: warning: mesh '%s' has no skin and no joint above it: it moves with the "
+				"root (parent it to a joint in the file, or --group leaves it out)\n", path, scene.part[p]);
+}
+
 static int mesh_weights(const bind_args *a, const char *path, bound_body *body)
 {
 	rig_weights_info info;
@@ -289,6 +300,7 @@ static int mesh_weights(const bind_args *a, const char *path, bound_body *body)
 	if (info.unweighted)
 		fprintf(cli_note(), ", %d vertices without weights given to the root", info.unweighted);
 	fprintf(cli_note(), "\n");
+	say_loose_parts(path);
 	return 0;
 }
 
