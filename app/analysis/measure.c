@@ -19,7 +19,17 @@ int measure_init(measure_state *t, const mesh *m, const skel_pose *bind, int bon
 	vec3 ext = vec3_sub(hi, lo);
 	float size = ext.x > ext.y ? ext.x : ext.y;
 	t->min_rest = 1e-4f * (size > ext.z ? size : ext.z);
-	t->rest_volume = metrics_mesh_volume(t->bind_xyz, (const uint32_t (*)[3])m->tri, m->tri_count);
+	if (parts_for_volume(m, t->vol_tri, &t->parts) < 0) {
+		fprintf(stderr, "%s: out of memory finding the mesh's parts\n", what);
+		return -1;
+	}
+	t->volume_closed = t->parts.counted_tris > 0;
+	t->vol_tri_count = t->parts.counted_tris;
+	if (!t->volume_closed) {
+		memcpy(t->vol_tri, m->tri, sizeof t->vol_tri[0] * (size_t)m->tri_count);
+		t->vol_tri_count = m->tri_count;
+	}
+	t->rest_volume = metrics_mesh_volume(t->bind_xyz, (const uint32_t (*)[3])t->vol_tri, t->vol_tri_count);
 	measure_pose(t, bind);
 	metrics_distances(&t->seg, t->bind_xyz, m->vert_count, t->rest_dist);
 	if (t->rest_volume == 0.0) {
@@ -76,8 +86,7 @@ static void nearest2(const metrics_segments *g, const float *xyz, int n, float *
 
 double measure_volume(const measure_state *t, const float *xyz)
 {
-	const mesh *m = t->mesh;
-	return metrics_mesh_volume(xyz, (const uint32_t (*)[3])m->tri, m->tri_count) / t->rest_volume;
+	return metrics_mesh_volume(xyz, (const uint32_t (*)[3])t->vol_tri, t->vol_tri_count) / t->rest_volume;
 }
 
 /* metrics_radius_ratio's loop, keeping each ratio and the worst vertex. */

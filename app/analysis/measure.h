@@ -1,7 +1,9 @@
 /* The artifact measures of a skinned pose against the mesh as bound, shared
  * by skintool metrics and skintool compare so that both print the same
  * numbers for the same inputs (metrics.h has the measures):
- *   volume_ratio   enclosed volume / the volume as bound
+ *   volume_ratio   enclosed volume / the volume as bound, of the mesh's
+ *                  outer closed parts (parts.h: not the joint balls,
+ *                  eyes or teeth inside them)
  *   radius ratios  a vertex's distance to the nearest posed bone segment
  *                  over the same distance in the bind pose, for vertices
  *                  farther than 1e-4 of the mesh's size from the bones. */
@@ -10,6 +12,7 @@
 
 #include "mesh.h"
 #include "metrics.h"
+#include "parts.h"
 
 /* About 1 MB: keep it static. */
 typedef struct measure_state {
@@ -20,6 +23,12 @@ typedef struct measure_state {
 	float rest_dist[SKP_MAX_VERTS];
 	metrics_segments seg;              /* the current pose's bones */
 	float bind_xyz[3 * SKP_MAX_VERTS];
+	/* the volume is that of the outer closed parts (parts.h); with none,
+	 * of every triangle, and volume_closed is 0: the figure means nothing */
+	parts_summary parts;
+	int volume_closed;
+	int vol_tri_count;
+	uint32_t vol_tri[SKP_MAX_TRIS][3];
 } measure_state;
 
 typedef struct measure_row {

@@ -295,6 +295,8 @@ int compare_load_clip(compare_run *c, const compare_args *a)
 		     c->body.balanced ? "automatic, volume-balanced" : "automatic (the paper's rule alone)";
 	r->vert_count = c->body.mesh.vert_count;
 	r->tri_count = c->body.mesh.tri_count;
+	r->parts = c->meas.parts;
+	r->volume_closed = c->meas.volume_closed;
 	report_classify(&c->body.skel, &c->body.pose, c->meas.bind_xyz, r->vert_count, c->joint, c->region);
 	compare_region_volume_init(c);
 	r->measured = 0;

@@ -694,6 +694,89 @@ static void expect_fail(const char *args, const char *message)
 	free(text);
 }
 
+/* The volume on a body with parts: a box inside the body is left out of
+ * the volume (the volume column is the plain body's to the digit, the page
+ * says what was measured), and a body whose parts each have a hole (the
+ * generated arm's two tubes, every 400th face taken out) has no volume: both
+ * volume verdicts say "not measured" instead of yes or no. */
+static void write_variant(const char *body_obj, const char *out, int inner_box, int drop_faces)
+{
+	char *text = slurp(body_obj);
+	FILE *f = fopen(out, "w");
+	assert_non_null(f);
+	fputs("g body\n", f);
+	int verts = 0, faces = 0;
+	for (char *line = text; *line;) {
+		char *end = strchr(line, '\n');
+		size_t n = end ? (size_t)(end - line + 1) : strlen(line);
+		verts += line[0] == 'v' && line[1] == ' ';
+		faces += line[0] == 'f' && line[1] == ' ';
+		if (!(drop_faces && line[0] == 'f' && faces % 400 == 1) && line[0] != 'g' && line[0] != 'o')
+			fwrite(line, 1, n, f);
+		line += n;
+	}
+	if (inner_box) {
+		/* a closed box, faces outward, inside the forearm */
+		static const float c[8][3] = { { 2.7f, -0.05f, -0.05f }, { 2.8f, -0.05f, -0.05f }, { 2.8f, 0.05f, -0.05f },
+					       { 2.7f, 0.05f, -0.05f }, { 2.7f, -0.05f, 0.05f }, { 2.8f, -0.05f, 0.05f },
+					       { 2.8f, 0.05f, 0.05f }, { 2.7f, 0.05f, 0.05f } };
+		static const int q[6][4] = { { 0, 3, 2, 1 }, { 4, 5, 6, 7 }, { 0, 1, 5, 4 },
+					     { 2, 3, 7, 6 }, { 1, 2, 6, 5 }, { 0, 4, 7, 3 } };
+		for (int k = 0; k < 8; k++)
+			fprintf(f, "v %g %g %g\n", (double)c[k][0], (double)c[k][1], (double)c[k][2]);
+		for (int k = 0; k < 6; k++)
+			fprintf(f, "f %d %d %d %d\n", verts + 1 + q[k][0], verts + 1 + q[k][1], verts + 1 + q[k][2],
+				verts + 1 + q[k][3]);
+	}
+	fclose(f);
+	free(text);
+}
+
+static char *compare_page(const char *obj, const char *name, char **csv)
+{
+	char cmd[4096], dir[1100], path[1200];
+	snprintf(dir, sizeof dir, "%s/%s", workdir, name);
+	snprintf(cmd, sizeof cmd, "%s compare tests/data/tiny.asf tests/data/tiny.amc --mesh %s --balance off "
+		 "--group body --renders 0 -o %s 2>/dev/null", test_tool_path("skintool"), obj, dir);
+	assert_int_equal(sh(cmd, NULL), 0);
+	snprintf(path, sizeof path, "%s/metrics.csv", dir);
+	*csv = slurp(path);
+	first_five_columns(*csv);
+	snprintf(path, sizeof path, "%s/index.html", dir);
+	return slurp(path);
+}
+
+static void test_parts_and_holes(void **state)
+{
+	(void)state;
+	char cmd[4096], made[1100], body[1100], inner[1100], open[1100];
+	snprintf(made, sizeof made, "%s/tiny_made.obj", workdir);
+	snprintf(body, sizeof body, "%s/tiny_body.obj", workdir);
+	snprintf(inner, sizeof inner, "%s/tiny_inner.obj", workdir);
+	snprintf(open, sizeof open, "%s/tiny_open.obj", workdir);
+	snprintf(cmd, sizeof cmd, "%s mannequin tests/data/tiny.asf -o %s", test_tool_path("skintool"), made);
+	assert_int_equal(sh(cmd, NULL), 0);
+	write_variant(made, body, 0, 0);
+	write_variant(made, inner, 1, 0);
+	write_variant(made, open, 0, 1);
+	char *plain_csv, *inner_csv, *open_csv;
+	char *plain = compare_page(body, "plain", &plain_csv), *with_box = compare_page(inner, "inner", &inner_csv);
+	char *holed = compare_page(open, "open", &open_csv);
+	assert_null(strstr(plain, "id=\"volume-parts\""));
+	/* the generated arm is two closed parts: a ball at the shoulder, the forearm */
+	if (!strstr(with_box, "Measured on the mesh's 2 outer closed parts of 3; 1 inside them (joint balls, eyes, "
+			      "teeth) left out."))
+		fail_msg("the page does not say what its volume was measured on");
+	assert_string_equal(plain_csv, inner_csv);
+	const char *v = element(holed, "verdict-dqbs-volume");
+	static const char unmeasured[] = "<b>not measured</b> &mdash; no part of the mesh is closed (";
+	assert_true(strncmp(strstr(v, "<b>"), unmeasured, strlen(unmeasured)) == 0);
+	v = element(holed, "verdict-lbs-loss");
+	assert_true(strncmp(strstr(v, "<b>"), "<b>not measured</b>", strlen("<b>not measured</b>")) == 0);
+	free(plain), free(with_box), free(holed);
+	free(plain_csv), free(inner_csv), free(open_csv);
+}
+
 static void test_bad_arguments(void **state)
 {
 	(void)state;
@@ -739,6 +822,7 @@ int main(void)
 		cmocka_unit_test(test_renders),
 		cmocka_unit_test(test_joint_truths),
 		cmocka_unit_test(test_page_in_chromium),
+		cmocka_unit_test(test_parts_and_holes),
 		cmocka_unit_test(test_bad_arguments),
 	};
 	return cmocka_run_group_tests_name("compare_report", tests, setup, teardown);

@@ -136,6 +136,10 @@ typedef struct report {
 	 * through itself, which the signed volume counts twice, over the bound
 	 * volume (overlap.h); NAN when not measured */
 	double dqbs_overlap;
+	/* the parts the volume is measured on (measure.h, parts.h); volume_closed
+	 * 0: none is closed, the volume figures mean nothing */
+	parts_summary parts;
+	int volume_closed;
 	/* LBS at its worst volume loss, DQBS at its largest deviation */
 	report_joints vol_joints[2];
 	report_scene scene[2 * REPORT_ANGLES];

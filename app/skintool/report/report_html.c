@@ -167,9 +167,53 @@ static void region_volume_table(FILE *f, const report *r)
 	      "region shows no figure.</p>\n", f);
 }
 
+static void collapse_verdict(FILE *f, const report *r)
+{
+	if (r->rel_min.frame < 0)
+		return;
+	fprintf(f, "<p class=\"verdict\" id=\"verdict-collapse\">Where LBS collapses most compared "
+		"with DQBS: at frame %ld a vertex keeps <b>%.3f less</b> of its radius with LBS, ",
+		r->rel_min.frame, -r->rel_min.value);
+	put_where(f, r, &r->rel_min);
+	fputs(".</p>\n", f);
+}
+
+/* What the volume was measured on, when not the whole mesh. */
+static void volume_basis(FILE *f, const report *r)
+{
+	const parts_summary *p = &r->parts;
+	if (p->counted == p->parts)
+		return;
+	fprintf(f, " <span id=\"volume-parts\">Measured on the mesh's %d outer closed part%s of %d", p->counted,
+		p->counted == 1 ? "" : "s", p->parts);
+	if (p->inner)
+		fprintf(f, "; %d inside %s (joint balls, eyes, teeth) left out", p->inner,
+			p->counted == 1 ? "it" : "them");
+	if (p->open)
+		fprintf(f, "; %d open (%d edges meeting one triangle) left out", p->open, p->open_edges);
+	fputs(".</span>", f);
+}
+
+/* A mesh with no closed part encloses no volume: both volume verdicts say
+ * so instead of a yes or no. */
+static void verdicts_unmeasured(FILE *f, const report *r)
+{
+	fprintf(f, "<p class=\"verdict na\" id=\"verdict-dqbs-volume\">DQBS keeps the volume within 1%% on every "
+		"frame: <b>not measured</b> &mdash; no part of the mesh is closed (%d edges meet one triangle only), "
+		"so it encloses no volume to keep; the radius ratios below still hold.</p>\n", r->parts.open_edges);
+	fputs("<p class=\"verdict na\" id=\"verdict-lbs-loss\">LBS's worst frame loses more volume than DQBS's: "
+	      "<b>not measured</b> &mdash; the mesh encloses no volume.</p>\n", f);
+}
+
 static void verdicts(FILE *f, const report *r)
 {
 	const report_algo *l = &r->algo[SKIN_LBS], *d = &r->algo[SKIN_DQBS];
+	if (!r->volume_closed) {
+		verdicts_unmeasured(f, r);
+		joint_verdicts(f, r);
+		collapse_verdict(f, r);
+		return;
+	}
 	int within = d->vol_dev <= 0.01;
 	int loses_more = loss_pct(l) > loss_pct(d);
 	double dq_dev_signed = 0;
@@ -184,27 +228,31 @@ static void verdicts(FILE *f, const report *r)
 		fprintf(f, "; the largest share, %+.2f%%, from the bend of <code>%s</code> (<a href=\"#joints\">"
 			"where the volume goes</a>)", 100.0 * r->vol_joints[SKIN_DQBS].joint[0].share,
 			r->skel->bone[r->vol_joints[SKIN_DQBS].joint[0].bone].name);
-	if (r->dqbs_overlap >= 0.0005)
+	if (r->dqbs_overlap >= 0.0005 && r->parts.parts == 1)
 		fprintf(f, ". In that pose the skin also passes through itself: "
 			"<span id=\"dqbs-overlap\">%.2f%%</span> of the bound volume lies inside two parts at "
 			"once, which the signed volume counts twice, as the flesh of both; the space the body "
 			"takes up is %+.2f%%", 100.0 * r->dqbs_overlap, dq_dev_signed - 100.0 * r->dqbs_overlap);
-	fputs(".</p>\n", f);
-	fprintf(f, "<p class=\"verdict %s\" id=\"verdict-lbs-loss\">LBS's worst frame loses more volume "
-		"than DQBS's: <b>%s</b> &mdash; LBS loses up to %.2f%% (frame %ld), DQBS at most %.2f%%",
-		loses_more ? "yes" : "no", loses_more ? "yes" : "no", loss_pct(l), l->vol_min.frame,
-		loss_pct(d));
-	if (d->vol_min.value < 1.0)
-		fprintf(f, " (frame %ld)", d->vol_min.frame);
-	fputs(".</p>\n", f);
-	joint_verdicts(f, r);
-	if (r->rel_min.frame >= 0) {
-		fprintf(f, "<p class=\"verdict\" id=\"verdict-collapse\">Where LBS collapses most compared "
-			"with DQBS: at frame %ld a vertex keeps <b>%.3f less</b> of its radius with LBS, ",
-			r->rel_min.frame, -r->rel_min.value);
-		put_where(f, r, &r->rel_min);
+	fputs(".", f);
+	volume_basis(f, r);
+	fputs("</p>\n", f);
+	if (loss_pct(l) < 0.005 && loss_pct(d) < 0.005)
+		fprintf(f, "<p class=\"verdict na\" id=\"verdict-lbs-loss\">LBS's worst frame loses more volume "
+			"than DQBS's: <b>neither loses volume</b> &mdash; on no frame does either keep less than the "
+			"bound volume (LBS's smallest %+.2f%%, frame %ld; DQBS's %+.2f%%, frame %ld).</p>\n",
+			100.0 * (l->vol_min.value - 1.0), l->vol_min.frame, 100.0 * (d->vol_min.value - 1.0),
+			d->vol_min.frame);
+	else {
+		fprintf(f, "<p class=\"verdict %s\" id=\"verdict-lbs-loss\">LBS's worst frame loses more volume "
+			"than DQBS's: <b>%s</b> &mdash; LBS loses up to %.2f%% (frame %ld), DQBS at most %.2f%%",
+			loses_more ? "yes" : "no", loses_more ? "yes" : "no", loss_pct(l), l->vol_min.frame,
+			loss_pct(d));
+		if (d->vol_min.value < 1.0)
+			fprintf(f, " (frame %ld)", d->vol_min.frame);
 		fputs(".</p>\n", f);
 	}
+	joint_verdicts(f, r);
+	collapse_verdict(f, r);
 }
 
 /* The smallest region minimum, or NULL when no region was measured. */
