@@ -2,6 +2,12 @@
 
 #include <math.h>
 
+float codec_value(const codec_track *t, int32_t q)
+{
+	float scaled = (float)q * t->step;
+	return t->base + scaled;
+}
+
 /* Up to 57 bits from the cursor, bytes past the end read as 0 (the caller
  * checks the cursor against the end after consuming). */
 static uint64_t window(const codec_decoder *d)

@@ -69,13 +69,11 @@ static inline uint32_t codec_segments(const codec_clip *c)
 	return c->segment_frames ? (c->frames + c->segment_frames - 1u) / c->segment_frames : 0;
 }
 
-/* A track's value for q. Two roundings, product then sum (the build keeps
- * them apart: ISO C mode contracts no multiply-add), so every board gets
- * the same bits. */
-static inline float codec_value(const codec_track *t, int32_t q)
-{
-	float scaled = (float)q * t->step;
-	return t->base + scaled;
-}
+/* A track's value for q: base + q * step with two roundings, product then
+ * sum, so that every board and every caller gets the same bits. Defined
+ * in codec_decode.c, a core file built in ISO C mode (no multiply-add
+ * contracted): inline here, the encoder and tests (GNU C mode) got a fused
+ * multiply-add on aarch64, one rounding, other values than the player's. */
+float codec_value(const codec_track *t, int32_t q);
 
 #endif
