@@ -174,7 +174,7 @@ static void test_quiet_everywhere(void **state)
 			}
 		}
 	}
-	if (getenv("SKP_TEST_EMULATED")) {
+	if (test_emulator()) {
 		print_message("skinplay -q: no GPU under the emulator: skipped\n");
 		return;
 	}

@@ -34,6 +34,12 @@ const char *test_tool_path(const char *tool)
 	return out;
 }
 
+const char *test_emulator(void)
+{
+	const char *e = getenv("SKP_TEST_EMULATED");
+	return e && *e ? e : NULL;
+}
+
 char *test_read_file(const char *path, size_t *size)
 {
 	FILE *f = fopen(path, "rb");

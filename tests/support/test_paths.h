@@ -11,6 +11,10 @@ const char *test_data_path(const char *rel);
 /* "<SKP_BUILD or build>/<tool>" in one of 8 rotating static buffers. */
 const char *test_tool_path(const char *tool);
 
+/* The emulator tests/cross_run.sh runs the tests under (SKP_TEST_EMULATED),
+ * or NULL natively. */
+const char *test_emulator(void);
+
 /* 1 when the file at path holds text (0 also when it cannot be read). */
 int test_file_contains(const char *path, const char *text);
 

@@ -104,8 +104,8 @@ static int threads_start(void)
 
 void test_skip_threads_if_emulated(void)
 {
-	const char *emulator = getenv("SKP_TEST_EMULATED");
-	if (emulator && *emulator && !threads_start()) {
+	const char *emulator = test_emulator();
+	if (emulator && !threads_start()) {
 		print_message("skipped: a thread did not start within 5 s under %s\n", emulator);
 		skip();
 	}

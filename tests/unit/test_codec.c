@@ -118,7 +118,7 @@ static void test_every_shared_clip(void **state)
 #ifdef __SANITIZE_ADDRESS__
 	const int slow = 1;
 #else
-	const int slow = getenv("SKP_TEST_EMULATED") != NULL;
+	const int slow = test_emulator() != NULL;
 #endif
 	for (int i = 0; i < test_clip_count; i++) {
 		/* under the sanitizers or an emulator (10x slower and more) the

@@ -106,7 +106,7 @@ static void test_memory_cap(void **state)
 	mem_cap cap;
 	/* qemu-user maps the guest's heap inside space it reserved before the
 	 * cap: the cap holds on the Pi, not under the emulator */
-	if (getenv("SKP_TEST_EMULATED") && *getenv("SKP_TEST_EMULATED"))
+	if (test_emulator())
 		skip();
 	assert_int_equal(mem_cap_set(&cap, (size_t)64 << 20), 0);
 	if (!cap.set)
