@@ -48,10 +48,10 @@ DEPS_motion   := math base
 DEPS_mesh     := motion math base
 DEPS_skin     := mesh motion math base
 DEPS_bind     := skin mesh motion math base
-DEPS_image    := skin mesh motion math base
+DEPS_image    := codec skin mesh motion math base
 DEPS_render   := skin mesh motion math base
 DEPS_kiosk    := base
-DEPS_play     := image skin mesh motion math base
+DEPS_play     := image codec skin mesh motion math base
 # Host code, which may allocate and print: the tool-only measures, the layer
 # both programs share (loading, binding, showing, --version), the programs.
 DEPS_analysis := skin mesh motion math base

@@ -14,6 +14,7 @@ static void work_free(enc_work *w)
 	free(w->psrc);
 	free(w->pdec);
 	free(w->ref);
+	free(w->got);
 	free(w->dec);
 	free(w->q);
 	free(w->err);
@@ -28,20 +29,12 @@ static int work_alloc(enc_work *w)
 	w->psrc = malloc(n * c * 6 * sizeof(double));
 	w->pdec = malloc(n * c * 6 * sizeof(double));
 	w->ref = malloc(n * sizeof(skel_pose));
+	w->got = malloc(n * sizeof(skel_pose));
 	w->dec = malloc(n * d * sizeof(float));
 	w->q = malloc(n * d * sizeof(int32_t));
 	w->err = malloc(n * sizeof(double));
 	w->tbuf = malloc(SKEL_MAX_CHANNELS * n * sizeof(double));
-	return w->gsrc && w->gdec && w->psrc && w->pdec && w->ref && w->dec && w->q && w->err && w->tbuf ? 0 : -1;
-}
-
-/* Is a an ancestor of d (or d itself)? */
-static int above(const skel *s, int a, int d)
-{
-	for (; d >= 0; d = s->bone[d].parent)
-		if (d == a)
-			return 1;
-	return 0;
+	return w->gsrc && w->gdec && w->psrc && w->pdec && w->ref && w->got && w->dec && w->q && w->err && w->tbuf ? 0 : -1;
 }
 
 /* How far bone b's rotation moves the points the error measures, per
@@ -53,7 +46,7 @@ static double reach(const enc_work *w, const skel_pose *rest, int b)
 	const skel *s = w->s;
 	double r = w->shell;
 	for (int d = 0; d < s->count; d++) {
-		if (d == b || !above(s, b, d))
+		if (d == b || !enc_above(s, b, d))
 			continue;
 		int shield = -1;
 		for (int a = d; a != b; a = s->bone[a].parent)
@@ -80,11 +73,12 @@ static void base_steps(const enc_work *w, double tol, double *base)
 	}
 }
 
-/* The worst error with the current steps (or the first past limit);
- * HUGE_VAL when a track does not fit its bits. */
-static double trial(enc_work *w, double limit)
+/* The worst error with the current steps of bone top's tracks and
+ * those below it (or the first past limit; top 0: every track), the
+ * others as they were; HUGE_VAL when a track does not fit its bits. */
+static double trial(enc_work *w, int top, double limit)
 {
-	return enc_quantise(w) ? HUGE_VAL : enc_measure(w, limit);
+	return enc_quantise(w, top) ? HUGE_VAL : enc_measure(w, top, limit);
 }
 
 static void scale_steps(enc_work *w, const double *base, double a)
@@ -101,15 +95,19 @@ static void search_scale(enc_work *w, const double *base, double tol)
 	for (int i = 0; i < 16; i++) {
 		double m = sqrt(lo * hi);
 		scale_steps(w, base, m);
-		if (trial(w, tol) <= tol)
+		if (trial(w, 0, tol) <= tol)
 			lo = m;
 		else
 			hi = m;
 	}
 	scale_steps(w, base, lo);
+	trial(w, 0, HUGE_VAL);
 }
 
-/* Then each track's step on its own, as far as the budget lets it grow. */
+/* Then each track's step on its own, as far as the budget lets it grow:
+ * a trial takes again only the bones the track moves (the others were
+ * within the budget already), and a refused step is taken back the same
+ * way, so the result is the one a trial of every track would give. */
 static void grow_steps(enc_work *w, double tol, const encode_opts *o)
 {
 	static const float factor[] = { 2.0f, 1.41f, 1.19f, 1.19f, 1.09f, 1.09f, 1.04f };
@@ -118,8 +116,10 @@ static void grow_steps(enc_work *w, double tol, const encode_opts *o)
 		for (int d = 0; d < w->dofs; d++) {
 			float keep = w->step[d];
 			w->step[d] = keep * factor[p];
-			if (trial(w, tol) > tol)
+			if (trial(w, w->bone_of[d], tol) > tol) {
 				w->step[d] = keep;
+				trial(w, w->bone_of[d], HUGE_VAL);
+			}
 			if (o->progress)
 				o->progress(o->progress_ctx, (p * w->dofs + d + 1) / (double)(passes * w->dofs));
 		}
@@ -171,6 +171,9 @@ static skp_status write_segments(const enc_work *w, encode_result *r, skp_error 
 
 static void prepare(enc_work *w)
 {
+	for (int b = 0; b < w->s->count; b++)
+		for (int i = 0; i < w->s->bone[b].channel_count; i++)
+			w->bone_of[w->s->bone[b].dof_offset + i] = (uint8_t)b;
 	enc_comp_prepare(w);
 	for (long f = 0; f < w->n; f++)
 		fk_pose(w->s, w->src + (size_t)f * (size_t)w->dofs, &w->ref[f]);
@@ -199,12 +202,12 @@ skp_status encode_clip(const skel *s, const float *frames, long n, const encode_
 	base_steps(&w, o->tolerance, base);
 	search_scale(&w, base, o->tolerance);
 	grow_steps(&w, o->tolerance, o);
-	if (trial(&w, HUGE_VAL) > o->tolerance) {
+	r->worst = trial(&w, 0, HUGE_VAL);
+	if (r->worst > o->tolerance) {
 		rc = skp_fail(err, SKP_ERR_RANGE, 0, "no grid keeps the error within %g (a track needs more than %d bits)",
 			      o->tolerance, CODEC_MAX_BITS);
 		goto out;
 	}
-	r->worst = enc_measure(&w, HUGE_VAL);
 	r->p99 = percentile99(w.err, n);
 	r->clip.frames = (uint32_t)n;
 	r->clip.tracks = (uint16_t)w.dofs;

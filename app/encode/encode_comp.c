@@ -268,11 +268,13 @@ static int quantise_track(enc_work *w, int d, const double *t)
 	return 0;
 }
 
-int enc_quantise(enc_work *w)
+int enc_quantise(enc_work *w, int top)
 {
 	const skel *s = w->s;
 	for (int k = 0; k < s->count; k++) {
 		int b = s->eval_order[k];
+		if (!enc_above(s, top, b))
+			continue;
 		const skel_bone *bone = &s->bone[b];
 		double t[SKEL_MAX_CHANNELS];
 		for (long f = 0; f < w->n; f++) {

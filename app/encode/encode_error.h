@@ -10,6 +10,9 @@
 
 #include "fk.h"
 
+/* Joint b's error between two poses. */
+double encode_joint_error(const skel_pose *ref, const skel_pose *got, int b, double shell);
+
 /* The frame's error between two poses of skeleton s. */
 double encode_shell_error(const skel *s, const skel_pose *ref, const skel_pose *got, double shell);
 

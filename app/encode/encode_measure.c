@@ -4,14 +4,24 @@
 #include "encode_error.h"
 #include "encode_work.h"
 
-double enc_measure(enc_work *w, double limit)
+double enc_measure(enc_work *w, int top, double limit)
 {
-	static skel_pose got;
+	const skel *s = w->s;
+	int below[SKP_MAX_BONES], count = 0;
+	for (int k = 0; k < s->count; k++)
+		if (enc_above(s, top, s->eval_order[k]))
+			below[count++] = s->eval_order[k];
 	double worst = 0;
 	for (long f = 0; f < w->n && worst <= limit; f++) {
-		fk_pose(w->s, w->dec + (size_t)f * (size_t)w->dofs, &got);
-		w->err[f] = encode_shell_error(w->s, &w->ref[f], &got, w->shell);
-		worst = fmax(worst, w->err[f]);
+		const float *values = w->dec + (size_t)f * (size_t)w->dofs;
+		double e = 0;
+		for (int k = 0; k < count; k++) {
+			fk_pose_bone(s, below[k], values, &w->got[f]);
+			e = fmax(e, encode_joint_error(&w->ref[f], &w->got[f], below[k], w->shell));
+		}
+		if (top == 0)
+			w->err[f] = e;
+		worst = fmax(worst, e);
 	}
 	return worst;
 }

@@ -19,25 +19,39 @@ typedef struct enc_work {
 	double *gdec;           /* n x count x 9: decoded world rotations */
 	double *psrc, *pdec;    /* n x count x 6: source and decoded heads and tips */
 	skel_pose *ref;         /* n source poses (fk_pose) */
+	skel_pose *got;         /* n decoded poses, as the last measure left them */
 	float *dec;             /* n x dofs decoded values */
 	int32_t *q;             /* n x dofs grid values */
 	codec_track track[SKP_MAX_DOF];
 	double *err;            /* n: each frame's shell error */
 	double *tbuf;           /* SKEL_MAX_CHANNELS x n: one bone's targets */
 	double shell;
+	uint8_t bone_of[SKP_MAX_DOF]; /* the bone a track moves */
 } enc_work;
 
-/* Quantises every track with its step, bone by bone (parents first), the
- * compensated bones' angles chosen against their decoded parents
- * (encode_comp.c): fills q, dec, gdec and track. 0, or -1 when a track
- * needs more than CODEC_MAX_BITS. */
-int enc_quantise(enc_work *w);
+/* Is bone a bone d or one of its ancestors? A track of bone a changes
+ * the quantised values and the poses of those bones d only. */
+static inline int enc_above(const skel *s, int a, int d)
+{
+	for (; d >= 0; d = s->bone[d].parent)
+		if (d == a)
+			return 1;
+	return 0;
+}
+
+/* Quantises the tracks of bone top and the bones below it with their
+ * steps, bone by bone (parents first), the compensated bones' angles
+ * chosen against their decoded parents (encode_comp.c): fills q, dec,
+ * gdec, pdec and track (top 0: every bone). 0, or -1 when a track needs
+ * more than CODEC_MAX_BITS. */
+int enc_quantise(enc_work *w, int top);
 
 /* World rotations of the source frames (gsrc), and which bones compensate. */
 void enc_comp_prepare(enc_work *w);
 
-/* Each frame's shell error of dec against ref into err; the worst. It
- * stops at the first frame past limit (HUGE_VAL: every frame). */
-double enc_measure(enc_work *w, double limit);
+/* The decoded poses (got) of bone top and the bones below it, and their
+ * worst shell error against ref; with top 0 each frame's error goes to
+ * err. It stops at the first frame past limit (HUGE_VAL: every frame). */
+double enc_measure(enc_work *w, int top, double limit);
 
 #endif

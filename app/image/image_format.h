@@ -1,4 +1,4 @@
-/* The skinplay flash image (.skn), format version 4: a skeleton, a bound
+/* The skinplay flash image (.skn), format version 5: a skeleton, a bound
  * body and motion clips packed once by `skintool pack` and played from
  * CRC-checked fixed-size blocks with fixed memory (app/image/image_read.h,
  * app/image/image_play.h), with XOR parity that rebuilds any one bad block
@@ -7,6 +7,10 @@
  * SHA-256 digest of every data block, so a block of another image is never
  * taken (nor "repaired" into this one). Images of versions 1 to 3 (skintool
  * 0.16 and older: no image id) are refused by name: pack the show again.
+ * Version 5 adds compressed clips (app/codec/codec_format.h; what pack
+ * writes unless told --raw) beside version 4's 16-bit quantised ones, and
+ * five fields to each directory entry; a version 4 image still reads (its
+ * clips are all quantised).
  *
  * All integers are little-endian; floats are IEEE-754 binary32 stored as
  * their little-endian bit pattern; a "str" is a u8 length then that many
@@ -65,13 +69,15 @@
  * and that it sits where its own layout puts it. A missing header copy
  * (the storage ends before it) is a warning, not a refusal.
  *
- * pack writes block 0 last (and to a temporary file renamed into place), so
- * a write cut short leaves no valid header and the slot is refused.
+ * pack writes the data, the parity, the header copy and block 0 last (to a
+ * temporary file renamed into place): until the copy is written no valid
+ * header exists and the slot is refused; once it is whole, every block
+ * before it is too, so a write cut short after it still plays.
  *
  * HEADER (payload of block 0, 168 bytes):
  *
  *     0    8   magic "SKPIMAGE"
- *     8    2   format version (4)
+ *     8    2   format version (5; 4 still read)
  *     10   2   header size (168)
  *     12   4   block size B
  *     16   4   block count
@@ -123,12 +129,14 @@
  *     used ones summing to exactly 65535 (largest remainder), so |error| <=
  *     1/65535 per weight. 23 bytes a vertex.
  *
- * CLIP QUANTISATION (kind 5, item = clip): per dof f32 min, f32 step.
+ * CLIP QUANTISATION (kind 5, item = clip), of a quantised clip (coded 0):
+ * per dof f32 min, f32 step.
  * A frame value is min + q * step for a u16 q; pack rounds to the nearest q,
  * so |decoded - AMC value| <= step / 2 (+ float rounding of the decoded
  * value), step = (max - min) / 65535 over the clip (0 for a constant dof).
  *
- * CLIP FRAMES (kind 6, item = clip): a u16 count of the frames the block
+ * CLIP FRAMES (kind 6, item = clip), of a quantised clip: a u16 count of
+ * the frames the block
  * holds, then whole frames, never split: frames_per_block =
  * floor((B - 30) / (2 * dofs)); frame i is in block frames_first + i /
  * frames_per_block at payload offset 2 + (i % frames_per_block) * 2 * dofs,
@@ -137,15 +145,35 @@
  * loses only the frames inside it (32 frames of a CMU clip at 4 KiB: 0.27 s
  * at 120 Hz).
  *
+ * COMPRESSED CLIP (version 5, coded 1). Its kind 5 section (the codec's
+ * header, app/codec/codec_format.h) is u16 tracks (= dofs), u16
+ * segment_frames, per track f32 base, f32 step, u8 bits, then u32
+ * offset[segments + 1]: segment s is bytes [offset[s], offset[s + 1]) of
+ * the clip's stream, offset[0] = 0, offset[segments] = stream bytes, no
+ * segment longer than the board's SKP_CODEC_SEGMENT_BYTES. Its kind 6
+ * blocks hold the stream: a u16 count of the stream bytes in the block, then
+ * those bytes; every block but the last holds B - 30, the last what the
+ * directory's stream bytes leave (checked as a quantised clip's frame
+ * count is). A player gathers a segment's bytes from its blocks into one
+ * buffer and decodes it frame by frame; a seek starts the segment it lands
+ * in over. A bad block that parity cannot rebuild loses the segments
+ * touching it (about 2 s at 120 Hz each), not the clip.
+ *
  * DIRECTORY (kind 4): u16 clip count, then per clip
  *
  *     str name (the AMC file name without extension), f32 fps,
  *     u32 frame count, i32 first frame number (frames are numbered
- *     consecutively from it), u16 dofs, u16 frames_per_block,
- *     u32 quant first block, u32 quant block count,
+ *     consecutively from it), u16 dofs, u16 frames_per_block (0 when
+ *     compressed), u32 quant first block, u32 quant block count,
  *     u32 frames first block, u32 frame block count,
  *     f32 worst-case rotation error (radians), f32 worst-case translation
- *     error (ASF length units): the largest step / 2 of each kind of dof
+ *     error (ASF length units): the largest |decoded - packed value| of
+ *     each kind of dof (quantised: the largest step / 2),
+ *     version 5 only:
+ *     u8 coded (0 quantised, 1 compressed), u32 stream bytes, u32 segments
+ *     (both 0 when quantised), f32 worst shell error (cm: ACL's measure,
+ *     points 3 cm from each joint, app/encode/encode_error.h; 0 when not
+ *     measured), f32 cm a skeleton length unit (0 when not known)
  *
  * Compatibility: a reader refuses any other magic or version (naming an
  * older one as such), a header size or CRC that does not match, and limits
@@ -172,7 +200,8 @@
 #endif
 
 #define SKP_IMAGE_MAGIC        "SKPIMAGE"
-#define SKP_IMAGE_VERSION      4
+#define SKP_IMAGE_VERSION      5
+#define SKP_IMAGE_VERSION_MIN  4     /* the oldest version still read */
 #define SKP_IMAGE_HEADER_SIZE  168
 #define SKP_IMAGE_ID_BYTES     16
 #define SKP_IMAGE_DIGEST_BYTES 32    /* SHA-256 */
@@ -237,6 +266,10 @@ typedef struct skp_image_clip {
 	uint32_t quant_first, quant_blocks;
 	uint32_t frames_first, frame_blocks;
 	float max_rot_err, max_trans_err;
+	/* version 5 */
+	uint8_t coded;           /* 1: compressed (app/codec), 0: quantised */
+	uint32_t stream_bytes, segments;
+	float shell_err, unit_cm;
 } skp_image_clip;
 
 /* Little-endian fields, whatever the CPU. */
@@ -295,6 +328,20 @@ static inline uint32_t skp_image_frames_in(const skp_image_clip *c, uint32_t b)
 {
 	uint64_t before = (uint64_t)b * c->frames_per_block, left = before < c->frame_count ? c->frame_count - before : 0;
 	return (uint32_t)(left < c->frames_per_block ? left : c->frames_per_block);
+}
+
+/* The stream bytes compressed clip block b (0-based in the clip) holds. */
+static inline uint32_t skp_image_bytes_in(const skp_image_clip *c, uint32_t room, uint32_t b)
+{
+	uint64_t before = (uint64_t)b * room, left = before < c->stream_bytes ? c->stream_bytes - before : 0;
+	return (uint32_t)(left < room ? left : room);
+}
+
+/* The count a clip's frames block b must hold: frames, or stream bytes
+ * (room: the bytes a block holds after its count). */
+static inline uint32_t skp_image_block_count(const skp_image_clip *c, uint32_t room, uint32_t b)
+{
+	return c->coded ? skp_image_bytes_in(c, room, b) : skp_image_frames_in(c, b);
 }
 
 /* The parity group of data block b (images with parity). */

@@ -51,7 +51,7 @@ void skp_image_header_put(uint8_t *p, const skp_image_header *h)
 {
 	memset(p, 0, SKP_IMAGE_HEADER_SIZE);
 	memcpy(p, SKP_IMAGE_MAGIC, 8);
-	le_put16(p + 8, SKP_IMAGE_VERSION);
+	le_put16(p + 8, h->version ? h->version : SKP_IMAGE_VERSION);
 	le_put16(p + 10, SKP_IMAGE_HEADER_SIZE);
 	put_layout(p, h);
 	le_put32(p + SKP_IMAGE_HEADER_SIZE - 4, crc32_compute(p, SKP_IMAGE_HEADER_SIZE - 4));
@@ -64,7 +64,7 @@ int skp_image_header_get(const uint8_t *p, uint32_t n, skp_image_header *h)
 		return 0;
 	h->version = le_get16(p + 8);
 	h->header_size = le_get16(p + 10);
-	if (h->version != SKP_IMAGE_VERSION || h->header_size != SKP_IMAGE_HEADER_SIZE || n < SKP_IMAGE_HEADER_SIZE)
+	if (h->version < SKP_IMAGE_VERSION_MIN || h->version > SKP_IMAGE_VERSION || h->header_size != SKP_IMAGE_HEADER_SIZE || n < SKP_IMAGE_HEADER_SIZE)
 		return 0;
 	get_layout(p, h);
 	h->crc = le_get32(p + SKP_IMAGE_HEADER_SIZE - 4);

@@ -224,9 +224,86 @@ skp_status skp_image_load_bind(skp_image *im, const skel *s, mesh *m, skin_weigh
 	return rc;
 }
 
+/* A compressed clip's quantisation section: the codec's header. */
+static void open_quant(skp_image *im, int clip)
+{
+	const skp_image_clip *c = &im->clip[clip];
+	skp_image_section sec = { c->quant_first, c->quant_blocks, c->quant_blocks * (im->hdr.block_size - SKP_IMAGE_BLOCK_EXTRA) };
+	sec_open(im, &sec, SKP_KIND_QUANT, (uint16_t)clip);
+}
+
+skp_status skp_image_load_codec(skp_image *im, int clip, codec_clip *cc, skp_error *err)
+{
+	const skp_image_clip *c = &im->clip[clip];
+	if (!c->coded)
+		return skp_fail(err, SKP_ERR_RANGE, 0, "clip %s is not compressed", c->name);
+	open_quant(im, clip);
+	skp_status rc = sec_u16(im, &cc->tracks, err);
+	if (!rc) rc = sec_u16(im, &cc->segment_frames, err);
+	if (!rc && cc->tracks != c->dofs)
+		return sec_bad(im, err, "compressed clip: tracks differ from the clip's dofs");
+	for (int i = 0; i < cc->tracks && !rc; i++) {
+		rc = sec_floats(im, &cc->track[i].base, 1, err);
+		if (!rc) rc = sec_floats(im, &cc->track[i].step, 1, err);
+		if (!rc) rc = sec_u8(im, &cc->track[i].bits, err);
+	}
+	if (rc)
+		return rc;
+	cc->frames = c->frame_count;
+	if (codec_clip_check(cc, err) != SKP_OK) {
+		err->block = sec_block(im);
+		return SKP_ERR_CORRUPT;
+	}
+	if (codec_segments(cc) != c->segments)
+		return sec_bad(im, err, "compressed clip: segments differ from the directory's");
+	return SKP_OK;
+}
+
+skp_status skp_image_load_span(skp_image *im, int clip, uint32_t s, uint32_t span[2], skp_error *err)
+{
+	const skp_image_clip *c = &im->clip[clip];
+	uint8_t skip[64];
+	if (!c->coded || s >= c->segments)
+		return skp_fail(err, SKP_ERR_RANGE, 0, "clip %s: no segment %lu", c->name, (unsigned long)s);
+	open_quant(im, clip);
+	uint32_t left = 4u + 9u * c->dofs + 4u * s;
+	skp_status rc = SKP_OK;
+	while (left && !rc) {
+		uint32_t n = left < sizeof skip ? left : (uint32_t)sizeof skip;
+		rc = sec_get(im, skip, n, err);
+		left -= n;
+	}
+	if (!rc) rc = sec_u32(im, &span[0], err);
+	if (!rc) rc = sec_u32(im, &span[1], err);
+	if (rc)
+		return rc;
+	if (span[0] > span[1] || span[1] > c->stream_bytes || span[1] - span[0] > SKP_CODEC_SEGMENT_BYTES ||
+	    (s == 0 && span[0] != 0) || (s + 1 == c->segments && span[1] != c->stream_bytes))
+		return sec_bad(im, err, "compressed clip: segment offsets out of the stream (or beyond SKP_CODEC_SEGMENT_BYTES)");
+	return SKP_OK;
+}
+
+/* A compressed clip's range per dof as a quantisation would give it
+ * (min, and a step with 65535 of them to the track's top), so what is
+ * judged of a clip (image_accept.c) is judged of both kinds alike. */
+static skp_status codec_as_quant(skp_image *im, int clip, float *qmin, float *qstep, skp_error *err)
+{
+	static codec_clip cc;
+	skp_status rc = skp_image_load_codec(im, clip, &cc, err);
+	for (int i = 0; i < cc.tracks && !rc; i++) {
+		const codec_track *t = &cc.track[i];
+		double top = t->bits ? (double)codec_value(t, (int32_t)((1u << t->bits) - 1u)) : (double)t->base;
+		qmin[i] = t->base;
+		qstep[i] = (float)((top - (double)t->base) / SKP_IMAGE_QMAX);
+	}
+	return rc;
+}
+
 skp_status skp_image_load_quant(skp_image *im, int clip, float *qmin, float *qstep, skp_error *err)
 {
 	const skp_image_clip *c = &im->clip[clip];
+	if (c->coded)
+		return codec_as_quant(im, clip, qmin, qstep, err);
 	skp_image_section sec = { c->quant_first, c->quant_blocks, 8u * c->dofs };
 	sec_open(im, &sec, SKP_KIND_QUANT, (uint16_t)clip);
 	skp_status rc = SKP_OK;
@@ -247,12 +324,13 @@ skp_status skp_image_check_frames(skp_image *im, int clip, skp_error *err)
 {
 	const skp_image_clip *c = &im->clip[clip];
 	uint32_t last = c->frame_blocks - 1, block = c->frames_first + last;
+	uint32_t room = im->hdr.block_size - SKP_IMAGE_BLOCK_EXTRA - SKP_IMAGE_FRAMES_COUNT;
 	/* im->buf: every section read starts with sec_open */
 	if (c->frame_blocks == 0 || skp_image_read_block(im, block, SKP_KIND_FRAMES, (unsigned)clip, im->buf) != SKP_BLOCK_OK)
 		return SKP_OK;
-	uint32_t has = le_get16(im->buf + SKP_IMAGE_BLOCK_HDR), want = skp_image_frames_in(c, last);
+	uint32_t has = le_get16(im->buf + SKP_IMAGE_BLOCK_HDR), want = skp_image_block_count(c, room, last);
 	if (has != want)
-		return image_block_fail(err, SKP_ERR_CORRUPT, block, "the clip's last block holds %lu frames, the directory says %lu",
-					(unsigned long)has, (unsigned long)want);
+		return image_block_fail(err, SKP_ERR_CORRUPT, block, "the clip's last block holds %lu %s, the directory says %lu",
+					(unsigned long)has, c->coded ? "stream bytes" : "frames", (unsigned long)want);
 	return SKP_OK;
 }

@@ -47,7 +47,9 @@ skp_status skp_clip_stream_open(skp_clip_stream *p, skp_image *im, int clip, skp
 	for (int k = 0; k < SKP_IMAGE_CACHE_BLOCKS; k++)
 		p->kept[k] = UINT32_MAX;
 	ring_clear(p);
-	skp_status rc = skp_image_load_quant(im, clip, p->qmin, p->qstep, err);
+	p->seg = UINT32_MAX;
+	skp_status rc = p->c.coded ? skp_image_load_codec(im, clip, &p->cc, err)
+				   : skp_image_load_quant(im, clip, p->qmin, p->qstep, err);
 	skp_clip_stream_seek(p, 0);
 	return rc;
 }
@@ -58,7 +60,12 @@ skp_status skp_clip_stream_open(skp_clip_stream *p, skp_image *im, int clip, skp
 void skp_clip_stream_seek(skp_clip_stream *p, uint32_t index)
 {
 	p->next = index;
-	p->fetch = index / p->c.frames_per_block;
+	p->fetch = p->c.coded ? 0 : index / p->c.frames_per_block;
+}
+
+static uint32_t room(const skp_clip_stream *p)
+{
+	return p->im->hdr.block_size - SKP_IMAGE_BLOCK_EXTRA - SKP_IMAGE_FRAMES_COUNT;
 }
 
 /* Reads frame block b (clip-relative) into its ring slot: good when its
@@ -71,7 +78,7 @@ static skp_clip_slot *load(skp_clip_stream *p, uint32_t b)
 		return s;
 	s->block = b;
 	s->state = (uint8_t)read_frames_block(p, p->c.frames_first + b, block);
-	if (s->state == SKP_BLOCK_OK && le_get16(block + SKP_IMAGE_BLOCK_HDR) != skp_image_frames_in(&p->c, b))
+	if (s->state == SKP_BLOCK_OK && le_get16(block + SKP_IMAGE_BLOCK_HDR) != skp_image_block_count(&p->c, room(p), b))
 		s->state = SKP_BLOCK_COUNT;
 	p->reads++;
 	return s;
@@ -97,19 +104,101 @@ static void decode(const skp_clip_stream *p, const uint8_t *block, uint32_t inde
 	f->line = 0;
 }
 
-int skp_clip_stream_next(skp_clip_stream *p, amc_frame *f, skp_error *err)
+static int lost(skp_error *err, int state, uint32_t block)
 {
-	if (p->next >= p->c.frame_count)
-		return 0;
+	image_block_fail(err, state == SKP_BLOCK_IO ? SKP_ERR_IO : SKP_ERR_CORRUPT, block, "%s",
+			 skp_block_state_name((skp_block_state)state));
+	return SKP_CLIP_LOST;
+}
+
+static int next_quantised(skp_clip_stream *p, amc_frame *f, skp_error *err)
+{
 	uint32_t index = p->next++, b = index / p->c.frames_per_block;
 	skp_clip_slot *s = load(p, b);
 	int state = s->state;
 	if (state == SKP_BLOCK_OK)
 		decode(p, p->ring[b % SKP_IMAGE_RING_BLOCKS], index, f);
 	prefetch(p, b);
-	if (state == SKP_BLOCK_OK)
-		return 1;
-	image_block_fail(err, state == SKP_BLOCK_IO ? SKP_ERR_IO : SKP_ERR_CORRUPT, p->c.frames_first + b, "%s",
-			 skp_block_state_name((skp_block_state)state));
-	return SKP_CLIP_LOST;
+	return state == SKP_BLOCK_OK ? 1 : lost(err, state, p->c.frames_first + b);
+}
+
+/* Gathers segment seg's bytes from its blocks (through the ring) and
+ * starts decoding it; a block that fails loses the segment. */
+static void gather(skp_clip_stream *p, uint32_t seg, skp_error *err)
+{
+	uint32_t span[2], per = room(p);
+	p->seg = seg;
+	p->seg_state = SKP_BLOCK_OK;
+	p->seg_refused = 0;
+	p->seg_last = 0;
+	if (skp_image_load_span(p->im, p->clip, seg, span, err) != SKP_OK) {
+		p->seg_refused = 1;
+		p->seg_block = err->block >= 0 ? (uint32_t)err->block : p->c.quant_first;
+		return;
+	}
+	uint32_t first = span[0] / per;
+	p->seg_last = span[1] > span[0] ? (span[1] - 1) / per : first;
+	for (uint32_t b = first; b <= p->seg_last && span[1] > span[0]; b++) {
+		skp_clip_slot *s = load(p, b);
+		if (s->state != SKP_BLOCK_OK) {
+			p->seg_state = s->state;
+			p->seg_block = p->c.frames_first + b;
+			return;
+		}
+		uint32_t from = b == first ? span[0] - b * per : 0;
+		uint32_t to = b == p->seg_last ? span[1] - b * per : per;
+		memcpy(p->seg_bytes + (b * per + from - span[0]),
+		       p->ring[b % SKP_IMAGE_RING_BLOCKS] + SKP_IMAGE_BLOCK_HDR + SKP_IMAGE_FRAMES_COUNT + from, to - from);
+	}
+	if (codec_begin(&p->dec, &p->cc, seg, p->seg_bytes, span[1] - span[0], err) != SKP_OK) {
+		p->seg_refused = 1;
+		p->seg_block = p->c.frames_first + first;
+	}
+}
+
+/* The blocks after the segment being decoded, one a frame, as many as the
+ * ring holds beside its last block (the next segment's first). */
+static void prefetch_coded(skp_clip_stream *p)
+{
+	if (p->fetch <= p->seg_last)
+		p->fetch = p->seg_last + 1;
+	if (p->fetch < p->c.frame_blocks && p->fetch < p->seg_last + SKP_IMAGE_RING_BLOCKS)
+		load(p, p->fetch++);
+}
+
+static int next_coded(skp_clip_stream *p, amc_frame *f, skp_error *err)
+{
+	uint32_t index = p->next++, seg = index / p->cc.segment_frames, at = index % p->cc.segment_frames;
+	if (seg != p->seg)
+		gather(p, seg, err);
+	else if (!p->seg_refused && p->seg_state == SKP_BLOCK_OK && p->dec.frame > at)
+		codec_begin(&p->dec, &p->cc, seg, p->seg_bytes, p->dec.nbytes, err); /* a seek back */
+	int rc = 1;
+	while (rc == 1 && !p->seg_refused && p->seg_state == SKP_BLOCK_OK && p->dec.frame < at)
+		rc = codec_next(&p->dec, p->value, err);
+	if (rc == 1 && !p->seg_refused && p->seg_state == SKP_BLOCK_OK)
+		rc = codec_next(&p->dec, p->value, err);
+	if (rc != 1 && !p->seg_refused && p->seg_state == SKP_BLOCK_OK) {
+		p->seg_refused = 1;
+		p->seg_block = p->c.frames_first + (p->seg_last ? p->seg_last : 0);
+	}
+	prefetch_coded(p);
+	if (p->seg_state != SKP_BLOCK_OK)
+		return lost(err, p->seg_state, p->seg_block);
+	if (p->seg_refused)
+		return image_block_fail(err, SKP_ERR_CORRUPT, p->seg_block,
+					"compressed segment %lu of clip %s refused by the decoder", (unsigned long)seg,
+					p->c.name),
+		       SKP_CLIP_LOST;
+	memcpy(f->value, p->value, sizeof(float) * p->cc.tracks);
+	f->number = (long)p->c.first_number + (long)index;
+	f->line = 0;
+	return 1;
+}
+
+int skp_clip_stream_next(skp_clip_stream *p, amc_frame *f, skp_error *err)
+{
+	if (p->next >= p->c.frame_count)
+		return 0;
+	return p->c.coded ? next_coded(p, f, err) : next_quantised(p, f, err);
 }

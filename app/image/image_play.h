@@ -13,7 +13,15 @@
  * the clip): on the clip's next passes the block itself is read, as any
  * block is, and while it is still bad the kept copy serves, so a short
  * looping clip does not read its whole parity group again every pass (a
- * slow card at a second a read would starve the watchdog). */
+ * slow card at a second a read would starve the watchdog).
+ *
+ * A compressed clip (version 5, app/codec) is read a segment at a time:
+ * its bytes gathered from the ring's blocks into seg_bytes (the blocks of
+ * the next segment prefetched meanwhile, one a frame), then decoded a
+ * frame at a time; a seek lands in a segment and decodes from its start.
+ * A segment touching a block that cannot be read or rebuilt, or that the
+ * decoder refuses, is lost (SKP_CLIP_LOST for each of its frames) and
+ * playback goes on at the next segment. */
 #ifndef IMAGE_PLAY_H
 #define IMAGE_PLAY_H
 
@@ -41,10 +49,21 @@ typedef struct skp_clip_stream {
 	int keep_next;           /* the slot the next rebuilt block takes */
 	unsigned long kept_uses; /* reads of a bad block served from a kept copy */
 	unsigned long reads;     /* blocks read, for the figures */
+	/* a compressed clip */
+	codec_clip cc;
+	codec_decoder dec;
+	uint32_t seg;            /* the segment in seg_bytes, UINT32_MAX none */
+	uint32_t seg_last;       /* its last block (clip-relative) */
+	uint8_t seg_state;       /* skp_block_state of its blocks */
+	uint8_t seg_refused;     /* the decoder refused it */
+	uint32_t seg_block;      /* the image block that failed */
+	float value[SKP_MAX_DOF];/* the frame being decoded */
+	uint8_t seg_bytes[SKP_CODEC_SEGMENT_BYTES];
 } skp_clip_stream;
 
 /* Opens clip (an index into im->clip) at its first frame; loads its
- * quantisation (a bad block there is an error: the clip cannot play). */
+ * quantisation or its compressed header (a bad block there is an error:
+ * the clip cannot play). */
 skp_status skp_clip_stream_open(skp_clip_stream *p, skp_image *im, int clip, skp_error *err);
 
 /* Moves the play head to frame index (0 = the clip's first frame); the

@@ -33,12 +33,12 @@ static skp_status older_version(const uint8_t *block, uint32_t n, skp_error *err
 	if (n < OLD_FRAME + 12 || memcmp(p, SKP_IMAGE_MAGIC, 8))
 		return SKP_OK;
 	unsigned v = le_get16(p + 8), size = v == 1 ? 104 : 116;
-	if (v < 1 || v >= SKP_IMAGE_VERSION || n < OLD_FRAME + size || le_get16(p + 10) != size ||
+	if (v < 1 || v >= SKP_IMAGE_VERSION_MIN || n < OLD_FRAME + size || le_get16(p + 10) != size ||
 	    crc32_compute(p, size - 4) != le_get32(p + size - 4))
 		return SKP_OK;
 	return image_block_fail(err, SKP_ERR_CORRUPT, 0,
 				"image format version %u (skintool 0.16 or older, without an image id): this build plays "
-				"version %d only; pack the show again", v, SKP_IMAGE_VERSION);
+				"versions %d to %d; pack the show again", v, SKP_IMAGE_VERSION_MIN, SKP_IMAGE_VERSION);
 }
 
 /* Header checks that need no other block, in the order a reader must make
@@ -53,8 +53,8 @@ static skp_status check_header(const skp_image *im, const uint8_t *p, uint32_t n
 		return skp_fail(err, SKP_ERR_RANGE, 0, "image block size %lu, storage opened with %lu",
 				(unsigned long)h->block_size, (unsigned long)im->dev->block_size);
 	if (h->version > SKP_IMAGE_VERSION)
-		return skp_fail(err, SKP_ERR_CORRUPT, 0, "image format version %u, this build reads version %d",
-				(unsigned)h->version, SKP_IMAGE_VERSION);
+		return skp_fail(err, SKP_ERR_CORRUPT, 0, "image format version %u, this build reads versions %d to %d",
+				(unsigned)h->version, SKP_IMAGE_VERSION_MIN, SKP_IMAGE_VERSION);
 	if (n + SKP_IMAGE_BLOCK_HDR < im->dev->block_size)
 		return image_block_fail(err, SKP_ERR_CORRUPT, 0, "header block: short read");
 	if (!skp_block_crc_ok(im->buf, im->dev->block_size))
@@ -119,6 +119,38 @@ static skp_status check_storage(skp_image *im, skp_error *err)
 	return SKP_OK;
 }
 
+/* Version 5's fields of a directory entry (version 4: a quantised clip). */
+static skp_status get_clip_v5(skp_image *im, skp_image_clip *c, skp_error *err)
+{
+	c->coded = 0;
+	c->stream_bytes = c->segments = 0;
+	c->shell_err = c->unit_cm = 0;
+	if (im->hdr.version < 5)
+		return SKP_OK;
+	skp_status rc = sec_u8(im, &c->coded, err);
+	if (!rc) rc = sec_u32(im, &c->stream_bytes, err);
+	if (!rc) rc = sec_u32(im, &c->segments, err);
+	if (!rc) rc = sec_floats(im, &c->shell_err, 1, err);
+	if (!rc) rc = sec_floats(im, &c->unit_cm, 1, err);
+	return rc;
+}
+
+/* The frames blocks hold what the entry says: whole frames (quantised) or
+ * the stream's bytes (compressed), every block but the last full. */
+static int frames_fit(const skp_image_clip *c, uint32_t room)
+{
+	uint32_t fpb = c->frames_per_block;
+	if (c->coded > 1)
+		return 0;
+	if (c->coded)
+		return fpb == 0 && c->segments > 0 && c->segments <= c->frame_count &&
+		       (uint64_t)c->frame_blocks * room >= c->stream_bytes &&
+		       (uint64_t)c->stream_bytes + room > (uint64_t)c->frame_blocks * room &&
+		       isfinite(c->shell_err) && isfinite(c->unit_cm);
+	return fpb != 0 && fpb * 2u * c->dofs <= room && (uint64_t)c->frame_blocks * fpb >= c->frame_count &&
+	       (uint64_t)c->frame_count + fpb > (uint64_t)c->frame_blocks * fpb && c->stream_bytes == 0;
+}
+
 static skp_status get_clip(skp_image *im, skp_image_clip *c, skp_error *err)
 {
 	uint32_t first;
@@ -134,17 +166,17 @@ static skp_status get_clip(skp_image *im, skp_image_clip *c, skp_error *err)
 	if (!rc) rc = sec_u32(im, &c->frame_blocks, err);
 	if (!rc) rc = sec_floats(im, &c->max_rot_err, 1, err);
 	if (!rc) rc = sec_floats(im, &c->max_trans_err, 1, err);
+	if (!rc) rc = get_clip_v5(im, c, err);
 	if (rc)
 		return rc;
 	c->first_number = (int32_t)first;
-	uint32_t room = im->hdr.block_size - SKP_IMAGE_BLOCK_EXTRA - SKP_IMAGE_FRAMES_COUNT, fpb = c->frames_per_block;
+	uint32_t room = im->hdr.block_size - SKP_IMAGE_BLOCK_EXTRA - SKP_IMAGE_FRAMES_COUNT;
+	uint64_t quant = c->coded ? 4u + 9u * c->dofs + 4u * ((uint64_t)c->segments + 1u) : 8u * c->dofs;
 	const skp_image_section *all = &im->hdr.sec[SKP_SEC_CLIPS];
 	uint64_t end = (uint64_t)all->first + all->count;
-	if (c->dofs != im->hdr.dofs || fpb == 0 || fpb * 2u * c->dofs > room || !(c->fps > 0) ||
-	    !isfinite(c->fps) || (uint64_t)c->frame_blocks * fpb < c->frame_count ||
-	    (uint64_t)c->frame_count + fpb <= (uint64_t)c->frame_blocks * fpb ||
+	if (c->dofs != im->hdr.dofs || !frames_fit(c, room) || !(c->fps > 0) || !isfinite(c->fps) ||
 	    c->quant_first < all->first || (uint64_t)c->quant_first + c->quant_blocks > end ||
-	    (uint64_t)c->quant_blocks * (room + SKP_IMAGE_FRAMES_COUNT) < 8u * c->dofs ||
+	    (uint64_t)c->quant_blocks * (room + SKP_IMAGE_FRAMES_COUNT) < quant ||
 	    c->frames_first < all->first || (uint64_t)c->frames_first + c->frame_blocks > end)
 		return sec_bad(im, err, "clip entry out of the image");
 	return SKP_OK;

@@ -9,6 +9,7 @@
 #define IMAGE_READ_H
 
 #include "blockdev.h"
+#include "codec_decode.h"
 #include "image_block.h"
 #include "image_format.h"
 #include "mesh.h"
@@ -82,8 +83,18 @@ skp_status skp_image_load_skel(skp_image *im, skel *s, skp_error *err);
 skp_status skp_image_load_bind(skp_image *im, const skel *s, mesh *m, skin_weights *w,
 			       float *bind_values, long *bind_number, skp_error *err);
 
-/* The clip's per-dof quantisation (qmin, qstep: clip->dofs floats each). */
+/* The clip's per-dof quantisation (qmin, qstep: clip->dofs floats each);
+ * of a compressed clip, each track's range as one: min, and a step 65535
+ * of which reach its top. */
 skp_status skp_image_load_quant(skp_image *im, int clip, float *qmin, float *qstep, skp_error *err);
+
+/* A compressed clip's header (tracks and segments, app/codec), checked. */
+skp_status skp_image_load_codec(skp_image *im, int clip, codec_clip *cc, skp_error *err);
+
+/* Where compressed segment s lies in the clip's stream: bytes
+ * [span[0], span[1]), checked against the stream and the board's
+ * SKP_CODEC_SEGMENT_BYTES. */
+skp_status skp_image_load_span(skp_image *im, int clip, uint32_t s, uint32_t span[2], skp_error *err);
 
 /* The clip's last frames block holds the frames the directory leaves for
  * it: SKP_OK, also when the block cannot be read (its frames are held

@@ -3,6 +3,7 @@
 #include <math.h>
 #include <string.h>
 
+#include "codec_decode.h"
 #include "crc32.h"
 #include "image_copies.h"
 #include "image_parity.h"
@@ -365,25 +366,38 @@ static skp_status put_quant(skp_image_writer *w, skp_image_clip *c, const skp_cl
 	return rc;
 }
 
-skp_status skp_image_clip_begin(skp_image_writer *w, const char *name, float fps,
-				const skp_clip_range *range, skp_error *err)
+/* The next directory entry, its name and rate checked; NULL when they
+ * cannot be (err says why). */
+static skp_image_clip *new_entry(skp_image_writer *w, const char *name, float fps, skp_error *err)
 {
-	uint32_t frame_bytes = 2u * (uint32_t)range->dofs, room = w->payload - SKP_IMAGE_FRAMES_COUNT;
 	if (w->clip_count >= SKP_IMAGE_MAX_CLIPS)
 		return skp_fail(err, SKP_ERR_LIMIT, 0, "more than %d clips (board limit SKP_IMAGE_MAX_CLIPS)",
-				SKP_IMAGE_MAX_CLIPS);
+				SKP_IMAGE_MAX_CLIPS), NULL;
 	if (strlen(name) >= SKP_MAX_NAME)
-		return skp_fail(err, SKP_ERR_LIMIT, 0, "clip name '%s' longer than %d bytes", name,
-				SKP_MAX_NAME - 1);
-	if (range->dofs != w->s->dof_count || frame_bytes > room || frame_bytes == 0)
-		return skp_fail(err, SKP_ERR_RANGE, 0, "a frame of %d dofs does not fit a %lu-byte block",
-				range->dofs, (unsigned long)w->bs);
+		return skp_fail(err, SKP_ERR_LIMIT, 0, "clip name '%s' longer than %d bytes", name, SKP_MAX_NAME - 1),
+		       NULL;
 	if (!(fps > 0))
-		return skp_fail(err, SKP_ERR_RANGE, 0, "frame rate %g: expected > 0", (double)fps);
+		return skp_fail(err, SKP_ERR_RANGE, 0, "frame rate %g: expected > 0", (double)fps), NULL;
+	if (w->clip)
+		return skp_fail(err, SKP_ERR_RANGE, 0, "clip '%s' ended %lu frames early", w->clip->name,
+				(unsigned long)w->frames_left), NULL;
 	skp_image_clip *c = &w->dir[w->clip_count];
 	memset(c, 0, sizeof *c);
 	memcpy(c->name, name, strlen(name) + 1);
 	c->fps = fps;
+	return c;
+}
+
+skp_status skp_image_clip_begin(skp_image_writer *w, const char *name, float fps,
+				const skp_clip_range *range, skp_error *err)
+{
+	uint32_t frame_bytes = 2u * (uint32_t)range->dofs, room = w->payload - SKP_IMAGE_FRAMES_COUNT;
+	if (range->dofs != w->s->dof_count || frame_bytes > room || frame_bytes == 0)
+		return skp_fail(err, SKP_ERR_RANGE, 0, "a frame of %d dofs does not fit a %lu-byte block",
+				range->dofs, (unsigned long)w->bs);
+	skp_image_clip *c = new_entry(w, name, fps, err);
+	if (!c)
+		return SKP_ERR_RANGE;
 	c->frame_count = (uint32_t)range->frames;
 	c->first_number = (int32_t)range->first_number;
 	c->dofs = (uint16_t)range->dofs;
@@ -439,6 +453,91 @@ skp_status skp_image_clip_frame(skp_image_writer *w, const amc_frame *f, skp_err
 	return SKP_OK;
 }
 
+/* The codec's header and the segments' offsets (image_format.h). */
+static skp_status put_codec(skp_image_writer *w, skp_image_clip *c, const skp_coded_clip *k, skp_error *err)
+{
+	const codec_clip *cc = k->clip;
+	sec_begin(w, SKP_KIND_QUANT, (uint16_t)w->clip_count);
+	skp_status rc = put_u16(w, cc->tracks, err);
+	if (!rc) rc = put_u16(w, cc->segment_frames, err);
+	for (int i = 0; i < cc->tracks && !rc; i++) {
+		rc = put_f32(w, cc->track[i].base, err);
+		if (!rc) rc = put_f32(w, cc->track[i].step, err);
+		if (!rc) rc = put_u8(w, cc->track[i].bits, err);
+	}
+	for (uint32_t s = 0; s <= k->segments && !rc; s++)
+		rc = put_u32(w, k->offsets[s], err);
+	skp_image_section sec = { 0, 0, 0 };
+	if (!rc)
+		rc = sec_end(w, &sec, err);
+	c->quant_first = sec.first;
+	c->quant_blocks = sec.count;
+	return rc;
+}
+
+/* The stream in blocks, each with its count of bytes. */
+static skp_status put_stream(skp_image_writer *w, skp_image_clip *c, const uint8_t *bytes, uint32_t n,
+			     skp_error *err)
+{
+	uint32_t room = w->payload - SKP_IMAGE_FRAMES_COUNT;
+	sec_begin(w, SKP_KIND_FRAMES, (uint16_t)w->clip_count);
+	c->frames_first = w->next_block;
+	for (uint32_t at = 0; at < n; at += room) {
+		uint32_t k = n - at < room ? n - at : room;
+		le_put16(w->block + SKP_IMAGE_BLOCK_HDR, (uint16_t)k);
+		memcpy(w->block + SKP_IMAGE_BLOCK_HDR + SKP_IMAGE_FRAMES_COUNT, bytes + at, k);
+		w->fill = SKP_IMAGE_FRAMES_COUNT + k;
+		if (flush_block(w, err) != SKP_OK)
+			return SKP_ERR_IO;
+	}
+	c->frame_blocks = w->next_block - c->frames_first;
+	return SKP_OK;
+}
+
+static int offsets_ok(const skp_coded_clip *k)
+{
+	if (k->segments != codec_segments(k->clip) || k->offsets[0] != 0 || k->offsets[k->segments] != k->nbytes)
+		return 0;
+	for (uint32_t s = 0; s < k->segments; s++)
+		if (k->offsets[s + 1] < k->offsets[s] || k->offsets[s + 1] - k->offsets[s] > SKP_CODEC_SEGMENT_BYTES)
+			return 0;
+	return 1;
+}
+
+skp_status skp_image_clip_coded(skp_image_writer *w, const char *name, float fps, const skp_coded_clip *k,
+				skp_error *err)
+{
+	skp_error_clear(err);
+	if (w->hdr.version < 5)
+		return skp_fail(err, SKP_ERR_RANGE, 0, "clip '%s': format version %u has no compressed clips", name,
+				(unsigned)w->hdr.version);
+	if (k->clip->tracks != w->s->dof_count || k->clip->frames == 0 || codec_clip_check(k->clip, err) != SKP_OK ||
+	    !offsets_ok(k))
+		return skp_fail(err, SKP_ERR_RANGE, 0, "clip '%s': the compressed clip does not fit its skeleton or its segments",
+				name);
+	skp_image_clip *c = new_entry(w, name, fps, err);
+	if (!c)
+		return SKP_ERR_RANGE;
+	c->frame_count = k->clip->frames;
+	c->first_number = (int32_t)k->first_number;
+	c->dofs = k->clip->tracks;
+	c->coded = 1;
+	c->stream_bytes = k->nbytes;
+	c->segments = k->segments;
+	c->max_rot_err = k->max_rot_err;
+	c->max_trans_err = k->max_trans_err;
+	c->shell_err = k->shell_err;
+	c->unit_cm = k->unit_cm;
+	skp_status rc = put_codec(w, c, k, err);
+	if (!rc && w->clip_count == 0)
+		w->hdr.sec[SKP_SEC_CLIPS].first = c->quant_first;
+	if (!rc)
+		rc = put_stream(w, c, k->bytes, k->nbytes, err);
+	if (!rc)
+		w->clip_count++;
+	return rc;
+}
+
 static skp_status put_clip_entry(skp_image_writer *w, const skp_image_clip *c, skp_error *err)
 {
 	skp_status rc = put_str(w, c->name, err);
@@ -452,7 +551,14 @@ static skp_status put_clip_entry(skp_image_writer *w, const skp_image_clip *c, s
 	if (!rc) rc = put_u32(w, c->frames_first, err);
 	if (!rc) rc = put_u32(w, c->frame_blocks, err);
 	if (!rc) rc = put_f32(w, c->max_rot_err, err);
-	return rc ? rc : put_f32(w, c->max_trans_err, err);
+	if (!rc) rc = put_f32(w, c->max_trans_err, err);
+	if (rc || w->hdr.version < 5)
+		return rc;
+	rc = put_u8(w, c->coded, err);
+	if (!rc) rc = put_u32(w, c->stream_bytes, err);
+	if (!rc) rc = put_u32(w, c->segments, err);
+	if (!rc) rc = put_f32(w, c->shell_err, err);
+	return rc ? rc : put_f32(w, c->unit_cm, err);
 }
 
 skp_status skp_image_write_end(skp_image_writer *w, skp_error *err)

@@ -7,6 +7,7 @@
 #define IMAGE_WRITE_H
 
 #include "amc.h"
+#include "codec_format.h"
 #include "blockdev.h"
 #include "fk.h"
 #include "image_format.h"
@@ -54,7 +55,8 @@ typedef struct skp_image_writer {
 /* Starts an image on dev (dev->block_size is the image's block size) and
  * writes the skeleton section. id: the image's random id (every block
  * carries it). Set w->parity_group after it to choose the parity (default
- * 0: groups of 8 or more, see image_format.h). */
+ * 0: groups of 8 or more, see image_format.h), w->hdr.version to 4 to
+ * write a version 4 image (quantised clips only: for tests of old images). */
 skp_status skp_image_write_begin(skp_image_writer *w, skp_blockdev *dev, uint64_t sequence,
 				 const uint8_t id[SKP_IMAGE_ID_BYTES], const skel *s, skp_error *err);
 
@@ -68,6 +70,23 @@ skp_status skp_image_write_bind(skp_image_writer *w, const mesh *m, const skin_w
 skp_status skp_image_clip_begin(skp_image_writer *w, const char *name, float fps,
 				const skp_clip_range *range, skp_error *err);
 skp_status skp_image_clip_frame(skp_image_writer *w, const amc_frame *f, skp_error *err);
+
+/* A compressed clip as app/encode made it (the writer copies it into
+ * blocks; version 5 images only). */
+typedef struct skp_coded_clip {
+	const codec_clip *clip;
+	const uint8_t *bytes;     /* the segments, one after another */
+	uint32_t nbytes;
+	const uint32_t *offsets;  /* segments + 1: segment s is [offsets[s], offsets[s + 1]) */
+	uint32_t segments;
+	long first_number;        /* the first frame's number */
+	float max_rot_err, max_trans_err;  /* the largest |decoded - source| per kind of dof */
+	float shell_err, unit_cm;          /* the worst shell error (cm), cm a length unit */
+} skp_coded_clip;
+
+/* Writes a whole compressed clip (after any other clip has ended). */
+skp_status skp_image_clip_coded(skp_image_writer *w, const char *name, float fps, const skp_coded_clip *k,
+				skp_error *err);
 
 /* Writes the directory, the parity blocks and the directory copy (reading
  * the data blocks back: dev must read as well as write), the header copy,

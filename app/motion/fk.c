@@ -77,18 +77,23 @@ void fk_from_local(const skel *s, const skel_local *l, skel_pose *out)
 	}
 }
 
-/* The same steps bone by bone, without a whole skel_local on the stack. */
-void fk_pose(const skel *s, const float *values, skel_pose *out)
+void fk_pose_bone(const skel *s, int i, const float *values, skel_pose *out)
 {
 	vec3 trans;
 	float stretch;
-	quat rot = bone_local(s, 0, values, &trans, &stretch);
-	pose_root(s, rot, trans, out);
-	for (int k = 1; k < s->count; k++) {
-		int i = s->eval_order[k];
-		rot = bone_local(s, i, values, &trans, &stretch);
+	quat rot = bone_local(s, i, values, &trans, &stretch);
+	if (i == 0)
+		pose_root(s, rot, trans, out);
+	else
 		pose_bone(s, i, rot, trans, stretch, out);
-	}
+}
+
+/* The same steps bone by bone, without a whole skel_local on the stack. */
+void fk_pose(const skel *s, const float *values, skel_pose *out)
+{
+	fk_pose_bone(s, 0, values, out);
+	for (int k = 1; k < s->count; k++)
+		fk_pose_bone(s, s->eval_order[k], values, out);
 }
 
 vec3 fk_tip_centre(const skel_pose *pose, int count)

@@ -35,6 +35,10 @@ void fk_pose(const skel *s, const float *values, skel_pose *out);
 void fk_local(const skel *s, const float *values, skel_local *out);
 void fk_from_local(const skel *s, const skel_local *l, skel_pose *out);
 
+/* fk_pose's step for bone i alone (out holds its parent's pose already):
+ * what the encoder takes again for the bones below a track it changed. */
+void fk_pose_bone(const skel *s, int i, const float *values, skel_pose *out);
+
 /* The middle of the bounding box of the first count bones' tips: what the
  * renderer's camera follows, and what image acceptance wants on the body. */
 vec3 fk_tip_centre(const skel_pose *pose, int count);

@@ -2,7 +2,7 @@
  * block is lost beyond repair is not decoded: the last good frame is held
  * in its place (the rest pose when the clip starts in a bad block), and
  * the caller is told through on_lost, so a dying flash costs smoothness,
- * never the show. Seeks go by block. */
+ * never the show. Seeks go by block (a compressed clip's by segment). */
 #ifndef PLAY_IMAGE_SOURCE_H
 #define PLAY_IMAGE_SOURCE_H
 

@@ -1,11 +1,13 @@
-/* skintool bench-image show.skn [--amc M.amc ...] [--runs N]
+/* skintool bench-image show.skn [--amc M.amc ...] [--runs N] [--acl PROGRAM]
  * Figures of a flash image: time from nothing to the first decoded frame
  * (open, header, directory, skeleton, bind data, quantisation, first frame
- * block; no GL), decode time per frame, and bytes per frame packed against
- * the AMC text it came from; the size parity and the header copy add, and
- * the time to the first frame again with one block of the bind section
- * damaged (rebuilt from parity on the way). Best of N runs (the machine is
- * shared). */
+ * block; no GL); per clip its motion's figures (bench_image_codec.h: bytes
+ * a frame, the ratio against 10 float32 a bone a frame, the shell error
+ * against the source, decode time, ACL's figures beside them) and bytes per
+ * frame against the AMC text it came from; the size parity and the header
+ * copy add, and the time to the first frame again with one block of the
+ * bind section damaged (rebuilt from parity on the way). Best of N runs
+ * (the machine is shared). */
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -14,6 +16,7 @@
 
 #include "cli_common.h"
 #include "cli_opts.h"
+#include "bench_image_codec.h"
 #include "cli_show.h"
 #include "clock.h"
 #include "fk.h"
@@ -56,40 +59,18 @@ static int time_first_frame(const char *path, first_frame_ns *t)
 	return 0;
 }
 
-/* Decodes every frame of clip c; returns ns per frame. */
-static double time_decode(show_image *img, int c)
-{
-	static skp_clip_stream pl;
-	static amc_frame f;
-	skp_error err;
-	if (skp_clip_stream_open(&pl, &img->im, c, &err) != SKP_OK)
-		return -1;
-	uint64_t t0 = clock_now_ns();
-	long n = 0;
-	int r;
-	while ((r = skp_clip_stream_next(&pl, &f, &err)) != 0)
-		n++;
-	return n ? (double)(clock_now_ns() - t0) / (double)n : 0;
-}
-
-static void print_clip(show_image *img, int c, const char *amc)
+/* The clip's motion figures, then its bytes against the AMC text. */
+static int print_clip(show_image *img, const skel *s, int c, const char *amc, const char *acl)
 {
 	const skp_image_clip *cl = &img->im.clip[c];
+	if (bench_clip_motion(img, s, c, amc, acl) < 0)
+		return -1;
 	double packed = (double)cl->frame_blocks * img->im.hdr.block_size / cl->frame_count;
-	double best = 1e30;
-	for (int run = 0; run < 5; run++) {
-		double ns = time_decode(img, c);
-		if (ns >= 0 && ns < best)
-			best = ns;
-	}
-	printf("clip %s: %lu frames, %d dofs: %.1f bytes per frame packed (%d of values, blocks included), "
-	       "decode %.2f us per frame", cl->name, (unsigned long)cl->frame_count, cl->dofs, packed,
-	       2 * cl->dofs, best * 1e-3);
 	struct stat st;
 	if (amc && stat(amc, &st) == 0)
-		printf("; AMC text %.1f bytes per frame (%.1fx larger)", (double)st.st_size / cl->frame_count,
+		printf("  AMC text %.1f bytes per frame (%.1fx the packed frame blocks)\n", (double)st.st_size / cl->frame_count,
 		       (double)st.st_size / cl->frame_count / packed);
-	printf("\n");
+	return 0;
 }
 
 static first_frame_ns best_first_frame(const char *path, long runs)
@@ -144,22 +125,28 @@ static void print_parity(const show_image *img)
 }
 
 typedef struct bench_image_args {
-	const char *path, *amc[SKP_IMAGE_MAX_CLIPS];
+	const char *path, *amc[SKP_IMAGE_MAX_CLIPS], *acl;
 	long runs;
 	int amc_count;
 } bench_image_args;
 
-enum { OPT_AMC = 1, OPT_RUNS };
+enum { OPT_AMC = 1, OPT_RUNS, OPT_ACL };
 
 static const cli_opt bench_image_opts[] = {
 	{ "amc", 0, "M.amc", OPT_AMC, "the clip's source AMC, to compare bytes per frame (repeat per clip)" },
 	{ "runs", 0, "N", OPT_RUNS, "time the first frame N times and keep the best (default 10)" },
+	{ "acl", 0, "PROGRAM", OPT_ACL, "also compress each clip's source (--amc) with ACL's anchor "
+					"(../shared/tools/acl-bench, built) and print its figures beside ours" },
 	{ NULL, 0, NULL, 0, NULL },
 };
 
 static int bi_take(void *ctx, int id, const char *v)
 {
 	bench_image_args *a = ctx;
+	if (id == OPT_ACL) {
+		a->acl = v;
+		return 0;
+	}
 	if (id == OPT_AMC) {
 		if (a->amc_count == SKP_IMAGE_MAX_CLIPS)
 			return fprintf(stderr, "skintool bench-image: more than %d --amc\n", SKP_IMAGE_MAX_CLIPS), -1;
@@ -180,15 +167,21 @@ static int bi_file(void *ctx, const char *arg)
 
 static const cli_command bench_image_command = {
 	.prog = "skintool bench-image",
-	.usage = "SHOW.skn [--amc=M.amc]... [--runs=N]",
+	.usage = "SHOW.skn [--amc=M.amc]... [--runs=N] [--acl=PROGRAM]",
 	.about = "An image's time to the first frame (open, header, skeleton and body, first block and\n"
-		 "decode; no GL) and its bytes per frame, decode time per frame and parity overhead.",
+		 "decode; no GL), its parity overhead, and per clip: bytes a frame, the ratio against 10 float32\n"
+		 "a bone a frame (ACL's raw measure), decode time a frame, and with the clip's source (--amc, in\n"
+		 "clip order) the worst and 99th-percentile shell error (ACL's measure: points 3 cm along each\n"
+		 "joint's axes, cm) and, with --acl, ACL's own figures on the same frames (skipped, saying so,\n"
+		 "when the anchor is not built).",
 	.opts = { bench_image_opts },
 	.take = bi_take,
 	.positional = bi_file,
 	.examples = (const cli_example[]){
 		{ "An image's time to the first frame, and its bytes per frame against the AMC text",
 		  "skintool bench-image show.skn --amc=02_01.amc" },
+		{ "Side by side with ACL (the anchor built as ../shared/tools/README.md says)",
+		  "skintool bench-image show.skn --amc=02_01.amc --acl=anchors/acl_bench" },
 		{ NULL, NULL },
 	},
 };
@@ -221,8 +214,15 @@ int cmd_bench_image(int argc, char **argv)
 	print_parity(&img);
 	if (img.im.hdr.parity_blocks)
 		time_with_rebuild(path, &img, runs, total_ms(&best));
-	for (int c = 0; c < img.im.clip_count; c++)
-		print_clip(&img, c, c < amc_count ? amc[c] : NULL);
+	static skel s;
+	if (skp_image_load_skel(&img.im, &s, &err) != SKP_OK) {
+		cli_error(path, &err);
+		show_image_close(&img);
+		return 1;
+	}
+	rc = 0;
+	for (int c = 0; c < img.im.clip_count && !rc; c++)
+		rc = print_clip(&img, &s, c, c < amc_count ? amc[c] : NULL, a.acl) < 0;
 	show_image_close(&img);
-	return 0;
+	return rc;
 }

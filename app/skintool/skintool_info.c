@@ -66,12 +66,16 @@ static void print_clips(const show_image *s)
 {
 	for (int i = 0; i < s->im.clip_count; i++) {
 		const skp_image_clip *c = &s->im.clip[i];
-		printf("  clip %d      %s: %lu frames at %g fps (%.2f s), frames %ld..%ld, blocks %lu..%lu "
-		       "(%u frames per block), worst-case error %.3g rad (%.3g deg), %.3g length units\n",
+		printf("  clip %d      %s: %lu frames at %g fps (%.2f s), frames %ld..%ld, blocks %lu..%lu ",
 		       i, c->name, (unsigned long)c->frame_count, (double)c->fps, c->frame_count / (double)c->fps,
 		       (long)c->first_number, (long)c->first_number + (long)c->frame_count - 1,
-		       (unsigned long)c->quant_first, (unsigned long)(c->frames_first + c->frame_blocks) - 1,
-		       (unsigned)c->frames_per_block, (double)c->max_rot_err,
+		       (unsigned long)c->quant_first, (unsigned long)(c->frames_first + c->frame_blocks) - 1);
+		if (c->coded)
+			printf("(compressed: %.1f bytes a frame in %lu segments, shell error worst %.4f cm), ",
+			       c->stream_bytes / (double)c->frame_count, (unsigned long)c->segments, (double)c->shell_err);
+		else
+			printf("(%u frames per block), ", (unsigned)c->frames_per_block);
+		printf("worst-case error %.3g rad (%.3g deg), %.3g length units\n", (double)c->max_rot_err,
 		       (double)c->max_rot_err * 57.29577951308232, (double)c->max_trans_err);
 	}
 }
@@ -89,7 +93,11 @@ static void bad_block(void *ctx, uint32_t b, const skp_block_report *r)
 	if (r->role == SKP_ROLE_DATA && (r->kind == SKP_KIND_QUANT || r->kind == SKP_KIND_FRAMES)) {
 		const skp_image_clip *c = &s->im.clip[r->item];
 		printf(" of clip %s", c->name);
-		if (r->kind == SKP_KIND_FRAMES) {
+		if (r->kind == SKP_KIND_FRAMES && c->coded) {
+			long room = (long)h->block_size - SKP_IMAGE_BLOCK_EXTRA - SKP_IMAGE_FRAMES_COUNT;
+			long first = (long)(b - c->frames_first) * room;
+			printf(", compressed stream bytes %ld..%ld", first, first + room - 1);
+		} else if (r->kind == SKP_KIND_FRAMES) {
 			long first = (long)(b - c->frames_first) * c->frames_per_block;
 			long last = first + c->frames_per_block - 1;
 			if (last >= (long)c->frame_count)

@@ -9,7 +9,8 @@
  * synced: a pack cut short, even by kill -9, leaves the previous OUT whole
  * and no temporary behind; two packs to one OUT each write whole. Parity:
  * --parity G (data blocks per group, 2 or more) or none; the default is
- * groups of 8 (image_format.h). */
+ * groups of 8 (image_format.h). Clips are compressed (app/encode: every
+ * frame within --error of ACL's shell measure) unless --raw. */
 #include <errno.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -23,7 +24,9 @@
 #include "cli_progress.h"
 #include "cli_quiet.h"
 #include "cli_show.h"
+#include "tool_clip.h"
 #include "image_write.h"
+#include "pack_encode.h"
 #include "random_bytes.h"
 #include "skp_format.h"
 #include "skintool_cmds.h"
@@ -40,6 +43,8 @@ typedef struct pack_args {
 	long sequence;
 	long block_size;
 	int parity;               /* data blocks per parity group; 0 default, -1 none */
+	int raw;                  /* --raw: 16-bit quantised clips, not compressed */
+	pack_codec codec;
 } pack_args;
 
 static int parse_parity(pack_args *p, const char *v)
@@ -57,13 +62,19 @@ static int parse_parity(pack_args *p, const char *v)
 	return 0;
 }
 
-enum { OPT_FPS = 1, OPT_SEQUENCE, OPT_BLOCK_SIZE, OPT_PARITY };
+enum { OPT_FPS = 1, OPT_SEQUENCE, OPT_BLOCK_SIZE, OPT_PARITY, OPT_RAW, OPT_ERROR, OPT_UNIT };
 
 static const cli_opt pack_cmd_opts[] = {
 	{ "fps", 0, "F", OPT_FPS, "the clips' capture rate in Hz (default: a BVH's own, else 120, the CMU rate)" },
 	{ "sequence", 0, "N", OPT_SEQUENCE, "the image's sequence number: the newest valid slot plays (default: now)" },
 	{ "block-size", 0, "B", OPT_BLOCK_SIZE, "the flash block size in bytes (default 4096)" },
 	{ "parity", 0, "G|none", OPT_PARITY, "one parity block per G data blocks, or none (default 8)" },
+	{ "error", 0, "CM", OPT_ERROR, "the worst error a compressed clip may have, in cm at points 3 cm from each joint "
+				       "(ACL's measure; default 0.01)" },
+	{ "unit", 0, "CM", OPT_UNIT, "cm a skeleton length unit, for --error (default 2.54 for an ASF with "
+				     ":units length 0.45, as CMU's, else 1)" },
+	{ "raw", 0, NULL, OPT_RAW, "store clips as 16-bit values a dof (128 bytes a CMU frame; fast to pack), "
+				   "not compressed" },
 	{ NULL, 0, NULL, 0, NULL },
 };
 
@@ -110,6 +121,17 @@ static int pack_take(void *ctx, int id, const char *v)
 		return 0;
 	case OPT_BLOCK_SIZE: return cli_parse_long("--block-size", v, &p->block_size);
 	case OPT_PARITY: return parse_parity(p, v);
+	case OPT_RAW: p->raw = 1; return 0;
+	case OPT_ERROR:
+	case OPT_UNIT: {
+		char *end;
+		double x = strtod(v, &end);
+		if (*end || !(x >= 1e-6 && x <= 1e6))
+			return fprintf(stderr, "skintool pack: --%s expects centimetres (1e-6 to 1e6), got '%s'\n",
+				       id == OPT_ERROR ? "error" : "unit", v), -1;
+		*(id == OPT_ERROR ? &p->codec.error_cm : &p->codec.unit_cm) = x;
+		return 0;
+	}
 	}
 	return -1;
 }
@@ -149,6 +171,7 @@ static int pack_parse(pack_args *p, int argc, char **argv)
 	p->fps = 0.0;   /* not given: the BVH's rate, else 120 */
 	p->sequence = (long)time(NULL);
 	p->block_size = SKP_IMAGE_DEFAULT_BLOCK;
+	p->codec.error_cm = 0.01;
 	int rc = cli_parse(&pack_command, p, argc, argv, 0);
 	if (rc != 0)
 		return rc;
@@ -199,6 +222,41 @@ static int clip_range(const char *path, const skel *s, skp_clip_range *range, do
 		fprintf(stderr, "%s: no frames\n", path);
 		return -1;
 	}
+	return r;
+}
+
+/* Pass 1's checks (numbering, finite values) on a clip held whole. */
+static int check_clip(const char *path, const skel *s, const tool_clip *c)
+{
+	static skp_clip_range range;
+	static amc_frame f;
+	skp_error err;
+	skp_clip_range_init(&range, s);
+	for (long i = 0; i < c->n; i++) {
+		f.number = c->first_number + i;
+		f.line = 0;
+		memcpy(f.value, c->frames + (size_t)i * (size_t)c->dofs, sizeof(float) * (size_t)c->dofs);
+		if (skp_clip_range_add(&range, &f, &err) != SKP_OK) {
+			cli_error(path, &err);
+			return -1;
+		}
+	}
+	return 0;
+}
+
+static int pack_coded(skp_image_writer *w, const char *path, double fps, const pack_codec *o)
+{
+	static tool_clip c;
+	char name[SKP_MAX_NAME + 16];
+	if (tool_clip_load(path, w->s, &c) < 0)
+		return -1;
+	clip_name(path, name, sizeof name);
+	if (fps <= 0)
+		fps = c.rate > 0 ? c.rate : 120.0;
+	int r = check_clip(path, w->s, &c);
+	if (r == 0)
+		r = pack_encode_clip(w, path, name, fps, &c, o);
+	tool_clip_free(&c);
 	return r;
 }
 
@@ -294,7 +352,7 @@ static int write_image(const pack_args *p, const bound_body *body, storage_file 
 		return -1;
 	}
 	for (int i = 0; i < p->amc_count; i++)
-		if (pack_clip(&w, p->amc[i], p->fps) < 0)
+		if ((p->raw ? pack_clip(&w, p->amc[i], p->fps) : pack_coded(&w, p->amc[i], p->fps, &p->codec)) < 0)
 			return -1;
 	if (skp_image_write_end(&w, &err) != SKP_OK) {
 		cli_error(p->out, &err);

@@ -28,6 +28,11 @@
 
 #include "emb_port.h"
 #include "emb_tables.h"
+#ifdef EMB_FULL
+#include "codec_decode.h"
+#include "codec_synth.h"
+#include "emb_codec.h"
+#endif
 #include "emb_soa.h" /* after emb_tables.h */
 #include "skin_kernels.h" /* the fixed kernel itself: skin_run would link the float ones */
 
@@ -407,6 +412,43 @@ static int sampler_checksum(uint32_t *sum)
 }
 #endif
 
+#ifdef EMB_FULL
+/* The compressed clip coded on the host (emb_codec.h, from integers:
+ * tests/support/codec_synth.h) decoded here, its values' bits hashed:
+ * decode is bit-exact across boards when this equals the host's. */
+static int codec_checksum(void)
+{
+	static codec_clip c;
+	static codec_decoder d;
+	static float v[CODEC_SYNTH_TRACKS];
+	skp_error err;
+	uint32_t h = 2166136261u;
+	long frames = 0;
+	codec_synth_clip(&c);
+	if (codec_clip_check(&c, &err) != SKP_OK)
+		return fail("codec", &err);
+	for (uint32_t s = 0; s < EMB_CODEC_SEGMENTS; s++) {
+		if (codec_begin(&d, &c, s, emb_codec_bytes + emb_codec_offset[s], emb_codec_offset[s + 1] - emb_codec_offset[s],
+				&err) != SKP_OK)
+			return fail("codec", &err);
+		int r;
+		while ((r = codec_next(&d, v, &err)) == 1) {
+			h = codec_synth_hash(h, v, CODEC_SYNTH_TRACKS);
+			frames++;
+		}
+		if (r < 0)
+			return fail("codec", &err);
+	}
+	char line[80], hex[11];
+	skp_format(line, sizeof line, "emb: codec: %ld frames of %d tracks decoded", frames, CODEC_SYNTH_TRACKS);
+	say(line);
+	hex32(hex, h);
+	emb_puts("emb: codec checksum ");
+	say(hex);
+	return frames == CODEC_SYNTH_FRAMES ? 0 : 1;
+}
+#endif
+
 /* Decimal without a formatter: the fixed-only builds (Cortex-M0) link no
  * floating point at all, and skp_format carries %g. */
 static void put_int(long v)
@@ -440,7 +482,7 @@ int emb_main(void)
 	say(hex);
 #ifdef EMB_FULL
 	uint32_t sum;
-	if (pipeline_on_target(&sum) || sampler_checksum(&sum))
+	if (pipeline_on_target(&sum) || sampler_checksum(&sum) || codec_checksum())
 		return 1;
 #endif
 	say("emb: done");

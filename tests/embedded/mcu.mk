@@ -23,7 +23,7 @@ CPPFLAGS    := -Iboard/$(BOARD) -MMD -MP
 CFLAGS_APP  := -std=c11 $(WARN) $(BOARD_CFLAGS) $(EXTRA_CFLAGS)
 HOST_CFLAGS := -std=c11 $(WARN) -O2 -g $(EXTRA_CFLAGS)
 EMB_DEFS    := $(if $(filter 1,$(MCU_FULL)),-DEMB_FULL)
-EMB_INC     := -Itests/embedded -I$(OUT)/emb $(MCU_INC) -Iapp/skin/kernels
+EMB_INC     := -Itests/embedded -Itests/support -I$(OUT)/emb $(MCU_INC) -Iapp/skin/kernels
 
 CORE_OBJ      := $(CORE_SRC:%.c=$(OUT)/%.o)
 HOST_CORE_OBJ := $(CORE_SRC:%.c=$(OUT)/host/%.o)
@@ -36,6 +36,8 @@ EMB_HOST      := $(OUT)/host/emb_skin
 BENCH_ELF     := $(OUT)/emb_bench.elf
 BENCH_HOST    := $(OUT)/host/emb_bench
 EMB_GEN       := $(OUT)/host/emb_gen
+EMB_CODEC_GEN := $(OUT)/host/emb_codec_gen
+EMB_CODEC     := $(OUT)/emb/emb_codec.h
 DEMO_AMC      := $(OUT)/assets/demo.amc
 
 .PHONY: all test size bench clean help
@@ -80,11 +82,19 @@ $(EMB_TABLES): $(EMB_GEN) assets/demo.asf $(DEMO_AMC) $(FLAGS_STAMP)
 	$(EMB_GEN) assets/demo.asf $(DEMO_AMC) $(EMB_FRAMES) $(EMB_STRIDE) $@ $(EMB_FLOAT)
 $(EMB_FLOAT): $(EMB_TABLES)
 	@test -f $@
+# the compressed clip of tests/support/codec_synth.h, coded on the host by
+# app/encode's segment coder (host only: it allocates)
+$(OUT)/host/app/encode/encode_segment.o: MOD_INC = $(call mod_inc,encode)
+$(EMB_CODEC_GEN): tests/embedded/emb_codec_gen.c $(OUT)/host/app/encode/encode_segment.o $(HOST_CORE_LIB)
+	$(HOSTCC) $(CPPFLAGS) -Itests/support $(call mod_inc,encode) $(HOST_CFLAGS) $(filter %.c %.o %.a,$^) -lm -o $@
+$(EMB_CODEC): $(EMB_CODEC_GEN)
+	@mkdir -p $(@D)
+	$(EMB_CODEC_GEN) $@
 
-$(OUT)/emb/%.o: tests/embedded/%.c $(EMB_TABLES) $(EMB_FLOAT) $(FLAGS_STAMP)
+$(OUT)/emb/%.o: tests/embedded/%.c $(EMB_TABLES) $(EMB_FLOAT) $(EMB_CODEC) $(FLAGS_STAMP)
 	@mkdir -p $(@D)
 	$(CC) $(CPPFLAGS) $(EMB_INC) $(EMB_DEFS) $(CFLAGS_APP) -c $< -o $@
-$(OUT)/host/emb/%.o: tests/embedded/%.c $(EMB_TABLES) $(EMB_FLOAT) $(FLAGS_STAMP)
+$(OUT)/host/emb/%.o: tests/embedded/%.c $(EMB_TABLES) $(EMB_FLOAT) $(EMB_CODEC) $(FLAGS_STAMP)
 	@mkdir -p $(@D)
 	$(HOSTCC) $(CPPFLAGS) $(EMB_INC) $(EMB_DEFS) $(HOST_CFLAGS) -c $< -o $@
 
@@ -131,6 +141,10 @@ test: deps
 	ts=$$(sed -n 's/^emb: sampler checksum //p' $(OUT)/emb_target.log); \
 	if [ "$$hs" != "$$ts" ]; then echo "emb: FAILED: $(BOARD) sampler checksum '$$ts' != host '$$hs'"; fail=1; \
 	elif [ -n "$$hs" ]; then echo "emb: $(BOARD) sampler checksum $$ts equals the host's (app/play: poses by time)"; fi; \
+	hc=$$(sed -n 's/^emb: codec checksum //p' $(OUT)/emb_host.log); \
+	tc=$$(sed -n 's/^emb: codec checksum //p' $(OUT)/emb_target.log); \
+	if [ "$$hc" != "$$tc" ]; then echo "emb: FAILED: $(BOARD) codec checksum '$$tc' != host '$$hc'"; fail=1; \
+	elif [ -n "$$hc" ]; then echo "emb: $(BOARD) codec checksum $$tc equals the host's (app/codec: decoded bits)"; fi; \
 	h=$$(sed -n 's/^emb: stress checksum //p' $(OUT)/emb_host.log); \
 	t=$$(sed -n 's/^emb: stress checksum //p' $(OUT)/emb_target.log); \
 	if [ -z "$$h" ] || [ "$$h" != "$$t" ]; then echo "emb: FAILED: $(BOARD) stress checksum '$$t' != host '$$h'"; fail=1; \

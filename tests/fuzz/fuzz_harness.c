@@ -176,11 +176,15 @@ int fuzz_image(const uint8_t *data, size_t size)
 	for (int c = 0; c < im.clip_count; c++) {
 		if (skp_clip_stream_open(&stream, &im, c, &err) != SKP_OK)
 			continue;
-		skp_accept_clip(&sk, &im.clip[c], stream.qmin, stream.qstep, &err);
+		static float qmin[SKP_MAX_DOF], qstep[SKP_MAX_DOF];
+		if (skp_image_load_quant(&im, c, qmin, qstep, &err) == SKP_OK)
+			skp_accept_clip(&sk, &im.clip[c], qmin, qstep, &err);
 		skp_image_check_frames(&im, c, &err);
 		for (int i = 0; i < 4096 && skp_clip_stream_next(&stream, &frame, &err) > 0; i++)
 			;
 		skp_clip_stream_seek(&stream, 1);
+		skp_clip_stream_next(&stream, &frame, &err);
+		skp_clip_stream_seek(&stream, im.clip[c].frame_count / 2); /* a compressed clip: mid-segment */
 		skp_clip_stream_next(&stream, &frame, &err);
 	}
 	for (uint32_t b = 0; b < im.hdr.block_count && b < 64; b++)

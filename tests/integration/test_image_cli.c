@@ -89,7 +89,8 @@ static int info_names(const char *image, long want)
 }
 
 /* Each frame of the image's clip against the AMC parsed from text: within
- * the clip's step / 2 on every dof. */
+ * the clip's step / 2 on every dof (quantised), or within the directory's
+ * worst-case errors, which pack measured on its own decode (compressed). */
 static void compare_clip(const char *image, const char *asf_path, const char *amc_path, long frames)
 {
 	static skel s, s2;
@@ -120,12 +121,13 @@ static void compare_clip(const char *image, const char *asf_path, const char *am
 		assert_int_equal(got.number, want.number);
 		for (int d = 0; d < s.dof_count; d++) {
 			double e = fabs((double)got.value[d] - want.value[d]);
-			double tol = pl.qstep[d] * 0.5 * (1 + 1e-6) + 2e-7 * fabs(want.value[d]);
+			double tol = pl.c.coded ? fmax(pl.c.max_rot_err, pl.c.max_trans_err) * (1 + 1e-6) + 1e-7
+						: pl.qstep[d] * 0.5 * (1 + 1e-6) + 2e-7 * fabs(want.value[d]);
 			if (e > tol)
 				fail_msg("%s frame %ld dof %d: %.9g decoded, %.9g in the AMC (step %.3g)", amc_path,
 					 want.number, d, (double)got.value[d], (double)want.value[d], (double)pl.qstep[d]);
 			worst = fmax(worst, e);
-			bound = fmax(bound, pl.qstep[d] * 0.5);
+			bound = fmax(bound, pl.c.coded ? fmax(pl.c.max_rot_err, pl.c.max_trans_err) : pl.qstep[d] * 0.5);
 		}
 		n++;
 	}
@@ -146,6 +148,14 @@ static void test_pack_decode_every_clip(void **state)
 		snprintf(asf, sizeof asf, "%s", test_data_path(test_clips[i].asf));
 		snprintf(amc, sizeof amc, "%s", test_data_path(test_clips[i].amc));
 		const char *image = test_scratch("clip.skn");
+		assert_int_equal(test_run("%s pack --raw '%s' '%s' -o '%s' >/dev/null", test_tool_path("skintool"), asf, amc,
+					  image), 0);
+		assert_int_equal(info_names(image, -1), 0);
+		compare_clip(image, asf, amc, test_clips[i].frames);
+		/* compressed (what pack writes by default): three clips, the
+		 * encoder's time kept short (every clip's error is test_codec's) */
+		if (i > 2)
+			continue;
 		assert_int_equal(test_run("%s pack '%s' '%s' -o '%s' >/dev/null", test_tool_path("skintool"), asf, amc, image), 0);
 		assert_int_equal(info_names(image, -1), 0);
 		compare_clip(image, asf, amc, test_clips[i].frames);
@@ -271,10 +281,10 @@ static void test_info_refuses_truncated_and_wrong_version(void **state)
 	assert_int_equal(truncate(bad, size - 100), 0);
 	expect_info(bad, 2, "short read (header copy): repairable");
 	copy(image, bad);
-	set_version(bad, 5);
-	expect_info(bad, 2, "image format version 5, this build reads version 4");
+	set_version(bad, 6);
+	expect_info(bad, 2, "image format version 6, this build reads versions 4 to 5");
 	copy(image, bad);
-	set_version(bad, 4);
+	set_version(bad, 5);
 	expect_info(bad, 0, "all good");
 	expect_info(test_scratch("missing.skn"), 1, "cannot open");
 }
@@ -307,6 +317,86 @@ static long frame_block(const char *image, int k, long *parity)
 	return block;
 }
 
+/* The largest distance between the positions of two fk CSVs (the same
+ * rows, bone for bone), and of their quaternion components. */
+static void csv_gap(const char *a, const char *b, long *rows, double *pos, double *rot)
+{
+	FILE *fa = fopen(a, "r"), *fb = fopen(b, "r");
+	char la[512], lb[512];
+	assert_non_null(fa);
+	assert_non_null(fb);
+	*rows = 0;
+	*pos = *rot = 0;
+	assert_non_null(fgets(la, sizeof la, fa));
+	assert_non_null(fgets(lb, sizeof lb, fb));
+	assert_string_equal(la, lb);
+	while (fgets(la, sizeof la, fa)) {
+		assert_non_null(fgets(lb, sizeof lb, fb));
+		char wa[64], wb[64], ba[64], bb[64];
+		double x[7], y[7];
+		assert_int_equal(sscanf(la, "%63[^,],%63[^,],%lf,%lf,%lf,%lf,%lf,%lf,%lf", wa, ba, &x[0], &x[1], &x[2], &x[3],
+					&x[4], &x[5], &x[6]), 9);
+		assert_int_equal(sscanf(lb, "%63[^,],%63[^,],%lf,%lf,%lf,%lf,%lf,%lf,%lf", wb, bb, &y[0], &y[1], &y[2], &y[3],
+					&y[4], &y[5], &y[6]), 9);
+		assert_string_equal(wa, wb); /* frame or time */
+		assert_string_equal(ba, bb); /* the bone */
+		*pos = fmax(*pos, sqrt((x[0] - y[0]) * (x[0] - y[0]) + (x[1] - y[1]) * (x[1] - y[1]) + (x[2] - y[2]) * (x[2] - y[2])));
+		for (int i = 3; i < 7; i++)
+			*rot = fmax(*rot, fabs(x[i] - y[i]));
+		++*rows;
+	}
+	assert_null(fgets(lb, sizeof lb, fb));
+	fclose(fa);
+	fclose(fb);
+}
+
+/* skintool fk of a packed (compressed) clip: the source's CSV, row for row,
+ * every bone's tip within 0.03 cm (the joints within ACL's 0.01 cm shell
+ * error; a tip past the last joint carries its rotation's error along the
+ * bone), at frames and at times; bench-image's figures, ACL's skipped when
+ * its anchor is not there. */
+static void test_fk_and_bench_of_a_packed_clip(void **state)
+{
+	(void)state;
+	if (!test_data_path("mocap"))
+		skip();
+	char asf[1024], amc[1024];
+	snprintf(asf, sizeof asf, "%s", test_data_path("mocap/cmu/02.asf"));
+	snprintf(amc, sizeof amc, "%s", test_data_path("mocap/cmu/02_01.amc"));
+	const char *image = test_scratch("fk.skn"), *a = test_scratch("a.csv"), *b = test_scratch("b.csv");
+	const char *tool = test_tool_path("skintool");
+	assert_int_equal(test_run("%s pack '%s' '%s' -o '%s' >/dev/null", tool, asf, amc, image), 0);
+	static const char *const opts[] = { "", "--frame=100", "--time=0.5 --time=1.234 --time=9" };
+	for (int i = 0; i < 3; i++) {
+		long rows;
+		double pos, rot;
+		assert_int_equal(test_run("%s fk '%s' %s >'%s'", tool, image, opts[i], a), 0);
+		assert_int_equal(test_run("%s fk '%s' '%s' %s >'%s'", tool, asf, amc, opts[i], b), 0);
+		csv_gap(a, b, &rows, &pos, &rot);
+		printf("fk %s: %ld rows, tips within %.4f cm, quaternions within %.2g\n", opts[i], rows, pos * 2.54, rot);
+		assert_int_equal(rows, i == 0 ? 343 * 31 : i == 1 ? 31 : 3 * 31);
+		assert_true(pos * 2.54 <= 0.03);
+		assert_true(rot <= 2e-3);
+	}
+	assert_int_equal(test_run("%s fk '%s' --clip=02_01 --frame=1 >/dev/null", tool, image), 0);
+	assert_int_equal(test_run("%s fk '%s' --clip=nope >/dev/null 2>&1", tool, image), 1);
+	const char *out = test_scratch("bench.txt");
+	assert_int_equal(test_run("%s bench-image '%s' --amc='%s' --runs=1 --acl=/nonexistent/acl_bench >'%s'", tool, image,
+				  amc, out), 0);
+	char *text = slurp(out);
+	double bytes, ratio, worst, p99;
+	const char *at = strstr(text, "clip 02_01: compressed, ");
+	assert_non_null(at);
+	assert_int_equal(sscanf(at, "clip 02_01: compressed, %lf bytes a frame (%lf:1", &bytes, &ratio), 2);
+	at = strstr(text, "worst ");
+	assert_non_null(at);
+	assert_int_equal(sscanf(at, "worst %lf cm, 99th percentile %lf cm", &worst, &p99), 2);
+	assert_true(ratio >= 30 && fabs(bytes * ratio / (40.0 * 31) - 1) < 0.003); /* printed to 0.1 */
+	assert_true(worst <= 0.01 && p99 <= worst && p99 > 0);
+	assert_non_null(strstr(text, "ACL: skipped (/nonexistent/acl_bench"));
+	free(text);
+}
+
 static void test_skinplay_rebuilds_and_holds(void **state)
 {
 	(void)state;
@@ -317,9 +407,11 @@ static void test_skinplay_rebuilds_and_holds(void **state)
 	snprintf(amc, sizeof amc, "%s", test_data_path("mocap/cmu/09_06.amc"));
 	const char *image = test_scratch("walk.skn"), *bad = test_scratch("walk_bad.skn"), *log = test_scratch("play.log");
 	const char *bare = test_scratch("walk_bare.skn");
-	assert_int_equal(test_run("%s pack '%s' '%s' --sequence 10 -o '%s' >/dev/null", test_tool_path("skintool"), asf,
+	/* --raw: a frames block holds 32 frames (compressed, the whole clip
+	 * fits two blocks: tests/unit/test_image_codec.c damages those) */
+	assert_int_equal(test_run("%s pack --raw '%s' '%s' --sequence 10 -o '%s' >/dev/null", test_tool_path("skintool"), asf,
 			     amc, image), 0);
-	assert_int_equal(test_run("%s pack '%s' '%s' --sequence 10 --parity none -o '%s' >/dev/null",
+	assert_int_equal(test_run("%s pack --raw '%s' '%s' --sequence 10 --parity none -o '%s' >/dev/null",
 				  test_tool_path("skintool"), asf, amc, bare), 0);
 	/* the image's third frame block: the clip's frames 65..96 */
 	long parity, block = frame_block(image, 2, &parity);
@@ -353,7 +445,7 @@ static void test_skinplay_rebuilds_and_holds(void **state)
 
 	/* two slots: the damaged one is newer, the intact one plays */
 	const char *newer = test_scratch("walk_newer.skn");
-	assert_int_equal(test_run("%s pack '%s' '%s' --sequence 20 -o '%s' >/dev/null", test_tool_path("skintool"), asf,
+	assert_int_equal(test_run("%s pack --raw '%s' '%s' --sequence 20 -o '%s' >/dev/null", test_tool_path("skintool"), asf,
 			     amc, newer), 0);
 	snprintf(args, sizeof args, "--image '%s' --image '%s' --frames 2", newer, image);
 	assert_int_equal(play(args, log), 0);
@@ -405,6 +497,7 @@ int main(void)
 		cmocka_unit_test(test_info_random_bytes_of_big_image),
 		cmocka_unit_test(test_info_refuses_truncated_and_wrong_version),
 		cmocka_unit_test(test_skinplay_rebuilds_and_holds),
+		cmocka_unit_test(test_fk_and_bench_of_a_packed_clip),
 	};
 	return cmocka_run_group_tests(tests, test_scratch_setup, test_scratch_teardown);
 }

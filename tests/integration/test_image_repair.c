@@ -54,9 +54,11 @@ static int setup(void **state)
 	short_clip(b, 24);
 	snprintf(image, sizeof image, "%s", test_scratch("show.skn"));
 	snprintf(two, sizeof two, "%s", test_scratch("two.skn"));
-	if (test_run("%s pack assets/demo.asf '%s' --sequence 3 -o '%s' >/dev/null", test_tool_path("skintool"), a,
+	/* --raw: several frames blocks a clip, for the block-level cases (a
+	 * compressed clip's are tests/unit/test_image_codec.c's) */
+	if (test_run("%s pack --raw assets/demo.asf '%s' --sequence 3 -o '%s' >/dev/null", test_tool_path("skintool"), a,
 		     image) ||
-	    test_run("%s pack assets/demo.asf '%s' '%s' --parity 4 --sequence 3 -o '%s' >/dev/null",
+	    test_run("%s pack --raw assets/demo.asf '%s' '%s' --parity 4 --sequence 3 -o '%s' >/dev/null",
 		     test_tool_path("skintool"), a, b, two))
 		return -1;
 	return 0;

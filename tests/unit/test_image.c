@@ -360,7 +360,7 @@ static void patch_header(void (*fn)(uint8_t *p), int fix_header_crc)
 	skp_block_seal(copy, BS);
 }
 
-static void set_version_5(uint8_t *p) { le_put16(p + 8, 5); }
+static void set_version_6(uint8_t *p) { le_put16(p + 8, 6); }
 static void set_sequence(uint8_t *p) { le_put64(p + 20, 777); }
 static void set_many_bones(uint8_t *p) { le_put32(p + 44, SKP_MAX_BONES + 1); }
 static void set_magic(uint8_t *p) { p[0] = 'X'; }
@@ -379,8 +379,8 @@ static void test_refusals(void **state)
 	(void)state;
 	load_inputs();
 	pack(5, NULL);
-	patch_header(set_version_5, 1);
-	expect_refusal("version 5, this build reads version 4", SKP_ERR_CORRUPT);
+	patch_header(set_version_6, 1);
+	expect_refusal("version 6, this build reads versions 4 to 5", SKP_ERR_CORRUPT);
 	pack(5, NULL);
 	patch_header(set_sequence, 0);
 	expect_refusal("header CRC mismatch", SKP_ERR_CORRUPT);
@@ -478,7 +478,7 @@ static void test_parity_layout(void **state)
 	pack_with(3, NULL, 0);
 	assert_int_equal(open_image(img_size, &err), SKP_OK);
 	const skp_image_header *h = &im.hdr;
-	assert_int_equal(h->version, 4);
+	assert_int_equal(h->version, 5);
 	assert_int_equal(h->parity_blocks, skp_parity_blocks(h->data_blocks, 0));
 	assert_int_equal(h->block_count, h->copy_block + 1);
 	assert_int_equal(h->dir_copy, h->data_blocks + h->parity_blocks);
