@@ -66,7 +66,8 @@ skp_status codec_clip_check(const codec_clip *c, skp_error *err)
 				(unsigned)c->tracks, SKP_MAX_DOF, (unsigned)c->segment_frames);
 	for (int i = 0; i < c->tracks; i++) {
 		const codec_track *t = &c->track[i];
-		float top = codec_value(t, t->bits ? (int32_t)((1u << t->bits) - 1u) : 0);
+		/* the width first: the top's shift needs it below 32 */
+		float top = t->bits <= CODEC_MAX_BITS ? codec_value(t, (int32_t)((1u << t->bits) - 1u)) : 0.0f;
 		if (t->bits > CODEC_MAX_BITS || !isfinite(t->base) || !isfinite(t->step) || !(t->step >= 0) ||
 		    !isfinite(top))
 			return skp_fail(err, SKP_ERR_CORRUPT, 0, "compressed clip: track %d: bits %u, base %g, step %g", i + 1,
