@@ -36,7 +36,9 @@ typedef struct frame_stats {
  * region (its first vertex's) with the joint nearest to that vertex makes
  * a tetrahedron, posed with the posed joint; their sum over the region,
  * over the same sum as bound, is the region's volume ratio. A collapsing
- * elbow shrinks it, a bulging one swells it, whatever the rest does. */
+ * elbow shrinks it, a bulging one swells it, whatever the rest does. Only
+ * the triangles the body's volume is measured on count (measure.h: the
+ * outer closed parts). */
 typedef struct region_volume {
 	int8_t tri_region[SKP_MAX_TRIS];   /* -1: no region */
 	int16_t tri_joint[SKP_MAX_TRIS];

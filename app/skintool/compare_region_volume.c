@@ -25,13 +25,28 @@ static void sum_regions(const compare_run *c, const float *pos, const skel_pose 
 	}
 }
 
+/* Is triangle t one the body's volume is measured on? The measure keeps
+ * the outer closed parts' triangles in mesh order (parts.h), so they are
+ * matched in one pass; a mesh without a closed part keeps them all. */
+static int in_volume(const compare_run *c, int t, int *next)
+{
+	const measure_state *ms = &c->meas;
+	if (*next < ms->vol_tri_count && memcmp(ms->vol_tri[*next], c->body.mesh.tri[t], sizeof ms->vol_tri[0]) == 0) {
+		++*next;
+		return 1;
+	}
+	return 0;
+}
+
 void compare_region_volume_init(compare_run *c)
 {
 	const mesh *m = &c->body.mesh;
+	int next = 0;
 	for (int t = 0; t < m->tri_count; t++) {
-		int v = (int)m->tri[t][0];
-		c->rv.tri_region[t] = (int8_t)c->region[v];
-		c->rv.tri_joint[t] = (int16_t)(c->region[v] >= 0 ? c->joint[v] : 0);
+		int v = (int)m->tri[t][0], counted = in_volume(c, t, &next);
+		/* inner parts (joint balls, eyes) are left out as in the body's volume */
+		c->rv.tri_region[t] = (int8_t)(counted ? c->region[v] : -1);
+		c->rv.tri_joint[t] = (int16_t)(counted && c->region[v] >= 0 ? c->joint[v] : 0);
 	}
 	sum_regions(c, c->meas.bind_xyz, &c->body.pose, c->rv.bind);
 }

@@ -695,8 +695,8 @@ static void expect_fail(const char *args, const char *message)
 }
 
 /* The volume on a body with parts: a box inside the body is left out of
- * the volume (the volume column is the plain body's to the digit, the page
- * says what was measured), and a body whose parts each have a hole (the
+ * the volume (the volume column and the elbow region's volume are the
+ * plain body's to the digit, the page says what was measured), and a body whose parts each have a hole (the
  * generated arm's two tubes, every 400th face taken out) has no volume: both
  * volume verdicts say "not measured" instead of yes or no. */
 static void write_variant(const char *body_obj, const char *out, int inner_box, int drop_faces)
@@ -736,8 +736,8 @@ static char *compare_page(const char *obj, const char *name, char **csv)
 {
 	char cmd[4096], dir[1100], path[1200];
 	snprintf(dir, sizeof dir, "%s/%s", workdir, name);
-	snprintf(cmd, sizeof cmd, "%s compare tests/data/tiny.asf tests/data/tiny.amc --mesh %s --balance off "
-		 "--group body --renders 0 -o %s 2>/dev/null", test_tool_path("skintool"), obj, dir);
+	snprintf(cmd, sizeof cmd, "%s compare %s/arm.asf %s/arm.amc --mesh %s --balance off "
+		 "--group body --renders 0 -o %s 2>/dev/null", test_tool_path("skintool"), workdir, workdir, obj, dir);
 	assert_int_equal(sh(cmd, NULL), 0);
 	snprintf(path, sizeof path, "%s/metrics.csv", dir);
 	*csv = slurp(path);
@@ -754,7 +754,17 @@ static void test_parts_and_holes(void **state)
 	snprintf(body, sizeof body, "%s/tiny_body.obj", workdir);
 	snprintf(inner, sizeof inner, "%s/tiny_inner.obj", workdir);
 	snprintf(open, sizeof open, "%s/tiny_open.obj", workdir);
-	snprintf(cmd, sizeof cmd, "%s mannequin tests/data/tiny.asf -o %s", test_tool_path("skintool"), made);
+	/* the tiny arm with CMU's names, so that its lower bone is an elbow
+	 * region (report.c) and the region volumes are measured too */
+	for (int i = 0; i < 2; i++) {
+		static const char *const ext[2] = { "asf", "amc" };
+		char arm[1100];
+		snprintf(cmd, sizeof cmd, "sed 's/\\<upper\\>/lhumerus/g; s/\\<lower\\>/lradius/g' tests/data/tiny.%s",
+			 ext[i]);
+		snprintf(arm, sizeof arm, "%s/arm.%s", workdir, ext[i]);
+		assert_int_equal(sh(cmd, arm), 0);
+	}
+	snprintf(cmd, sizeof cmd, "%s mannequin %s/arm.asf -o %s", test_tool_path("skintool"), workdir, made);
 	assert_int_equal(sh(cmd, NULL), 0);
 	write_variant(made, body, 0, 0);
 	write_variant(made, inner, 1, 0);
@@ -768,6 +778,15 @@ static void test_parts_and_holes(void **state)
 			      "teeth) left out."))
 		fail_msg("the page does not say what its volume was measured on");
 	assert_string_equal(plain_csv, inner_csv);
+	/* the elbow's own volume leaves the box out too (it took 18.29% to
+	 * 17.53% when counted) */
+	const char *elbow_plain = strstr(element(plain, "region-volume"), "<tr><td>elbows</td><td>");
+	const char *elbow_inner = strstr(element(with_box, "region-volume"), "<tr><td>elbows</td><td>");
+	assert_non_null(elbow_plain);
+	assert_non_null(elbow_inner);
+	assert_true(strchr(elbow_plain + strlen("<tr><td>elbows</td><td>"), '%') != NULL);
+	assert_int_equal(strcspn(elbow_plain, "\n"), strcspn(elbow_inner, "\n"));
+	assert_memory_equal(elbow_plain, elbow_inner, strcspn(elbow_plain, "\n"));
 	const char *v = element(holed, "verdict-dqbs-volume");
 	static const char unmeasured[] = "<b>not measured</b> &mdash; no part of the mesh is closed (";
 	assert_true(strncmp(strstr(v, "<b>"), unmeasured, strlen(unmeasured)) == 0);
