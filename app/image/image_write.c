@@ -343,6 +343,18 @@ static int is_rotation(const skel *s, int dof)
 	return 0;
 }
 
+/* Closes a clip's quantisation section (rc: how writing it went) and
+ * notes where it lies. */
+static skp_status quant_end(skp_image_writer *w, skp_image_clip *c, skp_status rc, skp_error *err)
+{
+	skp_image_section sec = { 0, 0, 0 };
+	if (!rc)
+		rc = sec_end(w, &sec, err);
+	c->quant_first = sec.first;
+	c->quant_blocks = sec.count;
+	return rc;
+}
+
 static skp_status put_quant(skp_image_writer *w, skp_image_clip *c, const skp_clip_range *r,
 			    skp_error *err)
 {
@@ -358,12 +370,7 @@ static skp_status put_quant(skp_image_writer *w, skp_image_clip *c, const skp_cl
 		if (!rc)
 			rc = put_f32(w, w->qstep[i], err);
 	}
-	skp_image_section sec = { 0, 0, 0 };
-	if (!rc)
-		rc = sec_end(w, &sec, err);
-	c->quant_first = sec.first;
-	c->quant_blocks = sec.count;
-	return rc;
+	return quant_end(w, c, rc, err);
 }
 
 /* The next directory entry, its name and rate checked; NULL when they
@@ -467,12 +474,7 @@ static skp_status put_codec(skp_image_writer *w, skp_image_clip *c, const skp_co
 	}
 	for (uint32_t s = 0; s <= k->segments && !rc; s++)
 		rc = put_u32(w, k->offsets[s], err);
-	skp_image_section sec = { 0, 0, 0 };
-	if (!rc)
-		rc = sec_end(w, &sec, err);
-	c->quant_first = sec.first;
-	c->quant_blocks = sec.count;
-	return rc;
+	return quant_end(w, c, rc, err);
 }
 
 /* The stream in blocks, each with its count of bytes. */

@@ -207,14 +207,23 @@ static void test_info_names_every_block(void **state)
 	}
 }
 
+/* The shared CMU walk (02.asf, 02_01.amc) into asf and amc (1024 bytes
+ * each); 0 when the shared data is not there. */
+static int cmu_walk(char *asf, char *amc)
+{
+	if (!test_data_path("mocap"))
+		return 0;
+	snprintf(asf, 1024, "%s", test_data_path("mocap/cmu/02.asf"));
+	snprintf(amc, 1024, "%s", test_data_path("mocap/cmu/02_01.amc"));
+	return 1;
+}
+
 static void test_info_random_bytes_of_big_image(void **state)
 {
 	(void)state;
-	if (!test_data_path("mocap"))
-		skip();
 	char asf[1024], amc[1024];
-	snprintf(asf, sizeof asf, "%s", test_data_path("mocap/cmu/02.asf"));
-	snprintf(amc, sizeof amc, "%s", test_data_path("mocap/cmu/02_01.amc"));
+	if (!cmu_walk(asf, amc))
+		skip();
 	char image[512], bad[512];
 	snprintf(image, sizeof image, "%s", test_scratch("big.skn"));
 	snprintf(bad, sizeof bad, "%s", test_scratch("big_bad.skn"));
@@ -358,11 +367,9 @@ static void csv_gap(const char *a, const char *b, long *rows, double *pos, doubl
 static void test_fk_and_bench_of_a_packed_clip(void **state)
 {
 	(void)state;
-	if (!test_data_path("mocap"))
-		skip();
 	char asf[1024], amc[1024];
-	snprintf(asf, sizeof asf, "%s", test_data_path("mocap/cmu/02.asf"));
-	snprintf(amc, sizeof amc, "%s", test_data_path("mocap/cmu/02_01.amc"));
+	if (!cmu_walk(asf, amc))
+		skip();
 	const char *image = test_scratch("fk.skn"), *a = test_scratch("a.csv"), *b = test_scratch("b.csv");
 	const char *tool = test_tool_path("skintool");
 	assert_int_equal(test_run("%s pack '%s' '%s' -o '%s' >/dev/null", tool, asf, amc, image), 0);
