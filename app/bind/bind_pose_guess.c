@@ -152,6 +152,14 @@ static void turn_upper(guess_ctx *c, int leg, int u, float *values, bind_guess_a
 	out->to_deg = elevation_deg(vec3_sub(w->pose.tip[u], w->pose.head[u]), c->roles.up);
 }
 
+/* The bones below the lower bone l: hands, thumbs, feet, toes. */
+static void turn_ends(guess_ctx *c, int l, float *values, bind_guess_arm *out)
+{
+	for (int k = 1; k < c->s->count; k++)
+		if (c->s->bone[k].parent == l)
+			out->ends += bind_guess_ends(c->s, &c->roles, c->m, k, values, &c->w->pose);
+}
+
 static void guess_limb(guess_ctx *c, int start, float *values, bind_guess_arm *out)
 {
 	bind_guess_work *w = c->w;
@@ -177,9 +185,19 @@ static void guess_limb(guess_ctx *c, int start, float *values, bind_guess_arm *o
 		out->ends += bind_guess_ring(c->s, c->m, u, values, &w->pose);
 		out->ends += bind_guess_ring(c->s, c->m, l, values, &w->pose);
 	}
-	for (int k = 1; k < c->s->count; k++)
-		if (c->s->bone[k].parent == l)
-			out->ends += bind_guess_ends(c->s, &c->roles, c->m, k, values, &w->pose);
+	turn_ends(c, l, values, out);
+	/* then the chain from the collar bone (hip joint) to the lower bone
+	 * through the middle of the limb, and the ends once more from there */
+	unsigned char on_chain[SKP_MAX_BONES] = { 0 };
+	for (int b = l, guard = 0; b > 0 && guard < SKP_MAX_BONES; b = c->s->bone[b].parent, guard++) {
+		on_chain[b] = 1;
+		if (b == start)
+			break;
+	}
+	if (bind_guess_chain(c->s, c->m, start, on_chain, values, &w->chain) > 0) {
+		out->ends++;
+		turn_ends(c, l, values, out);
+	}
 }
 
 void bind_guess_pose(const skel *s, const mesh *m, float *values, bind_guess_work *w,

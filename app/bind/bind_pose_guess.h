@@ -13,6 +13,7 @@
 
 #include "fk.h"
 #include "mesh.h"
+#include "bind_pose_chain.h"
 
 #define BIND_GUESS_MAX_ARMS 8   /* limbs: arms and legs */
 
@@ -36,6 +37,7 @@ typedef struct bind_guess_result {
 typedef struct bind_guess_work {
 	skel_pose pose;
 	float elevation[GUESS_MAX_SAMPLES];
+	bind_chain_work chain;
 } bind_guess_work;
 
 /* values: the starting pose (all 0: the rest pose), changed in place to

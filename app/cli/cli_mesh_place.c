@@ -23,7 +23,7 @@ static int fit_mesh(const char *obj, bound_body *body)
 		return -1;
 	}
 	body->fitted = 1;
-	return 0;
+	return 1;
 }
 
 static int auto_fit(const char *obj, bound_body *body)
@@ -42,10 +42,10 @@ static int auto_fit(const char *obj, bound_body *body)
 		"%.4g %.4g %.4g); --no-fit keeps it as it is\n", obj, (double)f->mesh_height,
 		(double)f->skel_height, (double)f->scale, (double)f->offset.x, (double)f->offset.y,
 		(double)f->offset.z);
-	return 0;
+	return 1;
 }
 
-static void say_guess(const char *obj, const bound_body *body, const bind_guess_result *g)
+static void say_guess(const char *obj, const bound_body *body, const bind_guess_result *g, float refit)
 {
 	int ends = 0;
 	fprintf(cli_note(), "%s: bound in the mesh's own pose:", obj);
@@ -62,6 +62,9 @@ static void say_guess(const char *obj, const bound_body *body, const bind_guess_
 	if (ends)
 		fprintf(cli_note(), "; %d turns of limbs, hands, thumbs, feet and toes to the mesh's cross-sections and "
 			"ends", ends);
+	if (refit != 1.0f)
+		fprintf(cli_note(), "; the mesh fitted again to that pose (scale %.4g more) and the guess carried on",
+			(double)refit);
 	fprintf(cli_note(), " (--bind-pose P.amc[:F] or --bind-pose rest chooses)\n");
 }
 
@@ -104,12 +107,45 @@ static int check_shape(const bind_args *a, const char *obj, const bound_body *bo
 	return a->force ? 0 : -1;
 }
 
+/* The mesh was fitted to the skeleton as it stood before the guess; the
+ * guessed pose stands otherwise (legs closer together stand taller), so
+ * the mesh is fitted again to that pose and the guess carried on from
+ * where it was, its turns said from where they started. Returns the
+ * second fit's scale. */
+static float refit_to_guess(bound_body *body, float *values, bind_guess_work *w)
+{
+	bind_fit_result f;
+	skp_error err;
+	set_pose(body, values);
+	if (bind_fit_measure(body->mesh.pos, body->mesh.vert_count, &body->skel, &body->pose, &f, &err) != SKP_OK)
+		return 1.0f;
+	bind_fit_apply(body->mesh.pos, body->mesh.vert_count, &f);
+	body->fit.scale *= f.scale;
+	body->fit.offset = vec3_add(vec3_scale(body->fit.offset, f.scale), f.offset);
+	body->fit.skel_height = f.skel_height;
+	static bind_guess_result first;
+	first = body->guess;
+	bind_guess_pose(&body->skel, &body->mesh, values, w, &body->guess);
+	for (int i = 0; i < body->guess.arm_count && i < first.arm_count; i++) {
+		bind_guess_arm *a = &body->guess.arm[i];
+		a->from_deg = first.arm[i].from_deg;
+		a->lower_turn_deg = first.arm[i].lower_turn_deg;
+		a->ends += first.arm[i].ends;
+	}
+	body->guess.turned = first.turned;
+	return f.scale;
+}
+
 int cli_place_mesh(const bind_args *a, const char *obj, bound_body *body)
 {
-	int generated = cli_obj_is_generated(obj);
+	int generated = cli_obj_is_generated(obj), fitted = 0;
 	if (!generated && check_shape(a, obj, body) < 0)
 		return -1;
-	if (a->fit ? fit_mesh(obj, body) < 0 : !a->no_fit && !generated && auto_fit(obj, body) < 0)
+	if (a->fit)
+		fitted = fit_mesh(obj, body);
+	else if (!a->no_fit && !generated)
+		fitted = auto_fit(obj, body);
+	if (fitted < 0)
 		return -1;
 	if (a->pose_path || a->rest_pose)
 		return 0;
@@ -125,8 +161,9 @@ int cli_place_mesh(const bind_args *a, const char *obj, bound_body *body)
 	memcpy(values, start, sizeof values);
 	bind_guess_pose(&body->skel, &body->mesh, values, w, &body->guess);
 	if (body->guess.turned) {
+		float refit = fitted ? refit_to_guess(body, values, w) : 1.0f;
 		set_pose(body, values);
-		say_guess(obj, body, &body->guess);
+		say_guess(obj, body, &body->guess, refit);
 	}
 	return 0;
 }

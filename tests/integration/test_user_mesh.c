@@ -94,8 +94,8 @@ static char *run_bind(const char *extra, const char *csv)
 
 /* The tolerance: over the torso, head and limbs (the vertices the
  * hand-flagged run gives to a bone that is not a hand's or a foot's), at
- * least 90% keep their dominant bone and the mean weight change (half the
- * L1 distance) stays within 0.10; over every vertex, 82% (issue 33 asks
+ * least 95% keep their dominant bone and the mean weight change (half the
+ * L1 distance) stays within 0.06; over every vertex, 85% (issue 33 asks
  * 90%: app/bind/README.md says what is missing). */
 static void test_makehuman_without_flags(void **state)
 {
@@ -117,13 +117,18 @@ static void test_makehuman_without_flags(void **state)
 	free(run_bind("--group body --fit --bind-pose tests/data/makehuman_apose.amc", test_scratch("hand.csv")));
 	load_dense(test_scratch("auto.csv"), &auto_w);
 	load_dense(test_scratch("hand.csv"), &hand_w);
-	long n = 0, same = 0, all_same = 0;
+	long n = 0, same = 0, all_same = 0, foot[2] = { 0, 0 }, hand[2] = { 0, 0 };
 	double change = 0;
 	for (long v = 0; v < MH_VERTS; v++) {
 		const char *dom = hand_w.bone[dominant(&hand_w, v)];
-		all_same += !strcmp(auto_w.bone[dominant(&auto_w, v)], dom);
-		if (is_extremity(dom))
+		int kept = !strcmp(auto_w.bone[dominant(&auto_w, v)], dom);
+		all_same += kept;
+		if (is_extremity(dom)) {
+			long *part = strstr(dom, "foot") || strstr(dom, "toes") ? foot : hand;
+			part[0]++;
+			part[1] += kept;
 			continue;
+		}
 		n++;
 		same += !strcmp(auto_w.bone[dominant(&auto_w, v)], dom);
 		double d = 0;
@@ -137,13 +142,17 @@ static void test_makehuman_without_flags(void **state)
 	print_message("MakeHuman without flags against the hand-flagged run: %ld body vertices, %.1f%% keep "
 		      "their dominant bone, mean weight change %.3f\n", n, 100.0 * (double)same / (double)n,
 		      change / (double)n);
-	/* every vertex, hands and feet included (bind_pose_ends.h): 65.6% before
-	 * the guess turned hands, thumbs, feet and toes, 83.1% after */
-	print_message("and of all %d vertices %.1f%%\n", MH_VERTS, 100.0 * (double)all_same / MH_VERTS);
-	assert_true((double)all_same >= 0.82 * MH_VERTS);
+	/* every vertex, hands and feet included: 65.6% before the guess turned
+	 * hands, thumbs, feet and toes (bind_pose_ends.h), 83.1% after, 85.4%
+	 * with each limb's chain fitted to the limb (bind_pose_chain.h) and
+	 * the mesh fitted again to the guessed pose */
+	print_message("and of all %d vertices %.1f%% (hands %.1f%% of %ld, feet %.1f%% of %ld)\n", MH_VERTS,
+		      100.0 * (double)all_same / MH_VERTS, 100.0 * (double)hand[1] / (double)hand[0], hand[0],
+		      100.0 * (double)foot[1] / (double)foot[0], foot[0]);
+	assert_true((double)all_same >= 0.85 * MH_VERTS);
 	assert_true(n > 7000);
-	assert_true((double)same >= 0.90 * (double)n);
-	assert_true(change / (double)n <= 0.10);
+	assert_true((double)same >= 0.95 * (double)n);
+	assert_true(change / (double)n <= 0.06);
 }
 
 static void test_flags_keep_what_they_say(void **state)

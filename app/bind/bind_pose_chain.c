@@ -1,0 +1,110 @@
+#include "bind_pose_chain.h"
+
+#include <math.h>
+
+#define CHAIN_MIN_VERTS 50
+#define CHAIN_SWEEPS    6    /* per step size: a limb settles in two or three */
+#define DEG             0.017453292519943295f
+
+/* Steps tried on each channel, coarse to fine. */
+static const float chain_step[] = { 8.0f * DEG, 4.0f * DEG, 2.0f * DEG, 1.0f * DEG, 0.5f * DEG };
+
+static int in_limb(const skel *s, int start, int b)
+{
+	for (int guard = 0; b > 0 && guard < SKP_MAX_BONES; guard++, b = s->bone[b].parent)
+		if (b == start)
+			return 1;
+	return 0;
+}
+
+static float seg_dist2(const skel_pose *p, int b, vec3 q)
+{
+	vec3 d = vec3_sub(p->tip[b], p->head[b]), r = vec3_sub(q, p->head[b]);
+	float dd = vec3_dot(d, d), t = dd > 0.0f ? vec3_dot(r, d) / dd : 0.0f;
+	vec3 e = vec3_madd(r, d, -fminf(1.0f, fmaxf(0.0f, t)));
+	return vec3_dot(e, e);
+}
+
+static int nearest_bone(const skel *s, const skel_pose *p, vec3 q)
+{
+	int best = 0;
+	float bd = INFINITY;
+	for (int b = 1; b < s->count; b++) {
+		float d = seg_dist2(p, b, q);
+		if (d < bd) {
+			bd = d;
+			best = b;
+		}
+	}
+	return best;
+}
+
+static int pick_verts(const skel *s, const mesh *m, int start, bind_chain_work *w)
+{
+	int n = 0;
+	for (int v = 0; v < m->vert_count; v++) {
+		int b = nearest_bone(s, &w->pose, m->pos[v]);
+		if (b != start && in_limb(s, start, b))
+			w->vert[n++] = v;
+	}
+	return n;
+}
+
+/* The mean squared distance from the limb's vertices to its bones. */
+static double chain_cost(const skel *s, const mesh *m, int start, int n, const float *values, bind_chain_work *w)
+{
+	fk_pose(s, values, &w->pose);
+	double sum = 0.0;
+	for (int i = 0; i < n; i++) {
+		vec3 q = m->pos[w->vert[i]];
+		float best = INFINITY;
+		for (int b = start; b < s->count; b++)
+			if (in_limb(s, start, b))
+				best = fminf(best, seg_dist2(&w->pose, b, q));
+		sum += best;
+	}
+	return sum / n;
+}
+
+/* One channel tried a step each way: 1 when a step was kept. */
+static int try_channel(const skel *s, const mesh *m, int start, int n, float *v, float step, float *values,
+		       double *cost, bind_chain_work *w)
+{
+	float was = *v;
+	for (int sign = -1; sign <= 1; sign += 2) {
+		*v = was + (float)sign * step;
+		double now = chain_cost(s, m, start, n, values, w);
+		if (now < *cost) {
+			*cost = now;
+			return 1;
+		}
+	}
+	*v = was;
+	return 0;
+}
+
+int bind_guess_chain(const skel *s, const mesh *m, int start, const unsigned char *turn, float *values,
+		     bind_chain_work *w)
+{
+	if (start <= 0 || start >= s->count)
+		return 0;
+	fk_pose(s, values, &w->pose);
+	int n = pick_verts(s, m, start, w), kept = 0;
+	if (n < CHAIN_MIN_VERTS)
+		return 0;
+	double cost = chain_cost(s, m, start, n, values, w);
+	for (int k = 0; k < (int)(sizeof chain_step / sizeof chain_step[0]); k++)
+		for (int sweep = 0, moved = 1; moved && sweep < CHAIN_SWEEPS; sweep++) {
+			moved = 0;
+			for (int b = start; b < s->count; b++)
+				for (int c = 0; turn[b] && in_limb(s, start, b) && c < s->bone[b].channel_count; c++)
+					if (s->bone[b].channel[c] <= SKEL_RZ &&
+					    try_channel(s, m, start, n, &values[s->bone[b].dof_offset + c], chain_step[k],
+							values, &cost, w)) {
+						moved = 1;
+						kept++;
+					}
+		}
+	fk_pose(s, values, &w->pose);
+	return kept;
+}
