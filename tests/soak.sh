@@ -21,22 +21,47 @@ for f in "$tool" "$play" "$amc"; do
 	[ -e "$f" ] || { echo "soak: $f missing (make all first)"; exit 1; }
 done
 
-"$tool" pack assets/demo.asf "$amc" -o "$dir/show.skn" >"$dir/pack.log" 2>&1 || { cat "$dir/pack.log"; exit 1; }
+# small blocks and large parity groups: the compressed clip (7 bytes a
+# frame) then has 18 frames blocks against 5 groups, room for five faults in
+# distinct groups with a lost pair inside the clip
+"$tool" pack assets/demo.asf "$amc" --block-size=512 --parity=256 -o "$dir/show.skn" >"$dir/pack.log" 2>&1 ||
+	{ cat "$dir/pack.log"; exit 1; }
 bs=$("$tool" info "$dir/show.skn" | sed -n 's/^ *blocks *[0-9]* of \([0-9]*\) bytes.*/\1/p')
-range=$("$tool" info "$dir/show.skn" | sed -n 's/^ *clip 0 .* blocks \([0-9]*\)\.\.\([0-9]*\) .*/\1 \2/p')
+# the clip's frames blocks (after its quantisation or codec header)
+range=$("$tool" info "$dir/show.skn" | sed -n 's/^ *clip 0 .* blocks [0-9]*\.\.\([0-9]*\) (frames from \([0-9]*\)).*/\2 \1/p')
 set -- $range
 [ -n "$bs" ] && [ $# = 2 ] || { echo "soak: cannot read the image layout"; exit 1; }
 first=$1; last=$2
 groups=$("$tool" info "$dir/show.skn" | sed -n 's/^ *parity .*: \([0-9]*\) groups .*/\1/p')
+segs=$("$tool" info "$dir/show.skn" | sed -n 's/^ *clip 0 .* in \([0-9]*\) segments.*/\1/p')
 [ -n "$groups" ] || { echo "soak: the image has no parity"; exit 1; }
-# block b is in group b mod groups: the three rebuilt ones and the lost
-# pair's group must all differ, and the pair must lie inside the clip
-rebuilt="$((first + 1)) $(((first + last) / 2)) $((last - 1))"
-lost="$((first + 2)) $((first + 2 + groups))"
+# block b is in group b mod groups: the lost pair (b and b + groups, one
+# group) and the three rebuilt ones each in a group of its own, all inside
+# the clip: the pair first, then the rebuilt ones spread from both ends
+# and the middle to the nearest block of an unused group. A compressed
+# clip loses the segments a lost block touches, and their other blocks
+# are not read: the rebuilt ones keep a segment and more (span) away.
+placed=$(awk -v first="$first" -v last="$last" -v g="$groups" -v segs="${segs:-0}" 'BEGIN {
+	span = segs > 0 ? int((last - first + 1) / segs) + 2 : 0
+	for (b = first + 1; b + g <= last; b++) { lost = b; break }
+	if (!lost) exit 1
+	used[lost % g] = 1
+	want[1] = first + 1; want[2] = int((first + last) / 2); want[3] = last - 1
+	for (i = 1; i <= 3; i++) {
+		got = 0
+		for (d = 0; d <= last - first && !got; d++)
+			for (s = -1; s <= 1 && !got; s += 2) {
+				b = want[i] + s * d
+				far = (b - lost > span || lost - b > span) && (b - lost - g > span || lost + g - b > span)
+				if (b > first && b < last && !((b % g) in used) && far) got = b
+			}
+		if (!got) exit 1
+		used[got % g] = 1; rebuilt = rebuilt " " got
+	}
+	print substr(rebuilt, 2) "|" lost " " lost + g
+}') || { echo "soak: cannot place the faults in clip blocks $first..$last with $groups parity groups"; exit 1; }
+rebuilt=${placed%|*}; lost=${placed#*|}
 faults="$rebuilt $lost"
-distinct=$(for b in $rebuilt $((first + 2)); do echo $((b % groups)); done | sort -u | wc -l)
-[ "$distinct" = 4 ] && [ $((first + 2 + groups)) -le "$last" ] ||
-	{ echo "soak: cannot place the faults in clip blocks $first..$last with $groups parity groups"; exit 1; }
 cp "$dir/show.skn" "$dir/damaged.skn"
 for b in $faults; do
 	off=$((b * bs + 100))

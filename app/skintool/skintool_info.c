@@ -66,10 +66,12 @@ static void print_clips(const show_image *s)
 {
 	for (int i = 0; i < s->im.clip_count; i++) {
 		const skp_image_clip *c = &s->im.clip[i];
-		printf("  clip %d      %s: %lu frames at %g fps (%.2f s), frames %ld..%ld, blocks %lu..%lu ",
+		printf("  clip %d      %s: %lu frames at %g fps (%.2f s), frames %ld..%ld, blocks %lu..%lu "
+		       "(frames from %lu) ",
 		       i, c->name, (unsigned long)c->frame_count, (double)c->fps, c->frame_count / (double)c->fps,
 		       (long)c->first_number, (long)c->first_number + (long)c->frame_count - 1,
-		       (unsigned long)c->quant_first, (unsigned long)(c->frames_first + c->frame_blocks) - 1);
+		       (unsigned long)c->quant_first, (unsigned long)(c->frames_first + c->frame_blocks) - 1,
+		       (unsigned long)c->frames_first);
 		if (c->coded)
 			printf("(compressed: %.1f bytes a frame in %lu segments, shell error worst %.4f cm), ",
 			       c->stream_bytes / (double)c->frame_count, (unsigned long)c->segments, (double)c->shell_err);
