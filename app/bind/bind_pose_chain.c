@@ -39,41 +39,50 @@ static int nearest_bone(const skel *s, const skel_pose *p, vec3 q)
 	return best;
 }
 
-static int pick_verts(const skel *s, const mesh *m, int start, bind_chain_work *w)
+static int pick_verts(const skel *s, const mesh *m, int start, const skel_pose *pose, int *vert)
 {
 	int n = 0;
 	for (int v = 0; v < m->vert_count; v++) {
-		int b = nearest_bone(s, &w->pose, m->pos[v]);
+		int b = nearest_bone(s, pose, m->pos[v]);
 		if (b != start && in_limb(s, start, b))
-			w->vert[n++] = v;
+			vert[n++] = v;
 	}
 	return n;
 }
 
+/* What the fit works with. */
+typedef struct chain_ctx {
+	const skel *s;
+	const mesh *m;
+	int start, n;
+	const int *vert;
+	skel_pose *pose;
+} chain_ctx;
+
 /* The mean squared distance from the limb's vertices to its bones. */
-static double chain_cost(const skel *s, const mesh *m, int start, int n, const float *values, bind_chain_work *w)
+static double chain_cost(const chain_ctx *c, const float *values)
 {
-	fk_pose(s, values, &w->pose);
+	const skel *s = c->s;
+	fk_pose(s, values, c->pose);
 	double sum = 0.0;
-	for (int i = 0; i < n; i++) {
-		vec3 q = m->pos[w->vert[i]];
+	for (int i = 0; i < c->n; i++) {
+		vec3 q = c->m->pos[c->vert[i]];
 		float best = INFINITY;
-		for (int b = start; b < s->count; b++)
-			if (in_limb(s, start, b))
-				best = fminf(best, seg_dist2(&w->pose, b, q));
+		for (int b = c->start; b < s->count; b++)
+			if (in_limb(s, c->start, b))
+				best = fminf(best, seg_dist2(c->pose, b, q));
 		sum += best;
 	}
-	return sum / n;
+	return sum / c->n;
 }
 
 /* One channel tried a step each way: 1 when a step was kept. */
-static int try_channel(const skel *s, const mesh *m, int start, int n, float *v, float step, float *values,
-		       double *cost, bind_chain_work *w)
+static int try_channel(const chain_ctx *c, float *v, float step, float *values, double *cost)
 {
 	float was = *v;
 	for (int sign = -1; sign <= 1; sign += 2) {
 		*v = was + (float)sign * step;
-		double now = chain_cost(s, m, start, n, values, w);
+		double now = chain_cost(c, values);
 		if (now < *cost) {
 			*cost = now;
 			return 1;
@@ -84,27 +93,27 @@ static int try_channel(const skel *s, const mesh *m, int start, int n, float *v,
 }
 
 int bind_guess_chain(const skel *s, const mesh *m, int start, const unsigned char *turn, float *values,
-		     bind_chain_work *w)
+		     skel_pose *pose, int *vert)
 {
 	if (start <= 0 || start >= s->count)
 		return 0;
-	fk_pose(s, values, &w->pose);
-	int n = pick_verts(s, m, start, w), kept = 0;
-	if (n < CHAIN_MIN_VERTS)
+	fk_pose(s, values, pose);
+	chain_ctx c = { s, m, start, pick_verts(s, m, start, pose, vert), vert, pose };
+	if (c.n < CHAIN_MIN_VERTS)
 		return 0;
-	double cost = chain_cost(s, m, start, n, values, w);
+	double cost = chain_cost(&c, values);
+	int kept = 0;
 	for (int k = 0; k < (int)(sizeof chain_step / sizeof chain_step[0]); k++)
 		for (int sweep = 0, moved = 1; moved && sweep < CHAIN_SWEEPS; sweep++) {
 			moved = 0;
 			for (int b = start; b < s->count; b++)
-				for (int c = 0; turn[b] && in_limb(s, start, b) && c < s->bone[b].channel_count; c++)
-					if (s->bone[b].channel[c] <= SKEL_RZ &&
-					    try_channel(s, m, start, n, &values[s->bone[b].dof_offset + c], chain_step[k],
-							values, &cost, w)) {
+				for (int ch = 0; turn[b] && in_limb(s, start, b) && ch < s->bone[b].channel_count; ch++)
+					if (s->bone[b].channel[ch] <= SKEL_RZ &&
+					    try_channel(&c, &values[s->bone[b].dof_offset + ch], chain_step[k], values, &cost)) {
 						moved = 1;
 						kept++;
 					}
 		}
-	fk_pose(s, values, &w->pose);
+	fk_pose(s, values, pose);
 	return kept;
 }

@@ -15,15 +15,11 @@
 #include "fk.h"
 #include "mesh.h"
 
-typedef struct bind_chain_work {
-	skel_pose pose;
-	int vert[SKP_MAX_VERTS];
-} bind_chain_work;
-
 /* start: the limb's first bone (a collar bone, a hip joint); turn[b]
- * non-zero: bone b's rotation channels may turn. values change in place.
+ * non-zero: bone b's rotation channels may turn. values change in place;
+ * pose (left in the result) and vert (m->vert_count entries) are scratch.
  * Returns the number of turns kept (0: the pose was left). */
 int bind_guess_chain(const skel *s, const mesh *m, int start, const unsigned char *turn, float *values,
-		     bind_chain_work *w);
+		     skel_pose *pose, int *vert);
 
 #endif

@@ -13,7 +13,6 @@
 
 #include "fk.h"
 #include "mesh.h"
-#include "bind_pose_chain.h"
 
 #define BIND_GUESS_MAX_ARMS 8   /* limbs: arms and legs */
 
@@ -36,8 +35,10 @@ typedef struct bind_guess_result {
 /* Scratch for bind_guess_pose. */
 typedef struct bind_guess_work {
 	skel_pose pose;
-	float elevation[GUESS_MAX_SAMPLES];
-	bind_chain_work chain;
+	union {                 /* one at a time */
+		float elevation[GUESS_MAX_SAMPLES];
+		int chain_vert[GUESS_MAX_SAMPLES];
+	};
 } bind_guess_work;
 
 /* values: the starting pose (all 0: the rest pose), changed in place to
