@@ -173,6 +173,17 @@ static void stress_bones(int mode)
 		}
 		bones.fdq[b == EMB_BONES ? SKIN_IDENTITY_BONE : b] = d;
 	}
+	if (mode == 3) {
+		/* bone 2 opposite bone 1 with a dual component at INT32_MIN:
+		 * stress_vertex's vertex 0 (all its weight on bone 2, pivot bone
+		 * 1) negates it, and the blend's exact sum, 2^46, leaves int32:
+		 * the definition saturates it, and the kernels of skin_fixed.c
+		 * must hand that vertex to the definition */
+		fx_dq *o = &bones.fdq[2];
+		const fx_quat *r = &bones.fdq[1].real;
+		o->real = (fx_quat){ -r->w, -r->x, -r->y, -r->z };
+		o->dual.x = INT32_MIN;
+	}
 	skin_bones_derive(&bones);
 }
 
@@ -194,6 +205,11 @@ static void stress_vertex(int v, int mode)
 		left -= w < left ? w : left;
 		st_bone[k][v] = (uint16_t)(lcg() % 9 == 0 ? SKIN_IDENTITY_BONE : lcg() % EMB_BONES);
 	}
+	if (mode == 3 && v == 0) /* see stress_bones */
+		for (int k = 0; k < SKP_MAX_INFLUENCES; k++) {
+			st_w[k][v] = k == 1 ? FX_W15_ONE : 0;
+			st_bone[k][v] = (uint16_t)(k == 1 ? 2 : 1);
+		}
 }
 
 static uint32_t stress_checksum(void)
