@@ -2,8 +2,11 @@
 
 #include <math.h>
 
+#include "bind_pose_narrow.h"
+
 #define CHAIN_MIN_VERTS 50
 #define CHAIN_SWEEPS    6    /* per step size: a limb settles in two or three */
+#define CHAIN_END_WEIGHT 1.0  /* the end's squared distance counts as much as the vertices' mean */
 #define DEG             0.017453292519943295f
 
 /* Steps tried on each channel, coarse to fine. */
@@ -57,6 +60,8 @@ typedef struct chain_ctx {
 	int start, n;
 	const int *vert;
 	skel_pose *pose;
+	int end;     /* the bone whose tip is pulled to at, or -1 */
+	vec3 at;
 } chain_ctx;
 
 /* The mean squared distance from the limb's vertices to its bones. */
@@ -73,7 +78,12 @@ static double chain_cost(const chain_ctx *c, const float *values)
 				best = fminf(best, seg_dist2(c->pose, b, q));
 		sum += best;
 	}
-	return sum / c->n;
+	double cost = sum / c->n;
+	if (c->end > 0) {
+		vec3 e = vec3_sub(c->pose->tip[c->end], c->at);
+		cost += CHAIN_END_WEIGHT * vec3_dot(e, e);
+	}
+	return cost;
 }
 
 /* One channel tried a step each way: 1 when a step was kept. */
@@ -92,13 +102,15 @@ static int try_channel(const chain_ctx *c, float *v, float step, float *values, 
 	return 0;
 }
 
-int bind_guess_chain(const skel *s, const mesh *m, int start, const unsigned char *turn, float *values,
+int bind_guess_chain(const skel *s, const mesh *m, int start, const unsigned char *turn, int end, float *values,
 		     skel_pose *pose, int *vert)
 {
 	if (start <= 0 || start >= s->count)
 		return 0;
 	fk_pose(s, values, pose);
-	chain_ctx c = { s, m, start, pick_verts(s, m, start, pose, vert), vert, pose };
+	chain_ctx c = { s, m, start, pick_verts(s, m, start, pose, vert), vert, pose, -1, vec3_make(0.0f, 0.0f, 0.0f) };
+	if (end > 0 && bind_guess_narrowest(m, pose, end, &c.at))
+		c.end = end;
 	if (c.n < CHAIN_MIN_VERTS)
 		return 0;
 	double cost = chain_cost(&c, values);

@@ -19,7 +19,7 @@
  * non-zero: bone b's rotation channels may turn. values change in place;
  * pose (left in the result) and vert (m->vert_count entries) are scratch.
  * Returns the number of turns kept (0: the pose was left). */
-int bind_guess_chain(const skel *s, const mesh *m, int start, const unsigned char *turn, float *values,
+int bind_guess_chain(const skel *s, const mesh *m, int start, const unsigned char *turn, int end, float *values,
 		     skel_pose *pose, int *vert);
 
 #endif

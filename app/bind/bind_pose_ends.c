@@ -7,7 +7,7 @@
 #define ENDS_MIN_VERTS  20
 #define ENDS_MIN_TURN   0.98769f  /* cos 8 degrees */
 #define ENDS_CONE       0.5f      /* cos 60 degrees */
-#define ENDS_SIDE_CONE  0.866f    /* cos 30 degrees */
+#define ENDS_SIDE_CONE  0.7071f   /* cos 45 degrees, about the square to the main chain */
 #define RING_MIN_TURN   0.99939f  /* cos 2 degrees: a ring's centroid is precise */
 
 int bind_guess_mean_dir(vec3 sum, int n, int min_n, vec3 *out)
@@ -47,6 +47,14 @@ static int cone_dir(const skel *s, const skel_roles *r, const mesh *m, const ske
 	vec3 up_chain = s->bone[b].parent > 0 ? dir_of(p, s->bone[b].parent) : d;
 	float reach = 1.1f * (len_of(p, b) + r->reach[b]), cone = avoid >= 0 ? ENDS_SIDE_CONE : ENDS_CONE;
 	vec3 other = avoid >= 0 ? dir_of(p, avoid) : d;
+	if (avoid >= 0) {
+		/* a side branch (a thumb) may start far off its mesh (the rest
+		 * pose's roll of the hand is kept): look square to the main chain,
+		 * toward the body's front or back as the branch leans now */
+		vec3 across = vec3_madd(r->depth, other, -vec3_dot(r->depth, other));
+		if (vec3_length(across) > 0.0f)
+			d = vec3_scale(vec3_normalize(across), vec3_dot(d, across) < 0.0f ? -1.0f : 1.0f);
+	}
 	int n = 0;
 	for (int v = 0; v < m->vert_count; v++) {
 		vec3 q = vec3_sub(m->pos[v], head);

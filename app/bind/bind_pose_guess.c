@@ -195,7 +195,7 @@ static void guess_limb(guess_ctx *c, int start, float *values, bind_guess_arm *o
 		if (b == start)
 			break;
 	}
-	if (bind_guess_chain(c->s, c->m, start, on_chain, values, &w->pose, w->chain_vert) > 0) {
+	if (bind_guess_chain(c->s, c->m, start, on_chain, leg ? -1 : l, values, &w->pose, w->chain_vert) > 0) {
 		out->ends++;
 		turn_ends(c, l, values, out);
 	}

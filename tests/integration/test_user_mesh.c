@@ -94,8 +94,8 @@ static char *run_bind(const char *extra, const char *csv)
 
 /* The tolerance: over the torso, head and limbs (the vertices the
  * hand-flagged run gives to a bone that is not a hand's or a foot's), at
- * least 95% keep their dominant bone and the mean weight change (half the
- * L1 distance) stays within 0.06; over every vertex, 85% (issue 33 asks
+ * least 96% keep their dominant bone and the mean weight change (half the
+ * L1 distance) stays within 0.04; over every vertex, 88% (issue 33 asks
  * 90%: app/bind/README.md says what is missing). */
 static void test_makehuman_without_flags(void **state)
 {
@@ -145,14 +145,16 @@ static void test_makehuman_without_flags(void **state)
 	/* every vertex, hands and feet included: 65.6% before the guess turned
 	 * hands, thumbs, feet and toes (bind_pose_ends.h), 83.1% after, 85.4%
 	 * with each limb's chain fitted to the limb (bind_pose_chain.h) and
-	 * the mesh fitted again to the guessed pose */
+	 * the mesh fitted again to the guessed pose, 88.7% with the forearm's
+	 * end pulled to the arm's thinnest section (bind_pose_narrow.h) and
+	 * the thumb sought square to the hand */
 	print_message("and of all %d vertices %.1f%% (hands %.1f%% of %ld, feet %.1f%% of %ld)\n", MH_VERTS,
 		      100.0 * (double)all_same / MH_VERTS, 100.0 * (double)hand[1] / (double)hand[0], hand[0],
 		      100.0 * (double)foot[1] / (double)foot[0], foot[0]);
-	assert_true((double)all_same >= 0.85 * MH_VERTS);
+	assert_true((double)all_same >= 0.88 * MH_VERTS);
 	assert_true(n > 7000);
-	assert_true((double)same >= 0.95 * (double)n);
-	assert_true(change / (double)n <= 0.06);
+	assert_true((double)same >= 0.96 * (double)n);
+	assert_true(change / (double)n <= 0.04);
 }
 
 static void test_flags_keep_what_they_say(void **state)
