@@ -210,6 +210,12 @@
 #define SKP_IMAGE_BLOCK_CRC    4
 #define SKP_IMAGE_BLOCK_EXTRA  (SKP_IMAGE_BLOCK_HDR + SKP_IMAGE_BLOCK_CRC)
 #define SKP_IMAGE_FRAMES_COUNT 2     /* a frames block's u16 count of its frames */
+
+/* The stream bytes a compressed clip's frames block holds. */
+static inline uint32_t skp_image_stream_room(uint32_t block_size)
+{
+	return block_size - SKP_IMAGE_BLOCK_EXTRA - SKP_IMAGE_FRAMES_COUNT;
+}
 #define SKP_IMAGE_MIN_BLOCK    512
 #define SKP_IMAGE_DEFAULT_BLOCK 4096
 #define SKP_IMAGE_QMAX         65535u

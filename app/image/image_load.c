@@ -324,7 +324,7 @@ skp_status skp_image_check_frames(skp_image *im, int clip, skp_error *err)
 {
 	const skp_image_clip *c = &im->clip[clip];
 	uint32_t last = c->frame_blocks - 1, block = c->frames_first + last;
-	uint32_t room = im->hdr.block_size - SKP_IMAGE_BLOCK_EXTRA - SKP_IMAGE_FRAMES_COUNT;
+	uint32_t room = skp_image_stream_room(im->hdr.block_size);
 	/* im->buf: every section read starts with sec_open */
 	if (c->frame_blocks == 0 || skp_image_read_block(im, block, SKP_KIND_FRAMES, (unsigned)clip, im->buf) != SKP_BLOCK_OK)
 		return SKP_OK;

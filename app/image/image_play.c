@@ -65,7 +65,7 @@ void skp_clip_stream_seek(skp_clip_stream *p, uint32_t index)
 
 static uint32_t room(const skp_clip_stream *p)
 {
-	return p->im->hdr.block_size - SKP_IMAGE_BLOCK_EXTRA - SKP_IMAGE_FRAMES_COUNT;
+	return skp_image_stream_room(p->im->hdr.block_size);
 }
 
 /* Reads frame block b (clip-relative) into its ring slot: good when its

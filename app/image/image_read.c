@@ -170,7 +170,7 @@ static skp_status get_clip(skp_image *im, skp_image_clip *c, skp_error *err)
 	if (rc)
 		return rc;
 	c->first_number = (int32_t)first;
-	uint32_t room = im->hdr.block_size - SKP_IMAGE_BLOCK_EXTRA - SKP_IMAGE_FRAMES_COUNT;
+	uint32_t room = skp_image_stream_room(im->hdr.block_size);
 	uint64_t quant = c->coded ? 4u + 9u * c->dofs + 4u * ((uint64_t)c->segments + 1u) : 8u * c->dofs;
 	const skp_image_section *all = &im->hdr.sec[SKP_SEC_CLIPS];
 	uint64_t end = (uint64_t)all->first + all->count;

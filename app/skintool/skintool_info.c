@@ -96,7 +96,7 @@ static void bad_block(void *ctx, uint32_t b, const skp_block_report *r)
 		const skp_image_clip *c = &s->im.clip[r->item];
 		printf(" of clip %s", c->name);
 		if (r->kind == SKP_KIND_FRAMES && c->coded) {
-			long room = (long)h->block_size - SKP_IMAGE_BLOCK_EXTRA - SKP_IMAGE_FRAMES_COUNT;
+			long room = (long)skp_image_stream_room(h->block_size);
 			long first = (long)(b - c->frames_first) * room;
 			printf(", compressed stream bytes %ld..%ld", first, first + room - 1);
 		} else if (r->kind == SKP_KIND_FRAMES) {
