@@ -39,7 +39,8 @@ static int main_child(const skel *s, const skel_roles *r, const skel_pose *p, in
 }
 
 /* The centroid direction of the vertices ahead of bone b; avoid >= 0: a
- * main-chain bone whose direction the vertices must be farther from. */
+ * main-chain bone whose direction the vertices must be farther from, and
+ * then the direction is the cone's axis itself (below). */
 static int cone_dir(const skel *s, const skel_roles *r, const mesh *m, const skel_pose *p, int b, int avoid,
 		    vec3 *out)
 {
@@ -66,6 +67,12 @@ static int cone_dir(const skel *s, const skel_roles *r, const mesh *m, const ske
 		sum = vec3_add(sum, q);
 		n++;
 	}
+	/* a side branch leaves the main chain square to it, on the side its
+	 * flesh is: the centroid would lean back toward the main chain, as the
+	 * cone is cut by the plane through the joint (the flesh behind it is
+	 * the parent's) */
+	if (avoid >= 0)
+		return bind_guess_mean_dir(d, n, ENDS_MIN_VERTS, out);
 	return bind_guess_mean_dir(sum, n, ENDS_MIN_VERTS, out);
 }
 

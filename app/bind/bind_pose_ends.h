@@ -1,12 +1,13 @@
 /* The ends of a limb in the mesh's own pose (bind_pose_guess.h does the
  * upper and lower bones): below the forearm or shin, each bone of the
- * limb's longest chain (wrist, hand, fingers; foot, toes) and each side
- * branch off it (the thumb) is turned by its own rotation channels toward
- * the centroid of the mesh's vertices in a cone ahead of it: within 1.1
- * times its reach, within 60 degrees of where it points (30 for a side
- * branch, which takes only the vertices nearer its direction than the
- * main chain's), past its joint along its parent. Bones shorter than 3% of
- * the limb, and turns under 8 degrees, are left. */
+ * limb's longest chain (wrist, hand, fingers; foot, toes) is turned by its
+ * own rotation channels toward the centroid of the mesh's vertices in a
+ * cone ahead of it: within 1.1 times its reach, within 60 degrees of where
+ * it points, past its joint along its parent. Each side branch off it (the
+ * thumb) is turned square to the main chain, toward the body's front or
+ * back as it leans, when the mesh has flesh there (20 vertices within 45
+ * degrees of that square, nearer it than the main chain's direction).
+ * Bones shorter than 3% of the limb, and turns under 8 degrees, are left. */
 #ifndef BIND_POSE_ENDS_H
 #define BIND_POSE_ENDS_H
 

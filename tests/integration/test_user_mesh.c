@@ -21,6 +21,7 @@
 
 #define MH_VERTS 13380
 #define MAX_BONES 64
+#define TIE       1e-6f  /* weights this close are equal */
 
 /* Dense weights: w[vertex][bone], bones by name in first-seen order. */
 typedef struct dense {
@@ -70,6 +71,21 @@ static float weight_of(const dense *d, long v, const char *name)
 	return 0.0f;
 }
 
+/* Does vertex v keep its dominant bone? Where the top weights tie (0.5 on
+ * the hand and 0.5 on the thumb), the tied bones must be the same in both
+ * binds: which of them is listed first says nothing. */
+static int keeps_dominant(long v)
+{
+	float top_a = auto_w.w[v][dominant(&auto_w, v)], top_h = hand_w.w[v][dominant(&hand_w, v)];
+	for (int b = 0; b < hand_w.bones; b++)
+		if ((hand_w.w[v][b] >= top_h - TIE) != (weight_of(&auto_w, v, hand_w.bone[b]) >= top_a - TIE))
+			return 0;
+	for (int b = 0; b < auto_w.bones; b++)
+		if (auto_w.w[v][b] >= top_a - TIE && weight_of(&hand_w, v, auto_w.bone[b]) < top_h - TIE)
+			return 0;
+	return 1;
+}
+
 static int is_extremity(const char *bone)
 {
 	static const char *const part[] = { "wrist", "hand", "finger", "thumb", "foot", "toes" };
@@ -95,8 +111,7 @@ static char *run_bind(const char *extra, const char *csv)
 /* The tolerance: over the torso, head and limbs (the vertices the
  * hand-flagged run gives to a bone that is not a hand's or a foot's), at
  * least 96% keep their dominant bone and the mean weight change (half the
- * L1 distance) stays within 0.04; over every vertex, 88% (issue 33 asks
- * 90%: app/bind/README.md says what is missing). */
+ * L1 distance) stays within 0.04; over every vertex, 90% (issue 33). */
 static void test_makehuman_without_flags(void **state)
 {
 	(void)state;
@@ -121,7 +136,7 @@ static void test_makehuman_without_flags(void **state)
 	double change = 0;
 	for (long v = 0; v < MH_VERTS; v++) {
 		const char *dom = hand_w.bone[dominant(&hand_w, v)];
-		int kept = !strcmp(auto_w.bone[dominant(&auto_w, v)], dom);
+		int kept = keeps_dominant(v);
 		all_same += kept;
 		if (is_extremity(dom)) {
 			long *part = strstr(dom, "foot") || strstr(dom, "toes") ? foot : hand;
@@ -130,7 +145,7 @@ static void test_makehuman_without_flags(void **state)
 			continue;
 		}
 		n++;
-		same += !strcmp(auto_w.bone[dominant(&auto_w, v)], dom);
+		same += kept;
 		double d = 0;
 		for (int b = 0; b < hand_w.bones; b++)
 			d += fabs(hand_w.w[v][b] - weight_of(&auto_w, v, hand_w.bone[b]));
@@ -146,12 +161,14 @@ static void test_makehuman_without_flags(void **state)
 	 * hands, thumbs, feet and toes (bind_pose_ends.h), 83.1% after, 85.4%
 	 * with each limb's chain fitted to the limb (bind_pose_chain.h) and
 	 * the mesh fitted again to the guessed pose, 88.7% with the forearm's
-	 * end pulled to the arm's thinnest section (bind_pose_narrow.h) and
-	 * the thumb sought square to the hand */
+	 * end pulled to the arm's thinnest section (bind_pose_narrow.h), 91.7%
+	 * with the thumb square to the hand (those with the first-listed of
+	 * tied bones taken as dominant; with ties judged as keeps_dominant
+	 * does, 87.9% before the thumb, 90.6% after) */
 	print_message("and of all %d vertices %.1f%% (hands %.1f%% of %ld, feet %.1f%% of %ld)\n", MH_VERTS,
 		      100.0 * (double)all_same / MH_VERTS, 100.0 * (double)hand[1] / (double)hand[0], hand[0],
 		      100.0 * (double)foot[1] / (double)foot[0], foot[0]);
-	assert_true((double)all_same >= 0.88 * MH_VERTS);
+	assert_true((double)all_same >= 0.90 * MH_VERTS);
 	assert_true(n > 7000);
 	assert_true((double)same >= 0.96 * (double)n);
 	assert_true(change / (double)n <= 0.04);
