@@ -183,6 +183,13 @@ static void stress_bones(int mode)
 		const fx_quat *r = &bones.fdq[1].real;
 		o->real = (fx_quat){ -r->w, -r->x, -r->y, -r->z };
 		o->dual.x = INT32_MIN;
+		/* the same overflow where nothing after the blend would catch a
+		 * blend that wrapped instead (vertices 1 and 2): bone 3 nearly a half
+		 * turn about x (w 0.2, y = z = 0), so the dual's x moves the
+		 * point by 0.4 of it and the move fits either way; -2^31 for
+		 * the definition's 2^31 - 1 lands 2^32 x 0.4 LSB away */
+		bones.fdq[3] = (fx_dq){ { 214748365, 1052047834, 0, 0 }, { 0, 0, 0, 0 } };
+		bones.fdq[4] = (fx_dq){ { -214748365, -1052047834, 0, 0 }, { 0, INT32_MIN, 0, 0 } };
 	}
 	skin_bones_derive(&bones);
 }
@@ -205,10 +212,15 @@ static void stress_vertex(int v, int mode)
 		left -= w < left ? w : left;
 		st_bone[k][v] = (uint16_t)(lcg() % 9 == 0 ? SKIN_IDENTITY_BONE : lcg() % EMB_BONES);
 	}
-	if (mode == 3 && v == 0) /* see stress_bones */
+	if (mode == 3 && v <= 1) /* see stress_bones */
 		for (int k = 0; k < SKP_MAX_INFLUENCES; k++) {
 			st_w[k][v] = k == 1 ? FX_W15_ONE : 0;
-			st_bone[k][v] = (uint16_t)(k == 1 ? 2 : 1);
+			st_bone[k][v] = (uint16_t)(k == 1 ? 2 + 2 * v : 1 + 2 * v);
+		}
+	if (mode == 3 && v == 2) /* vertex 1's blend over three slots (the 4-slot sums) */
+		for (int k = 0; k < SKP_MAX_INFLUENCES; k++) {
+			st_w[k][v] = (uint16_t)(k == 0 ? 0 : k == 1 ? FX_W15_ONE / 2 : FX_W15_ONE / 4);
+			st_bone[k][v] = (uint16_t)(k == 0 ? 3 : 4);
 		}
 }
 
