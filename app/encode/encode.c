@@ -19,6 +19,7 @@ static void work_free(enc_work *w)
 	free(w->q);
 	free(w->err);
 	free(w->tbuf);
+	enc_snap_free(w);
 }
 
 static int work_alloc(enc_work *w)
@@ -34,6 +35,8 @@ static int work_alloc(enc_work *w)
 	w->q = malloc(n * d * sizeof(int32_t));
 	w->err = malloc(n * sizeof(double));
 	w->tbuf = malloc(SKEL_MAX_CHANNELS * n * sizeof(double));
+	if (enc_snap_alloc(w))
+		return -1;
 	return w->gsrc && w->gdec && w->psrc && w->pdec && w->ref && w->got && w->dec && w->q && w->err && w->tbuf ? 0 : -1;
 }
 
@@ -106,8 +109,9 @@ static void search_scale(enc_work *w, const double *base, double tol)
 
 /* Then each track's step on its own, as far as the budget lets it grow:
  * a trial takes again only the bones the track moves (the others were
- * within the budget already), and a refused step is taken back the same
- * way, so the result is the one a trial of every track would give. */
+ * within the budget already), and a refused step is taken back from the
+ * state saved before it, so the result is the one a trial of every track
+ * would give. */
 static void grow_steps(enc_work *w, double tol, const encode_opts *o)
 {
 	static const float factor[] = { 2.0f, 1.41f, 1.19f, 1.19f, 1.09f, 1.09f, 1.04f };
@@ -116,9 +120,10 @@ static void grow_steps(enc_work *w, double tol, const encode_opts *o)
 		for (int d = 0; d < w->dofs; d++) {
 			float keep = w->step[d];
 			w->step[d] = keep * factor[p];
+			enc_snap_save(w, w->bone_of[d]);
 			if (trial(w, w->bone_of[d], tol) > tol) {
 				w->step[d] = keep;
-				trial(w, w->bone_of[d], HUGE_VAL);
+				enc_snap_restore(w);
 			}
 			if (o->progress)
 				o->progress(o->progress_ctx, (p * w->dofs + d + 1) / (double)(passes * w->dofs));

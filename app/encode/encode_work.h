@@ -27,6 +27,14 @@ typedef struct enc_work {
 	double *tbuf;           /* SKEL_MAX_CHANNELS x n: one bone's targets */
 	double shell;
 	uint8_t bone_of[SKP_MAX_DOF]; /* the bone a track moves */
+	struct enc_snap {       /* a subtree's state before a trial (enc_snap_save) */
+		int top;
+		int32_t *q;
+		float *dec;
+		double *gdec, *pdec, *err;
+		struct enc_snap_joint { quat rot; vec3 head, tip; } *got; /* n x count */
+		codec_track track[SKP_MAX_DOF];
+	} snap;
 } enc_work;
 
 /* Is bone a bone d or one of its ancestors? A track of bone a changes
@@ -38,6 +46,17 @@ static inline int enc_above(const skel *s, int a, int d)
 			return 1;
 	return 0;
 }
+
+/* The snapshot's buffers, sized as the work's; 0 or -1 (out of memory). */
+int enc_snap_alloc(enc_work *w);
+void enc_snap_free(enc_work *w);
+
+/* Keeps what a trial of bone top's tracks changes (the values, rotations,
+ * places and poses of top and the bones below it, their tracks; with top
+ * 0 each frame's error too), so that a refused step is taken back by
+ * enc_snap_restore instead of a second trial. */
+void enc_snap_save(enc_work *w, int top);
+void enc_snap_restore(enc_work *w);
 
 /* Quantises the tracks of bone top and the bones below it with their
  * steps, bone by bone (parents first), the compensated bones' angles
