@@ -67,10 +67,10 @@ static int cone_dir(const skel *s, const skel_roles *r, const mesh *m, const ske
 		sum = vec3_add(sum, q);
 		n++;
 	}
-	/* a side branch leaves the main chain square to it, on the side its
-	 * flesh is: the centroid would lean back toward the main chain, as the
-	 * cone is cut by the plane through the joint (the flesh behind it is
-	 * the parent's) */
+	/* a side branch leaves the main chain square to it (toward the side
+	 * it leans to, flesh there): the centroid would lean back toward the
+	 * main chain, as the cone is cut by the plane through the joint (the
+	 * flesh behind it is the parent's) */
 	if (avoid >= 0)
 		return bind_guess_mean_dir(d, n, ENDS_MIN_VERTS, out);
 	return bind_guess_mean_dir(sum, n, ENDS_MIN_VERTS, out);
