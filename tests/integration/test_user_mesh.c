@@ -3,7 +3,8 @@
  * geometry) binds to the CMU skeleton like the hand-flagged command
  * (--group body --fit --bind-pose tests/data/makehuman_apose.amc); a
  * wrong --group lists the groups; --no-fit and --bind-pose rest keep what
- * they say; a file without a body group keeps its largest closed part. */
+ * they say; a file without a body group keeps its largest closed part.
+ * (skinplay drawing that mesh: test_user_mesh_play.c, which needs GL.) */
 #include <stdarg.h>
 #include <stddef.h>
 #include <setjmp.h>
@@ -228,33 +229,12 @@ static void test_largest_closed_part(void **state)
 	assert_int_equal(test_run("test $(grep -c '^[0-9]' %s) -ge 4 && ! grep -q '^4,' %s", csv, csv), 0);
 }
 
-static void test_skinplay_plays_the_mesh_as_given(void **state)
-{
-	(void)state;
-	if (!test_data_path("mesh/makehuman/base.obj"))
-		skip();
-	char asf[4096];
-	snprintf(asf, sizeof asf, "%s", test_data_path("mocap/cmu/02.asf"));
-	const char *out = test_scratch("mh_frames");
-	assert_int_equal(test_run("%s --asf %s --amc %s --mesh %s --platform surfaceless --size 160x120 --frames 1 "
-				  "--out %s > /dev/null 2>&1", test_tool_path("skinplay"), asf,
-				  test_data_path("mocap/cmu/02_01.amc"), test_data_path("mesh/makehuman/base.obj"), out),
-			 0);
-	char png[4200];
-	snprintf(png, sizeof png, "%s/frame_000001.png", out);
-	size_t size = 0;
-	char *data = test_read_file(png, &size);
-	assert_non_null(data);
-	free(data);
-}
-
 int main(void)
 {
 	const struct CMUnitTest tests[] = {
 		cmocka_unit_test(test_makehuman_without_flags),
 		cmocka_unit_test(test_flags_keep_what_they_say),
 		cmocka_unit_test(test_largest_closed_part),
-		cmocka_unit_test(test_skinplay_plays_the_mesh_as_given),
 	};
 	return cmocka_run_group_tests(tests, test_scratch_setup, test_scratch_teardown);
 }
