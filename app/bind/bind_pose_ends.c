@@ -40,7 +40,7 @@ static int main_child(const skel *s, const skel_roles *r, const skel_pose *p, in
 
 /* The centroid direction of the vertices ahead of bone b; avoid >= 0: a
  * main-chain bone whose direction the vertices must be farther from, and
- * then the direction is the cone's axis itself (below). */
+ * then the cone's axis itself once the vertices say there is flesh. */
 static int cone_dir(const skel *s, const skel_roles *r, const mesh *m, const skel_pose *p, int b, int avoid,
 		    vec3 *out)
 {
@@ -71,9 +71,7 @@ static int cone_dir(const skel *s, const skel_roles *r, const mesh *m, const ske
 	 * it leans to, flesh there): the centroid would lean back toward the
 	 * main chain, as the cone is cut by the plane through the joint (the
 	 * flesh behind it is the parent's) */
-	if (avoid >= 0)
-		return bind_guess_mean_dir(d, n, ENDS_MIN_VERTS, out);
-	return bind_guess_mean_dir(sum, n, ENDS_MIN_VERTS, out);
+	return bind_guess_mean_dir(avoid >= 0 ? d : sum, n, ENDS_MIN_VERTS, out);
 }
 
 static int turn(const skel *s, const skel_roles *r, const mesh *m, int b, int avoid, float *values, skel_pose *p)

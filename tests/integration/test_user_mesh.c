@@ -72,17 +72,22 @@ static float weight_of(const dense *d, long v, const char *name)
 	return 0.0f;
 }
 
+/* Is bone `name` among vertex v's top weights in d (tied ones included)? */
+static int in_top(const dense *d, long v, const char *name)
+{
+	return weight_of(d, v, name) >= d->w[v][dominant(d, v)] - TIE;
+}
+
 /* Does vertex v keep its dominant bone? Where the top weights tie (0.5 on
  * the hand and 0.5 on the thumb), the tied bones must be the same in both
  * binds: which of them is listed first says nothing. */
 static int keeps_dominant(long v)
 {
-	float top_a = auto_w.w[v][dominant(&auto_w, v)], top_h = hand_w.w[v][dominant(&hand_w, v)];
 	for (int b = 0; b < hand_w.bones; b++)
-		if ((hand_w.w[v][b] >= top_h - TIE) != (weight_of(&auto_w, v, hand_w.bone[b]) >= top_a - TIE))
+		if (in_top(&hand_w, v, hand_w.bone[b]) != in_top(&auto_w, v, hand_w.bone[b]))
 			return 0;
 	for (int b = 0; b < auto_w.bones; b++)
-		if (auto_w.w[v][b] >= top_a - TIE && weight_of(&hand_w, v, auto_w.bone[b]) < top_h - TIE)
+		if (in_top(&hand_w, v, auto_w.bone[b]) != in_top(&auto_w, v, auto_w.bone[b]))
 			return 0;
 	return 1;
 }
