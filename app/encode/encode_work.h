@@ -29,11 +29,8 @@ typedef struct enc_work {
 	uint8_t bone_of[SKP_MAX_DOF]; /* the bone a track moves */
 	struct enc_snap {       /* a subtree's state before a trial (enc_snap_save) */
 		int top;
-		int32_t *q;
-		float *dec;
-		double *gdec, *pdec, *err;
+		double *gdec, *pdec;    /* n x count x 9, x 6 */
 		struct enc_snap_joint { quat rot; vec3 head, tip; } *got; /* n x count */
-		codec_track track[SKP_MAX_DOF];
 	} snap;
 } enc_work;
 
@@ -51,10 +48,13 @@ static inline int enc_above(const skel *s, int a, int d)
 int enc_snap_alloc(enc_work *w);
 void enc_snap_free(enc_work *w);
 
-/* Keeps what a trial of bone top's tracks changes (the values, rotations,
- * places and poses of top and the bones below it, their tracks; with top
- * 0 each frame's error too), so that a refused step is taken back by
- * enc_snap_restore instead of a second trial. */
+/* Keeps what a trial of bone top's tracks changes and a later trial
+ * reads (the decoded rotations, places and poses of top and the bones
+ * below it: the parents of a later trial's bones), so that a refused step
+ * is taken back by enc_snap_restore instead of a second trial. Their
+ * values, grid values and tracks (q, dec, track) and the frames' errors
+ * are left as the refused trial made them: a trial quantises its own
+ * bones before it reads them, and the encoder's last trial every bone. */
 void enc_snap_save(enc_work *w, int top);
 void enc_snap_restore(enc_work *w);
 
