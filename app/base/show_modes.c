@@ -3,7 +3,7 @@
 #include <string.h>
 
 static const char *const algo_names[] = { "lbs", "dqbs", "dqbs-fixed", "compare" };
-static const char *const view_names[] = { "body", "skeleton", "weights" };
+static const char *const view_names[] = { "body", "skeleton", "weights", "difference" };
 
 _Static_assert(sizeof algo_names / sizeof algo_names[0] == SKIN_SHOW_COUNT, "a name per skin_algo");
 _Static_assert(sizeof view_names / sizeof view_names[0] == RENDER_VIEW_COUNT, "a name per render_view");

@@ -19,6 +19,8 @@ typedef enum render_view {
 	RENDER_VIEW_BODY,        /* the shaded body */
 	RENDER_VIEW_SKELETON,    /* body plus the skeleton drawn over it */
 	RENDER_VIEW_WEIGHTS,     /* body coloured by its bone weights */
+	RENDER_VIEW_DIFFERENCE,  /* body coloured by how far LBS lies from DQBS (compare),
+	                          * or the skin from its bone as bound (one method), in mm */
 	RENDER_VIEW_COUNT
 } render_view;
 
@@ -27,7 +29,7 @@ const char *skin_algo_name(int a);
 /* The algorithm (compare included) named name, or -1. */
 int skin_algo_parse(const char *name);
 
-/* "body", "skeleton", "weights"; "?" out of range. */
+/* "body", "skeleton", "weights", "difference"; "?" out of range. */
 const char *render_view_name(int v);
 /* The view named name, or -1. */
 int render_view_parse(const char *name);

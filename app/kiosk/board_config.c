@@ -3,6 +3,7 @@
 #include <string.h>
 
 #include "ini.h"
+#include "show_modes.h"
 #include "skp_format.h"
 #include "text_tokens.h"
 
@@ -23,6 +24,8 @@ void board_config_defaults(board_config *c)
 	memset(c, 0, sizeof *c);
 	c->rotation = -1;
 	c->hud = -1;
+	c->algo = -1;
+	c->view = -1;
 	c->split_verts = BOARD_SPLIT_VERTS;
 	c->yaw_mode = -1;
 	c->speed = 1.0;
@@ -137,6 +140,31 @@ int board_streams_parse(const char *word)
 	return word ? pick(word, board_streams_names, BOARD_STREAMS_KINDS) : -1;
 }
 
+/* The index of v (any case) among a show_modes list, or -1. */
+static int pick_mode(const char *v, const char *(*name)(int), int n)
+{
+	for (int i = 0; i < n; i++)
+		if (tok_ieq(v, name(i)))
+			return i;
+	return -1;
+}
+
+/* [display] algo and view: a name show_modes knows. The names, and the
+ * "a, b or c" list a mistake shows, come from there, so a method or view
+ * added there is taken and listed here without a second list. */
+static skp_status mode_key(int *out, const ini_entry *e, const char *(*name)(int), int n, skp_error *err)
+{
+	char names[128];
+	size_t len = 0;
+	if ((*out = pick_mode(e->value, name, n)) >= 0)
+		return SKP_OK;
+	names[0] = '\0';
+	for (int i = 0; i < n; i++)
+		len += skp_format(names + len, sizeof names - len, "%s%s", i == 0 ? "" : i < n - 1 ? ", " : " or ",
+				  name(i));
+	return bad(err, e, names);
+}
+
 static skp_status display_key(board_config *c, const ini_entry *e, skp_error *err)
 {
 	static const char *const plats[] = { "auto", "surfaceless", "osmesa", "kms", "x11" };
@@ -168,8 +196,12 @@ static skp_status display_key(board_config *c, const ini_entry *e, skp_error *er
 			return bad(err, e, "auto or degrees from -360 to 360");
 		return SKP_OK;
 	}
+	if (tok_ieq(e->key, "algo"))
+		return mode_key(&c->algo, e, skin_algo_name, SKIN_SHOW_COUNT, err);
+	if (tok_ieq(e->key, "view"))
+		return mode_key(&c->view, e, render_view_name, RENDER_VIEW_COUNT, err);
 	return skp_fail(err, SKP_ERR_SYNTAX, e->line,
-			"unknown key '%s' in [display] (platform, device, rotation, size, hud, yaw)", e->key);
+			"unknown key '%s' in [display] (platform, device, rotation, size, hud, yaw, algo, view)", e->key);
 }
 
 static skp_status timing_key(const ini_entry *e, long *debounce, long *long_press, skp_error *err)

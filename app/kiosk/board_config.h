@@ -4,6 +4,10 @@
  *
  *   [display]  platform = kms   device = /dev/dri/card1   rotation = 0   size = 1920x1080
  *              hud = visitor | engineer | off   (skinplay --hud)
+ *              algo = lbs | dqbs | dqbs-fixed | compare   (skinplay --algo: the
+ *              method the kiosk starts with; compare: LBS beside DQBS)
+ *              view = body | skeleton | weights | difference   (skinplay --view:
+ *              the view it starts with; the names are show_modes.h's)
  *   [input]    backend = gpio   chip = gpiochip0   debounce_ms = 30   long_press_ms = 800
  *   [button.algo]  line = 17   active = low   bias = pull-up   (debounce_ms, long_press_ms)
  *   [storage]  slot = PATH   (one line per image slot)
@@ -119,6 +123,8 @@ typedef struct board_config {
 	int rotation;            /* -1: not given */
 	int width, height;       /* 0: not given */
 	int hud;                 /* board_hud, -1: not given */
+	int algo;                /* skin_algo (compare included), -1: not given */
+	int view;                /* render_view, -1: not given */
 	char input[SKP_MAX_PATH]; /* gpio | keyboard | none | script:FILE; "" = none */
 	char chip[SKP_MAX_PATH]; /* gpiochip name, path, label or number */
 	board_button button[CONTROL_BTN_COUNT];

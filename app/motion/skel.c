@@ -53,6 +53,11 @@ float skel_angle_to_rad(const skel *s, float value)
 	return s->angle_in_degrees ? value * (3.14159265358979323846f / 180.0f) : value;
 }
 
+double skel_unit_cm(const skel *s)
+{
+	return fabs((double)s->length_scale - 0.45) < 1e-6 ? 2.54 : 1.0;
+}
+
 double skel_length_factor(const skel *s)
 {
 	return 1.0 / (double)s->length_scale;

@@ -69,6 +69,11 @@ int skel_find(const skel *s, const char *name);
  * multiplied by (CMU's 0.45 turns its units into inches). */
 double skel_length_factor(const skel *s);
 
+/* Centimetres a skeleton length unit (after :units length): inches for
+ * the CMU convention (length 0.45: CMU and HDM05), else centimetres (BVH
+ * files, the endorphin export's length 0.01). */
+double skel_unit_cm(const skel *s);
+
 /* Converts an angle in the skeleton's ASF units to radians. */
 float skel_angle_to_rad(const skel *s, float value);
 

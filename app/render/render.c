@@ -153,7 +153,11 @@ skp_status render_init(renderer *r, const gl_api *gl, int width, int height, int
 		gl->BufferData(GL_ARRAY_BUFFER, (GLsizeiptr)soa->count * 24, NULL, GL_DYNAMIC_DRAW);
 	}
 	gl->GenBuffers(1, &r->vbo_misc);
+	gl->GenBuffers(1, &r->vbo_diff);
+	gl->BindBuffer(GL_ARRAY_BUFFER, r->vbo_diff);
+	gl->BufferData(GL_ARRAY_BUFFER, (GLsizeiptr)soa->count * 4, NULL, GL_DYNAMIC_DRAW);
 	camera_init(&r->cam, body_extent(soa), floor_y, RENDER_CAMERA_AZIMUTH);
+	render_set_units(r, 0.0f);
 	return gl->GetError() == GL_NO_ERROR ? SKP_OK
 					      : skp_fail(err, SKP_ERR_RANGE, 0, "OpenGL error while uploading the body");
 }
@@ -191,6 +195,7 @@ void render_shutdown(renderer *r)
 	gl->DeleteBuffers(RENDER_MAX_PANELS, r->vbo_skinned);
 	gl->DeleteBuffers(1, &r->ibo);
 	gl->DeleteBuffers(1, &r->vbo_misc);
+	gl->DeleteBuffers(1, &r->vbo_diff);
 	gl->DeleteTextures(1, &r->font_tex);
 	r->gl = NULL;
 }
@@ -215,4 +220,11 @@ void render_set_extent(renderer *r, vec3 lo, vec3 hi, int immediate)
 void render_set_yaw(renderer *r, float yaw, int immediate)
 {
 	camera_turn_to(&r->cam, RENDER_CAMERA_AZIMUTH + yaw, immediate);
+}
+
+void render_set_units(renderer *r, float mm_per_unit)
+{
+	float tall = r->cam.height * mm_per_unit;
+	r->size_assumed = !(tall >= 1000.0f && tall <= 2500.0f);
+	r->mm_per_unit = r->size_assumed ? 1750.0f / r->cam.height : mm_per_unit;
 }

@@ -9,6 +9,7 @@
 #define RENDER_H
 
 #include "camera.h"
+#include "render_closeup.h"
 #include "fk.h"
 #include "gl_api.h"
 #include "render_shaders.h"
@@ -29,6 +30,17 @@ typedef struct render_panel {
 	const char *label;       /* drawn at the top of the panel in compare view */
 } render_panel;
 
+/* The compare view's close-up: beside each panel's body a magnified inset
+ * of one joint, seen by the same camera in both panels (render_closeup.h
+ * picks the joint and moves that camera). */
+typedef struct render_closeup {
+	int joint;               /* the bone whose head is looked at; -1: no inset */
+	vec3 focus;              /* where on it the methods part (skin_diff_focus) */
+	const char *title;       /* over the insets: "LEFT WRIST" */
+	const char *note;        /* under them, what the joint did ("TWISTED 178 DEG"); may be NULL */
+	const char *effect[RENDER_MAX_PANELS]; /* under each inset, what the skin did; may be NULL */
+} render_closeup;
+
 typedef struct render_frame {
 	const skel_pose *pose;   /* posed skeleton (overlay, camera) */
 	const skin_bones *bones; /* this frame's bone transforms (GPU skinning) */
@@ -42,6 +54,13 @@ typedef struct render_frame {
 	const char *caption[RENDER_MAX_PANELS];
 	const char *badge;
 	float dt;                /* seconds since the previous frame (camera) */
+	render_closeup closeup;
+	/* RENDER_VIEW_DIFFERENCE: per vertex, how far LBS lies from DQBS
+	 * (diff_signed 0), or the skin's distance to its bone less the bound
+	 * one (1: negative thinner), in the skeleton's units; NULL: the body's
+	 * own colour */
+	const float *diff;
+	int diff_signed;
 } render_frame;
 
 typedef struct renderer {
@@ -61,6 +80,12 @@ typedef struct renderer {
 	vec3 goal_lo, goal_hi;   /* and the one asked for: x, z from the root */
 	uint8_t bone_used[SKP_MAX_BONES]; /* bones with skin: the weights legend */
 	mat4 screen;             /* rotation for screens mounted sideways */
+	closeup_camera inset;    /* the close-up's camera */
+	float mm_per_unit;       /* the difference view's legend (render_set_units) */
+	int size_assumed;        /* the units gave no human size: the body taken as 1.75 m */
+	GLuint vbo_diff;         /* the difference view's colours, RGBA8 per vertex */
+	int diff_ready;          /* vbo_diff holds this frame's */
+	uint8_t diff_rgba[4 * SKP_MAX_VERTS];
 	float misc[6 * 1024];    /* grid, shadow and overlay vertices */
 	float text[RENDER_MAX_TEXT * 6 * 5];
 	float bone_uniforms[RENDER_BONE_VEC4S * 4];
@@ -103,6 +128,12 @@ skp_status render_init_notice(renderer *r, const gl_api *gl, int width, int heig
 
 /* Clears the screen and draws the lines centred, the first larger. */
 void render_draw_notice(renderer *r, const char *const *lines, int count);
+
+/* The skeleton's length unit in millimetres (0: unknown), so that the
+ * difference view's legend reads in millimetres at the body's real size;
+ * a body outside 1..2.5 m tall by that unit is taken as 1.75 m (and the
+ * legend says so). */
+void render_set_units(renderer *r, float mm_per_unit);
 
 /* Turns the camera yaw radians about the vertical from the usual view (a
  * body facing +z seen from the front, RENDER_CAMERA_AZIMUTH to its left):

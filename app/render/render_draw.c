@@ -6,63 +6,6 @@
 #include "render_font.h"
 #include "render_internal.h"
 
-static const float skin_rgb[3] = { 0.86f, 0.67f, 0.56f };
-
-void render_logical_size(const renderer *r, int *w, int *h)
-{
-	int sideways = r->rotation & 1;
-	*w = sideways ? r->height : r->width;
-	*h = sideways ? r->width : r->height;
-}
-
-/* Logical rectangle to the physical viewport, following mat4_rotate_z90. */
-void render_set_viewport(const renderer *r, render_rect a)
-{
-	int lw, lh;
-	render_logical_size(r, &lw, &lh);
-	switch (r->rotation) {
-	case 1: r->gl->Viewport(lh - a.y - a.h, a.x, a.h, a.w); break;
-	case 2: r->gl->Viewport(lw - a.x - a.w, lh - a.y - a.h, a.w, a.h); break;
-	case 3: r->gl->Viewport(a.y, lw - a.x - a.w, a.h, a.w); break;
-	default: r->gl->Viewport(a.x, a.y, a.w, a.h); break;
-	}
-}
-
-static void stream(renderer *r, const float *data, int floats)
-{
-	const gl_api *gl = r->gl;
-	gl->BindBuffer(GL_ARRAY_BUFFER, r->vbo_misc);
-	gl->BufferData(GL_ARRAY_BUFFER, (GLsizeiptr)floats * 4, data, GL_STREAM_DRAW);
-}
-
-static void use_flat(renderer *r, const mat4 *vp, const float rgba[4], float point)
-{
-	const gl_api *gl = r->gl;
-	gl->UseProgram(r->prog[SHADER_FLAT]);
-	gl->UniformMatrix4fv(render_loc[SHADER_FLAT][U_MVP], 1, GL_FALSE, vp->m);
-	gl->Uniform4fv(render_loc[SHADER_FLAT][U_COLOR], 1, rgba);
-	gl->Uniform1f(render_loc[SHADER_FLAT][U_POINT], point);
-}
-
-static void attrib(const gl_api *gl, GLuint slot, int size, int stride, size_t offset)
-{
-	gl->EnableVertexAttribArray(slot);
-	gl->VertexAttribPointer(slot, size, GL_FLOAT, GL_FALSE, stride, (const void *)offset);
-}
-
-/* 16-bit snorm values, which GL turns into -1..1 */
-static void attrib_snorm16(const gl_api *gl, GLuint slot, int size, size_t offset)
-{
-	gl->EnableVertexAttribArray(slot);
-	gl->VertexAttribPointer(slot, size, GL_SHORT, GL_TRUE, 2 * size, (const void *)offset);
-}
-
-static void disable_attribs(const gl_api *gl)
-{
-	for (GLuint a = 0; a <= ATTR_UV; a++)
-		gl->DisableVertexAttribArray(a);
-}
-
 /* A floor under the grid makes the blob shadow readable. */
 static void draw_floor(renderer *r, const mat4 *vp, float cx, float cz, float e, float y)
 {
@@ -70,11 +13,11 @@ static void draw_floor(renderer *r, const mat4 *vp, float cx, float cz, float e,
 	float q[18] = { cx - e, y, cz - e,  cx - e, y, cz + e,  cx + e, y, cz + e,
 			cx - e, y, cz - e,  cx + e, y, cz + e,  cx + e, y, cz - e };
 	static const float floor_rgba[4] = { 0.27f, 0.29f, 0.33f, 1.0f };
-	use_flat(r, vp, floor_rgba, 1.0f);
-	stream(r, q, 18);
-	attrib(gl, ATTR_POS, 3, 12, 0);
+	render_use_flat(r, vp, floor_rgba, 1.0f);
+	render_stream(r, q, 18);
+	render_attrib(gl, ATTR_POS, 3, 12, 0);
 	gl->DrawArrays(GL_TRIANGLES, 0, 6);
-	disable_attribs(gl);
+	render_disable_attribs(gl);
 }
 
 void render_grid_and_shadow(renderer *r, const mat4 *vp, vec3 root)
@@ -92,11 +35,11 @@ void render_grid_and_shadow(renderer *r, const mat4 *vp, vec3 root)
 		n += 12;
 	}
 	static const float grid_rgba[4] = { 0.40f, 0.43f, 0.49f, 1.0f };
-	use_flat(r, vp, grid_rgba, 1.0f);
-	stream(r, r->misc, n);
-	attrib(gl, ATTR_POS, 3, 12, 0);
+	render_use_flat(r, vp, grid_rgba, 1.0f);
+	render_stream(r, r->misc, n);
+	render_attrib(gl, ATTR_POS, 3, 12, 0);
 	gl->DrawArrays(GL_LINES, 0, n / 3);
-	disable_attribs(gl);
+	render_disable_attribs(gl);
 
 	/* the blob: a quad on the floor under the root, alpha from the centre */
 	float s = r->cam.height * 0.32f, h = y + 0.002f * r->cam.height;
@@ -111,11 +54,11 @@ void render_grid_and_shadow(renderer *r, const mat4 *vp, vec3 root)
 	gl->Enable(GL_BLEND);
 	gl->BlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
 	gl->DepthMask(GL_FALSE);
-	stream(r, q, 30);
-	attrib(gl, ATTR_POS, 3, 20, 0);
-	attrib(gl, ATTR_UV, 2, 20, 12);
+	render_stream(r, q, 30);
+	render_attrib(gl, ATTR_POS, 3, 20, 0);
+	render_attrib(gl, ATTR_UV, 2, 20, 12);
 	gl->DrawArrays(GL_TRIANGLES, 0, 6);
-	disable_attribs(gl);
+	render_disable_attribs(gl);
 	gl->DepthMask(GL_TRUE);
 	gl->Disable(GL_BLEND);
 }
@@ -132,78 +75,15 @@ void render_skeleton(renderer *r, const mat4 *vp, const skel_pose *pose)
 	}
 	static const float bone_rgba[4] = { 1.0f, 0.85f, 0.1f, 1.0f };
 	gl->Disable(GL_DEPTH_TEST);
-	use_flat(r, vp, bone_rgba, 5.0f);
-	stream(r, r->misc, n);
-	attrib(gl, ATTR_POS, 3, 12, 0);
+	render_use_flat(r, vp, bone_rgba, 5.0f);
+	render_stream(r, r->misc, n);
+	render_attrib(gl, ATTR_POS, 3, 12, 0);
 	gl->LineWidth(2.0f);
 	gl->DrawArrays(GL_LINES, 0, n / 3);
 	gl->DrawArrays(GL_POINTS, 0, n / 3);
 	gl->LineWidth(1.0f);
-	disable_attribs(gl);
+	render_disable_attribs(gl);
 	gl->Enable(GL_DEPTH_TEST);
-}
-
-/* Bone uniforms in the layout the skinning shaders read. */
-static int bone_uniforms(renderer *r, const skin_bones *b, int as_dq)
-{
-	float *u = r->bone_uniforms;
-	for (int i = 0; i < r->bone_count; i++) {
-		if (as_dq) {
-			const float *q = b->dq8[i]; /* (w x y z) pairs to (x y z w) */
-			float v[8] = { q[1], q[2], q[3], q[0], q[5], q[6], q[7], q[4] };
-			memcpy(u + 8 * i, v, sizeof v);
-		} else {
-			memcpy(u + 12 * i, b->lbs12[i], 12 * sizeof(float));
-		}
-	}
-	return r->bone_count * (as_dq ? 2 : 3);
-}
-
-static void body_program(renderer *r, shader_kind k, const mat4 *vp, int weights_view)
-{
-	const gl_api *gl = r->gl;
-	/* the lights turn with the camera about the vertical: a close-up from
-	 * behind a joint is lit as well as the usual front view */
-	quat turn = quat_from_axis_angle(vec3_make(0.0f, 1.0f, 0.0f), r->cam.azimuth - RENDER_CAMERA_AZIMUTH);
-	vec3 key = quat_rotate(turn, vec3_normalize(vec3_make(0.45f, 0.8f, 0.55f)));
-	vec3 fill = quat_rotate(turn, vec3_normalize(vec3_make(-0.7f, 0.25f, 0.2f)));
-	gl->UseProgram(r->prog[k]);
-	gl->UniformMatrix4fv(render_loc[k][U_MVP], 1, GL_FALSE, vp->m);
-	gl->Uniform3f(render_loc[k][U_KEY], key.x, key.y, key.z);
-	gl->Uniform3f(render_loc[k][U_FILL], fill.x, fill.y, fill.z);
-	gl->Uniform3fv(render_loc[k][U_SKIN], 1, skin_rgb);
-	gl->Uniform1f(render_loc[k][U_USE_COL], weights_view ? 1.0f : 0.0f);
-}
-
-void render_body(renderer *r, const mat4 *vp, const render_frame *f, int panel)
-{
-	const gl_api *gl = r->gl;
-	const render_panel *p = &f->panel[panel];
-	int weights_view = f->view == RENDER_VIEW_WEIGHTS;
-	if (p->pos) {
-		body_program(r, SHADER_BODY_CPU, vp, weights_view);
-		gl->BindBuffer(GL_ARRAY_BUFFER, r->vbo_skinned[panel]);
-		attrib(gl, ATTR_POS, 3, 12, 0);
-		if (p->nrm)
-			attrib(gl, ATTR_NRM, 3, 12, (size_t)r->vert_count * 12);
-		else
-			attrib_snorm16(gl, ATTR_NRM, 3, (size_t)r->vert_count * 12);
-	} else {
-		int as_dq = p->algo != SKIN_LBS;
-		shader_kind k = as_dq ? SHADER_BODY_DQBS : SHADER_BODY_LBS;
-		body_program(r, k, vp, weights_view);
-		gl->Uniform4fv(render_loc[k][U_BONE], bone_uniforms(r, f->bones, as_dq), r->bone_uniforms);
-		gl->BindBuffer(GL_ARRAY_BUFFER, r->vbo_static);
-		attrib(gl, ATTR_POS, 3, STATIC_STRIDE, 0);
-		attrib(gl, ATTR_NRM, 3, STATIC_STRIDE, 12);
-		attrib(gl, ATTR_BONES, 4, STATIC_STRIDE, 36);
-		attrib(gl, ATTR_WEIGHTS, 4, STATIC_STRIDE, 52);
-	}
-	gl->BindBuffer(GL_ARRAY_BUFFER, r->vbo_static);
-	attrib(gl, ATTR_COL, 3, STATIC_STRIDE, 24);
-	gl->BindBuffer(GL_ELEMENT_ARRAY_BUFFER, r->ibo);
-	gl->DrawElements(GL_TRIANGLES, r->index_count, GL_UNSIGNED_SHORT, 0);
-	disable_attribs(gl);
 }
 
 void render_upload(renderer *r, const render_frame *f)
@@ -220,58 +100,15 @@ void render_upload(renderer *r, const render_frame *f)
 		else
 			gl->BufferSubData(GL_ARRAY_BUFFER, bytes, bytes / 2, f->panel[i].nrm16);
 	}
-}
-
-int render_text(renderer *r, render_rect area, int x, int y, int scale, const char *s,
-		const float rgba[4])
-{
-	const gl_api *gl = r->gl;
-	int n = 0, pen = x;
-	float top = (float)(area.h - y), du = 1.0f / (float)r->font_w, dv = 1.0f / 16.0f;
-	for (; *s && n < RENDER_MAX_TEXT; s++, pen += (FONT_GLYPH_W + 1) * scale) {
-		int g = font_glyph_index(*s);
-		if (g < 0)
-			continue;
-		float x0 = (float)(pen - scale), x1 = x0 + (float)(FONT_CELL_W * scale);
-		float y1 = top + (float)scale, y0 = y1 - (float)(FONT_CELL_H * scale);
-		float u0 = (float)(g * FONT_CELL_W) * du, u1 = u0 + FONT_CELL_W * du;
-		float v0 = 0.0f, v1 = FONT_CELL_H * dv;
-		float q[30] = { x0, y0, 0, u0, v1,  x1, y0, 0, u1, v1,  x1, y1, 0, u1, v0,
-				x0, y0, 0, u0, v1,  x1, y1, 0, u1, v0,  x0, y1, 0, u0, v0 };
-		memcpy(r->text + 30 * n++, q, sizeof q);
-	}
-	if (n == 0)
-		return pen - x;
-	mat4 ortho = mat4_ortho(0, (float)area.w, 0, (float)area.h, -1, 1);
-	mat4 m = mat4_mul(&r->screen, &ortho);
-	gl->UseProgram(r->prog[SHADER_TEXT]);
-	gl->UniformMatrix4fv(render_loc[SHADER_TEXT][U_MVP], 1, GL_FALSE, m.m);
-	gl->Uniform4fv(render_loc[SHADER_TEXT][U_COLOR], 1, rgba);
-	gl->Uniform1i(render_loc[SHADER_TEXT][U_FONT], 0);
-	gl->ActiveTexture(GL_TEXTURE0);
-	gl->BindTexture(GL_TEXTURE_2D, r->font_tex);
-	gl->Enable(GL_BLEND);
-	gl->BlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
-	gl->Disable(GL_DEPTH_TEST);
-	stream(r, r->text, 30 * n);
-	attrib(gl, ATTR_POS, 3, 20, 0);
-	attrib(gl, ATTR_UV, 2, 20, 12);
-	gl->DrawArrays(GL_TRIANGLES, 0, 6 * n);
-	disable_attribs(gl);
-	gl->Enable(GL_DEPTH_TEST);
-	gl->Disable(GL_BLEND);
-	return pen - x;
+	r->diff_ready = 0;
+	if (f->view == RENDER_VIEW_DIFFERENCE && f->diff)
+		render_diff_upload(r, f->diff, f->diff_signed);
 }
 
 static int text_scale(int logical_h)
 {
 	int s = logical_h / 240;
 	return s < 1 ? 1 : s;
-}
-
-static int text_width(const char *s, int scale)
-{
-	return (int)strlen(s) * (FONT_GLYPH_W + 1) * scale;
 }
 
 /* Where the text goes, worked out once a frame for every panel: one size
@@ -290,7 +127,7 @@ static int fit_scale(const render_frame *f, int n, int panel_w, int scale, int c
 {
 	for (int i = 0; i < n; i++) {
 		const char *s = caption ? f->caption[i] : f->panel[i].label;
-		while (s && scale > 1 && text_width(s, scale) > panel_w - 8)
+		while (s && scale > 1 && render_text_width(s, scale) > panel_w - 8)
 			scale--;
 	}
 	return scale;
@@ -309,7 +146,7 @@ static int legend_words(renderer *r, render_rect full, int scale, int y0, int dr
 		if (b >= 0 && !r->bone_used[b])
 			continue;
 		const char *word = b < 0 ? legend_title : r->skel->bone[b].name;
-		int w = text_width(word, scale);
+		int w = render_text_width(word, scale);
 		if (x > x0 && x + w > full.w - x0) {
 			x = x0;
 			rows++;
@@ -361,8 +198,12 @@ static layout lay_out(renderer *r, const render_frame *f, int n, int lw, int lh)
 		render_rect full = { 0, 0, lw, lh };
 		l.legend = (l.hud + 1) / 2;
 		l.legend_rows = legend_words(r, full, l.legend, 0, 0);
-		l.top += (2 + l.legend_rows * (FONT_CELL_H + 2)) * l.legend;
+	} else if (f->view == RENDER_VIEW_DIFFERENCE && f->diff) {
+		l.legend = l.hud;
+		l.legend_rows = render_diff_legend_rows();
 	}
+	if (l.legend_rows)
+		l.top += (2 + l.legend_rows * (FONT_CELL_H + 2)) * l.legend;
 	if (l.top + l.foot > panel_rect(0, n, lw, lh).h / 2) /* a tiny screen: the body first */
 		l.top = l.foot = 0;
 	return l;
@@ -375,10 +216,10 @@ static void draw_label(renderer *r, const render_frame *f, const layout *l, int 
 	static const float label_rgba[4] = { 1, 1, 1, 1 }, caption_rgba[4] = { 0.95f, 0.85f, 0.55f, 1 };
 	const char *label = f->panel[i].label;
 	int y = area.h - (FONT_CELL_H + 4) * l->label;
-	render_text(r, area, (area.w - text_width(label, l->label)) / 2, y, l->label, label, label_rgba);
+	render_text(r, area, (area.w - render_text_width(label, l->label)) / 2, y, l->label, label, label_rgba);
 	const char *caption = l->caption ? f->caption[i] : NULL;
 	if (caption)
-		render_text(r, area, (area.w - text_width(caption, l->caption)) / 2, y - (FONT_CELL_H + 3) * l->caption,
+		render_text(r, area, (area.w - render_text_width(caption, l->caption)) / 2, y - (FONT_CELL_H + 3) * l->caption,
 			    l->caption, caption, caption_rgba);
 }
 
@@ -419,17 +260,43 @@ static mat4 panel_camera(const renderer *r, const layout *l, render_rect area, i
 	return camera_frame_box(&r->cam, lo, hi, aspect, bottom, ceiling);
 }
 
+/* The body (beside its close-up, in the compare view), its overlays, its
+ * label. */
 static void draw_panel(renderer *r, const render_frame *f, const layout *l, int i, render_rect area, int lh)
 {
-	render_set_viewport(r, area);
-	mat4 cam = panel_camera(r, l, area, lh, f->pose->tip[0]);
+	render_bands bands = { l->foot, l->top, l->hud };
+	render_rect body, inset;
+	int n = f->panel_count < 1 ? 1 : f->panel_count;
+	int closeup = render_inset_split(r, f, i, n, area, &bands, &body, &inset);
+	render_set_viewport(r, body);
+	mat4 cam = panel_camera(r, l, body, lh, f->pose->tip[0]);
 	mat4 vp = mat4_mul(&r->screen, &cam);
 	render_grid_and_shadow(r, &vp, f->pose->tip[0]);
 	render_body(r, &vp, f, i);
 	if (f->view == RENDER_VIEW_SKELETON)
 		render_skeleton(r, &vp, f->pose);
+	if (closeup) {
+		render_inset_ring(r, &vp);
+		render_inset_draw(r, f, i, area, inset, &bands);
+	}
+	render_set_viewport(r, area);
 	if (l->label)
 		draw_label(r, f, l, i, area);
+}
+
+/* The close-up's camera, once a frame for both panels: it snaps to the
+ * first joint shown, then glides. */
+static void follow_closeup(renderer *r, const render_frame *f)
+{
+	int j = f->closeup.joint;
+	if (j < 0 || j >= r->bone_count || f->panel_count < 2) {
+		r->inset.started = 0;
+		return;
+	}
+	int up = r->skel->bone[j].parent;
+	vec3 axis = vec3_sub(f->pose->tip[j], f->pose->head[j]);
+	vec3 parent = up >= 0 ? vec3_sub(f->pose->tip[up], f->pose->head[up]) : vec3_make(0.0f, 0.0f, 0.0f);
+	closeup_camera_follow(&r->inset, f->closeup.focus, axis, parent, r->cam.azimuth, f->dt, 0);
 }
 
 /* A line between the two panels: down the middle, or across on a portrait
@@ -446,11 +313,11 @@ static void draw_divider(renderer *r, int lw, int lh)
 		float across[6] = { 0, y, 0, (float)lw, y, 0 };
 		memcpy(line, across, sizeof line);
 	}
-	use_flat(r, &m, line_rgba, 1.0f);
-	stream(r, line, 6);
-	attrib(gl, ATTR_POS, 3, 12, 0);
+	render_use_flat(r, &m, line_rgba, 1.0f);
+	render_stream(r, line, 6);
+	render_attrib(gl, ATTR_POS, 3, 12, 0);
 	gl->DrawArrays(GL_LINES, 0, 2);
-	disable_attribs(gl);
+	render_disable_attribs(gl);
 }
 
 /* The HUD lines at the top left, the legend under them, the badge. */
@@ -461,11 +328,14 @@ static void draw_hud(renderer *r, const render_frame *f, const layout *l, render
 	for (int i = 0; i < RENDER_HUD_LINES; i++)
 		if (f->hud[i])
 			render_text(r, full, 4 * s, 4 * s + i * line, s, f->hud[i], hud_rgba);
-	if (l->legend_rows)
-		legend_words(r, full, l->legend, l->top - (l->legend_rows * (FONT_CELL_H + 2)) * l->legend, 1);
+	int legend_y = l->top - (l->legend_rows * (FONT_CELL_H + 2)) * l->legend;
+	if (l->legend_rows && f->view == RENDER_VIEW_WEIGHTS)
+		legend_words(r, full, l->legend, legend_y, 1);
+	else if (l->legend_rows)
+		render_diff_legend(r, full, l->legend, legend_y, f->diff_signed);
 	if (f->badge) {
 		int bs = s + 3;
-		render_text(r, full, (full.w - text_width(f->badge, bs)) / 2, 8 * s + 2 * line, bs, f->badge, badge_rgba);
+		render_text(r, full, (full.w - render_text_width(f->badge, bs)) / 2, 8 * s + 2 * line, bs, f->badge, badge_rgba);
 	}
 }
 
@@ -480,6 +350,7 @@ void render_draw(renderer *r, const render_frame *f)
 	} else {
 		camera_follow(&r->cam, fk_tip_centre(f->pose, r->bone_count), f->dt);
 	}
+	follow_closeup(r, f);
 	gl->Enable(GL_DEPTH_TEST);
 	gl->Enable(GL_CULL_FACE);
 	gl->CullFace(GL_BACK);

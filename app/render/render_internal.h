@@ -28,9 +28,39 @@ vec3 render_bone_color(int bone);
 void render_grid_and_shadow(renderer *r, const mat4 *vp, vec3 root);
 void render_skeleton(renderer *r, const mat4 *vp, const skel_pose *pose);
 void render_body(renderer *r, const mat4 *vp, const render_frame *f, int panel);
+/* Streams floats through the scratch vertex buffer (r->vbo_misc). */
+void render_stream(renderer *r, const float *data, int floats);
+/* The flat program: one colour, mvp, point size. */
+void render_use_flat(renderer *r, const mat4 *vp, const float rgba[4], float point);
+/* Float attribute slot from the bound buffer; 16-bit snorm ones. */
+void render_attrib(const gl_api *gl, GLuint slot, int size, int stride, size_t offset);
+void render_attrib_snorm16(const gl_api *gl, GLuint slot, int size, size_t offset);
+void render_disable_attribs(const gl_api *gl);
+/* The width of s in logical pixels at scale. */
+int render_text_width(const char *s, int scale);
 /* Text at logical pixel (x, y) from the top-left, in glyph pixels of
  * `scale` screen pixels; returns the width drawn. */
 int render_text(renderer *r, render_rect area, int x, int y, int scale, const char *s,
 		const float rgba[4]);
+
+/* The difference view (render_diff.c): colours from f->diff into
+ * vbo_diff; the legend's rows, and the legend from row y0 of full. */
+void render_diff_upload(renderer *r, const float *diff, int is_signed);
+int render_diff_legend_rows(void);
+void render_diff_legend(renderer *r, render_rect full, int scale, int y0, int is_signed);
+
+/* The close-up (render_inset.c): splits panel area into the body's part
+ * and the inset's (0: no inset this frame, body = area); draws the inset
+ * and its texts (text scale at most scale); rings the joint on the body. */
+typedef struct render_bands {
+	int foot, top, scale;    /* logical pixels kept for text under and over the body */
+} render_bands;
+int render_inset_split(const renderer *r, const render_frame *f, int panel, int n, render_rect area,
+		       const render_bands *b, render_rect *body, render_rect *inset);
+void render_inset_draw(renderer *r, const render_frame *f, int panel, render_rect area, render_rect inset,
+		       const render_bands *b);
+void render_inset_ring(renderer *r, const mat4 *vp);
+/* The body lit as seen from azimuth (the lights turn with the camera). */
+void render_body_seen(renderer *r, const mat4 *vp, const render_frame *f, int panel, float azimuth);
 
 #endif

@@ -1,18 +1,11 @@
 /* A screen of text and nothing else, for a kiosk with nothing it can play. */
-#include <string.h>
-
 #include "render_font.h"
 #include "render_internal.h"
-
-static int notice_width(const char *s, int scale)
-{
-	return (int)strlen(s) * (FONT_GLYPH_W + 1) * scale;
-}
 
 /* The largest scale up to want at which s fits the width. */
 static int fit(const char *s, int want, int w)
 {
-	while (want > 1 && notice_width(s, want) > w - 16)
+	while (want > 1 && render_text_width(s, want) > w - 16)
 		want--;
 	return want;
 }
@@ -33,7 +26,7 @@ void render_draw_notice(renderer *r, const char *const *lines, int count)
 	int base = lh / 240 > 1 ? lh / 240 : 1, y = lh / 3;
 	for (int i = 0; i < count; i++) {
 		int s = fit(lines[i], i == 0 ? base + 2 : base, lw);
-		render_text(r, full, (lw - notice_width(lines[i], s)) / 2, y, s, lines[i], i == 0 ? title_rgba : text_rgba);
+		render_text(r, full, (lw - render_text_width(lines[i], s)) / 2, y, s, lines[i], i == 0 ? title_rgba : text_rgba);
 		y += (FONT_CELL_H + 4) * s + (i == 0 ? FONT_CELL_H * base : 0);
 	}
 }

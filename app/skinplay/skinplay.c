@@ -108,6 +108,7 @@ static int setup(skinplay *p)
 	}
 	render_set_yaw(&p->r, p->yaw, 1);
 	p->render_ready = 1;
+	closeup_setup(p);
 	clips_frame(p, 1);
 	choose_paths(p);
 	sheet_init(&p->contact, p->info.width, p->info.height);
@@ -163,6 +164,9 @@ static void skin_panels(skinplay *p, render_frame *f)
 	log_measured_threads(p);
 	f->pose = &p->skin.pose;
 	f->bones = &p->skin.bones;
+	uint64_t t4 = clock_now_ns();
+	closeup_frame(p, f);
+	stage_add(&p->stages, STAGE_SKIN, clock_now_ns() - t4);
 }
 
 /* The visitor's screen: what each method is, what to look at, the buttons. */

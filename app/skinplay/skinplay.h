@@ -14,6 +14,8 @@
 #include "play_engine.h"
 #include "play_survey.h"
 #include "skinplay_kiosk.h"
+#include "skel_joints.h"
+#include "skin_diff.h"
 #include "skp_ratelimit.h"
 #include "skinplay_opts.h"
 #include "skinplay_timing.h"
@@ -65,6 +67,12 @@ typedef struct skinplay {
 	char clip[64];
 	sheet contact;
 	skinplay_kiosk kiosk;       /* --board, --input, signals, systemd */
+	skin_diff diff;          /* where the panels part, where the skin left its bone */
+	skel_joints joints;      /* the joints' names */
+	closeup_pick pick;       /* the compare view's close-up */
+	float diff_value[SKP_MAX_VERTS]; /* the difference view's, per vertex */
+	char closeup_title[32], closeup_note[48];
+	char closeup_apart[48];
 	int reload;        /* SIGHUP, or a slot changed while waiting: start over (main re-executes) */
 	int no_show;       /* no image slot holds a show that can play */
 } skinplay;
@@ -105,6 +113,12 @@ int open_display(skinplay *p);
  * in: p->reload, main starts over) or SIGHUP or SIGTERM; headless, and with
  * no display at all, it is an error. Returns the exit status. */
 int wait_for_show(skinplay *p);
+
+/* The close-up and the difference view (skinplay_closeup.c): set up once
+ * the body is bound (and the renderer up); each frame after skinning, the
+ * joint shown and the values coloured into f. */
+void closeup_setup(skinplay *p);
+void closeup_frame(skinplay *p, render_frame *f);
 
 /* Shows text on screen for about seconds. */
 void clips_notice(skinplay *p, const char *text, double seconds);

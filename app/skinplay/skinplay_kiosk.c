@@ -68,6 +68,10 @@ static void apply_board(const board_config *b, play_opts *o, int argc, char **ar
 		o->rotation = b->rotation;
 	if (b->hud >= 0 && o->hud < 0)
 		o->hud = b->hud;
+	if (b->algo >= 0 && !o->algo_given)
+		o->algo = (skin_algo)b->algo;
+	if (b->view >= 0 && !o->view_given)
+		o->view = (render_view)b->view;
 	if (b->width && !given(argc, argv, "--size")) {
 		o->width = b->width;
 		o->height = b->height;

@@ -25,7 +25,8 @@ static const cli_opt play_opts_table[] = {
 	{ "bvh", 0, "M.bvh", OPT_BVH, "skeleton and motion from one BVH file" },
 	{ "mesh", 0, "MESH.obj", OPT_MESH, "the body to skin, or 'generated': the mannequin made around the skeleton "
 	  "(the default)" },
-	{ "algo", 0, "ALGO", OPT_ALGO, "lbs, dqbs, dqbs-fixed or compare (side by side); default dqbs" },
+	{ "algo", 0, "ALGO", OPT_ALGO, "lbs, dqbs, dqbs-fixed or compare (side by side; default: the board's "
+	  "[display] algo, else dqbs)" },
 	{ "skin", 0, "cpu|gpu", OPT_SKIN, "skin on the CPU (default) or in the vertex shader" },
 	{ "threads", 0, "N|auto", OPT_THREADS, "CPU skinning on N threads, auto: one per core, for meshes of the "
 	  "board's [skin] split_verts vertices or more (default: the board's, else auto)" },
@@ -42,7 +43,9 @@ static const cli_opt play_opts_table[] = {
 	{ "out", 0, "DIR", OPT_OUT, "the same as --output" },
 	{ "every", 0, "K", OPT_EVERY, "with --output: every K-th frame (default 1)" },
 	{ "sheet", 0, "F.png", OPT_SHEET, "with --output: also a contact sheet of the frames written" },
-	{ "view", 0, "VIEW", OPT_VIEW, "body, skeleton or weights (default body)" },
+	{ "view", 0, "VIEW", OPT_VIEW, "body, skeleton, weights or difference (the body coloured by how far LBS lies "
+	  "from DQBS in the compare view, or the skin from its bone as bound with one method, in millimetres; "
+	  "default: the board's [display] view, else body)" },
 	{ "fps", 0, "F", OPT_FPS, "an AMC's capture rate in Hz (default 120, the CMU rate; a BVH's Frame Time and an "
 	  "image's directory give theirs)" },
 	{ "display-rate", 0, "HZ", OPT_DISPLAY_RATE, "headless: the virtual display's rate; frame n shows the motion at "
@@ -167,22 +170,35 @@ static int take_timing(play_opts *o, int id, const char *v)
 	}
 }
 
+/* A name show_modes does not know: refused with the names it does, the
+ * list the board file and the buttons use, so a new method or view is
+ * listed without a second list here. */
+#define MODE_NAMES_MAX ((int)SKIN_SHOW_COUNT > (int)RENDER_VIEW_COUNT ? (int)SKIN_SHOW_COUNT : (int)RENDER_VIEW_COUNT)
+
+static int bad_mode(const char *opt, const char *v, const char *(*name)(int), int n)
+{
+	const char *names[MODE_NAMES_MAX];
+	for (int i = 0; i < n; i++)
+		names[i] = name(i);
+	return cli_bad_choice(PROG, opt, v, names, n);
+}
+
 static int take_choice(play_opts *o, int id, const char *v)
 {
 	static const char *const skins[] = { "cpu", "gpu" }, *const onoff[] = { "off", "on" };
-	static const char *const algos[] = { "lbs", "dqbs", "dqbs-fixed", "compare" };
-	static const char *const views[] = { "body", "skeleton", "weights" };
 	int k;
 	switch (id) {
 	case OPT_ALGO:
 		if ((k = skin_algo_parse(v)) < 0)
-			return cli_bad_choice(PROG, "algo", v, algos, 4);
+			return bad_mode("algo", v, skin_algo_name, SKIN_SHOW_COUNT);
 		o->algo = k;
+		o->algo_given = 1;
 		return 0;
 	case OPT_VIEW:
 		if ((k = render_view_parse(v)) < 0)
-			return cli_bad_choice(PROG, "view", v, views, 3);
+			return bad_mode("view", v, render_view_name, RENDER_VIEW_COUNT);
 		o->view = k;
+		o->view_given = 1;
 		return 0;
 	case OPT_SKIN:
 		return (k = cli_choice(PROG, "skin", v, skins, 2)) < 0 ? -1 : (o->gpu = k, 0);

@@ -18,6 +18,7 @@ typedef struct play_opts {
 	const char *board;       /* --board board/NAME/board.ini */
 	bind_args bind;
 	skin_algo algo;
+	int algo_given;          /* --algo given: it wins over the board's [display] algo */
 	int gpu;                 /* --skin gpu */
 	int threads;             /* --threads: 0 auto (one per core), -1 the board's */
 	int streams;             /* --streams: board_streams, -1 the board's */
@@ -32,6 +33,7 @@ typedef struct play_opts {
 	int print_platform;      /* --print-platform: say what auto picks, exit */
 	long every;
 	render_view view;
+	int view_given;          /* --view given: it wins over the board's [display] view */
 	int hud_fps;             /* 0: leave the measured fps out (reproducible images) */
 	int hud;                 /* board_hud; -1: the board's, else engineer */
 	double fps;              /* an AMC's capture rate (a BVH and an image say theirs) */

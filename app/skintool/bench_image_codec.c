@@ -19,7 +19,7 @@
 
 static double unit_cm(const skp_image_clip *c, const skel *s)
 {
-	return c->unit_cm > 0 ? (double)c->unit_cm : tool_unit_cm(s);
+	return c->unit_cm > 0 ? (double)c->unit_cm : skel_unit_cm(s);
 }
 
 /* The stream's bytes a frame: the compressed stream, or the blocks' values. */

@@ -50,7 +50,7 @@ int pack_encode_clip(skp_image_writer *w, const char *path, const char *name, do
 	encode_result r = { 0 };
 	skp_error err;
 	const skel *s = w->s;
-	double unit = o->unit_cm > 0 ? o->unit_cm : tool_unit_cm(s);
+	double unit = o->unit_cm > 0 ? o->unit_cm : skel_unit_cm(s);
 	encode_opts eo = { o->error_cm / unit, 3.0 / unit, 0, told, &pr };
 	snprintf(what, sizeof what, "pack %s", name);
 	cli_progress_start(&pr, what, "permille", 1000);

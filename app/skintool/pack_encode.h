@@ -8,7 +8,7 @@
 
 typedef struct pack_codec {
 	double error_cm;        /* the worst shell error allowed (ACL's default 0.01 cm) */
-	double unit_cm;         /* cm a skeleton unit; 0: tool_unit_cm */
+	double unit_cm;         /* cm a skeleton unit; 0: skel_unit_cm */
 } pack_codec;
 
 /* Encodes clip (frames of w->s) and writes it as name at fps; prints its

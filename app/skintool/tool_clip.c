@@ -56,8 +56,3 @@ void tool_clip_free(tool_clip *c)
 	c->frames = NULL;
 	c->n = 0;
 }
-
-double tool_unit_cm(const skel *s)
-{
-	return fabs((double)s->length_scale - 0.45) < 1e-6 ? 2.54 : 1.0;
-}

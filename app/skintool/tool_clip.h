@@ -17,9 +17,5 @@ typedef struct tool_clip {
 int tool_clip_load(const char *path, const skel *s, tool_clip *c);
 void tool_clip_free(tool_clip *c);
 
-/* Centimetres a skeleton length unit (after :units length): inches for
- * the CMU convention (length 0.45: CMU and HDM05), else centimetres (BVH
- * files, the endorphin export's length 0.01). */
-double tool_unit_cm(const skel *s);
 
 #endif

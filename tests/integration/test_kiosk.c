@@ -511,6 +511,38 @@ static void test_bad_board_config_is_said_and_played_through(void **state)
 	free(log);
 }
 
+/* The board's [display] algo and view are what the kiosk starts with (the
+ * first frame is that of a run with --algo compare; ALGO and VIEW step on
+ * from there); --algo and --view on the command line win over them. */
+static void test_board_sets_starting_algo_and_view(void **state)
+{
+	(void)state;
+	static const char ini[] = "[display]\nalgo = compare\nview = weights\n";
+	char more[256];
+	test_write_text(script_path, "100 ALGO press\n110 ALGO release\n120 VIEW press\n130 VIEW release\n");
+	snprintf(more, sizeof more, "--input script:%s", script_path);
+	assert_int_equal(run_board("board", ini, more, 18), 0);
+	char *log = read_log();
+	if (!strstr(log, "input: ALGO -> lbs\n") || !strstr(log, "input: VIEW -> difference\n"))
+		fail_msg("from compare and weights, want lbs and difference; log:\n%s", log);
+	free(log);
+	snprintf(more, sizeof more, "--algo=lbs --view body --input script:%s", script_path);
+	assert_int_equal(run_board("cli", ini, more, 18), 0);
+	log = read_log();
+	if (!strstr(log, "input: ALGO -> dqbs\n") || !strstr(log, "input: VIEW -> skeleton\n"))
+		fail_msg("from --algo lbs and --view body, want dqbs and skeleton; log:\n%s", log);
+	free(log);
+	assert_int_equal(run("compare", "--algo compare --view weights", 1), 0);
+	assert_int_equal(run("lbs", "--algo lbs", 1), 0);
+	load("board", 1, &a);
+	load("compare", 1, &b);
+	assert_int_equal(image_diff(&a, &b), 0);
+	load("cli", 1, &a);
+	assert_true(image_diff(&a, &b) > 0);
+	load("lbs", 1, &b);
+	assert_int_equal(image_diff(&a, &b), 0);
+}
+
 /* Runs skinplay headless on an image at 30 frames a second; returns the
  * log (the caller frees it) after checking the exit status. */
 static char *play_image(const char *show, const char *more)
@@ -586,6 +618,7 @@ int main(void)
 		cmocka_unit_test(test_compact_streams),
 		cmocka_unit_test(test_notify_signals_and_watchdog),
 		cmocka_unit_test(test_bad_board_config_is_said_and_played_through),
+		cmocka_unit_test(test_board_sets_starting_algo_and_view),
 	};
 	return cmocka_run_group_tests(tests, setup, teardown);
 }

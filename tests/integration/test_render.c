@@ -210,17 +210,21 @@ static void test_compare_view_of_a_twist(void **state)
 			 "--asf tests/data/twist.asf --amc tests/data/twist.amc --mesh %s --algo compare --platform surfaceless --size 640x360 --yaw 0 --start %d",
 			 tube, frame);
 		render(args, tmpdir(), &got);
-		/* panel columns: the joint is in the middle of each half, the
-		 * tube's ends towards its sides; rows between the HUD and labels */
-		double joint = halves_diff(&got, 140, 180, 120, 230);
-		double ends = (halves_diff(&got, 70, 115, 120, 230) + halves_diff(&got, 215, 260, 120, 230)) / 2;
-		print_message("lower arm twisted %d deg: LBS vs DQBS mean difference %.2f at the joint, %.2f at the ends\n",
-			      frame == 2 ? 170 : 0, joint, ends);
+		/* panel columns: the body in the panel's left half, the joint in
+		 * its middle, the tube's ends towards its sides; the close-up in
+		 * the right half (rows between the HUD and the labels) */
+		double joint = halves_diff(&got, 65, 90, 160, 200);
+		double ends = (halves_diff(&got, 15, 45, 160, 200) + halves_diff(&got, 110, 140, 160, 200)) / 2;
+		double inset = halves_diff(&got, 170, 310, 110, 240);
+		print_message("lower arm twisted %d deg: LBS vs DQBS mean difference %.2f at the joint, %.2f at the ends, "
+			      "%.2f in the close-up\n", frame == 2 ? 170 : 0, joint, ends, inset);
 		if (frame == 1) {
-			assert_true(joint < 1.0 && ends < 1.0); /* no twist: the same picture */
+			/* no twist: the same picture, and no close-up of nothing */
+			assert_true(joint < 1.0 && ends < 1.0 && inset < 1.0);
 		} else {
 			assert_true(joint > 10.0);  /* LBS collapses, DQBS does not */
 			assert_true(ends < 3.0);    /* away from the joint they agree */
+			assert_true(inset > 30.0);  /* and the close-up shows it large */
 		}
 	}
 	unlink(tube);

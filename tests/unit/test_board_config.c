@@ -8,6 +8,7 @@
 #include <stdint.h>
 #include <cmocka.h>
 
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -49,6 +50,8 @@ static void test_rpi4_board(void **state)
 	assert_int_equal(cfg.height, 1080);
 	assert_int_equal(cfg.rotation, 0);
 	assert_int_equal(cfg.hud, BOARD_HUD_VISITOR);
+	assert_int_equal(cfg.algo, SKIN_COMPARE);
+	assert_int_equal(cfg.view, RENDER_VIEW_BODY);
 	for (int b = 0; b < CONTROL_BTN_COUNT; b++) {
 		assert_true(cfg.button[b].present);
 		assert_int_equal(cfg.button[b].line, lines[b]);
@@ -75,6 +78,53 @@ static void test_host_board(void **state)
 	assert_int_equal(cfg.slot_count, 3);
 	assert_string_equal(cfg.slot[2], "/usr/share/skinplay/demo.skn");
 	assert_int_equal(cfg.threads, 0); /* not given: auto */
+	assert_int_equal(cfg.algo, -1);   /* commented out: the program's */
+	assert_int_equal(cfg.view, -1);
+}
+
+/* [display] algo and view: the starting method and view, by show_modes'
+ * names in any case, like the other keys; not given: -1 (the program's
+ * default). */
+static void test_display_algo_and_view(void **state)
+{
+	(void)state;
+	skp_error err;
+	assert_int_equal(parse("[display]\nhud = off\n", &err), SKP_OK);
+	assert_int_equal(cfg.algo, -1);
+	assert_int_equal(cfg.view, -1);
+	assert_int_equal(parse("[display]\nalgo = compare\nview = difference\n", &err), SKP_OK);
+	assert_int_equal(cfg.problem_count, 0);
+	assert_int_equal(cfg.algo, SKIN_COMPARE);
+	assert_int_equal(cfg.view, RENDER_VIEW_DIFFERENCE);
+	assert_int_equal(parse("[Display]\nALGO = DQBS-Fixed\nView = Weights\n", &err), SKP_OK);
+	assert_int_equal(cfg.problem_count, 0);
+	assert_int_equal(cfg.algo, SKIN_DQBS_FIXED);
+	assert_int_equal(cfg.view, RENDER_VIEW_WEIGHTS);
+	/* every name show_modes has is taken */
+	for (int i = 0; i < SKIN_SHOW_COUNT; i++) {
+		char text[64];
+		snprintf(text, sizeof text, "[display]\nalgo = %s\n", skin_algo_name(i));
+		assert_int_equal(parse(text, &err), SKP_OK);
+		assert_int_equal(cfg.algo, i);
+	}
+	for (int i = 0; i < RENDER_VIEW_COUNT; i++) {
+		char text[64];
+		snprintf(text, sizeof text, "[display]\nview = %s\n", render_view_name(i));
+		assert_int_equal(parse(text, &err), SKP_OK);
+		assert_int_equal(cfg.view, i);
+	}
+	/* a bad one: one problem, the other keys still taken, the default kept */
+	assert_int_equal(parse("[display]\nview = skeleton\nalgo = fast\nhud = off\n", &err), SKP_OK);
+	assert_int_equal(cfg.problem_count, 1);
+	assert_int_equal(cfg.problem[0].line, 3);
+	assert_int_equal(cfg.algo, -1);
+	assert_int_equal(cfg.view, RENDER_VIEW_SKELETON);
+	assert_int_equal(cfg.hud, BOARD_HUD_OFF);
+	assert_int_equal(parse("[display]\nalgo = lbs\nview = xray\n", &err), SKP_OK);
+	assert_int_equal(cfg.problem_count, 1);
+	assert_int_equal(cfg.problem[0].line, 3);
+	assert_int_equal(cfg.algo, SKIN_LBS);
+	assert_int_equal(cfg.view, -1);
 }
 
 static void test_skin_section(void **state)
@@ -185,6 +235,12 @@ static void test_mistakes_name_line_and_key(void **state)
 		{ "[show]\nloop = yes\n", 2, "key 'loop' in [show]: expected show or clip, found 'yes'" },
 		{ "[show]\nshuffle = on\n", 2, "unknown key 'shuffle' in [show] (speed, blend_ms, root, loop)" },
 		{ "[display]\nyaw = north\n", 2, "key 'yaw' in [display]: expected auto or degrees" },
+		{ "[display]\n\nalgo = fast\n", 3,
+		  "key 'algo' in [display]: expected lbs, dqbs, dqbs-fixed or compare, found 'fast'" },
+		{ "[display]\nview = xray\n", 2,
+		  "key 'view' in [display]: expected body, skeleton, weights or difference, found 'xray'" },
+		{ "[display]\nmethod = lbs\n", 2,
+		  "unknown key 'method' in [display] (platform, device, rotation, size, hud, yaw, algo, view)" },
 		{ "[storage]\nslot = a\nslot = b\nslot = c\nslot = d\n", 5, "SKP_MAX_SLOTS" },
 		{ "line = 3\n", 1, "key 'line' before any [section]" },
 		{ "[display\n", 1, "expected ']'" },
@@ -244,6 +300,7 @@ int main(void)
 		cmocka_unit_test(test_rpi4_board),
 		cmocka_unit_test(test_host_board),
 		cmocka_unit_test(test_show_section_and_yaw),
+		cmocka_unit_test(test_display_algo_and_view),
 		cmocka_unit_test(test_skin_section),
 		cmocka_unit_test(test_inheritance_and_syntax),
 		cmocka_unit_test(test_mistakes_name_line_and_key),

@@ -100,6 +100,8 @@ static void test_view_and_gpu(void **state)
 	tap(&s, CONTROL_BTN_VIEW, log);
 	assert_string_equal(log, "input: VIEW -> weights");
 	tap(&s, CONTROL_BTN_VIEW, log);
+	assert_string_equal(log, "input: VIEW -> difference");
+	tap(&s, CONTROL_BTN_VIEW, log);
 	assert_string_equal(log, "input: VIEW -> body");
 	ev(&s, CONTROL_BTN_VIEW, CONTROL_PRESS, log);
 	assert_int_equal(ev(&s, CONTROL_BTN_VIEW, CONTROL_LONG, log), CONTROL_ACT_GPU);

@@ -1,0 +1,53 @@
+/* The joints of a skeleton named for people ("LEFT ELBOW", "NECK"), for
+ * the screen and the report: the joint at bone b's head, where b meets its
+ * parent. Names come from the bones' roles (skel_roles.h) and their place
+ * in the limb, not from the bones' names, so CMU's lradius, a BVH's
+ * LeftForeArm and Mixamo's mixamorig:LeftForeArm all give LEFT ELBOW; the
+ * side is read from the name (l/L, left, _L, .L) and, failing that, from
+ * where the joint lies (a body facing +z has its left at +x). */
+#ifndef SKEL_JOINTS_H
+#define SKEL_JOINTS_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "skel_roles.h"
+
+typedef enum skel_joint_kind {
+	JOINT_OTHER, JOINT_HIPS, JOINT_BACK, JOINT_CHEST, JOINT_NECK, JOINT_HEAD,
+	JOINT_COLLAR, JOINT_SHOULDER, JOINT_ELBOW, JOINT_WRIST, JOINT_HAND, JOINT_FINGERS, JOINT_THUMB,
+	JOINT_PELVIS, JOINT_HIP, JOINT_KNEE, JOINT_ANKLE, JOINT_TOES,
+	JOINT_UPPER_ARM, JOINT_FOREARM, JOINT_THIGH, JOINT_SHIN, /* twist bones: mid-limb */
+	JOINT_KIND_COUNT
+} skel_joint_kind;
+
+typedef enum skel_side { SIDE_NONE, SIDE_LEFT, SIDE_RIGHT } skel_side;
+
+typedef struct skel_joints {
+	int count;
+	int biped;                     /* 0: not a human's: joints go by their bones' names */
+	const skel *skel;
+	uint8_t kind[SKP_MAX_BONES];   /* skel_joint_kind of the joint at the bone's head */
+	uint8_t side[SKP_MAX_BONES];   /* skel_side */
+} skel_joints;
+
+/* Names every joint of s as bound in pose p (a standing body). */
+void skel_joints_find(const skel *s, const skel_pose *p, skel_joints *out);
+
+/* "LEFT ELBOW", "NECK", ... into buf (at most cap bytes); on a skeleton
+ * that is not a human's the bone's name in capitals; "JOINT" for a bone
+ * out of range. Returns buf. */
+const char *skel_joint_name(const skel_joints *j, int bone, char *buf, size_t cap);
+
+/* How far the joint at bone b's head has turned from the bind pose: the
+ * bone against the nearest ancestor that is another joint (the neck's
+ * bones count as one), split into the bend of the bone's axis and the
+ * twist about it, in degrees (0..180). */
+typedef struct skel_joint_turn {
+	float bend, twist;
+} skel_joint_turn;
+
+skel_joint_turn skel_joint_turned(const skel *s, const skel_joints *j, const skel_pose *bind, const skel_pose *pose,
+				  int bone);
+
+#endif

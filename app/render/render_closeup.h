@@ -1,0 +1,46 @@
+/* The compare view's close-up: which joint it shows and the camera that
+ * looks at it. The joint is where LBS and DQBS part most at the moment
+ * (skin_diff.h's score per joint), held at least CLOSEUP_HOLD_S seconds
+ * so that a visitor can look before it moves on, and only left for a
+ * joint that differs clearly more; the camera glides from joint to joint
+ * rather than cutting. */
+#ifndef RENDER_CLOSEUP_H
+#define RENDER_CLOSEUP_H
+
+#include "mat4.h"
+
+#define CLOSEUP_HOLD_S 2.0f    /* seconds a joint is shown at least */
+#define CLOSEUP_SWITCH 1.25f   /* another joint must differ this much more */
+#define CLOSEUP_SPAN 0.09f     /* the inset shows a sphere this radius (of the body's size) */
+
+typedef struct closeup_pick {
+	int joint;     /* -1: none yet */
+	float held;    /* seconds on it */
+} closeup_pick;
+
+void closeup_pick_init(closeup_pick *c);
+
+/* dt seconds later, with score[j] the largest difference at joint j of n
+ * (0: none): the joint to show. -1 while nothing differs. */
+int closeup_pick_update(closeup_pick *c, const float *score, int n, float dt);
+
+typedef struct closeup_camera {
+	int started;
+	vec3 target;       /* eased towards the joint */
+	float azimuth;     /* eased towards a view across the bone */
+	float pitch;
+} closeup_camera;
+
+/* Follows the point at on a joint whose bone points along axis and its
+ * parent along parent (posed), seen by the main camera from main_azimuth,
+ * over dt seconds; immediate: there at once. A bent joint is seen square
+ * to its bend, a straight one with the main camera's view turned square
+ * to the bone: a limb from its side, never down its length. */
+void closeup_camera_follow(closeup_camera *c, vec3 at, vec3 axis, vec3 parent, float main_azimuth, float dt,
+			   int immediate);
+
+/* View-projection of the close-up for a viewport of aspect, framing a
+ * sphere of radius span round the target. */
+mat4 closeup_camera_matrix(const closeup_camera *c, float span, float aspect);
+
+#endif

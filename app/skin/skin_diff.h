@@ -1,0 +1,54 @@
+/* Where two skinned bodies part, and where one has left its shape: per
+ * vertex how far LBS lies from DQBS, or how far the skin has moved
+ * towards or away from its bone since the bind pose (flesh lost or
+ * gained), and per joint the largest of those: the close-up's choice on
+ * the kiosk (app/render) and in the report (skintool compare) alike.
+ *
+ * A vertex belongs to the joint nearest to it as bound (a joint being a
+ * bone's head, named by skel_joints.h); its bone is the one carrying most
+ * of its weight. No allocation: the caller owns the struct (static). */
+#ifndef SKIN_DIFF_H
+#define SKIN_DIFF_H
+
+#include <stdint.h>
+
+#include "skin.h"
+
+typedef struct skin_diff {
+	int count, bone_count;
+	uint8_t joint[SKP_MAX_VERTS];    /* the joint nearest each vertex as bound */
+	uint8_t bone[SKP_MAX_VERTS];     /* its heaviest bone (SKP_MAX_BONES: none) */
+	float radius[SKP_MAX_VERTS];     /* its distance to that bone as bound */
+	float score[SKP_MAX_BONES];      /* the last measure's largest per joint (units) */
+} skin_diff;
+
+/* Sorts the vertices of soa (bound in pose bind) to their joints and
+ * bones. */
+void skin_diff_init(skin_diff *d, const skel *s, const skel_pose *bind, const skin_soa *soa);
+
+/* How far each vertex of a (xyz triples) lies from b's: into dist when
+ * not NULL, the largest per joint into d->score. Returns the largest. */
+float skin_diff_between(skin_diff *d, const float *a, const float *b, float *dist);
+
+/* How far each vertex of pos (skinned in pose) has moved from its bone
+ * since the bind pose, signed (negative: nearer, the flesh thinner): into
+ * dist when not NULL, the largest magnitude per joint into d->score.
+ * Returns the largest magnitude. */
+float skin_diff_from_bind(skin_diff *d, const skel_pose *pose, const float *pos, float *dist);
+
+/* Where joint's vertices of a (xyz triples) lie furthest from b's: their
+ * midpoints' centroid weighted by the squared distance, so the close-up
+ * centres on the change, not on the joint's head (a shoulder's differs at
+ * the armpit). *found 0 when they do not differ at all. */
+vec3 skin_diff_focus(const skin_diff *d, const float *a, const float *b, int joint, int *found);
+
+/* How the skin of one joint's vertices has moved from its bones since
+ * the bind pose (pos skinned in pose): the most any came nearer
+ * (*thinner, >= 0) and went further (*thicker, >= 0), in units. */
+void skin_diff_joint_change(const skin_diff *d, const skel_pose *pose, const float *pos, int joint, float *thinner,
+			    float *thicker);
+
+/* The joint of the largest score (-1 when every score is 0). */
+int skin_diff_worst(const skin_diff *d);
+
+#endif

@@ -1,0 +1,224 @@
+/* Seen at a glance: in the compare view the LBS and DQBS panels differ
+ * where the skinning does, plainly (issue 42). Over the default show at
+ * 960x540 on the visitor's screen, the share of each frame's panel pixels
+ * above the captions that differ between the two panels by more than
+ * SEEN_LEVELS in a channel: at least 2% in a quarter of the frames, and 8%
+ * or more while the tour holds each of its staged artifacts.
+ *
+ * SKP_SEEN_RATE (frames a second of the virtual display, default 4) sets
+ * how densely the show is sampled; SKP_SEEN_DIR=DIR measures the frames
+ * already in DIR (skinplay ... --algo compare --hud visitor -o DIR) and
+ * prints the figures only. */
+#include <stdarg.h>
+#include <stddef.h>
+#include <setjmp.h>
+#include <stdint.h>
+#include <cmocka.h>
+
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include "png_writer.h"
+#include "test_paths.h"
+
+#define SEEN_LEVELS 10
+#define MAX_FRAMES 20000
+
+/* The tour's timing (assets/demo_motion.c), seconds into it. */
+#define TOUR_SECONDS 18.7
+#define TOUR_TWIST_AT 4.1
+#define TOUR_ELBOW_AT 7.3
+#define TOUR_SHOULDER_AT 10.5
+#define TOUR_HIP_AT 13.7
+#define TOUR_NECK_AT 16.9
+
+typedef struct image {
+	int w, h;
+	uint8_t px[960 * 540 * 4];
+} image;
+
+static image im;
+static double share[MAX_FRAMES];
+
+static int near(const uint8_t *p, int r, int g, int b)
+{
+	return abs(p[0] - r) <= 2 && abs(p[1] - g) <= 2 && abs(p[2] - b) <= 2;
+}
+
+/* The methods' names (white) and the visitor's sentences (the caption
+ * colour) at the foot: the first row of either in the left panel's lower
+ * half. */
+static int caption_row(const image *m)
+{
+	for (int y = m->h / 2; y < m->h; y++)
+		for (int x = 0; x < m->w / 2; x++) {
+			const uint8_t *p = m->px + ((size_t)y * m->w + x) * 4;
+			if (near(p, 255, 255, 255) || near(p, 242, 217, 140))
+				return y;
+		}
+	return m->h;
+}
+
+/* The share of the left panel's pixels above the captions that differ
+ * from the right panel's (the divider's column left out). */
+static double panels_differ(const image *m)
+{
+	int half = m->w / 2, rows = caption_row(m);
+	long differ = 0, n = 0;
+	for (int y = 0; y < rows; y++)
+		for (int x = 0; x < half - 1; x++) {
+			const uint8_t *a = m->px + ((size_t)y * m->w + x) * 4, *b = a + (size_t)half * 4;
+			int e = 0;
+			for (int c = 0; c < 3; c++)
+				e = abs(a[c] - b[c]) > e ? abs(a[c] - b[c]) : e;
+			differ += e > SEEN_LEVELS;
+			n++;
+		}
+	return n ? (double)differ / (double)n : 0.0;
+}
+
+/* Every frame_NNNNNN.png of dir in order: their shares; returns the count. */
+static int measure_dir(const char *dir)
+{
+	int count = 0;
+	for (int n = 1; n < 1000000 && count < MAX_FRAMES; n++) {
+		char path[512];
+		skp_error err;
+		snprintf(path, sizeof path, "%s/frame_%06d.png", dir, n);
+		if (access(path, R_OK) != 0)
+			continue;
+		if (png_read_rgba(path, im.px, sizeof im.px, &im.w, &im.h, &err) != 0)
+			fail_msg("%s: %s", path, err.msg);
+		share[count++] = panels_differ(&im);
+	}
+	return count;
+}
+
+static int cmp_double(const void *a, const void *b)
+{
+	double x = *(const double *)a, y = *(const double *)b;
+	return x < y ? -1 : x > y;
+}
+
+typedef struct seen {
+	double median, max, above2;
+} seen;
+
+static seen summarise(int n, const char *what)
+{
+	static double sorted[MAX_FRAMES];
+	seen s = { 0, 0, 0 };
+	memcpy(sorted, share, sizeof share[0] * (size_t)n);
+	qsort(sorted, (size_t)n, sizeof sorted[0], cmp_double);
+	int above = 0;
+	for (int i = 0; i < n; i++)
+		above += sorted[i] >= 0.02;
+	if (n) {
+		s.median = sorted[n / 2];
+		s.max = sorted[n - 1];
+		s.above2 = (double)above / n;
+	}
+	print_message("%s: %d frames; panels differ in %.2f%% of their pixels above the captions (median), %.2f%% at most, "
+		      "2%% or more in %.1f%% of the frames\n", what, n, 100 * s.median, 100 * s.max, 100 * s.above2);
+	return s;
+}
+
+static double rate(void)
+{
+	const char *r = getenv("SKP_SEEN_RATE");
+	return r && atof(r) > 0 ? atof(r) : 4.0;
+}
+
+static void run(const char *more, const char *dir)
+{
+	char cmd[2048], show[512];
+	snprintf(show, sizeof show, "%s", test_tool_path("assets/demo.skn"));
+	snprintf(cmd, sizeof cmd, "rm -rf %s && ASAN_OPTIONS=detect_leaks=0 %s --image %s --platform surfaceless "
+		 "--algo compare --hud visitor --hud-fps off --input none --size 960x540 --display-rate %g %s --out %s 2>/dev/null",
+		 dir, test_tool_path("skinplay"), show, rate(), more, dir);
+	int status = system(cmd);
+	if (!WIFEXITED(status) || WEXITSTATUS(status) != 0)
+		fail_msg("failed: %s", cmd);
+}
+
+static char dir[64];
+
+static void test_show_seen(void **state)
+{
+	(void)state;
+	const char *given = getenv("SKP_SEEN_DIR");
+	if (given) {
+		summarise(measure_dir(given), given);
+		return;
+	}
+	char out[128];
+	snprintf(out, sizeof out, "%s/show", dir);
+	run("", out);
+	seen s = summarise(measure_dir(out), "default show, 960x540, visitor compare view");
+	assert_true(s.above2 >= 0.25);
+}
+
+/* The tour's staged artifacts (assets/demo_motion.c), seconds into the
+ * tour: the middle of each hold. */
+static const struct {
+	const char *what;
+	double at;
+} staged[] = {
+	{ "forearm twist", TOUR_TWIST_AT },
+	{ "elbow bend", TOUR_ELBOW_AT },
+	{ "shoulder overhead", TOUR_SHOULDER_AT },
+	{ "hip flexion", TOUR_HIP_AT },
+	{ "neck turn", TOUR_NECK_AT },
+};
+
+static void test_tour_artifacts(void **state)
+{
+	(void)state;
+	if (getenv("SKP_SEEN_DIR"))
+		skip();
+	char out[128], more[64];
+	snprintf(out, sizeof out, "%s/tour", dir);
+	snprintf(more, sizeof more, "--clip tour --loop clip --frames %d", (int)(TOUR_SECONDS * rate()));
+	run(more, out);
+	int n = measure_dir(out);
+	summarise(n, "the tour");
+	for (size_t i = 0; i < sizeof staged / sizeof staged[0]; i++) {
+		/* frame k (from 1) shows the tour at (k - 1) / rate s */
+		int k = (int)(staged[i].at * rate() + 0.5);
+		if (k >= n)
+			fail_msg("%s at %.1f s: the tour has %d frames", staged[i].what, staged[i].at, n);
+		double best = share[k];
+		for (int d = -1; d <= 1; d++)
+			best = k + d >= 0 && k + d < n && share[k + d] > best ? share[k + d] : best;
+		print_message("%s (%.1f s): %.2f%% of the panel pixels differ\n", staged[i].what, staged[i].at, 100 * best);
+		if (best < 0.08)
+			fail_msg("%s: %.2f%% of the panels' pixels differ, not 8%%", staged[i].what, 100 * best);
+	}
+}
+
+static int setup(void **state)
+{
+	(void)state;
+	strcpy(dir, "/tmp/skp_seen_XXXXXX");
+	return mkdtemp(dir) ? 0 : -1;
+}
+
+static int teardown(void **state)
+{
+	(void)state;
+	char cmd[128];
+	snprintf(cmd, sizeof cmd, "rm -rf %s", dir);
+	return system(cmd) == 0 ? 0 : -1;
+}
+
+int main(void)
+{
+	const struct CMUnitTest tests[] = {
+		cmocka_unit_test(test_show_seen),
+		cmocka_unit_test(test_tour_artifacts),
+	};
+	return cmocka_run_group_tests(tests, setup, teardown);
+}
