@@ -182,6 +182,8 @@ static const char *const visitor_name[SKIN_ALGO_COUNT] = {
 static const char *button_legend(const skinplay *p)
 {
 	const skinplay_kiosk *k = &p->kiosk;
+	if (p->disp && p->disp->key)
+		return "KEYS: 1 METHOD  2 PAUSE  3 NEXT CLIP  4 VIEW  D DIFFERENCE  Q QUIT";
 	if (!strcmp(k->in->name, "keyboard"))
 		return "KEYS: 1 METHOD   2 PAUSE   3 NEXT CLIP   4 VIEW";
 	if (!strcmp(k->in->name, "gpio"))
@@ -415,6 +417,8 @@ static int play(skinplay *p)
 		stage_frame_done(&p->stages, shown_number(p));
 		if (p->disp && p->disp->handle_events)
 			p->disp->handle_events(&quit);
+		for (int key; p->disp && p->disp->key && (key = p->disp->key()) != 0;)
+			apply_input(p, &f, skinplay_kiosk_key(&p->kiosk, key, shown));
 		uint64_t now = clock_now_ns();
 		if (now - p->stages.window_ns >= 1000000000u) {
 			fps = stage_window_fps(&p->stages, now);

@@ -249,6 +249,39 @@ unsigned skinplay_kiosk_frame(skinplay_kiosk *k, long n)
 	return act;
 }
 
+/* A button pressed and released at once, through the state machine. */
+static unsigned tap(skinplay_kiosk *k, int button, uint64_t t)
+{
+	static const uint8_t kinds[2] = { CONTROL_PRESS, CONTROL_RELEASE };
+	unsigned act = 0;
+	for (int i = 0; i < 2; i++) {
+		control_event ev = { .button = (uint8_t)button, .kind = kinds[i], .t_ms = t };
+		char line[96];
+		control_action a = controls_handle(&k->ps, &ev, line, sizeof line);
+		if (a != CONTROL_ACT_NONE)
+			fprintf(cli_note(), "%s\n", line);
+		if (a == CONTROL_ACT_PLAY)
+			k->play_ms = t;
+		act |= act_bit(a);
+	}
+	return act;
+}
+
+unsigned skinplay_kiosk_key(skinplay_kiosk *k, int key, long n)
+{
+	static const char buttons[] = "1234";
+	const char *b = key > 0 ? strchr(buttons, key) : NULL;
+	if (b)
+		return tap(k, (int)(b - buttons), now_ms(k, n));
+	if (key == 'v')
+		return tap(k, CONTROL_BTN_VIEW, now_ms(k, n));
+	if (key != 'd')
+		return 0;
+	k->ps.view = k->ps.view == RENDER_VIEW_DIFFERENCE ? RENDER_VIEW_BODY : RENDER_VIEW_DIFFERENCE;
+	fprintf(cli_note(), "input: key d -> %s\n", render_view_name(k->ps.view));
+	return SKINPLAY_ACT_VIEW;
+}
+
 void skinplay_kiosk_shutdown(skinplay_kiosk *k)
 {
 	if (k->in_started)

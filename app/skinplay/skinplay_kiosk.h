@@ -58,6 +58,11 @@ int skinplay_kiosk_start(skinplay_kiosk *k, const play_opts *o, int headless, in
  * state is k->ps. */
 unsigned skinplay_kiosk_frame(skinplay_kiosk *k, long n);
 
+/* A key pressed in the window (display_backend.key): 1-4 as the buttons
+ * ALGO, PLAY, NEXT and VIEW (v too), d the difference view and back.
+ * Returns SKINPLAY_ACT_* bits like skinplay_kiosk_frame. */
+unsigned skinplay_kiosk_key(skinplay_kiosk *k, int key, long n);
+
 /* Releases the input (terminal restored), signals; sends STOPPING=1. */
 void skinplay_kiosk_shutdown(skinplay_kiosk *k);
 

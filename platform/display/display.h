@@ -42,6 +42,10 @@ typedef struct display_backend {
 	 * events it already read, so nothing polls the connection). Sets *quit
 	 * on a close request. */
 	int (*handle_events)(int *quit);
+	/* NULL, or the next key pressed in the window since (a printable
+	 * character, 0 when none is waiting): keys the frame loop maps to the
+	 * buttons and views. */
+	int (*key)(void);
 	/* Releases everything init took (kms: restores the saved CRTC). */
 	void (*shutdown)(void);
 } display_backend;

@@ -18,6 +18,8 @@ static struct {
 	Colormap cmap;
 	Atom wm_delete;
 	display_egl egl;
+	char keys[16];          /* keys pressed in the window, not yet taken */
+	int key_count;
 } s;
 
 static int open_x(const char *name, skp_error *err)
@@ -86,6 +88,7 @@ static int x11_init(const display_config *cfg, display_info *out, skp_error *err
 		EGL_RENDERABLE_TYPE, EGL_OPENGL_ES2_BIT,
 		EGL_NONE
 	};
+	s.key_count = 0;
 	int rc = display_check_config(cfg, 16384, 16384, err);
 	if (rc != SKP_OK)
 		return rc;
@@ -126,6 +129,18 @@ static void handle_key(XKeyEvent *ev, int *quit)
 	KeySym sym = XLookupKeysym(ev, 0);
 	if (sym == XK_q || sym == XK_Escape)
 		*quit = 1;
+	else if (sym >= 0x20 && sym < 0x7f && s.key_count < (int)sizeof s.keys)
+		s.keys[s.key_count++] = (char)sym;
+}
+
+/* The oldest key pressed in the window (a printable character), 0 none. */
+static int x11_key(void)
+{
+	if (s.key_count == 0)
+		return 0;
+	int k = (unsigned char)s.keys[0];
+	memmove(s.keys, s.keys + 1, (size_t)--s.key_count);
+	return k;
 }
 
 static int x11_handle_events(int *quit)
@@ -160,5 +175,6 @@ const display_backend display_x11 = {
 	.get_proc = display_egl_get_proc,
 	.present = x11_present,
 	.handle_events = x11_handle_events,
+	.key = x11_key,
 	.shutdown = x11_shutdown,
 };

@@ -181,11 +181,37 @@ static void test_camera_faces_the_clip(void **state)
 	assert_int_equal(logged_yaw(args), -45);
 }
 
+/* Keys pressed in the window, as a user would (xdotool under Xvfb): d
+ * turns the difference view on and off, 1 changes the method. */
+static void test_window_keys(void **state)
+{
+	(void)state;
+	char name[16];
+	if (test_run("command -v xdotool >/dev/null") != 0) {
+		print_message("xdotool not installed (apt-get install xdotool)\n");
+		skip();
+	}
+	pid_t x = test_xvfb_start("640x480x24", name, sizeof name);
+	if (!x)
+		skip();
+	const char *log = test_scratch("keys.log");
+	int rc = test_run("export DISPLAY=%s; %s --asf assets/cmu/02.asf --amc assets/cmu/02_01.amc --platform x11 "
+			  "--size 320x240 --input none --algo compare 2>'%s' & pid=$!; sleep 3; xdotool mousemove 160 120; "
+			  "xdotool key d; sleep 1; xdotool key d; sleep 1; xdotool key 1; sleep 1; kill -TERM $pid; wait $pid",
+			  name, test_tool_path("skinplay"), log);
+	test_xvfb_stop(x);
+	assert_int_equal(rc, 0);
+	static const char *const want[] = { "input: key d -> difference", "input: key d -> body", "input: ALGO -> ",
+					    NULL };
+	test_assert_contains_all(log, want);
+}
+
 int main(void)
 {
 	const struct CMUnitTest tests[] = {
 		cmocka_unit_test(test_camera_faces_the_clip),
 		cmocka_unit_test(test_window_plays_at_the_captured_rate),
+		cmocka_unit_test(test_window_keys),
 	};
 	return cmocka_run_group_tests_name("playback_window", tests, test_scratch_setup, test_scratch_teardown);
 }

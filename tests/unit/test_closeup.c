@@ -1,0 +1,116 @@
+/* The compare view's close-up: the joint it shows is where the two
+ * skinned bodies part most, held at least CLOSEUP_HOLD_S before another
+ * takes it, and only one that parts clearly more; skin_diff measures the
+ * parting per joint and finds where on the joint it is. */
+#include <stdarg.h>
+#include <stddef.h>
+#include <setjmp.h>
+#include <stdint.h>
+#include <cmocka.h>
+
+#include <math.h>
+#include <string.h>
+
+#include "render_closeup.h"
+#include "skin_diff.h"
+
+static void test_pick_holds_then_moves(void **state)
+{
+	(void)state;
+	closeup_pick c;
+	float score[4] = { 0, 0, 0, 0 };
+	closeup_pick_init(&c);
+	assert_int_equal(closeup_pick_update(&c, score, 4, 0.1f), -1); /* nothing parts: none */
+	score[1] = 2.0f;
+	assert_int_equal(closeup_pick_update(&c, score, 4, 0.1f), 1);
+	score[2] = 5.0f; /* far more, but joint 1 has been shown 0.1 s */
+	for (float t = 0.1f; t < CLOSEUP_HOLD_S - 0.05f; t += 0.1f)
+		assert_int_equal(closeup_pick_update(&c, score, 4, 0.1f), 1);
+	assert_int_equal(closeup_pick_update(&c, score, 4, 0.2f), 2);
+	/* held again: a joint barely ahead (under CLOSEUP_SWITCH) never takes it */
+	score[3] = 5.0f * CLOSEUP_SWITCH * 0.95f;
+	for (int i = 0; i < 100; i++)
+		assert_int_equal(closeup_pick_update(&c, score, 4, 0.1f), 2);
+	score[3] = 5.0f * CLOSEUP_SWITCH * 1.05f;
+	assert_int_equal(closeup_pick_update(&c, score, 4, 0.1f), 3);
+}
+
+/* The camera glides: after a switch it moves part of the way a frame. */
+static void test_camera_glides(void **state)
+{
+	(void)state;
+	closeup_camera cam;
+	memset(&cam, 0, sizeof cam);
+	vec3 axis = vec3_make(1, 0, 0), parent = vec3_make(1, 0, 0);
+	closeup_camera_follow(&cam, vec3_make(0, 0, 0), axis, parent, 0.45f, 0.016f, 1);
+	closeup_camera_follow(&cam, vec3_make(10, 0, 0), axis, parent, 0.45f, 0.016f, 0);
+	assert_true(cam.target.x > 0.0f && cam.target.x < 1.0f);
+	for (int i = 0; i < 300; i++)
+		closeup_camera_follow(&cam, vec3_make(10, 0, 0), axis, parent, 0.45f, 0.016f, 0);
+	assert_true(fabsf(cam.target.x - 10.0f) < 0.01f);
+	/* a straight limb along x is seen from across it, not down its length */
+	float along = fabsf(sinf(cam.azimuth) * cosf(cam.pitch));
+	assert_true(along < 0.2f);
+}
+
+static skel sk;
+static skel_pose bind;
+static uint8_t block[SKIN_SOA_BYTES(8)] __attribute__((aligned(SKIN_ALIGN)));
+
+/* Two bones along x, four vertices round each joint: the per-joint score
+ * is the largest distance among the joint's vertices, and the focus the
+ * weighted centre of where they part. */
+static void test_diff_scores_and_focus(void **state)
+{
+	(void)state;
+	static skin_diff d;
+	skin_soa soa;
+	memset(&sk, 0, sizeof sk);
+	sk.count = 2;
+	sk.bone[0].parent = -1;
+	sk.bone[1].parent = 0;
+	bind.head[0] = bind.tip[0] = vec3_make(0, 0, 0);
+	bind.head[1] = vec3_make(0, 0, 0);
+	bind.tip[1] = vec3_make(4, 0, 0);
+	skin_soa_attach(&soa, block, 8);
+	for (int v = 0; v < 8; v++) {
+		soa.px[v] = v < 4 ? 0.1f * (float)v : 3.9f;
+		soa.py[v] = 0.5f;
+		soa.pz[v] = 0.0f;
+		soa.bone[0][v] = 1;
+		soa.weight[0][v] = 1.0f;
+		for (int k = 1; k < SKP_MAX_INFLUENCES; k++)
+			soa.bone[k][v] = 0, soa.weight[k][v] = 0.0f;
+	}
+	skin_diff_init(&d, &sk, &bind, &soa);
+	float a[24], b[24];
+	for (int v = 0; v < 8; v++) {
+		a[3 * v] = b[3 * v] = soa.px[v];
+		a[3 * v + 1] = b[3 * v + 1] = soa.py[v];
+		a[3 * v + 2] = b[3 * v + 2] = 0.0f;
+	}
+	b[3 * 2 + 1] -= 0.3f; /* vertex 2 parts by 0.3, vertex 3 by 0.1 */
+	b[3 * 3 + 1] -= 0.1f;
+	float most = skin_diff_between(&d, a, b, NULL);
+	assert_true(fabsf(most - 0.3f) < 1e-5f);
+	/* every vertex is nearest the joint at the origin (bone 0's and 1's heads coincide: the first) */
+	assert_int_equal(skin_diff_worst(&d), 0);
+	int found;
+	vec3 at = skin_diff_focus(&d, a, b, 0, &found);
+	assert_true(found);
+	assert_true(fabsf(at.x - (0.09f * 0.2f + 0.01f * 0.3f) / 0.1f) < 1e-4f);
+	/* the skin's distance from its bone: vertex 2 came 0.3 nearer */
+	float dist[8];
+	skin_diff_from_bind(&d, &bind, b, dist);
+	assert_true(fabsf(dist[2] + 0.3f) < 1e-5f && fabsf(dist[0]) < 1e-6f);
+}
+
+int main(void)
+{
+	const struct CMUnitTest tests[] = {
+		cmocka_unit_test(test_pick_holds_then_moves),
+		cmocka_unit_test(test_camera_glides),
+		cmocka_unit_test(test_diff_scores_and_focus),
+	};
+	return cmocka_run_group_tests(tests, NULL, NULL);
+}
