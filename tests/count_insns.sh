@@ -21,7 +21,7 @@ for need in "$nm" "$size" "$qemu"; do
 	command -v "$need" >/dev/null || { echo "count_insns: $need not found" >&2; exit 1; }
 done
 [ -x "$tool" ] || { echo "count_insns: $tool not built (make BOARD=rpi4)" >&2; exit 1; }
-log=$(mktemp) && trap 'rm -f "$log" "$log.rows"' EXIT
+log=$(mktemp) && trap 'rm -f "$log" "$log.rows" "$log.extra"' EXIT
 
 # An object's code is contiguous in the program: its start is where one of
 # its symbols landed, less that symbol's offset in the object.
@@ -35,27 +35,48 @@ range() { # object symbol
 k=app/skin/kernels
 ranges="$(range $k/skin_neon.o skin_lbs_neon),$(range $k/skin_fixed_neon.o skin_dqbs_fixed_neon)"
 ranges="$ranges,$(range $k/skin_fixed.o skin_dqbs_fixed),$(range app/math/fixed.o fx_blend_scale)"
-entries=""
-for s in $NEON_KERNELS; do
-	entries="$entries $(printf '%x' $((base + 0x$("$nm" "$tool" | awk -v s="$s" '$3 == s { print $1 }'))))=$s"
-done
+entry_list() { # symbols: "address=symbol ..."
+	for s in "$@"; do
+		printf ' %x=%s' $((base + 0x$("$nm" "$tool" | awk -v s="$s" '$3 == s { print $1 }'))) "$s"
+	done
+}
 
 # -singlestep was renamed -one-insn-per-tb in qemu 8.1
 step=-singlestep
 "$qemu" -h | grep -q -- -one-insn-per-tb && step=-one-insn-per-tb
-"$qemu" $step -d exec,nochain -dfilter "$ranges" -D "$log" "$tool" bench --verts="$verts" --rounds=1 -q >/dev/null
-awk -v entries="$entries" -v verts="$verts" '
-BEGIN { n = split(entries, e, " "); for (i = 1; i <= n; i++) { split(e[i], kv, "="); name[kv[1]] = kv[2]; order[i] = kv[2] } }
-/^Trace/ {
-	split($0, f, "/"); pc = f[2]; sub(/^0+/, "", pc)
-	if (pc in name) { cur = name[pc]; calls[cur]++ }
-	if (cur != "") insns[cur]++
-}
-END {
-	for (i = 1; i <= n; i++) {
-		k = order[i]
-		if (!calls[k]) { print "count_insns: " k " was not called" > "/dev/stderr"; exit 1 }
-		print k, calls[k], insns[k] / (calls[k] * verts)
+# count RANGES ENTRIES: each entry's calls and instructions a vertex
+count() {
+	"$qemu" $step -d exec,nochain -dfilter "$1" -D "$log" "$tool" bench --verts="$verts" --rounds=1 -q >/dev/null
+	awk -v entries="$2" -v verts="$verts" '
+	BEGIN { n = split(entries, e, " "); for (i = 1; i <= n; i++) { split(e[i], kv, "="); name[kv[1]] = kv[2]; order[i] = kv[2] } }
+	/^Trace/ {
+		split($0, f, "/"); pc = f[2]; sub(/^0+/, "", pc)
+		if (pc in name) { cur = name[pc]; calls[cur]++ }
+		if (cur != "") insns[cur]++
 	}
-}' "$log" > "$log.rows" || exit 1
+	END {
+		for (i = 1; i <= n; i++) {
+			k = order[i]
+			if (!calls[k]) { print "count_insns: " k " was not called" > "/dev/stderr"; exit 1 }
+			print k, calls[k], insns[k] / (calls[k] * verts)
+		}
+	}' "$log"
+}
+count "$ranges" "$(entry_list $NEON_KERNELS)" > "$log.rows" || exit 1
 neon_table "$(printf '%-24s %6s %20s  %s' "kernel (aarch64)" "calls" "instructions/vertex" "ratio")" "%-24s %6d %20.1f" < "$log.rows"
+
+# What the compare view's close-up and the difference view add a frame
+# (skintool bench's close-up part: skin_diff_between runs twice, without
+# and with the per-vertex distances), against the frame's two kernels on
+# the board's compact streams.
+ranges="$(range app/skin/skin_diff.o skin_diff_between),$(range app/render/render_diff.o render_diff_colours)"
+count "$ranges" "$(entry_list skin_diff_between skin_diff_focus render_diff_colours)" > "$log.extra" || exit 1
+cat "$log.rows" "$log.extra" | awk '
+{ v[$1] = $3 }
+END {
+	frame = v["skin_lbs_compact_neon"] + v["skin_dqbs_compact_neon"]
+	closeup = v["skin_diff_between"] + v["skin_diff_focus"]
+	diffview = v["skin_diff_between"] + v["render_diff_colours"]
+	printf "close-up (where LBS and DQBS part, where on the joint): %.1f instructions/vertex, %.2fx the compare frame'"'"'s two compact kernels (%.1f)\n", closeup, closeup / frame, frame
+	printf "difference view (distances, colours): %.1f instructions/vertex, %.2fx those kernels\n", diffview, diffview / frame
+}'

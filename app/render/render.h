@@ -135,6 +135,12 @@ void render_draw_notice(renderer *r, const char *const *lines, int count);
  * legend says so). */
 void render_set_units(renderer *r, float mm_per_unit);
 
+/* The difference view's colour of each of n values (the skeleton's
+ * units; mm_per_unit turns them into millimetres) as RGBA8: a scale from
+ * none to 40 mm, or for a signed change -30 to +30 mm (blue thinner, grey
+ * as bound, red thicker). Apart from the upload, for the benchmark. */
+void render_diff_colours(const float *diff, int n, float mm_per_unit, int is_signed, uint8_t *rgba);
+
 /* Turns the camera yaw radians about the vertical from the usual view (a
  * body facing +z seen from the front, RENDER_CAMERA_AZIMUTH to its left):
  * smoothly over the next frames, or at once. */

@@ -35,23 +35,49 @@ static vec3 ramp(float t, int is_signed)
 			 c[i][2] + (c[i + 1][2] - c[i][2]) * f);
 }
 
-static float to_ramp(float mm, int is_signed)
+/* The scale in DIFF_LEVELS steps, made once: a vertex then costs a
+ * multiply, a clamp and a 4-byte copy. */
+#define DIFF_LEVELS 256
+
+static const uint8_t *scale_table(int is_signed)
 {
-	return is_signed ? 0.5f + 0.5f * mm / DIFF_SIGNED_MM : mm / DIFF_FULL_MM;
+	static uint8_t table[2][DIFF_LEVELS][4];
+	static int made;
+	if (!made) {
+		for (int k = 0; k < 2; k++)
+			for (int i = 0; i < DIFF_LEVELS; i++) {
+				vec3 c = ramp((float)i / (DIFF_LEVELS - 1), k);
+				uint8_t *o = table[k][i];
+				o[0] = (uint8_t)(c.x * 255.0f + 0.5f);
+				o[1] = (uint8_t)(c.y * 255.0f + 0.5f);
+				o[2] = (uint8_t)(c.z * 255.0f + 0.5f);
+				o[3] = 255;
+			}
+		made = 1;
+	}
+	return table[is_signed ? 1 : 0][0];
+}
+
+void render_diff_colours(const float *diff, int n, float mm_per_unit, int is_signed, uint8_t *rgba)
+{
+	const uint8_t *table = scale_table(is_signed);
+	/* to_ramp's line, in table steps: t = k * mm + c */
+	float k = (DIFF_LEVELS - 1) * mm_per_unit * (is_signed ? 0.5f / DIFF_SIGNED_MM : 1.0f / DIFF_FULL_MM);
+	float c = is_signed ? 0.5f * (DIFF_LEVELS - 1) : 0.0f;
+	for (int v = 0; v < n; v++) {
+		float t = diff[v] * k + c + 0.5f;
+		/* NaN fails both tests: the middle of the scale (none, or as bound) */
+		int i = t >= 0.0f ? (t < DIFF_LEVELS - 1 ? (int)t : DIFF_LEVELS - 1) : 0;
+		if (!(t == t))
+			i = (int)c;
+		memcpy(rgba + 4 * v, table + 4 * i, 4);
+	}
 }
 
 void render_diff_upload(renderer *r, const float *diff, int is_signed)
 {
 	const gl_api *gl = r->gl;
-	for (int v = 0; v < r->vert_count; v++) {
-		float mm = diff[v] * r->mm_per_unit;
-		vec3 c = ramp(to_ramp(isfinite(mm) ? mm : 0.0f, is_signed), is_signed);
-		uint8_t *o = r->diff_rgba + 4 * v;
-		o[0] = (uint8_t)(c.x * 255.0f + 0.5f);
-		o[1] = (uint8_t)(c.y * 255.0f + 0.5f);
-		o[2] = (uint8_t)(c.z * 255.0f + 0.5f);
-		o[3] = 255;
-	}
+	render_diff_colours(diff, r->vert_count, r->mm_per_unit, is_signed, r->diff_rgba);
 	gl->BindBuffer(GL_ARRAY_BUFFER, r->vbo_diff);
 	gl->BufferSubData(GL_ARRAY_BUFFER, 0, (GLsizeiptr)r->vert_count * 4, r->diff_rgba);
 	r->diff_ready = 1;

@@ -43,16 +43,23 @@ float skin_diff_between(skin_diff *d, const float *a, const float *b, float *dis
 {
 	float most = 0.0f;
 	memset(d->score, 0, sizeof d->score);
+	/* squared per joint, the root taken once a joint: a vertex costs no
+	 * square root unless its distance is asked for */
 	for (int v = 0; v < d->count; v++) {
 		float dx = a[3 * v] - b[3 * v], dy = a[3 * v + 1] - b[3 * v + 1], dz = a[3 * v + 2] - b[3 * v + 2];
-		float e = sqrtf(dx * dx + dy * dy + dz * dz);
-		if (dist)
-			dist[v] = e;
-		if (e > d->score[d->joint[v]])
-			d->score[d->joint[v]] = e;
+		float e2 = dx * dx + dy * dy + dz * dz;
+		float *s = &d->score[d->joint[v]];
+		*s = e2 > *s ? e2 : *s;
 	}
-	for (int j = 0; j < d->bone_count; j++)
+	if (dist)
+		for (int v = 0; v < d->count; v++) {
+			float dx = a[3 * v] - b[3 * v], dy = a[3 * v + 1] - b[3 * v + 1], dz = a[3 * v + 2] - b[3 * v + 2];
+			dist[v] = sqrtf(dx * dx + dy * dy + dz * dz);
+		}
+	for (int j = 0; j < d->bone_count; j++) {
+		d->score[j] = sqrtf(d->score[j]);
 		most = fmaxf(most, d->score[j]);
+	}
 	return most;
 }
 

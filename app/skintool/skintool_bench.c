@@ -6,6 +6,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "bench_closeup.h"
 #include "clock.h"
 #include "cli_common.h"
 #include "cli_opts.h"
@@ -497,7 +498,8 @@ int cmd_bench(int argc, char **argv)
 			print_ozz(&a, ozz, workers_count(w) > 1 ? best[1] : best[0]);
 		printf("compact streams: positions within %.3g of the float ones (half a 16-bit step of the "
 		       "%.3g-unit box)\n", (double)skin_compact_position_bound(&b.compact), compact_box(&b.compact));
-		rc = 0;
+		double pair = (best[0][K_LBS] + best[0][K_DQBS]) * 1e9 / (double)b.soa.count;
+		rc = bench_closeup(&b.soa, &b.bones, pair, (int)a.rounds) < 0;
 	}
 	workers_stop(w);
 	free_streams(&b, block);
