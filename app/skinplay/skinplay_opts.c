@@ -270,7 +270,14 @@ static const cli_command play_command = {
 		 "algorithm, pause, restart and change clips.",
 	.opts = { play_opts_table, bind_opts },
 	.take = take,
-	.more = "Without --mesh the generated body is used; the bind options apply to --mesh.\n",
+	.more = "Without --mesh the generated body is used; the bind options apply to --mesh.\n"
+		"\n"
+		"In the compare view each body stands beside a close-up of the joint where LBS and DQBS part most at\n"
+		"the moment, held at least 2 s, named (LEFT WRIST), with how the joint turned and how far apart the two\n"
+		"put its skin in millimetres.\n"
+		"\n"
+		"Keys in a window (x11): 1 ALGO (the method), 2 PLAY (pause), 3 NEXT (clip), 4 or v VIEW, d the\n"
+		"difference view and back, q or Escape quit. On a terminal (--input keyboard): 1-4 or the arrows.\n",
 	.exit2 = "headless, no clip of the show could play (the bind pose was rendered)",
 	.examples = (const cli_example[]){
 		{ "The packaged demo on the screen",
