@@ -34,7 +34,7 @@ typedef struct render_panel {
  * of one joint, seen by the same camera in both panels (render_closeup.h
  * picks the joint and moves that camera). */
 typedef struct render_closeup {
-	int joint;               /* the bone whose head is looked at; -1: no inset */
+	int joint;               /* the bone whose head is looked at; -1 (or no title): no inset */
 	vec3 focus;              /* where on it the methods part (skin_diff_focus) */
 	const char *title;       /* over the insets: "LEFT WRIST" */
 	const char *note;        /* under them, what the joint did ("TWISTED 178 DEG"); may be NULL */

@@ -289,7 +289,7 @@ static void draw_panel(renderer *r, const render_frame *f, const layout *l, int 
 static void follow_closeup(renderer *r, const render_frame *f)
 {
 	int j = f->closeup.joint;
-	if (j < 0 || j >= r->bone_count || f->panel_count < 2) {
+	if (!f->closeup.title || j < 0 || j >= r->bone_count || f->panel_count < 2) {
 		r->inset.started = 0;
 		return;
 	}

@@ -35,7 +35,7 @@ int render_inset_split(const renderer *r, const render_frame *f, int panel, int 
 {
 	int lw, lh;
 	*body = area;
-	if (n < 2 || f->closeup.joint < 0 || f->closeup.joint >= r->bone_count)
+	if (n < 2 || !f->closeup.title || f->closeup.joint < 0 || f->closeup.joint >= r->bone_count)
 		return 0;
 	render_logical_size(r, &lw, &lh);
 	(void)panel;

@@ -1,8 +1,8 @@
 /* skintool compare, inside: the run's state shared by its measuring part
  * (compare_measure.c: the scenes, every frame of the clip, the joints
  * behind the volume) and its output part (compare_output.c: charts, the
- * worst frames' renders); skintool_compare.c reads the arguments and runs
- * them in order. Private to app/skintool. */
+ * scenes' and the worst frames' pictures); skintool_compare.c reads the
+ * arguments and runs them in order. Private to app/skintool. */
 #ifndef COMPARE_H
 #define COMPARE_H
 
@@ -52,6 +52,7 @@ typedef struct compare_run {
 	report rep;
 	int joint[SKP_MAX_VERTS], region[SKP_MAX_VERTS];
 	region_volume rv;
+	scene_rig scene;              /* the synthetic scenes (compare_measure_scenes) */
 	float pos[3 * SKP_MAX_VERTS], nrm[3 * SKP_MAX_VERTS];
 	float ratio[NALGO][SKP_MAX_VERTS];
 	/* the kept frames */
@@ -81,7 +82,9 @@ void compare_region_volume_init(compare_run *c);
 void compare_region_volume(const compare_run *c, const float *pos, const skel_pose *pose,
 			   double ratio[REGION_COUNT]);
 
-/* The measuring part: each returns 0, or -1 after reporting. */
+/* The measuring part: each returns 0, or -1 after reporting. The scenes
+ * leave c->sk holding the scene (c->scene) for compare_render_scenes,
+ * until the clip is loaded: one cli_skin at a time. */
 int compare_measure_scenes(compare_run *c);
 int compare_load_clip(compare_run *c, const compare_args *a);
 int compare_measure_clip(compare_run *c, const compare_args *a);
@@ -90,6 +93,12 @@ int compare_explain_volume(compare_run *c, const compare_args *a);
 void compare_set_extreme(compare_run *c, report_extreme *e, double value, long frame, int vertex);
 
 /* The output part. */
+/* Each scene at its strongest pose (the twist at its largest angle, the
+ * bend at its deepest short of 180 degrees), LBS | DQBS with the
+ * close-up, into a->out/scene_KIND.png, when a->renders > 0; right after
+ * compare_measure_scenes. Returns 0 (no display: render_note says so), or
+ * -1 after reporting. */
+int compare_render_scenes(compare_run *c, const compare_args *a);
 void compare_pick_stills(compare_run *c, int want);
 int compare_render_stills(compare_run *c, const compare_args *a);
 int compare_write_charts(compare_run *c, const char *dir);

@@ -22,13 +22,13 @@
 
 int compare_measure_scenes(compare_run *c)
 {
-	static scene_rig sc;
 	static skel_pose pose;
+	scene_rig *sc = &c->scene;
 	static const int angles[REPORT_ANGLES] = { 45, 90, 135, 180 };
 	report *r = &c->rep;
-	scene_build(&sc);
-	if (cli_skin_init(&c->sk, &sc.skel, &sc.bind, &sc.mesh, &sc.weights, "scene") < 0 ||
-	    measure_init(&c->meas, &sc.mesh, &sc.bind, sc.skel.count, "scene") < 0)
+	scene_build(sc);
+	if (cli_skin_init(&c->sk, &sc->skel, &sc->bind, &sc->mesh, &sc->weights, "scene") < 0 ||
+	    measure_init(&c->meas, &sc->mesh, &sc->bind, sc->skel.count, "scene") < 0)
 		return -1;
 	r->scene_count = 0;
 	for (int k = 0; k < SCENE_KIND_COUNT; k++)
@@ -38,7 +38,7 @@ int compare_measure_scenes(compare_run *c)
 			s->angle_deg = angles[i];
 			/* as skintool metrics --scene computes the angle */
 			double deg = angles[i];
-			scene_pose(&sc, s->kind, (float)(deg * (3.14159265358979323846 / 180.0)), &pose);
+			scene_pose(sc, s->kind, (float)(deg * (3.14159265358979323846 / 180.0)), &pose);
 			cli_skin_pose(&c->sk, &pose);
 			measure_pose(&c->meas, &c->sk.pose);
 			for (int a = 0; a < NALGO; a++) {

@@ -1,5 +1,7 @@
 /* skintool compare's output part (compare.h): the charts of the kept
- * frames and the LBS | DQBS renders of the worst ones. */
+ * frames, and the LBS | DQBS pictures: the scenes at their strongest, the
+ * worst frames whole, near where the two part most, and as the difference
+ * view (report_render.h). */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -123,6 +125,88 @@ int compare_write_charts(compare_run *c, const char *dir)
 	return 0;
 }
 
+/* ---- the pictures ---------------------------------------------------- */
+
+static report_view view;
+
+static void keep_closeup(report_closeup *out, const report_part *p)
+{
+	out->joint = p->joint;
+	snprintf(out->name, sizeof out->name, "%s", p->name);
+	snprintf(out->note, sizeof out->note, "%s", p->note);
+	out->in_units = p->in_units;
+	out->size_assumed = p->size_assumed;
+	out->apart = p->in_units ? p->apart : p->apart * p->mm_per_unit;
+}
+
+/* The scene's row of the tables at the angle pictured. */
+static const report_scene *scene_row(const report *r, scene_kind k, int angle)
+{
+	for (int i = 0; i < r->scene_count; i++)
+		if (r->scene[i].kind == k && r->scene[i].angle_deg == angle)
+			return &r->scene[i];
+	return NULL;
+}
+
+/* The angle a scene is pictured at: the twist's largest in the tables
+ * (at 180 degrees LBS pinches the joint to a point); the bend's deepest
+ * short of 180 degrees, where the second bone would lie inside the first
+ * and both bodies fold onto themselves, the bend itself out of sight. */
+static int scene_angle(const report *r, scene_kind k)
+{
+	int best = 0;
+	for (int i = 0; i < r->scene_count; i++)
+		if (r->scene[i].kind == k && r->scene[i].angle_deg > best &&
+		    (k == SCENE_TWIST || r->scene[i].angle_deg < 180))
+			best = r->scene[i].angle_deg;
+	return best;
+}
+
+/* The close-up of a scene shows the cross-fade and a little either side. */
+#define SCENE_CLOSEUP_SPAN (1.5f * SCENE_BLEND)
+
+int compare_render_scenes(compare_run *c, const compare_args *a)
+{
+	static skel_pose pose;
+	static const char *const what[SCENE_KIND_COUNT] = { "TWISTED ABOUT ITS AXIS", "BENT" };
+	const scene_rig *sc = &c->scene;
+	report *r = &c->rep;
+	char hud0[96];
+	if (a->renders <= 0)
+		return 0;
+	/* the ground under the skin, which bulges out of the bend */
+	if (report_view_open(&view, &c->sk, &sc->mesh, -2.0f * SCENE_RADIUS, REPORT_IMG_W, REPORT_IMG_H) < 0) {
+		r->render_note = "no headless display could be opened (surfaceless EGL, OSMesa)";
+		return 0;
+	}
+	report_view_scene(&view, SCENE_CLOSEUP_SPAN);
+	int rc = 0;
+	for (int k = 0; k < SCENE_KIND_COUNT && rc == 0; k++) {
+		report_scene_still *s = &r->scene_still[k];
+		memset(s, 0, sizeof *s);
+		s->kind = (scene_kind)k;
+		s->angle_deg = scene_angle(r, s->kind);
+		const report_scene *row = scene_row(r, s->kind, s->angle_deg);
+		if (!row)
+			continue;
+		s->lbs_rmin = row->rmin[SKIN_LBS];
+		s->dqbs_rmin = row->rmin[SKIN_DQBS];
+		s->dqbs_rmax = row->rmax[SKIN_DQBS];
+		scene_pose(sc, s->kind, (float)(s->angle_deg * (3.14159265358979323846 / 180.0)), &pose);
+		cli_skin_pose(&c->sk, &pose);
+		keep_closeup(&s->closeup, report_view_pose(&view, &c->sk));
+		snprintf(hud0, sizeof hud0, "%s SCENE: THE SECOND BONE %s %d DEG", s->kind == SCENE_TWIST ? "TWIST" : "BEND",
+			 what[k], s->angle_deg);
+		snprintf(s->png, sizeof s->png, "scene_%s.png", scene_name(s->kind));
+		snprintf(c->path, sizeof c->path, "%s/%s", a->out, s->png);
+		rc = report_view_write(&view, &c->sk, REPORT_SHOT_BODY, hud0, "A CYLINDER OF RADIUS 0.2 ROUND TWO BONES OF LENGTH 1",
+				       c->path);
+		s->rendered = rc == 0;
+	}
+	report_view_close(&view);
+	return rc;
+}
+
 /* ---- the worst frames ----------------------------------------------- */
 
 /* The kept frames with the most negative LBS - DQBS, at least sep frames
@@ -190,10 +274,9 @@ void compare_pick_stills(compare_run *c, int want)
 
 int compare_render_stills(compare_run *c, const compare_args *a)
 {
-	static report_view view;
 	static amc_frame f;
 	report *r = &c->rep;
-	char hud0[96], hud1[96];
+	char hud0[96], hud1[96], near0[128], near1[128];
 	if (r->still_count == 0)
 		return 0;
 	if (report_view_open(&view, &c->sk, &c->body.mesh, c->floor_y, REPORT_IMG_W, REPORT_IMG_H) < 0) {
@@ -208,29 +291,31 @@ int compare_render_stills(compare_run *c, const compare_args *a)
 			break;
 		}
 		cli_skin_frame(&c->sk, f.value);
-		/* the two ratios at the marked vertex, for the caption */
+		const report_part *part = report_view_pose(&view, &c->sk);
+		keep_closeup(&s->closeup, part);
+		/* the two ratios at the still's vertex, for the caption */
 		measure_pose(&c->meas, &c->sk.pose);
-		for (int k = 0; k < 2; k++) {
-			cli_skin_run(&c->sk, (skin_algo)k, c->pos, c->nrm);
-			measure_skinned(&c->meas, c->pos, c->ratio[k]);
-		}
+		for (int k = 0; k < 2; k++)
+			measure_skinned(&c->meas, view.pos[k], c->ratio[k]);
 		s->lbs_ratio = c->ratio[SKIN_LBS][s->vertex];
 		s->dqbs_ratio = c->ratio[SKIN_DQBS][s->vertex];
-		vec3 joint = c->sk.pose.head[s->rel.joint >= 0 ? s->rel.joint : 0];
 		snprintf(hud0, sizeof hud0, "%s  FRAME %ld", r->clip, s->frame);
-		snprintf(hud1, sizeof hud1, "RING: %s HEAD (%s)",
-			 s->rel.joint >= 0 ? c->body.skel.bone[s->rel.joint].name : "?",
-			 report_region_name(s->rel.region));
+		snprintf(hud1, sizeof hud1, "CLOSE-UP AND RING: WHERE LBS AND DQBS PART MOST");
+		snprintf(near0, sizeof near0, "%s  FRAME %ld  %s", r->clip, s->frame, part->name);
+		snprintf(near1, sizeof near1, "%s%s%s", part->note, part->note[0] ? ", " : "", part->effect);
 		snprintf(s->full_png, sizeof s->full_png, "worst_%d.png", i + 1);
 		snprintf(s->close_png, sizeof s->close_png, "worst_%d_closeup.png", i + 1);
+		snprintf(s->diff_png, sizeof s->diff_png, "worst_%d_difference.png", i + 1);
 		snprintf(c->path, sizeof c->path, "%s/%s", a->out, s->full_png);
-		rc = report_view_compare(&view, &c->sk, joint, 0, hud0, hud1, c->path);
+		rc = report_view_write(&view, &c->sk, REPORT_SHOT_BODY, hud0, hud1, c->path);
 		snprintf(c->path, sizeof c->path, "%s/%s", a->out, s->close_png);
 		if (rc == 0)
-			rc = report_view_compare(&view, &c->sk, joint, 1, hud0, hud1, c->path);
+			rc = report_view_write(&view, &c->sk, REPORT_SHOT_CLOSEUP, near0, near1, c->path);
+		snprintf(c->path, sizeof c->path, "%s/%s", a->out, s->diff_png);
+		if (rc == 0)
+			rc = report_view_write(&view, &c->sk, REPORT_SHOT_DIFFERENCE, hud0, NULL, c->path);
 		s->rendered = rc == 0;
 	}
 	report_view_close(&view);
 	return rc;
 }
-

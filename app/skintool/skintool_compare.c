@@ -4,9 +4,10 @@
  * fixed-point DQBS, measures them as `skintool metrics` does (measure.h)
  * plus per joint region (compare_measure.c), and writes DIR/index.html (a
  * static page), DIR/metrics.csv, charts of the series over time, the
- * synthetic twist and bend scenes next to their analytic values, and LBS |
- * DQBS renders of the frames where LBS collapses most compared with DQBS
- * (compare_output.c, report/). */
+ * synthetic twist and bend scenes next to their analytic values with their
+ * pictures, and LBS | DQBS pictures of the frames where LBS collapses most
+ * compared with DQBS: the whole body, the close-up of where the two part
+ * most, the difference view (compare_output.c, report/). */
 #define _GNU_SOURCE /* nftw */
 #include <errno.h>
 #include <ftw.h>
@@ -25,7 +26,7 @@
 enum { OPT_RENDERS = 1 };
 
 static const cli_opt compare_cmd_opts[] = {
-	{ "renders", 0, "N", OPT_RENDERS, "LBS | DQBS renders of each joint region's worst frame, then the worst left (0..8, default 4)" },
+	{ "renders", 0, "N", OPT_RENDERS, "LBS | DQBS pictures of each joint region's worst frame, then the worst left (0..8, default 4; 0: no pictures at all, the scenes' neither)" },
 	{ NULL, 0, NULL, 0, NULL },
 };
 
@@ -60,9 +61,10 @@ static const cli_command compare_command = {
 	.usage = "SKELETON MOTION [--mesh=MESH [OPTION]...] -o DIR",
 	.about = "The paper's experiment on any clip: skins every frame with LBS, DQBS and fixed-point DQBS,\n"
 		 "measures volume and radius ratios overall and per joint region, and writes DIR/index.html\n"
-		 "(a static page), DIR/metrics.csv, charts, the twist and bend scenes and renders of the frames\n"
-		 "where LBS keeps least of a joint region against DQBS. A rigged mesh is measured with its own\n"
-		 "and with computed weights, side by side.",
+		 "(a static page), DIR/metrics.csv, charts, the twist and bend scenes with their pictures, and\n"
+		 "pictures of the frames where LBS keeps least of a joint region against DQBS: the whole body,\n"
+		 "a close-up of where LBS and DQBS part most, and the difference view. A rigged mesh is measured\n"
+		 "with its own and with computed weights, side by side.",
 	.opts = { tool_opt_skeleton, tool_opt_motion, tool_opt_mesh, compare_out_opt, compare_cmd_opts, bind_opts },
 	.take = compare_take,
 	.positional = compare_file,
@@ -147,8 +149,9 @@ int cmd_compare(int argc, char **argv)
 	c.rep.asf = a.asf;
 	c.rep.amc = a.amc;
 	c.rep.clip = clip;
-	if (compare_measure_scenes(&c) < 0 || compare_load_clip(&c, &a) < 0 || compare_measure_clip(&c, &a) < 0 ||
-	    compare_other_weights(&c, &a) < 0)
+	/* the scenes are pictured while c.sk still holds them */
+	if (compare_measure_scenes(&c) < 0 || compare_render_scenes(&c, &a) < 0 || compare_load_clip(&c, &a) < 0 ||
+	    compare_measure_clip(&c, &a) < 0 || compare_other_weights(&c, &a) < 0)
 		return fail(a.out, made);
 	uint64_t t1 = clock_now_ns();
 	compare_pick_stills(&c, (int)a.renders);

@@ -97,15 +97,39 @@ void report_find_joints(cli_skin *sk, const measure_state *meas, skin_algo algo,
 			const float *values, const float *bind_values, float *pos, float *nrm,
 			report_joints *out);
 
+/* Where a rendered pose's LBS and DQBS part most: the close-up's joint
+ * (skin_diff.h, the kiosk's choice), for the captions. */
+typedef struct report_closeup {
+	int joint;                  /* -1: they do not differ */
+	char name[48];              /* "LEFT ELBOW" (skel_joints.h) */
+	char note[32];              /* "BENT 95 DEG", "" */
+	double apart;               /* the largest distance there, in mm, or in */
+	int in_units;               /* the skeleton's units when 1 (a synthetic scene) */
+	int size_assumed;           /* mm at a size assumed: the units gave no human height */
+} report_closeup;
+
 #define REPORT_MAX_STILLS 8
 typedef struct report_still {
 	long frame;
 	report_extreme rel;         /* LBS minus DQBS radius ratio at its worst vertex */
 	int vertex;                 /* that vertex */
 	double lbs_ratio, dqbs_ratio; /* the two ratios there */
-	char full_png[64], close_png[64];
+	report_closeup closeup;
+	/* the whole body with the close-up inset, the close-up camera's view,
+	 * the difference view */
+	char full_png[64], close_png[64], diff_png[64];
 	int rendered;
 } report_still;
+
+/* A synthetic scene at its strongest pose, LBS | DQBS with the close-up. */
+typedef struct report_scene_still {
+	scene_kind kind;
+	int angle_deg;
+	double lbs_rmin, dqbs_rmin, dqbs_rmax; /* its table's radius ratios */
+	report_closeup closeup;
+	char png[32];
+	int rendered;
+} report_scene_still;
 
 typedef struct report_chart {
 	char png[64];
@@ -144,6 +168,7 @@ typedef struct report {
 	report_joints vol_joints[2];
 	report_scene scene[2 * REPORT_ANGLES];
 	int scene_count;
+	report_scene_still scene_still[SCENE_KIND_COUNT];
 	report_still still[REPORT_MAX_STILLS];
 	int still_count;
 	const char *render_note;    /* why there are no renders, or NULL */

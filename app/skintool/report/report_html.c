@@ -38,6 +38,7 @@ static const char css[] =
 	"figure img{display:block;width:100%;height:auto;border:1px solid #dde1e6;border-radius:4px}\n"
 	"figcaption{font-size:13.5px;color:#444c56;margin-top:6px}\n"
 	".pair{display:grid;grid-template-columns:1fr 1fr;gap:12px}\n"
+	".pair .cell{font-size:13.5px;color:#444c56;margin:0;align-self:center}\n"
 	".lbs{color:#d64541}.dqbs{color:#266ebe}.fixed{color:#2ea05a}\n"
 	"dl{font-size:14px}dt{font-weight:600;margin-top:10px}dd{margin:2px 0 0 18px;color:#3d444d}\n"
 	"code{font-family:'SFMono-Regular',Consolas,'Liberation Mono',monospace;font-size:13px;"
@@ -430,6 +431,30 @@ static void region_table(FILE *f, const report *r)
 	      "vertices in each region, with the frame and the joint nearest to the vertex.</p>\n", f);
 }
 
+/* "the left elbow, bent 95&deg;, 23 mm apart" from the close-up's texts
+ * (HUD capitals: "LEFT ELBOW", "BENT 95 DEG"). */
+static void put_closeup(FILE *f, const report_closeup *c)
+{
+	char name[sizeof c->name];
+	size_t n = 0;
+	for (const char *p = c->name; *p && n + 1 < sizeof name; p++)
+		name[n++] = (char)(*p >= 'A' && *p <= 'Z' ? *p - 'A' + 'a' : *p);
+	name[n] = '\0';
+	fputs("<b class=\"closeup-joint\">", f);
+	put_escaped(f, name);
+	fputs("</b>", f);
+	int deg;
+	if (sscanf(c->note, "TWISTED %d", &deg) == 1)
+		fprintf(f, ", twisted %d&deg;", deg);
+	else if (sscanf(c->note, "BENT %d", &deg) == 1)
+		fprintf(f, ", bent %d&deg;", deg);
+	if (c->in_units)
+		fprintf(f, ", LBS %.2f from DQBS there", c->apart);
+	else
+		fprintf(f, ", LBS %.0f mm from DQBS there%s", c->apart, c->size_assumed ? " (the body taken as 1.75 m "
+			"tall)" : "");
+}
+
 static void stills(FILE *f, const report *r)
 {
 	fputs("<h2>Where LBS fails: the worst frames</h2>\n", f);
@@ -445,9 +470,13 @@ static void stills(FILE *f, const report *r)
 	}
 	fputs("<p>For each joint region in turn, the frame where a vertex of that region keeps the least of "
 	      "its radius with LBS compared with DQBS (see <i>LBS minus DQBS</i> below), the worst region "
-	      "first, at least half a second apart. LBS "
-	      "on the left, DQBS on the right, same pose and camera. The ring marks the joint nearest "
-	      "to that vertex; the close-up looks at it from the side it faces.</p>\n", f);
+	      "first, at least half a second apart. LBS on the left, DQBS on the right, same pose and camera. "
+	      "In each frame the close-up shows the joint where the two methods part most, as the kiosk's "
+	      "compare view chooses it: per joint the largest distance between a vertex's LBS and DQBS "
+	      "positions, centred where they part (that distance squared weighs the vertices). First picture: "
+	      "the whole body, the close-up beside it, the ring on the body round what the close-up shows; "
+	      "second: each body from the close-up's side, near, the ring round every vertex of that joint "
+	      "that the two put at least half as far apart as the most; third: the difference view.</p>\n", f);
 	for (int i = 0; i < r->still_count; i++) {
 		const report_still *s = &r->still[i];
 		if (!s->rendered)
@@ -455,15 +484,30 @@ static void stills(FILE *f, const report *r)
 		fprintf(f, "<h3>%d. Frame %ld &mdash; %s joint <code>", i + 1, s->frame,
 			report_region_name(s->rel.region));
 		put_escaped(f, joint_name(r, s->rel.joint));
-		fputs("</code></h3>\n<figure>\n<div class=\"pair\">\n", f);
-		fprintf(f, "<a href=\"%s\"><img src=\"%s\" alt=\"frame %ld, whole body, LBS left, DQBS right\"></a>\n",
-			s->full_png, s->full_png, s->frame);
-		fprintf(f, "<a href=\"%s\"><img src=\"%s\" alt=\"frame %ld, close-up of the joint\"></a>\n",
+		fprintf(f, "</code></h3>\n<figure id=\"worst-%d\">\n<div class=\"pair\">\n", i + 1);
+		fprintf(f, "<a href=\"%s\"><img src=\"%s\" alt=\"frame %ld, whole body with the close-up, LBS left, DQBS "
+			"right\"></a>\n", s->full_png, s->full_png, s->frame);
+		fprintf(f, "<a href=\"%s\"><img src=\"%s\" alt=\"frame %ld, close-up where LBS and DQBS part\"></a>\n",
 			s->close_png, s->close_png, s->frame);
-		fprintf(f, "</div>\n<figcaption>Frame %ld: by the ringed joint a vertex keeps %.3f of its "
-			"bind-pose radius with <span class=\"lbs\">LBS</span> and %.3f with "
-			"<span class=\"dqbs\">DQBS</span>. Left: whole body; right: close-up.</figcaption>\n"
-			"</figure>\n", s->frame, s->lbs_ratio, s->dqbs_ratio);
+		fprintf(f, "<a href=\"%s\"><img src=\"%s\" alt=\"frame %ld, difference view: how far LBS lies from "
+			"DQBS\"></a>\n", s->diff_png, s->diff_png, s->frame);
+		fprintf(f, "<p class=\"cell\">The difference view: each vertex of both bodies coloured by how far LBS "
+			"puts it from DQBS, dark blue for none through green to red for 40 mm or more (%s).</p>\n",
+			s->closeup.size_assumed ? "the skeleton's units give no human height: the body taken as 1.75 m "
+			"tall" : "at the body's real size");
+		fprintf(f, "</div>\n<figcaption>Frame %ld: at the still's vertex (%s, by <code>", s->frame,
+			report_region_name(s->rel.region));
+		put_escaped(f, joint_name(r, s->rel.joint));
+		fprintf(f, "</code>) a vertex keeps %.3f of its bind-pose radius with <span class=\"lbs\">LBS</span> "
+			"and %.3f with <span class=\"dqbs\">DQBS</span>. ", s->lbs_ratio, s->dqbs_ratio);
+		if (s->closeup.joint >= 0) {
+			fputs("Where the two part most in this frame, ringed and in the close-up: ", f);
+			put_closeup(f, &s->closeup);
+			fputs(".", f);
+		} else {
+			fputs("LBS and DQBS put every vertex in the same place in this frame: no close-up.", f);
+		}
+		fputs(" Top: whole body and close-up; bottom: the difference view.</figcaption>\n</figure>\n", f);
 	}
 }
 
@@ -482,6 +526,37 @@ static void charts(FILE *f, const report *r)
 		put_escaped(f, c->caption);
 		fputs("</figcaption>\n</figure>\n", f);
 	}
+}
+
+/* A scene at its strongest pose, with what to look at. */
+static void scene_picture(FILE *f, const report_scene_still *s)
+{
+	if (!s->rendered)
+		return;
+	const char *kind = scene_name(s->kind);
+	fprintf(f, "<figure id=\"scene-%s-picture\">\n<a href=\"%s\"><img src=\"%s\" alt=\"the %s scene at %d "
+		"degrees, LBS left, DQBS right\"></a>\n<figcaption>", kind, s->png, s->png, kind, s->angle_deg);
+	if (s->kind == SCENE_TWIST)
+		fprintf(f, "Twisted %d&deg;, the largest twist of the table. Look at the joint: "
+			"<span class=\"lbs\">LBS</span> (left) pinches the cylinder to %s at the joint ring (radius "
+			"ratio %.3f), the candy wrapper; <span class=\"dqbs\">DQBS</span> (right) keeps the cylinder "
+			"whole (%.3f): it turns each ring of the skin rigidly about the bone instead of shrinking it. ",
+			s->angle_deg, s->lbs_rmin < 0.01 ? "a point" : "a waist", s->lbs_rmin, s->dqbs_rmin);
+	else
+		fprintf(f, "Bent %d&deg;, the deepest bend of the table short of 180&deg; (there the second bone "
+			"lies inside the first, both bodies folded onto themselves). Look at the inside of the bend: "
+			"<span class=\"lbs\">LBS</span> (left) flattens it (smallest radius ratio %.3f), its elbow a "
+			"sharp crease; <span class=\"dqbs\">DQBS</span> (right) keeps more of it (%.3f) and bulges on "
+			"the outside instead (up to %.3f), a round knuckle. ",
+			s->angle_deg, s->lbs_rmin, s->dqbs_rmin, s->dqbs_rmax);
+	if (s->closeup.joint >= 0) {
+		fputs("The close-up beside each body (the same camera in both) is the kiosk's: the joint where "
+		      "the two part most, ", f);
+		put_closeup(f, &s->closeup);
+		fputs(" (the cylinder's radius is 0.2; <i>lower</i> is the scene's second bone, the joint at its "
+		      "head); the ring on the body marks what it shows.", f);
+	}
+	fputs("</figcaption>\n</figure>\n", f);
 }
 
 static void scenes(FILE *f, const report *r)
@@ -503,7 +578,9 @@ static void scenes(FILE *f, const report *r)
 			"<td>%.6f</td><td>%.6f</td><td>%.6f</td></tr>\n", s->angle_deg, an, s->rmin[0],
 			s->rmin[1], s->rmin[2], s->vol[0], s->vol[1], s->vol[2]);
 	}
-	fputs("</table>\n<table id=\"scene-bend\">\n<tr><th>bend</th><th>LBS min radius</th>"
+	fputs("</table>\n", f);
+	scene_picture(f, &r->scene_still[SCENE_TWIST]);
+	fputs("<table id=\"scene-bend\">\n<tr><th>bend</th><th>LBS min radius</th>"
 	      "<th>DQBS min radius</th><th>fixed min radius</th><th>LBS max radius</th>"
 	      "<th>DQBS max radius</th><th>LBS volume</th><th>DQBS volume</th><th>fixed volume</th></tr>\n", f);
 	for (int i = 0; i < r->scene_count; i++) {
@@ -517,6 +594,7 @@ static void scenes(FILE *f, const report *r)
 	fputs("</table>\n<p class=\"meta\">A bend has no closed form for the blended radius: the inside of "
 	      "the bend collapses with LBS and, less, with DQBS, which bulges on the outside instead "
 	      "(max radius &gt; 1) and keeps the volume.</p>\n", f);
+	scene_picture(f, &r->scene_still[SCENE_BEND]);
 }
 
 static void definitions(FILE *f, const report *r)
