@@ -46,6 +46,16 @@ static vec3 bend_normal(vec3 axis, vec3 parent, vec3 d)
 	return vec3_dot(n, d) < 0.0f ? vec3_scale(n, -1.0f) : n;
 }
 
+/* Towards d (the main camera's direction, unit) until within about 60
+ * degrees of it: the close-up sees the joint from the visitor's side, not
+ * through the body from behind. */
+static vec3 near_view(vec3 v, vec3 d)
+{
+	for (int i = 0; i < 4 && vec3_dot(v, d) < 0.5f; i++)
+		v = vec3_normalize(vec3_add(v, d));
+	return v;
+}
+
 /* Where the close-up looks from: across the bend of a bent joint, else
  * the main camera's direction (from the target towards the eye) with its
  * part along the bone taken out, the nearest view across the bone; the
@@ -60,9 +70,9 @@ static vec3 across(vec3 axis, vec3 parent, float main_azimuth)
 		return d;
 	vec3 bent = bend_normal(axis, parent, d);
 	if (vec3_dot(bent, bent) > 0.0f)
-		return bent;
+		return near_view(bent, d);
 	vec3 u = vec3_scale(axis, 1.0f / len), side = vec3_madd(d, u, -vec3_dot(d, u));
-	return vec3_length(side) < 0.2f ? d : vec3_normalize(side);
+	return vec3_length(side) < 0.2f ? d : near_view(vec3_normalize(side), d);
 }
 
 void closeup_camera_follow(closeup_camera *c, vec3 at, vec3 axis, vec3 parent, float main_azimuth, float dt,
@@ -89,6 +99,6 @@ mat4 closeup_camera_matrix(const closeup_camera *c, float span, float aspect)
 	float d = span / (sinf(0.5f * CLOSEUP_FOVY) * fit);
 	vec3 dir = vec3_make(sinf(c->azimuth) * cosf(c->pitch), sinf(c->pitch), cosf(c->azimuth) * cosf(c->pitch));
 	mat4 view = mat4_look_at(vec3_madd(c->target, dir, d), c->target, vec3_make(0, 1, 0));
-	mat4 proj = mat4_perspective(CLOSEUP_FOVY, aspect, 0.3f * d, 40.0f * d);
+	mat4 proj = mat4_perspective(CLOSEUP_FOVY, aspect, 0.55f * d, 40.0f * d);
 	return mat4_mul(&proj, &view);
 }

@@ -11,7 +11,10 @@
 
 #define CLOSEUP_HOLD_S 2.0f    /* seconds a joint is shown at least */
 #define CLOSEUP_SWITCH 1.25f   /* another joint must differ this much more */
-#define CLOSEUP_SPAN 0.09f     /* the inset shows a sphere this radius (of the body's size) */
+#define CLOSEUP_SPAN 0.09f     /* the inset shows a sphere this radius (of the body's size), */
+#define CLOSEUP_SPAN_MIN 0.035f /* or round where the methods part: 2.5 times that reach, */
+#define CLOSEUP_SPAN_MAX 0.14f  /* within these */
+#define CLOSEUP_REACH 1.8f
 
 typedef struct closeup_pick {
 	int joint;     /* -1: none yet */
@@ -29,6 +32,7 @@ typedef struct closeup_camera {
 	vec3 target;       /* eased towards the joint */
 	float azimuth;     /* eased towards a view across the bone */
 	float pitch;
+	float span;        /* the radius framed, eased towards the close-up's (0: not yet) */
 } closeup_camera;
 
 /* Follows the point at on a joint whose bone points along axis and its

@@ -10,7 +10,7 @@
 #include "render_font.h"
 #include "render_internal.h"
 
-#define INSET_SHARE 50      /* percent of the panel's width */
+#define INSET_SHARE 58      /* percent of the panel's width */
 #define INSET_MIN_PX 48     /* smaller than this: no inset */
 
 static int line_h(int scale)
@@ -106,7 +106,7 @@ void render_inset_draw(renderer *r, const render_frame *f, int panel, render_rec
 	backdrop(r, column_rgba);
 	render_set_viewport(r, inset);
 	backdrop(r, inset_rgba);
-	mat4 cam = closeup_camera_matrix(&r->inset, CLOSEUP_SPAN * r->cam.height, 1.0f);
+	mat4 cam = closeup_camera_matrix(&r->inset, r->inset.span, 1.0f);
 	mat4 vp = mat4_mul(&r->screen, &cam);
 	render_body_seen(r, &vp, f, panel, r->inset.azimuth);
 	outline(r, ring_rgba);
@@ -123,7 +123,7 @@ void render_inset_ring(renderer *r, const mat4 *vp)
 	const gl_api *gl = r->gl;
 	enum { SEGMENTS = 40 };
 	vec3 at = r->inset.target;
-	float radius = CLOSEUP_SPAN * r->cam.height, az = r->cam.azimuth;
+	float radius = r->inset.span, az = r->cam.azimuth;
 	vec3 side = vec3_make(cosf(az), 0.0f, -sinf(az)), up = vec3_make(0.0f, 1.0f, 0.0f);
 	for (int i = 0; i < SEGMENTS; i++) {
 		float a = 6.2831853f * (float)i / SEGMENTS;

@@ -120,6 +120,21 @@ vec3 skin_diff_focus(const skin_diff *d, const float *a, const float *b, int joi
 	return w > 0.0 ? vec3_make((float)(x / w), (float)(y / w), (float)(z / w)) : vec3_make(0.0f, 0.0f, 0.0f);
 }
 
+float skin_diff_reach(const skin_diff *d, const float *a, const float *b, int joint, vec3 at)
+{
+	double w = 0.0, r2 = 0.0;
+	for (int v = 0; v < d->count; v++) {
+		if (d->joint[v] != joint)
+			continue;
+		const float *p = a + 3 * v, *q = b + 3 * v;
+		double dx = p[0] - q[0], dy = p[1] - q[1], dz = p[2] - q[2], e = dx * dx + dy * dy + dz * dz;
+		double mx = 0.5 * (p[0] + q[0]) - at.x, my = 0.5 * (p[1] + q[1]) - at.y, mz = 0.5 * (p[2] + q[2]) - at.z;
+		w += e;
+		r2 += e * (mx * mx + my * my + mz * mz);
+	}
+	return w > 0.0 ? (float)sqrt(r2 / w) : 0.0f;
+}
+
 int skin_diff_worst(const skin_diff *d)
 {
 	int at = -1;

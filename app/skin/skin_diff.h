@@ -42,6 +42,11 @@ float skin_diff_from_bind(skin_diff *d, const skel_pose *pose, const float *pos,
  * the armpit). *found 0 when they do not differ at all. */
 vec3 skin_diff_focus(const skin_diff *d, const float *a, const float *b, int joint, int *found);
 
+/* How far round at the joint's vertices part: their distance from at,
+ * root-mean-squared with the same weights as skin_diff_focus (0 when
+ * they do not part). The close-up frames this much round its focus. */
+float skin_diff_reach(const skin_diff *d, const float *a, const float *b, int joint, vec3 at);
+
 /* How the skin of one joint's vertices has moved from its bones since
  * the bind pose (pos skinned in pose): the most any came nearer
  * (*thinner, >= 0) and went further (*thicker, >= 0), in units. */
