@@ -1,7 +1,31 @@
 /* Writes the skinplay demo motion (AMC, 120 Hz) for assets/demo.asf to
- * stdout: a walk, then deep elbow and knee bends, then a large forearm and
- * upper-arm twist: the poses where LBS collapses and candy-wraps and DQBS
- * keeps its volume. Built and run by `make` into build/assets/demo.amc.
+ * stdout: a 2 s walk, then the poses where linear blend skinning fails and
+ * dual quaternion skinning keeps its volume, each staged on one joint of
+ * one side so that a visitor at kiosk distance sees at once where the two
+ * panels part. The rest of the body stands calm, the arms lowered 70
+ * degrees from the T-pose. In this order, each held alone 2.3 s (seconds
+ * into the tour):
+ *
+ *   1. 2.95-5.25   the left forearm twisted half a turn (the candy
+ *                  wrapper), the arm held out to the side;
+ *   2. 6.15-8.45   the right elbow bent to 150 degrees, the upper arm out
+ *                  from the side;
+ *   3. 9.35-11.65  the left arm raised overhead (the shoulder and armpit);
+ *   4. 12.55-14.85 the right hip flexed 115 degrees, the knee bent (a high
+ *                  march step);
+ *   5. 15.75-18.35 the head turned 80 degrees to its left (the neck's
+ *                  twist); a stand, and the tour ends at 19.25 s.
+ *
+ * Each eases in and out over EASE s (smoothstep). The next one eases in
+ * while the last is still held and only then does the last ease out
+ * (OVERLAP): the kiosk's close-up keeps a joint 2 s at least and leaves it
+ * only for one that parts the methods 1.25x more (app/render/
+ * render_closeup.h), so a pause in the rest pose between two artifacts
+ * would hand it to the shoulders for most of the next hold.
+ *
+ * Built and run by `make` into build/assets/demo.amc.
+ * tests/integration/test_compare_seen.c knows the holds' middles: change
+ * both together.
  *
  * `demo_motion cmu` writes the same tour for the CMU skeleton (the default
  * show's, assets/cmu/02.asf), whose arm bones have other axes: each arm's
@@ -13,13 +37,21 @@
 #include <string.h>
 
 #define FPS 120.0
-#define WALK_END 4.0
-#define BEND_END 6.5
-#define TWIST_END 9.5
+#define EASE 0.6                      /* smoothstep in, and out again */
+#define OVERLAP 0.9                   /* of one artifact's ease out and the next's ease in */
+#define HOLD (2.0 + OVERLAP)          /* 2.3 s of it with nothing else posed */
+#define STAGE (EASE + HOLD + EASE)
+#define PERIOD (STAGE - OVERLAP)      /* 3.2 s from one artifact to the next */
+#define STAGES 5
+#define WALK_END (2.5 - OVERLAP / 2)  /* the holds' middles at 4.1 s + 3.2 s k */
+#define WALK_STOP 0.4                 /* the walk slows to a stand over its last 0.4 s */
+#define TOUR_END (WALK_END + STAGES * PERIOD + OVERLAP + 0.3) /* a moment's stand before the loop */
+
+enum { RIGHT, LEFT };                 /* side indices, as the AMC's r and l */
 
 typedef struct pose {
 	double root[6];
-	double lowerback[3], thorax[3], head[3];
+	double lowerback[3], thorax[3], lowerneck[3], upperneck[3], head[3];
 	double humerus[2][3], radius[2], wrist[2], clavicle[2][2];
 	double femur[2][3], tibia[2], foot[2][2], toes[2];
 } pose;
@@ -37,69 +69,113 @@ static double window(double a, double b, double ramp, double t)
 	return smoothstep(a, a + ramp, t) * (1 - smoothstep(b - ramp, b, t));
 }
 
-static void rest_arms(pose *p)
+/* Standing: the arms lowered 70 degrees from the T-pose, the legs drawn in
+ * 14 from the skeleton's straddle as the default show's body stands in its
+ * bind pose. Away from the staged joint LBS and DQBS then part by 8 mm at
+ * most (the shoulders; the arms hang lower than bound). */
+static void rest_pose(pose *p)
 {
-	/* side index 0 = right, 1 = left; rz lowers the T-pose arms */
-	p->humerus[0][2] = 70;
-	p->humerus[1][2] = -70;
-	p->radius[0] = p->radius[1] = 15;
+	/* rz lowers the T-pose arms */
+	p->humerus[RIGHT][2] = 70;
+	p->humerus[LEFT][2] = -70;
+	p->radius[RIGHT] = p->radius[LEFT] = 15;
+	p->femur[RIGHT][2] = 14;
+	p->femur[LEFT][2] = -14;
+}
+
+/* The distance walked by t: the speed eases out with the stride, so that
+ * the feet do not slide as the walk stops (the integral of 1 - smoothstep
+ * over the stop is x - x^3 + x^4/2 of its share x). */
+static double walked(double t)
+{
+	double a = WALK_END - WALK_STOP;
+	double x = t < a ? 0 : t > WALK_END ? 1 : (t - a) / WALK_STOP;
+	return 13.0 * ((t < a ? t : a) + WALK_STOP * (x - x * x * x + x * x * x * x / 2));
 }
 
 static void walk(pose *p, double t, double w)
 {
 	double ph = 2 * M_PI * t / 1.1;
 	double l = sin(ph);
-	double dist = 13.0 * (t < WALK_END ? t : WALK_END);
-	p->root[2] = dist;
+	p->root[2] = walked(t);
 	p->root[1] = 16.9 + w * 0.35 * cos(2 * ph);
-	p->femur[1][0] += w * -25 * l;
-	p->femur[0][0] += w * 25 * l;
-	p->tibia[1] += w * 35 * fmax(0, sin(ph + 1.3));
-	p->tibia[0] += w * 35 * fmax(0, sin(ph + 1.3 + M_PI));
-	p->foot[1][0] += w * 10 * sin(ph + 0.5);
-	p->foot[0][0] += w * -10 * sin(ph + 0.5);
-	p->humerus[1][0] += w * -20 * l;
-	p->humerus[0][0] += w * 20 * l;
+	p->femur[LEFT][0] += w * -25 * l;
+	p->femur[RIGHT][0] += w * 25 * l;
+	p->tibia[LEFT] += w * 35 * fmax(0, sin(ph + 1.3));
+	p->tibia[RIGHT] += w * 35 * fmax(0, sin(ph + 1.3 + M_PI));
+	p->foot[LEFT][0] += w * 10 * sin(ph + 0.5);
+	p->foot[RIGHT][0] += w * -10 * sin(ph + 0.5);
+	p->humerus[LEFT][0] += w * -20 * l;
+	p->humerus[RIGHT][0] += w * 20 * l;
 	p->lowerback[1] += w * 6 * l;
 	p->thorax[1] += w * -6 * l;
 }
 
-static void bend(pose *p, double s)
+/* The demo skeleton's arm dofs, rx ry rz, turn in the T-pose about the
+ * vertical, the bone and the forward axis (rz lowers or raises the arm in
+ * the body's plane); the forearm's rx bends the elbow about the vertical
+ * there, the wrist's ry twists about the forearm. */
+
+/* The candy wrapper: the skin between forearm and hand turned half a turn
+ * collapses to a waist with LBS. The arm out to the side, 15 degrees below
+ * the horizontal and straight, shows the whole forearm clear of the body. */
+static void forearm_twist(pose *p, double s)
 {
-	p->root[1] -= 10.0 * s;
-	p->lowerback[0] += 25 * s;
-	p->head[0] -= 15 * s;
-	for (int i = 0; i < 2; i++) {
-		p->femur[i][0] += -105 * s;
-		p->tibia[i] += 135 * s;
-		p->foot[i][0] += -30 * s;
-		p->humerus[i][0] += 40 * s;
-		p->radius[i] += 135 * s;
-	}
+	p->humerus[LEFT][2] += 55 * s;
+	p->radius[LEFT] -= 15 * s;
+	p->wrist[LEFT] -= 180 * s;
 }
 
-static void twist(pose *p, double t, double s)
+/* LBS loses the inside of a deep bend: the upper arm out from the side, 35
+ * degrees below the horizontal, and the forearm folded up in front of it.
+ * Not rolled: a roll of the upper arm parts the methods more at the
+ * shoulder than the bend does at the elbow. */
+static void elbow_bend(pose *p, double s)
 {
-	double k = sin(M_PI * (t - BEND_END) / (TWIST_END - BEND_END));
-	for (int i = 0; i < 2; i++) {
-		double sign = i ? 1 : -1;
-		p->humerus[i][2] += sign * 55 * s;   /* raise the arms to shoulder height */
-		p->humerus[i][0] += 60 * s;          /* and forward */
-		p->radius[i] -= 15 * s;
-		p->wrist[i] = -175 * s * k * k;      /* the forearm twists half a turn */
-		p->humerus[i][1] += sign * 40 * s * k; /* and the upper arm rolls */
-	}
+	p->humerus[RIGHT][2] -= 35 * s;
+	p->radius[RIGHT] += 135 * s;
 }
+
+/* The upper arm from hanging to 80 degrees above the horizontal, up past
+ * the head: the shoulder and armpit turn 150 degrees. */
+static void shoulder_overhead(pose *p, double s)
+{
+	p->humerus[LEFT][2] += 150 * s;
+}
+
+/* A high march step: the thigh 115 degrees forward of hanging, above the
+ * horizontal, the knee bent so that the shin hangs. The groin and buttock
+ * fold. */
+static void hip_flexion(pose *p, double s)
+{
+	p->femur[RIGHT][0] -= 115 * s;
+	p->tibia[RIGHT] += 100 * s;
+	p->foot[RIGHT][0] += 10 * s;
+}
+
+/* The head turned to its left about the vertical, most of it in the upper
+ * neck: a twist of the neck's skin, as the forearm's but shorter. */
+static void neck_turn(pose *p, double s)
+{
+	p->lowerneck[1] += 25 * s;
+	p->upperneck[1] += 45 * s;
+	p->head[1] += 10 * s;
+}
+
+static void (*const stage[STAGES])(pose *, double) = {
+	forearm_twist, elbow_bend, shoulder_overhead, hip_flexion, neck_turn,
+};
 
 static pose pose_at(double t)
 {
 	pose p;
 	memset(&p, 0, sizeof p);
-	rest_arms(&p);
-	double walking = 1 - smoothstep(WALK_END - 0.4, WALK_END, t);
-	walk(&p, t, walking);
-	bend(&p, window(WALK_END, BEND_END, 0.7, t));
-	twist(&p, t, window(BEND_END, TWIST_END, 0.5, t));
+	rest_pose(&p);
+	walk(&p, t, 1 - smoothstep(WALK_END - WALK_STOP, WALK_END, t));
+	for (int k = 0; k < STAGES; k++) {
+		double a = WALK_END + k * PERIOD;
+		stage[k](&p, window(a, a + STAGE, EASE, t));
+	}
 	return p;
 }
 
@@ -242,8 +318,8 @@ static void write_frame(int n, const pose *p)
 	line3("lowerback", p->lowerback);
 	line3("upperback", zero);
 	line3("thorax", p->thorax);
-	line3("lowerneck", zero);
-	line3("upperneck", zero);
+	line3("lowerneck", p->lowerneck);
+	line3("upperneck", p->upperneck);
 	line3("head", p->head);
 	for (int i = 0; i < 2; i++) {
 		char name[16];
@@ -270,7 +346,7 @@ int main(int argc, char **argv)
 		return 1;
 	}
 	printf("#!OML:ASF %s\n:FULLY-SPECIFIED\n:DEGREES\n", cmu ? "02.asf" : "demo.asf");
-	int frames = (int)(TWIST_END * FPS);
+	int frames = (int)(TOUR_END * FPS + 0.5);
 	pose prev;
 	for (int n = 1; n <= frames; n++) {
 		pose p = pose_at((n - 1) / FPS);

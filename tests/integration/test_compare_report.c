@@ -636,7 +636,7 @@ static void find_insets(const picture *p, const char *name, rect in[2])
 {
 	int hw = p->w / 2;
 	for (int i = 0; i < 2; i++)
-		if (!find_inset(p, i * hw + hw / 2, (i + 1) * hw, &in[i]))
+		if (!find_inset(p, i * hw + hw / 3, (i + 1) * hw, &in[i]))
 			fail_msg("%s: no close-up inset in the %s half", name, i ? "right" : "left");
 	assert_true(abs(in[1].x - in[0].x - hw) <= 1 && abs(in[1].y - in[0].y) <= 1);
 	assert_true(abs(in[1].w - in[0].w) <= 1 && abs(in[1].h - in[0].h) <= 1);

@@ -334,7 +334,9 @@ static void test_skinning_threads(void **state)
 
 /* --streams compact: LBS and DQBS read the 16-bit streams and upload
  * 16-bit normals; the picture is the float streams' within a few pixels'
- * shading (quantisation moves a vertex by about 1e-5 of the body). */
+ * shading (quantisation moves a vertex by about 1e-5 of the body; the
+ * compare view's close-up magnifies a joint several times, and its
+ * shading with it: 390 pixels of 76,800 here, 0.2% before it). */
 static void test_compact_streams(void **state)
 {
 	(void)state;
@@ -346,7 +348,7 @@ static void test_compact_streams(void **state)
 		load("float", n, &b);
 		long d = image_diff(&a, &b);
 		print_message("frame %d: %ld of %d pixels differ between compact and float streams\n", n, d, W * H);
-		assert_true(d * 200 < W * H); /* under 0.5% */
+		assert_true(d * 100 < W * H); /* under 1% */
 	}
 	assert_int_equal(run("bad", "--streams tiny", 1), 1);
 	expect_log("tiny");
@@ -581,7 +583,10 @@ static void test_show_plays_its_clips_in_turn(void **state)
 	snprintf(show, sizeof show, "%s/two.skn", dir);
 	char amc[512]; /* test_tool_path's buffer is shared */
 	snprintf(amc, sizeof amc, "%s", test_tool_path("assets/demo.amc"));
-	snprintf(cmd, sizeof cmd, "cp %s %s && awk '/^[0-9]+$/ { n = $1 } n <= 120' %s > %s && "
+	/* the demo's first 9.5 s and its first 1 s: lengths of their own, not
+	 * the demo's, which changes with the tour */
+	snprintf(cmd, sizeof cmd, "awk '/^[0-9]+$/ { n = $1 } n <= 1140' %s > %s && "
+		 "awk '/^[0-9]+$/ { n = $1 } n <= 120' %s > %s && "
 		 "%s pack -q assets/demo.asf %s %s -o %s >/dev/null", amc, clip_a, clip_a, clip_b,
 		 test_tool_path("skintool"), clip_a, clip_b, show);
 	assert_int_equal(system(cmd), 0);
