@@ -99,6 +99,6 @@ mat4 closeup_camera_matrix(const closeup_camera *c, float span, float aspect)
 	float d = span / (sinf(0.5f * CLOSEUP_FOVY) * fit);
 	vec3 dir = vec3_make(sinf(c->azimuth) * cosf(c->pitch), sinf(c->pitch), cosf(c->azimuth) * cosf(c->pitch));
 	mat4 view = mat4_look_at(vec3_madd(c->target, dir, d), c->target, vec3_make(0, 1, 0));
-	mat4 proj = mat4_perspective(CLOSEUP_FOVY, aspect, 0.55f * d, 40.0f * d);
+	mat4 proj = mat4_perspective(CLOSEUP_FOVY, aspect, 0.3f * d, 40.0f * d);
 	return mat4_mul(&proj, &view);
 }
