@@ -27,6 +27,7 @@
 
 #include "png_writer.h"
 #include "test_paths.h"
+#include "test_run.h"
 
 #define SEEN_LEVELS 10
 #define MAX_FRAMES 20000
@@ -137,17 +138,6 @@ static double rate(double dflt)
 	return r && atof(r) > 0 ? atof(r) : dflt;
 }
 
-static void run(double hz, const char *more, const char *dir)
-{
-	char cmd[2048], show[512];
-	snprintf(show, sizeof show, "%s", test_tool_path("assets/demo.skn"));
-	snprintf(cmd, sizeof cmd, "rm -rf %s && ASAN_OPTIONS=detect_leaks=0 %s --image %s --platform surfaceless "
-		 "--algo compare --hud visitor --hud-fps off --input none --size 960x540 --display-rate %g %s --out %s 2>/dev/null",
-		 dir, test_tool_path("skinplay"), show, hz, more, dir);
-	int status = system(cmd);
-	if (!WIFEXITED(status) || WEXITSTATUS(status) != 0)
-		fail_msg("failed: %s", cmd);
-}
 
 static char dir[64];
 
@@ -161,7 +151,7 @@ static void test_show_seen(void **state)
 	}
 	char out[128];
 	snprintf(out, sizeof out, "%s/show", dir);
-	run(rate(2.0), "", out);
+	test_show_compare("960x540", rate(2.0), "", out);
 	seen s = summarise(measure_dir(out), "default show, 960x540, visitor compare view");
 	assert_true(s.above2 >= 0.25);
 }
@@ -210,7 +200,7 @@ static void test_tour_artifacts(void **state)
 	snprintf(out, sizeof out, "%s/tour", dir);
 	double hz = rate(4.0);
 	snprintf(more, sizeof more, "--clip tour --loop clip --frames %d", (int)(tour_seconds() * hz));
-	run(hz, more, out);
+	test_show_compare("960x540", hz, more, out);
 	int n = measure_dir(out), short_of = 0;
 	summarise(n, "the tour");
 	for (size_t i = 0; i < sizeof staged / sizeof staged[0]; i++) {

@@ -20,6 +20,7 @@
 #include "png_writer.h"
 #include "render_internal.h"
 #include "test_paths.h"
+#include "test_run.h"
 
 #define MAX_PIXELS (960 * 540)
 
@@ -344,19 +345,6 @@ static void check_frame(const image *im, int portrait, int n, show_stats *st)
 	st->frames++;
 }
 
-/* The default show once, two frames a second, visitor screen, compare view. */
-static void show_run(const char *size, const char *more, const char *dir)
-{
-	char cmd[2048], show[512]; /* test_tool_path's buffer is shared */
-	snprintf(show, sizeof show, "%s", test_tool_path("assets/demo.skn"));
-	snprintf(cmd, sizeof cmd, "rm -rf %s && ASAN_OPTIONS=detect_leaks=0 %s --image %s --platform surfaceless "
-		 "--algo compare --hud visitor --hud-fps off --input none --size %s --display-rate 2 %s --out %s 2>/dev/null",
-		 dir, test_tool_path("skinplay"), show, size, more, dir);
-	int status = system(cmd);
-	if (!WIFEXITED(status) || WEXITSTATUS(status) != 0)
-		fail_msg("failed: %s", cmd);
-}
-
 static void load_frame(const char *dir, int n, image *im)
 {
 	char path[512];
@@ -370,7 +358,7 @@ static void show_layout(const char *size, int portrait)
 {
 	char dir[128];
 	snprintf(dir, sizeof dir, "%s/show", tmpdir());
-	show_run(size, "", dir);
+	test_show_compare(size, 2, "", dir);
 	show_stats st = { 0, 1e9, 1e9, 1e9 };
 	for (int n = 1;; n++) {
 		char path[512];
@@ -409,8 +397,8 @@ static void test_show_rotated(void **state)
 	char a[128], b[128];
 	snprintf(a, sizeof a, "%s/upright", tmpdir());
 	snprintf(b, sizeof b, "%s/turned", tmpdir());
-	show_run("540x960", "--frames 20 --every 19", a);
-	show_run("960x540", "--rotation 90 --frames 20 --every 19", b);
+	test_show_compare("540x960", 2, "--frames 20 --every 19", a);
+	test_show_compare("960x540", 2, "--rotation 90 --frames 20 --every 19", b);
 	load_frame(a, 20, &want);
 	load_frame(b, 20, &got);
 	assert_int_equal(got.w, want.h);
@@ -438,7 +426,7 @@ static void test_weights_legend(void **state)
 	(void)state;
 	char dir[128];
 	snprintf(dir, sizeof dir, "%s/weights", tmpdir());
-	show_run("960x540", "--view weights --frames 1", dir);
+	test_show_compare("960x540", 2, "--view weights --frames 1", dir);
 	load_frame(dir, 1, &got);
 	int named = 0, lowest = 0;
 	for (int b = 0; b < 31; b++) {

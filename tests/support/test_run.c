@@ -110,3 +110,13 @@ void test_skip_threads_if_emulated(void)
 		skip();
 	}
 }
+
+void test_show_compare(const char *size, double hz, const char *more, const char *out)
+{
+	char show[512]; /* test_tool_path's buffers rotate */
+	snprintf(show, sizeof show, "%s", test_tool_path("assets/demo.skn"));
+	if (test_run("rm -rf '%s' && ASAN_OPTIONS=detect_leaks=0 %s --image %s --platform surfaceless --algo compare "
+		     "--hud visitor --hud-fps off --input none --size %s --display-rate %g %s --out '%s' 2>/dev/null",
+		     out, test_tool_path("skinplay"), show, size, hz, more, out) != 0)
+		fail_msg("skinplay --image %s --size %s --display-rate %g %s did not exit 0", show, size, hz, more);
+}

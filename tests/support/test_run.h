@@ -20,6 +20,12 @@ void test_write_text(const char *path, const char *text);
  * holds every text of the NULL-terminated list. */
 void test_assert_contains_all(const char *path, const char *const *texts);
 
+/* The default show (build/assets/demo.skn) headless on the visitor's
+ * screen in the compare view at size (WxH), hz frames a second of the
+ * virtual display, more options, into out (emptied first); fails the test
+ * unless skinplay exits 0. */
+void test_show_compare(const char *size, double hz, const char *more, const char *out);
+
 /* Runs a shell command built like printf; returns its exit status, or -1
  * when it did not exit normally (a crash). */
 int test_run(const char *fmt, ...) __attribute__((format(printf, 1, 2)));
