@@ -38,7 +38,7 @@
 #include "skp_reader.h"
 #include "text_lines.h"
 
-#define MAX_TEXT (1 << 20)
+#define MAX_TEXT (4 << 20) /* the demo motion: 1.4 MB with the tour of 19 s */
 
 static char asf_text[MAX_TEXT], amc_src[MAX_TEXT], amc_text[MAX_TEXT];
 static skel sk;
