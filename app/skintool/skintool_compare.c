@@ -149,14 +149,14 @@ int cmd_compare(int argc, char **argv)
 	c.rep.asf = a.asf;
 	c.rep.amc = a.amc;
 	c.rep.clip = clip;
-	/* the scenes are pictured while c.sk still holds them */
-	if (compare_measure_scenes(&c) < 0 || compare_render_scenes(&c, &a) < 0 || compare_load_clip(&c, &a) < 0 ||
-	    compare_measure_clip(&c, &a) < 0 || compare_other_weights(&c, &a) < 0)
+	if (compare_load_clip(&c, &a) < 0 || compare_measure_clip(&c, &a) < 0 || compare_other_weights(&c, &a) < 0)
 		return fail(a.out, made);
 	uint64_t t1 = clock_now_ns();
 	compare_pick_stills(&c, (int)a.renders);
+	/* the scenes last (bad input is refused before any work), pictured
+	 * while c.sk still holds them */
 	if (compare_explain_volume(&c, &a) < 0 || compare_render_stills(&c, &a) < 0 ||
-	    compare_write_charts(&c, a.out) < 0)
+	    compare_write_charts(&c, a.out) < 0 || compare_measure_scenes(&c) < 0 || compare_render_scenes(&c, &a) < 0)
 		return fail(a.out, made);
 	/* the page and the last line give the same total: taken once, before
 	 * the page (which takes a millisecond) */
