@@ -221,6 +221,38 @@ static quat moved(const skel_pose *bind, const skel_pose *pose, int b)
 	return quat_mul(pose->rot[b], quat_conj(bind->rot[b]));
 }
 
+static float turned_most(skel_joint_turn t)
+{
+	return t.bend > t.twist ? t.bend : t.twist;
+}
+
+int skel_joint_turning(const skel *s, const skel_joints *j, const skel_pose *bind, const skel_pose *pose, int bone,
+		       skel_joint_turn *t)
+{
+	*t = skel_joint_turned(s, j, bind, pose, bone);
+	int up = bone > 0 && bone < s->count ? s->bone[bone].parent : -1;
+	if (up <= 0 || turned_most(*t) >= 30.0f)
+		return bone;
+	skel_joint_turn u = skel_joint_turned(s, j, bind, pose, up);
+	if (turned_most(u) < 30.0f)
+		return bone;
+	*t = u;
+	return up;
+}
+
+skel_turn_kind skel_joint_turn_say(skel_joint_turn t, char *buf, size_t cap, int *degrees)
+{
+	skel_turn_kind k = t.twist >= 30.0f && t.twist >= t.bend ? SKEL_TURN_TWIST
+			   : t.bend >= 30.0f			   ? SKEL_TURN_BEND
+								   : SKEL_TURN_SLIGHT;
+	*degrees = k == SKEL_TURN_TWIST ? (int)lroundf(t.twist) : k == SKEL_TURN_BEND ? (int)lroundf(t.bend) : 0;
+	if (k == SKEL_TURN_SLIGHT)
+		skp_format(buf, cap, "%s", "");
+	else
+		skp_format(buf, cap, "%s %d DEG", k == SKEL_TURN_TWIST ? "TWISTED" : "BENT", *degrees);
+	return k;
+}
+
 skel_joint_turn skel_joint_turned(const skel *s, const skel_joints *j, const skel_pose *bind, const skel_pose *pose,
 				  int bone)
 {

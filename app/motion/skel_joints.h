@@ -50,4 +50,19 @@ typedef struct skel_joint_turn {
 skel_joint_turn skel_joint_turned(const skel *s, const skel_joints *j, const skel_pose *bind, const skel_pose *pose,
 				  int bone);
 
+/* The joint to tell of where the skin at bone's joint changed: that
+ * joint, or its parent joint when that one turned 30 degrees or more and
+ * it did not (the skin between CMU's wrist and hand is nearest the hand's
+ * joint, the twist is the wrist's). Its turn into *t. */
+int skel_joint_turning(const skel *s, const skel_joints *j, const skel_pose *bind, const skel_pose *pose, int bone,
+		       skel_joint_turn *t);
+
+/* What a turn shows: a twist of 30 degrees or more and no less than the
+ * bend, else a bend of 30 or more, else nothing to say. */
+typedef enum skel_turn_kind { SKEL_TURN_SLIGHT, SKEL_TURN_TWIST, SKEL_TURN_BEND } skel_turn_kind;
+
+/* Its kind, and "TWISTED 178 DEG", "BENT 150 DEG" or "" into buf (at most
+ * cap bytes); *degrees the angle said (0 when slight). */
+skel_turn_kind skel_joint_turn_say(skel_joint_turn t, char *buf, size_t cap, int *degrees);
+
 #endif

@@ -36,7 +36,7 @@ typedef struct render_panel {
 typedef struct render_closeup {
 	int joint;               /* the bone whose head is looked at; -1 (or no title): no inset */
 	vec3 focus;              /* where on it the methods part (skin_diff_focus) */
-	float span;              /* how far round they part (skin_diff_reach); 0: CLOSEUP_SPAN of the body */
+	float span;              /* how far round they part (skin_diff_focus's reach); 0: CLOSEUP_SPAN of the body */
 	const char *title;       /* over the insets: "LEFT WRIST" */
 	const char *note;        /* under them, what the joint did ("TWISTED 178 DEG"); may be NULL */
 	const char *effect[RENDER_MAX_PANELS]; /* under each inset, what the skin did; may be NULL */

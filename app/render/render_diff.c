@@ -91,11 +91,6 @@ static const char *legend_title(const renderer *r, int is_signed)
 	return r->size_assumed ? "HOW FAR LBS LIES FROM DQBS, MM (BODY TAKEN AS 1.75 M):" : "HOW FAR LBS LIES FROM DQBS, MM:";
 }
 
-int render_diff_legend_rows(void)
-{
-	return 2;
-}
-
 /* A run of flat quads across [x0, x1) on row y (logical pixels from the
  * top of full), each its colour of the scale. */
 static void draw_bar(renderer *r, render_rect full, int x0, int x1, int y, int h, int is_signed)
@@ -111,11 +106,7 @@ static void draw_bar(renderer *r, render_rect full, int x0, int x1, int y, int h
 		float q[18] = { a, y0, 0, b, y0, 0, b, y1, 0, a, y0, 0, b, y1, 0, a, y1, 0 };
 		vec3 c = ramp(((float)i + 0.5f) / DIFF_BAR_STEPS, is_signed);
 		float rgba[4] = { c.x, c.y, c.z, 1.0f };
-		render_use_flat(r, &m, rgba, 1.0f);
-		render_stream(r, q, 18);
-		render_attrib(gl, ATTR_POS, 3, 12, 0);
-		gl->DrawArrays(GL_TRIANGLES, 0, 6);
-		render_disable_attribs(gl);
+		render_flat(r, &m, rgba, GL_TRIANGLES, q, 6, 1.0f);
 	}
 	gl->Enable(GL_DEPTH_TEST);
 }

@@ -9,15 +9,10 @@
 /* A floor under the grid makes the blob shadow readable. */
 static void draw_floor(renderer *r, const mat4 *vp, float cx, float cz, float e, float y)
 {
-	const gl_api *gl = r->gl;
 	float q[18] = { cx - e, y, cz - e,  cx - e, y, cz + e,  cx + e, y, cz + e,
 			cx - e, y, cz - e,  cx + e, y, cz + e,  cx + e, y, cz - e };
 	static const float floor_rgba[4] = { 0.27f, 0.29f, 0.33f, 1.0f };
-	render_use_flat(r, vp, floor_rgba, 1.0f);
-	render_stream(r, q, 18);
-	render_attrib(gl, ATTR_POS, 3, 12, 0);
-	gl->DrawArrays(GL_TRIANGLES, 0, 6);
-	render_disable_attribs(gl);
+	render_flat(r, vp, floor_rgba, GL_TRIANGLES, q, 6, 1.0f);
 }
 
 void render_grid_and_shadow(renderer *r, const mat4 *vp, vec3 root)
@@ -35,11 +30,7 @@ void render_grid_and_shadow(renderer *r, const mat4 *vp, vec3 root)
 		n += 12;
 	}
 	static const float grid_rgba[4] = { 0.40f, 0.43f, 0.49f, 1.0f };
-	render_use_flat(r, vp, grid_rgba, 1.0f);
-	render_stream(r, r->misc, n);
-	render_attrib(gl, ATTR_POS, 3, 12, 0);
-	gl->DrawArrays(GL_LINES, 0, n / 3);
-	render_disable_attribs(gl);
+	render_flat(r, vp, grid_rgba, GL_LINES, r->misc, n / 3, 1.0f);
 
 	/* the blob: a quad on the floor under the root, alpha from the centre */
 	float s = r->cam.height * 0.32f, h = y + 0.002f * r->cam.height;
@@ -200,7 +191,7 @@ static layout lay_out(renderer *r, const render_frame *f, int n, int lw, int lh)
 		l.legend_rows = legend_words(r, full, l.legend, 0, 0);
 	} else if (f->view == RENDER_VIEW_DIFFERENCE && f->diff) {
 		l.legend = l.hud;
-		l.legend_rows = render_diff_legend_rows();
+		l.legend_rows = RENDER_DIFF_LEGEND_ROWS;
 	}
 	if (l.legend_rows)
 		l.top += (2 + l.legend_rows * (FONT_CELL_H + 2)) * l.legend;
@@ -267,7 +258,7 @@ static void draw_panel(renderer *r, const render_frame *f, const layout *l, int 
 	render_bands bands = { l->foot, l->top, l->hud };
 	render_rect body, inset;
 	int n = f->panel_count < 1 ? 1 : f->panel_count;
-	int closeup = render_inset_split(r, f, i, n, area, &bands, &body, &inset);
+	int closeup = render_inset_split(r, f, n, area, &bands, &body, &inset);
 	render_set_viewport(r, body);
 	mat4 cam = panel_camera(r, l, body, lh, f->pose->tip[0]);
 	mat4 vp = mat4_mul(&r->screen, &cam);
@@ -289,7 +280,7 @@ static void draw_panel(renderer *r, const render_frame *f, const layout *l, int 
 static void follow_closeup(renderer *r, const render_frame *f)
 {
 	int j = f->closeup.joint;
-	if (!f->closeup.title || j < 0 || j >= r->bone_count || f->panel_count < 2) {
+	if (!render_closeup_on(r, f)) {
 		r->inset.started = 0;
 		r->inset.span = 0.0f;
 		return;
@@ -309,7 +300,6 @@ static void follow_closeup(renderer *r, const render_frame *f)
  * screen. */
 static void draw_divider(renderer *r, int lw, int lh)
 {
-	const gl_api *gl = r->gl;
 	static const float line_rgba[4] = { 0.8f, 0.8f, 0.8f, 1.0f };
 	mat4 px = mat4_ortho(0, (float)lw, 0, (float)lh, -1, 1);
 	mat4 m = mat4_mul(&r->screen, &px);
@@ -319,11 +309,7 @@ static void draw_divider(renderer *r, int lw, int lh)
 		float across[6] = { 0, y, 0, (float)lw, y, 0 };
 		memcpy(line, across, sizeof line);
 	}
-	render_use_flat(r, &m, line_rgba, 1.0f);
-	render_stream(r, line, 6);
-	render_attrib(gl, ATTR_POS, 3, 12, 0);
-	gl->DrawArrays(GL_LINES, 0, 2);
-	render_disable_attribs(gl);
+	render_flat(r, &m, line_rgba, GL_LINES, line, 2, 1.0f);
 }
 
 /* The HUD lines at the top left, the legend under them, the badge. */

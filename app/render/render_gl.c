@@ -43,6 +43,21 @@ void render_use_flat(renderer *r, const mat4 *vp, const float rgba[4], float poi
 	gl->Uniform1f(render_loc[SHADER_FLAT][U_POINT], point);
 }
 
+void render_flat(renderer *r, const mat4 *vp, const float rgba[4], GLenum mode, const float *xyz, int vertices,
+		 float line_width)
+{
+	const gl_api *gl = r->gl;
+	render_use_flat(r, vp, rgba, 1.0f);
+	render_stream(r, xyz, 3 * vertices);
+	render_attrib(gl, ATTR_POS, 3, 12, 0);
+	if (line_width != 1.0f)
+		gl->LineWidth(line_width);
+	gl->DrawArrays(mode, 0, vertices);
+	if (line_width != 1.0f)
+		gl->LineWidth(1.0f);
+	render_disable_attribs(gl);
+}
+
 void render_attrib(const gl_api *gl, GLuint slot, int size, int stride, size_t offset)
 {
 	gl->EnableVertexAttribArray(slot);

@@ -30,15 +30,20 @@ static int inset_scale(const render_frame *f, int n, int w, int want)
 	return want < 1 ? 1 : want;
 }
 
-int render_inset_split(const renderer *r, const render_frame *f, int panel, int n, render_rect area,
-		       const render_bands *b, render_rect *body, render_rect *inset)
+int render_closeup_on(const renderer *r, const render_frame *f)
+{
+	const render_closeup *c = &f->closeup;
+	return f->panel_count >= 2 && c->title && c->joint >= 0 && c->joint < r->bone_count;
+}
+
+int render_inset_split(const renderer *r, const render_frame *f, int n, render_rect area, const render_bands *b,
+		       render_rect *body, render_rect *inset)
 {
 	int lw, lh;
 	*body = area;
-	if (n < 2 || !f->closeup.title || f->closeup.joint < 0 || f->closeup.joint >= r->bone_count)
+	if (n < 2 || !render_closeup_on(r, f))
 		return 0;
 	render_logical_size(r, &lw, &lh);
-	(void)panel;
 	int iw = area.w * INSET_SHARE / 100, ts = inset_scale(f, n, iw, b->scale + 1);
 	int above = line_h(ts), below = 2 * line_h(ts) + ts;
 	int bottom = area.y + b->foot, top = area.y + area.h - (area.y + area.h == lh ? b->top : 0);
@@ -59,11 +64,7 @@ static void backdrop(renderer *r, const float rgba[4])
 	const float z = 0.9999f;
 	float q[18] = { -1, -1, z, 1, -1, z, 1, 1, z, -1, -1, z, 1, 1, z, -1, 1, z };
 	gl->DepthFunc(GL_ALWAYS);
-	render_use_flat(r, &r->screen, rgba, 1.0f);
-	render_stream(r, q, 18);
-	render_attrib(gl, ATTR_POS, 3, 12, 0);
-	gl->DrawArrays(GL_TRIANGLES, 0, 6);
-	render_disable_attribs(gl);
+	render_flat(r, &r->screen, rgba, GL_TRIANGLES, q, 6, 1.0f);
 	gl->DepthFunc(GL_LESS);
 }
 
@@ -73,13 +74,7 @@ static void outline(renderer *r, const float rgba[4])
 	const float e = 0.995f;
 	float l[12] = { -e, -e, 0, e, -e, 0, e, e, 0, -e, e, 0 };
 	gl->Disable(GL_DEPTH_TEST);
-	render_use_flat(r, &r->screen, rgba, 1.0f);
-	render_stream(r, l, 12);
-	render_attrib(gl, ATTR_POS, 3, 12, 0);
-	gl->LineWidth(2.0f);
-	gl->DrawArrays(GL_LINE_LOOP, 0, 4);
-	gl->LineWidth(1.0f);
-	render_disable_attribs(gl);
+	render_flat(r, &r->screen, rgba, GL_LINE_LOOP, l, 4, 2.0f);
 	gl->Enable(GL_DEPTH_TEST);
 }
 
@@ -131,12 +126,6 @@ void render_inset_ring(renderer *r, const mat4 *vp)
 		r->misc[3 * i] = p.x, r->misc[3 * i + 1] = p.y, r->misc[3 * i + 2] = p.z;
 	}
 	gl->Disable(GL_DEPTH_TEST);
-	render_use_flat(r, vp, ring_rgba, 1.0f);
-	render_stream(r, r->misc, 3 * SEGMENTS);
-	render_attrib(gl, ATTR_POS, 3, 12, 0);
-	gl->LineWidth(2.0f);
-	gl->DrawArrays(GL_LINE_LOOP, 0, SEGMENTS);
-	gl->LineWidth(1.0f);
-	render_disable_attribs(gl);
+	render_flat(r, vp, ring_rgba, GL_LINE_LOOP, r->misc, SEGMENTS, 2.0f);
 	gl->Enable(GL_DEPTH_TEST);
 }

@@ -32,6 +32,9 @@ void render_body(renderer *r, const mat4 *vp, const render_frame *f, int panel);
 void render_stream(renderer *r, const float *data, int floats);
 /* The flat program: one colour, mvp, point size. */
 void render_use_flat(renderer *r, const mat4 *vp, const float rgba[4], float point);
+/* Vertices (xyz) drawn as mode in one colour, lines line_width wide. */
+void render_flat(renderer *r, const mat4 *vp, const float rgba[4], GLenum mode, const float *xyz, int vertices,
+		 float line_width);
 /* Float attribute slot from the bound buffer; 16-bit snorm ones. */
 void render_attrib(const gl_api *gl, GLuint slot, int size, int stride, size_t offset);
 void render_attrib_snorm16(const gl_api *gl, GLuint slot, int size, size_t offset);
@@ -44,9 +47,9 @@ int render_text(renderer *r, render_rect area, int x, int y, int scale, const ch
 		const float rgba[4]);
 
 /* The difference view (render_diff.c): colours from f->diff into
- * vbo_diff; the legend's rows, and the legend from row y0 of full. */
+ * vbo_diff; the legend (RENDER_DIFF_LEGEND_ROWS rows) from row y0 of full. */
 void render_diff_upload(renderer *r, const float *diff, int is_signed);
-int render_diff_legend_rows(void);
+#define RENDER_DIFF_LEGEND_ROWS 2
 void render_diff_legend(renderer *r, render_rect full, int scale, int y0, int is_signed);
 
 /* The close-up (render_inset.c): splits panel area into the body's part
@@ -55,8 +58,11 @@ void render_diff_legend(renderer *r, render_rect full, int scale, int y0, int is
 typedef struct render_bands {
 	int foot, top, scale;    /* logical pixels kept for text under and over the body */
 } render_bands;
-int render_inset_split(const renderer *r, const render_frame *f, int panel, int n, render_rect area,
-		       const render_bands *b, render_rect *body, render_rect *inset);
+/* 1 when f asks for a close-up this renderer can show (a compare view,
+ * a titled joint of the skeleton). */
+int render_closeup_on(const renderer *r, const render_frame *f);
+int render_inset_split(const renderer *r, const render_frame *f, int n, render_rect area, const render_bands *b,
+		       render_rect *body, render_rect *inset);
 void render_inset_draw(renderer *r, const render_frame *f, int panel, render_rect area, render_rect inset,
 		       const render_bands *b);
 void render_inset_ring(renderer *r, const mat4 *vp);

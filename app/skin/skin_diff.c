@@ -73,20 +73,6 @@ static float moved_from_bone(const skin_diff *d, const skel_pose *pose, const fl
 	return to_segment(p, pose->head[b], pose->tip[b]) - d->radius[v];
 }
 
-void skin_diff_joint_change(const skin_diff *d, const skel_pose *pose, const float *pos, int joint, float *thinner,
-			    float *thicker)
-{
-	float lo = 0.0f, hi = 0.0f;
-	for (int v = 0; v < d->count; v++)
-		if (d->joint[v] == joint) {
-			float e = moved_from_bone(d, pose, pos, v);
-			lo = fminf(lo, e);
-			hi = fmaxf(hi, e);
-		}
-	*thinner = -lo;
-	*thicker = hi;
-}
-
 float skin_diff_from_bind(skin_diff *d, const skel_pose *pose, const float *pos, float *dist)
 {
 	float most = 0.0f;
@@ -103,36 +89,39 @@ float skin_diff_from_bind(skin_diff *d, const skel_pose *pose, const float *pos,
 	return most;
 }
 
-vec3 skin_diff_focus(const skin_diff *d, const float *a, const float *b, int joint, int *found)
+vec3 skin_diff_focus(const skin_diff *d, const float *a, const float *b, int joint, int *found, float *reach)
 {
-	double w = 0.0, x = 0.0, y = 0.0, z = 0.0;
+	/* the weights' sum, the weighted midpoints and their squared lengths:
+	 * the centroid and the spread round it from the one pass */
+	double w = 0.0, m[3] = { 0.0, 0.0, 0.0 }, m2 = 0.0;
 	for (int v = 0; v < d->count; v++) {
 		if (d->joint[v] != joint)
 			continue;
 		const float *p = a + 3 * v, *q = b + 3 * v;
-		double dx = p[0] - q[0], dy = p[1] - q[1], dz = p[2] - q[2], e = dx * dx + dy * dy + dz * dz;
+		double e = 0.0, mid2 = 0.0, mid[3];
+		for (int k = 0; k < 3; k++) {
+			double dk = (double)p[k] - q[k];
+			mid[k] = 0.5 * ((double)p[k] + q[k]);
+			e += dk * dk;
+			mid2 += mid[k] * mid[k];
+		}
 		w += e;
-		x += e * 0.5 * (p[0] + q[0]);
-		y += e * 0.5 * (p[1] + q[1]);
-		z += e * 0.5 * (p[2] + q[2]);
+		for (int k = 0; k < 3; k++)
+			m[k] += e * mid[k];
+		m2 += e * mid2;
 	}
 	*found = w > 0.0;
-	return w > 0.0 ? vec3_make((float)(x / w), (float)(y / w), (float)(z / w)) : vec3_make(0.0f, 0.0f, 0.0f);
-}
-
-float skin_diff_reach(const skin_diff *d, const float *a, const float *b, int joint, vec3 at)
-{
-	double w = 0.0, r2 = 0.0;
-	for (int v = 0; v < d->count; v++) {
-		if (d->joint[v] != joint)
-			continue;
-		const float *p = a + 3 * v, *q = b + 3 * v;
-		double dx = p[0] - q[0], dy = p[1] - q[1], dz = p[2] - q[2], e = dx * dx + dy * dy + dz * dz;
-		double mx = 0.5 * (p[0] + q[0]) - at.x, my = 0.5 * (p[1] + q[1]) - at.y, mz = 0.5 * (p[2] + q[2]) - at.z;
-		w += e;
-		r2 += e * (mx * mx + my * my + mz * mz);
+	if (!*found) {
+		if (reach)
+			*reach = 0.0f;
+		return vec3_make(0.0f, 0.0f, 0.0f);
 	}
-	return w > 0.0 ? (float)sqrt(r2 / w) : 0.0f;
+	vec3 at = vec3_make((float)(m[0] / w), (float)(m[1] / w), (float)(m[2] / w));
+	if (reach) {
+		double spread = m2 / w - (m[0] * m[0] + m[1] * m[1] + m[2] * m[2]) / (w * w);
+		*reach = spread > 0.0 ? (float)sqrt(spread) : 0.0f;
+	}
+	return at;
 }
 
 int skin_diff_worst(const skin_diff *d)

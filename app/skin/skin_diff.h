@@ -38,20 +38,11 @@ float skin_diff_from_bind(skin_diff *d, const skel_pose *pose, const float *pos,
 
 /* Where joint's vertices of a (xyz triples) lie furthest from b's: their
  * midpoints' centroid weighted by the squared distance, so the close-up
- * centres on the change, not on the joint's head (a shoulder's differs at
- * the armpit). *found 0 when they do not differ at all. */
-vec3 skin_diff_focus(const skin_diff *d, const float *a, const float *b, int joint, int *found);
-
-/* How far round at the joint's vertices part: their distance from at,
- * root-mean-squared with the same weights as skin_diff_focus (0 when
- * they do not part). The close-up frames this much round its focus. */
-float skin_diff_reach(const skin_diff *d, const float *a, const float *b, int joint, vec3 at);
-
-/* How the skin of one joint's vertices has moved from its bones since
- * the bind pose (pos skinned in pose): the most any came nearer
- * (*thinner, >= 0) and went further (*thicker, >= 0), in units. */
-void skin_diff_joint_change(const skin_diff *d, const skel_pose *pose, const float *pos, int joint, float *thinner,
-			    float *thicker);
+ * centres on the change, not on the joint's head (a shoulder's differ at
+ * the armpit); into *reach (when not NULL) how far round it they part,
+ * their root-mean-squared distance from it with the same weights, which
+ * the close-up frames. *found 0 when they do not part at all. One pass. */
+vec3 skin_diff_focus(const skin_diff *d, const float *a, const float *b, int joint, int *found, float *reach);
 
 /* The joint of the largest score (-1 when every score is 0). */
 int skin_diff_worst(const skin_diff *d);

@@ -40,41 +40,10 @@ static int positions(skinplay *p, int need_every_frame)
 
 /* "TWISTED 178 DEG" or "BENT 150 DEG", whichever the joint did more; ""
  * when it hardly moved. */
-static float turned(const skel_joint_turn *t)
+/* What the visitor should look at, by what the joint did. */
+static const char *look_at(skel_turn_kind k)
 {
-	return t->bend > t->twist ? t->bend : t->twist;
-}
-
-/* The joint a visitor should be told of: the one whose vertices part, or
- * its parent joint when that one turned and it did not (the skin between
- * CMU's wrist and hand is nearest the hand's joint, the twist is the
- * wrist's). */
-static int turning_joint(skinplay *p, int joint, skel_joint_turn *t)
-{
-	int up = p->body.skel.bone[joint].parent;
-	*t = skel_joint_turned(&p->body.skel, &p->joints, &p->body.pose, &p->skin.pose, joint);
-	if (up <= 0 || turned(t) >= 30.0f)
-		return joint;
-	skel_joint_turn u = skel_joint_turned(&p->body.skel, &p->joints, &p->body.pose, &p->skin.pose, up);
-	if (turned(&u) < 30.0f)
-		return joint;
-	*t = u;
-	return up;
-}
-
-static const char *turn_note(skinplay *p, const skel_joint_turn *tp)
-{
-	skel_joint_turn t = *tp;
-	p->closeup_note[0] = '\0';
-	if (t.twist >= 30.0f && t.twist >= t.bend) {
-		snprintf(p->closeup_note, sizeof p->closeup_note, "TWISTED %d DEG", (int)lroundf(t.twist));
-		return "LOOK AT ITS WIDTH";
-	}
-	if (t.bend >= 30.0f) {
-		snprintf(p->closeup_note, sizeof p->closeup_note, "BENT %d DEG", (int)lroundf(t.bend));
-		return "LOOK AT THE BEND";
-	}
-	return "LOOK AT ITS SHAPE";
+	return k == SKEL_TURN_TWIST ? "LOOK AT ITS WIDTH" : k == SKEL_TURN_BEND ? "LOOK AT THE BEND" : "LOOK AT ITS SHAPE";
 }
 
 /* How far apart the two methods put the joint's skin, in millimetres:
@@ -92,14 +61,13 @@ static void fill_closeup(skinplay *p, render_frame *f, int joint)
 	if (joint < 0)
 		return;
 	int found;
-	vec3 at = skin_diff_focus(&p->diff, p->pos[0], p->pos[1], joint, &found);
+	vec3 at = skin_diff_focus(&p->diff, p->pos[0], p->pos[1], joint, &found, &c->span);
 	c->focus = found ? at : p->skin.pose.head[joint];
-	c->span = found ? skin_diff_reach(&p->diff, p->pos[0], p->pos[1], joint, at) : 0.0f;
 	skel_joint_turn t;
-	int named = turning_joint(p, joint, &t);
+	int deg, named = skel_joint_turning(&p->body.skel, &p->joints, &p->body.pose, &p->skin.pose, joint, &t);
 	c->title = skel_joint_name(&p->joints, named, p->closeup_title, sizeof p->closeup_title);
 	/* the visitor is told what to look at, the engineer by how much */
-	const char *look = turn_note(p, &t);
+	const char *look = look_at(skel_joint_turn_say(t, p->closeup_note, sizeof p->closeup_note, &deg));
 	c->note = p->closeup_note[0] ? p->closeup_note : NULL;
 	apart_note(p, joint, p->r.mm_per_unit);
 	for (int i = 0; i < p->panel_count; i++)

@@ -61,7 +61,8 @@ int bench_closeup(const skin_soa *soa, const skin_bones *bones, double kernels_n
 		uint64_t t0 = clock_now_ns();
 		skin_diff_between(&d, a, b, NULL);
 		uint64_t t1 = clock_now_ns();
-		skin_diff_focus(&d, a, b, skin_diff_worst(&d), &found);
+		float reach;
+		skin_diff_focus(&d, a, b, skin_diff_worst(&d), &found, &reach);
 		uint64_t t2 = clock_now_ns();
 		skin_diff_between(&d, a, b, dist);
 		render_diff_colours(dist, n, 25.4f, 0, rgba);

@@ -133,7 +133,8 @@ static void keep_closeup(report_closeup *out, const report_part *p)
 {
 	out->joint = p->joint;
 	snprintf(out->name, sizeof out->name, "%s", p->name);
-	snprintf(out->note, sizeof out->note, "%s", p->note);
+	out->turn = p->turn;
+	out->turn_deg = p->turn_deg;
 	out->in_units = p->in_units;
 	out->size_assumed = p->size_assumed;
 	out->apart = p->in_units ? p->apart : p->apart * p->mm_per_unit;

@@ -96,9 +96,13 @@ static void test_diff_scores_and_focus(void **state)
 	/* every vertex is nearest the joint at the origin (bone 0's and 1's heads coincide: the first) */
 	assert_int_equal(skin_diff_worst(&d), 0);
 	int found;
-	vec3 at = skin_diff_focus(&d, a, b, 0, &found);
+	float reach;
+	vec3 at = skin_diff_focus(&d, a, b, 0, &found, &reach);
 	assert_true(found);
 	assert_true(fabsf(at.x - (0.09f * 0.2f + 0.01f * 0.3f) / 0.1f) < 1e-4f);
+	/* the spread round it: the midpoints (0.2, 0.35) and (0.3, 0.45)
+	 * weighing 0.9 and 0.1, from (0.21, 0.36) */
+	assert_true(fabsf(reach - sqrtf(0.9f * 0.0002f + 0.1f * 0.0162f)) < 1e-4f);
 	/* the skin's distance from its bone: vertex 2 came 0.3 nearer */
 	float dist[8];
 	skin_diff_from_bind(&d, &bind, b, dist);

@@ -8,6 +8,7 @@
 #include "measure.h"
 #include "cli_skin.h"
 #include "skel.h"
+#include "skel_joints.h"
 #include "skin.h"
 #include "scene.h"
 
@@ -102,7 +103,8 @@ void report_find_joints(cli_skin *sk, const measure_state *meas, skin_algo algo,
 typedef struct report_closeup {
 	int joint;                  /* -1: they do not differ */
 	char name[48];              /* "LEFT ELBOW" (skel_joints.h) */
-	char note[32];              /* "BENT 95 DEG", "" */
+	skel_turn_kind turn;        /* how it turned (skel_joint_turn_say), and by how much */
+	int turn_deg;
 	double apart;               /* the largest distance there, in mm, or in */
 	int in_units;               /* the skeleton's units when 1 (a synthetic scene) */
 	int size_assumed;           /* mm at a size assumed: the units gave no human height */

@@ -116,12 +116,10 @@ static void describe(report_view *v, const cli_skin *sk, report_part *p)
 	p->name[0] = p->note[0] = p->effect[0] = '\0';
 	if (p->joint < 0)
 		return;
-	skel_joint_name(&v->joints, p->joint, p->name, sizeof p->name);
-	p->turned = skel_joint_turned(sk->skel, &v->joints, sk->bind, &sk->pose, p->joint);
-	if (p->turned.twist >= 30.0f && p->turned.twist >= p->turned.bend)
-		snprintf(p->note, sizeof p->note, "TWISTED %d DEG", (int)lroundf(p->turned.twist));
-	else if (p->turned.bend >= 30.0f)
-		snprintf(p->note, sizeof p->note, "BENT %d DEG", (int)lroundf(p->turned.bend));
+	skel_joint_turn t;
+	int named = skel_joint_turning(sk->skel, &v->joints, sk->bind, &sk->pose, p->joint, &t);
+	skel_joint_name(&v->joints, named, p->name, sizeof p->name);
+	p->turn = skel_joint_turn_say(t, p->note, sizeof p->note, &p->turn_deg);
 	if (p->in_units)
 		snprintf(p->effect, sizeof p->effect, "LBS %.2f FROM DQBS", (double)p->apart);
 	else
@@ -141,7 +139,7 @@ const report_part *report_view_pose(report_view *v, cli_skin *sk)
 	p->reach = 0.0f;
 	if (p->joint >= 0) {
 		int found;
-		vec3 at = skin_diff_focus(&v->diff, v->pos[0], v->pos[1], p->joint, &found);
+		vec3 at = skin_diff_focus(&v->diff, v->pos[0], v->pos[1], p->joint, &found, NULL);
 		p->focus = found ? at : sk->pose.head[p->joint];
 		p->reach = reach(v, p->joint, p->focus);
 	}

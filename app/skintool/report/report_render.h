@@ -27,8 +27,10 @@ typedef struct report_part {
 	float mm_per_unit;          /* the renderer's (render_set_units) */
 	int size_assumed;           /* the units gave no human size: the body taken as 1.75 m */
 	int in_units;               /* a synthetic scene: effect in its own units, not mm */
-	skel_joint_turn turned;     /* how the joint turned from the bind pose */
-	char name[48];              /* skel_joint_name: "LEFT ELBOW" */
+	skel_turn_kind turn;        /* how it (or its parent joint, named) turned from the bind pose */
+	int turn_deg;               /* by how much */
+	char name[48];              /* skel_joint_name: "LEFT ELBOW" (skel_joint_turning: the wrist's twist
+	                             * parts the skin nearest CMU's hand joint) */
 	char note[32];              /* "TWISTED 180 DEG", "BENT 95 DEG", "" */
 	char effect[48];            /* "LBS 23 MM FROM DQBS" */
 } report_part;
