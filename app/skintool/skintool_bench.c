@@ -220,7 +220,6 @@ static double round_seconds_per_pass(workers *w, bench *b)
  * algorithm more chances to be timed in the machine's fast phases. With
  * more than one thread, each round times the caller's thread alone too
  * (best[1]), so that the scaling is a ratio within the run. */
-static double ozz_rate(const char *ozz, long verts);
 
 static void best_seconds_per_pass(workers *w, bench *b, int rounds, double best[2][K_COUNT], const char *ozz,
 				  double *ozz_best)
@@ -241,7 +240,7 @@ static void best_seconds_per_pass(workers *w, bench *b, int rounds, double best[
 			}
 		}
 		if (ozz) /* the anchor takes its turn too: one round of its own */
-			*ozz_best = fmax(*ozz_best, ozz_rate(ozz, b->soa.count));
+			*ozz_best = fmax(*ozz_best, tool_anchor_ozz_rate(ozz, b->soa.count));
 		cli_progress_step(&pr, round + 1);
 	}
 	cli_progress_end(&pr, " of the 5 kernels");
@@ -444,23 +443,6 @@ static double compact_box(const skin_compact *c)
 	for (int i = 0; i < 3; i++)
 		side = fmax(side, (double)c->step[i] * 65535.0);
 	return side;
-}
-
-/* M vertices/s of one round of the ozz anchor on the same case (verts,
- * one thread), or 0 after saying why not. */
-static double ozz_rate(const char *ozz, long verts)
-{
-	char n[24], out[512];
-	snprintf(n, sizeof n, "%ld", verts);
-	char *const argv[] = { (char *)ozz, n, "1", NULL };
-	int rc = tool_anchor_run(argv, out, sizeof out);
-	const char *at = strstr(out, "ozz lbs P+N:");
-	double rate = 0;
-	if (rc != 0 || !at || sscanf(at, "ozz lbs P+N: %lf", &rate) != 1 || !(rate > 0)) {
-		fprintf(stderr, "skintool bench: %s: no rate in its output (exit %d)\n", ozz, rc);
-		return 0;
-	}
-	return rate;
 }
 
 /* The anchor against LBS and float DQBS on one thread. */

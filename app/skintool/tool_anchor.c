@@ -58,3 +58,20 @@ int tool_anchor_run(char *const argv[], char *out, size_t n)
 			return -1;
 	return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
 }
+
+/* M vertices/s of one round of the ozz anchor on the same case (verts,
+ * one thread), or 0 after saying why not. */
+double tool_anchor_ozz_rate(const char *ozz, long verts)
+{
+	char n[24], out[512];
+	snprintf(n, sizeof n, "%ld", verts);
+	char *const argv[] = { (char *)ozz, n, "1", NULL };
+	int rc = tool_anchor_run(argv, out, sizeof out);
+	const char *at = strstr(out, "ozz lbs P+N:");
+	double rate = 0;
+	if (rc != 0 || !at || sscanf(at, "ozz lbs P+N: %lf", &rate) != 1 || !(rate > 0)) {
+		fprintf(stderr, "skintool bench: %s: no rate in its output (exit %d)\n", ozz, rc);
+		return 0;
+	}
+	return rate;
+}

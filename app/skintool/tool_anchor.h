@@ -12,4 +12,8 @@
  * could not run or was killed (errno-style reason in out). */
 int tool_anchor_run(char *const argv[], char *out, size_t n);
 
+/* ozz-animation's LBS rate for verts vertices (its bench program ozz,
+ * one round), M vertices a second; 0 after saying why when it gives none. */
+double tool_anchor_ozz_rate(const char *ozz, long verts);
+
 #endif

@@ -7,6 +7,7 @@
 
 #include "cli_inputs.h"
 #include "report.h"
+#include "report_html.h"
 
 static const char *const algo_label[SKIN_ALGO_COUNT] = { "LBS", "DQBS", "DQBS fixed" };
 
@@ -44,31 +45,13 @@ static const char css[] =
 	"code{font-family:'SFMono-Regular',Consolas,'Liberation Mono',monospace;font-size:13px;"
 	"background:#f3f4f6;padding:1px 4px;border-radius:3px}\n";
 
-static void put_escaped(FILE *f, const char *s)
-{
-	for (; *s; s++) {
-		switch (*s) {
-		case '<': fputs("&lt;", f); break;
-		case '>': fputs("&gt;", f); break;
-		case '&': fputs("&amp;", f); break;
-		case '"': fputs("&quot;", f); break;
-		default: fputc(*s, f);
-		}
-	}
-}
-
-static const char *joint_name(const report *r, int joint)
-{
-	return joint >= 0 && joint < r->skel->count ? r->skel->bone[joint].name : "?";
-}
-
 /* "elbows (lradius)" */
 static void put_where(FILE *f, const report *r, const report_extreme *e)
 {
 	fputs(report_region_name(e->region), f);
 	if (e->joint >= 0) {
 		fputs(" (", f);
-		put_escaped(f, joint_name(r, e->joint));
+		report_html_escape(f, report_html_joint(r, e->joint));
 		fputc(')', f);
 	}
 }
@@ -84,16 +67,16 @@ static void head(FILE *f, const report *r)
 	fputs("<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
 	      "<meta name=\"viewport\" content=\"width=device-width,initial-scale=1\">\n<title>LBS vs DQBS: ",
 	      f);
-	put_escaped(f, r->clip);
+	report_html_escape(f, r->clip);
 	fprintf(f, "</title>\n<style>\n%s</style>\n</head>\n<body>\n<main>\n", css);
 	fputs("<h1>LBS vs DQBS on <code>", f);
-	put_escaped(f, r->clip);
+	report_html_escape(f, r->clip);
 	fputs("</code></h1>\n<p class=\"meta\">Skeleton <code>", f);
-	put_escaped(f, r->asf);
+	report_html_escape(f, r->asf);
 	fputs("</code>, motion <code>", f);
-	put_escaped(f, r->amc);
+	report_html_escape(f, r->amc);
 	fputs("</code>, mesh: ", f);
-	put_escaped(f, r->mesh_name);
+	report_html_escape(f, r->mesh_name);
 	fprintf(f, " (%d vertices, %d triangles), weights %s. %ld frames, each skinned with LBS, DQBS and "
 		"fixed-point DQBS and measured in %.2f s; the whole command, binding, renders, charts and this "
 		"page included, took %.2f s. Numbers per frame: <a href=\"metrics.csv\">metrics.csv</a>.</p>\n",
@@ -301,7 +284,7 @@ static void summary_table(FILE *f, const report *r)
 static void weights_row(FILE *f, const char *algo, const char *weights, const report_algo *s)
 {
 	fprintf(f, "<tr><td>%s</td><td>", algo);
-	put_escaped(f, weights);
+	report_html_escape(f, weights);
 	fprintf(f, "</td><td>%.2f%%<small>frame %ld</small></td><td>%.2f%%<small>frame %ld</small></td>"
 		"<td>%.4f<small>frame %ld</small></td><td>%.4f<small>frame %ld</small></td></tr>\n",
 		loss_pct(s), s->vol_min.frame, s->vol_max.value > 1.0 ? 100.0 * (s->vol_max.value - 1.0) : 0.0,
@@ -323,82 +306,10 @@ static void weights_table(FILE *f, const report *r)
 	fputs("</table>\n<p class=\"meta\">The same clip skinned with the artist's weights from the mesh file and "
 	      "with the weights skintool computes (the paper's rule), on the same skeleton in the same bind "
 	      "pose; the other run's frames are in <a href=\"", f);
-	put_escaped(f, r->other_csv);
+	report_html_escape(f, r->other_csv);
 	fputs("\">", f);
-	put_escaped(f, r->other_csv);
+	report_html_escape(f, r->other_csv);
 	fputs("</a>, in the columns of metrics.csv.</p>\n", f);
-}
-
-static void joint_row(FILE *f, const report *r, const report_joint *j)
-{
-	static const char *const axis[3] = { "rx", "ry", "rz" };
-	fputs("<tr><td><code>", f);
-	put_escaped(f, r->skel->bone[j->bone].name);
-	fputs("</code></td><td>", f);
-	for (int c = 0; c < j->count; c++)
-		fprintf(f, "%s%s %.1f", c ? ", " : "", axis[j->channel[c]], (double)j->deg[c]);
-	if (j->past >= 0)
-		fprintf(f, "</td><td class=\"past\">%s %.1f&deg; past (%.0f, %.0f)", axis[j->channel[j->past]],
-			(double)j->past_deg, (double)j->lo_deg, (double)j->hi_deg);
-	else
-		fputs("</td><td>within", f);
-	fprintf(f, "</td><td>%+.2f%%</td></tr>\n", 100.0 * j->share);
-}
-
-/* The listed joints of j outside their ASF limits. */
-static int joints_past(const report_joints *j)
-{
-	int n = 0;
-	for (int i = 0; i < j->count; i++)
-		n += j->joint[i].past >= 0;
-	return n;
-}
-
-static void joint_table(FILE *f, const report *r, int algo)
-{
-	static const char *const what[2] = { "LBS at its worst volume loss", "DQBS at its largest deviation" };
-	static const char *const id[2] = { "joints-lbs", "joints-dqbs" };
-	const report_joints *j = &r->vol_joints[algo];
-	if (j->frame < 0)
-		return;
-	fprintf(f, "<h3>%s: frame %ld, volume %+.2f%%</h3>\n", what[algo], j->frame, 100.0 * (j->volume - 1.0));
-	if (j->count == 0) {
-		fputs("<p>No single joint moves the volume by 0.05% or more.</p>\n", f);
-		return;
-	}
-	fprintf(f, "<table id=\"%s\" data-frame=\"%ld\">\n<tr><th>joint</th><th>rotation (degrees)</th><th>ASF limits</th>"
-		"<th>volume change from its bend</th></tr>\n", id[algo], j->frame);
-	for (int i = 0; i < j->count; i++)
-		joint_row(f, r, &j->joint[i]);
-	fputs("</table>\n", f);
-	int past = joints_past(j);
-	if (past > 0)
-		fprintf(f, "<p class=\"meta\">%d of these joints %s a channel outside the limits the "
-			"skeleton file gives it (compared modulo 360 degrees).</p>\n", past, past > 1 ? "have" : "has");
-}
-
-static void joints_section(FILE *f, const report *r)
-{
-	if (r->vol_joints[0].frame < 0 && r->vol_joints[1].frame < 0)
-		return;
-	fputs("<h2 id=\"joints\">Where the volume goes</h2>\n<p>Each worst frame skinned again with one "
-	      "joint at a time turned back to its bind-pose rotation: the difference is what that joint's "
-	      "bend does to the volume. DQBS turns each cross-section of a bending joint rigidly about the "
-	      "joint, so it keeps the volume only where the flesh around the joint is centred on it; "
-	      "elsewhere the volume changes in proportion to the bend angle, up one way and down the other", f);
-	if (r->balanced)
-		fputs(". These weights are volume-balanced: at each joint the cross-fade was moved so that "
-		      "this change is zero for small bends of the bind pose (skintool bind --report tables "
-		      "it), so what is left grows faster than the angle, or comes from joints the balancing "
-		      "left alone", f);
-	else if (strcmp(r->mesh_name, GENERATED_BODY) == 0)
-		fputs(" (on the generated body, the hips: a CMU hip joint lies in front of the pelvis; and the "
-		      "ankles, where the foot leaves the shin at a right angle)", f);
-	fputs(". LBS adds its collapse, which grows faster than the angle. The shares need not add up to "
-	      "the total: bends interact where their regions meet. Joints moving the volume by less than "
-	      "0.05% are left out.</p>\n", f);
-	joint_table(f, r, SKIN_LBS);
-	joint_table(f, r, SKIN_DQBS);
 }
 
 static void region_table(FILE *f, const report *r)
@@ -421,7 +332,7 @@ static void region_table(FILE *f, const report *r)
 				fprintf(f, "<td>%.4f<small>frame %ld", e->value, e->frame);
 				if (e->joint >= 0) {
 					fputs(", ", f);
-					put_escaped(f, joint_name(r, e->joint));
+					report_html_escape(f, report_html_joint(r, e->joint));
 				}
 				fputs("</small></td>", f);
 			}
@@ -429,86 +340,6 @@ static void region_table(FILE *f, const report *r)
 	}
 	fputs("</table>\n<p class=\"meta\">Smallest and largest radius ratio over the clip of the "
 	      "vertices in each region, with the frame and the joint nearest to the vertex.</p>\n", f);
-}
-
-/* "the left elbow, bent 95&deg;, 23 mm apart" from the close-up's texts
- * (HUD capitals: "LEFT ELBOW", "BENT 95 DEG"). */
-static void put_closeup(FILE *f, const report_closeup *c)
-{
-	char name[sizeof c->name];
-	size_t n = 0;
-	for (const char *p = c->name; *p && n + 1 < sizeof name; p++)
-		name[n++] = (char)(*p >= 'A' && *p <= 'Z' ? *p - 'A' + 'a' : *p);
-	name[n] = '\0';
-	fputs("<b class=\"closeup-joint\">", f);
-	put_escaped(f, name);
-	fputs("</b>", f);
-	int deg;
-	if (sscanf(c->note, "TWISTED %d", &deg) == 1)
-		fprintf(f, ", twisted %d&deg;", deg);
-	else if (sscanf(c->note, "BENT %d", &deg) == 1)
-		fprintf(f, ", bent %d&deg;", deg);
-	if (c->in_units)
-		fprintf(f, ", LBS %.2f from DQBS there", c->apart);
-	else
-		fprintf(f, ", LBS %.0f mm from DQBS there%s", c->apart, c->size_assumed ? " (the body taken as 1.75 m "
-			"tall)" : "");
-}
-
-static void stills(FILE *f, const report *r)
-{
-	fputs("<h2>Where LBS fails: the worst frames</h2>\n", f);
-	if (r->render_note) {
-		fputs("<p>No renders: ", f);
-		put_escaped(f, r->render_note);
-		fputs(".</p>\n", f);
-		return;
-	}
-	if (r->still_count == 0) {
-		fputs("<p>LBS is nowhere thinner than DQBS in this clip: nothing to show.</p>\n", f);
-		return;
-	}
-	fputs("<p>For each joint region in turn, the frame where a vertex of that region keeps the least of "
-	      "its radius with LBS compared with DQBS (see <i>LBS minus DQBS</i> below), the worst region "
-	      "first, at least half a second apart. LBS on the left, DQBS on the right, same pose and camera. "
-	      "In each frame the close-up shows the joint where the two methods part most, as the kiosk's "
-	      "compare view chooses it: per joint the largest distance between a vertex's LBS and DQBS "
-	      "positions, centred where they part (that distance squared weighs the vertices). First picture: "
-	      "the whole body, the close-up beside it, the ring on the body round what the close-up shows; "
-	      "second: each body from the close-up's side, near, the ring round every vertex of that joint "
-	      "that the two put at least half as far apart as the most; third: the difference view.</p>\n", f);
-	for (int i = 0; i < r->still_count; i++) {
-		const report_still *s = &r->still[i];
-		if (!s->rendered)
-			continue;
-		fprintf(f, "<h3>%d. Frame %ld &mdash; %s joint <code>", i + 1, s->frame,
-			report_region_name(s->rel.region));
-		put_escaped(f, joint_name(r, s->rel.joint));
-		fprintf(f, "</code></h3>\n<figure id=\"worst-%d\">\n<div class=\"pair\">\n", i + 1);
-		fprintf(f, "<a href=\"%s\"><img src=\"%s\" alt=\"frame %ld, whole body with the close-up, LBS left, DQBS "
-			"right\"></a>\n", s->full_png, s->full_png, s->frame);
-		fprintf(f, "<a href=\"%s\"><img src=\"%s\" alt=\"frame %ld, close-up where LBS and DQBS part\"></a>\n",
-			s->close_png, s->close_png, s->frame);
-		fprintf(f, "<a href=\"%s\"><img src=\"%s\" alt=\"frame %ld, difference view: how far LBS lies from "
-			"DQBS\"></a>\n", s->diff_png, s->diff_png, s->frame);
-		fprintf(f, "<p class=\"cell\">The difference view: each vertex of both bodies coloured by how far LBS "
-			"puts it from DQBS, dark blue for none through green to red for 40 mm or more (%s).</p>\n",
-			s->closeup.size_assumed ? "the skeleton's units give no human height: the body taken as 1.75 m "
-			"tall" : "at the body's real size");
-		fprintf(f, "</div>\n<figcaption>Frame %ld: at the still's vertex (%s, by <code>", s->frame,
-			report_region_name(s->rel.region));
-		put_escaped(f, joint_name(r, s->rel.joint));
-		fprintf(f, "</code>) a vertex keeps %.3f of its bind-pose radius with <span class=\"lbs\">LBS</span> "
-			"and %.3f with <span class=\"dqbs\">DQBS</span>. ", s->lbs_ratio, s->dqbs_ratio);
-		if (s->closeup.joint >= 0) {
-			fputs("Where the two part most in this frame, ringed and in the close-up: ", f);
-			put_closeup(f, &s->closeup);
-			fputs(".", f);
-		} else {
-			fputs("LBS and DQBS put every vertex in the same place in this frame: no close-up.", f);
-		}
-		fputs(" Top: whole body and close-up; bottom: the difference view.</figcaption>\n</figure>\n", f);
-	}
 }
 
 static void charts(FILE *f, const report *r)
@@ -521,42 +352,11 @@ static void charts(FILE *f, const report *r)
 	for (int i = 0; i < r->chart_count; i++) {
 		const report_chart *c = &r->chart[i];
 		fprintf(f, "<figure>\n<img src=\"%s\" alt=\"", c->png);
-		put_escaped(f, c->title);
+		report_html_escape(f, c->title);
 		fputs("\">\n<figcaption>", f);
-		put_escaped(f, c->caption);
+		report_html_escape(f, c->caption);
 		fputs("</figcaption>\n</figure>\n", f);
 	}
-}
-
-/* A scene at its strongest pose, with what to look at. */
-static void scene_picture(FILE *f, const report_scene_still *s)
-{
-	if (!s->rendered)
-		return;
-	const char *kind = scene_name(s->kind);
-	fprintf(f, "<figure id=\"scene-%s-picture\">\n<a href=\"%s\"><img src=\"%s\" alt=\"the %s scene at %d "
-		"degrees, LBS left, DQBS right\"></a>\n<figcaption>", kind, s->png, s->png, kind, s->angle_deg);
-	if (s->kind == SCENE_TWIST)
-		fprintf(f, "Twisted %d&deg;, the largest twist of the table. Look at the joint: "
-			"<span class=\"lbs\">LBS</span> (left) pinches the cylinder to %s at the joint ring (radius "
-			"ratio %.3f), the candy wrapper; <span class=\"dqbs\">DQBS</span> (right) keeps the cylinder "
-			"whole (%.3f): it turns each ring of the skin rigidly about the bone instead of shrinking it. ",
-			s->angle_deg, s->lbs_rmin < 0.01 ? "a point" : "a waist", s->lbs_rmin, s->dqbs_rmin);
-	else
-		fprintf(f, "Bent %d&deg;, the deepest bend of the table short of 180&deg; (there the second bone "
-			"lies inside the first, both bodies folded onto themselves). Look at the inside of the bend: "
-			"<span class=\"lbs\">LBS</span> (left) flattens it (smallest radius ratio %.3f), its elbow a "
-			"sharp crease; <span class=\"dqbs\">DQBS</span> (right) keeps more of it (%.3f) and bulges on "
-			"the outside instead (up to %.3f), a round knuckle. ",
-			s->angle_deg, s->lbs_rmin, s->dqbs_rmin, s->dqbs_rmax);
-	if (s->closeup.joint >= 0) {
-		fputs("The close-up beside each body (the same camera in both) is the kiosk's: the joint where "
-		      "the two part most, ", f);
-		put_closeup(f, &s->closeup);
-		fputs(" (the cylinder's radius is 0.2; <i>lower</i> is the scene's second bone, the joint at its "
-		      "head); the ring on the body marks what it shows.", f);
-	}
-	fputs("</figcaption>\n</figure>\n", f);
 }
 
 static void scenes(FILE *f, const report *r)
@@ -579,7 +379,7 @@ static void scenes(FILE *f, const report *r)
 			s->rmin[1], s->rmin[2], s->vol[0], s->vol[1], s->vol[2]);
 	}
 	fputs("</table>\n", f);
-	scene_picture(f, &r->scene_still[SCENE_TWIST]);
+	report_html_scene_picture(f, &r->scene_still[SCENE_TWIST]);
 	fputs("<table id=\"scene-bend\">\n<tr><th>bend</th><th>LBS min radius</th>"
 	      "<th>DQBS min radius</th><th>fixed min radius</th><th>LBS max radius</th>"
 	      "<th>DQBS max radius</th><th>LBS volume</th><th>DQBS volume</th><th>fixed volume</th></tr>\n", f);
@@ -594,7 +394,7 @@ static void scenes(FILE *f, const report *r)
 	fputs("</table>\n<p class=\"meta\">A bend has no closed form for the blended radius: the inside of "
 	      "the bend collapses with LBS and, less, with DQBS, which bulges on the outside instead "
 	      "(max radius &gt; 1) and keeps the volume.</p>\n", f);
-	scene_picture(f, &r->scene_still[SCENE_BEND]);
+	report_html_scene_picture(f, &r->scene_still[SCENE_BEND]);
 }
 
 static void definitions(FILE *f, const report *r)
@@ -643,8 +443,8 @@ int report_write_html(const report *r, const char *dir)
 	verdicts(f, r);
 	summary_table(f, r);
 	weights_table(f, r);
-	joints_section(f, r);
-	stills(f, r);
+	report_html_joints(f, r);
+	report_html_stills(f, r);
 	region_volume_table(f, r);
 	region_table(f, r);
 	charts(f, r);
