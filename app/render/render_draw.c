@@ -15,6 +15,46 @@ static void draw_floor(renderer *r, const mat4 *vp, float cx, float cz, float e,
 	render_flat(r, vp, floor_rgba, GL_TRIANGLES, q, 6, 1.0f);
 }
 
+/* p (xyz) in clip space */
+static void to_clip(const mat4 *vp, const float *p, float c[4])
+{
+	const float *m = vp->m;
+	for (int k = 0; k < 4; k++)
+		c[k] = m[k] * p[0] + m[4 + k] * p[1] + m[8 + k] * p[2] + m[12 + k];
+}
+
+/* Cuts the line a-b (xyz each) to the view (Liang-Barsky in clip space);
+ * 0 when none of it is in view. Mesa 24's llvmpipe (Debian 13) draws a
+ * floor line that runs far out of the view, as the close-ups' do, as a fan
+ * of wide triangles across the picture. */
+static int keep_in_view(const mat4 *vp, float *a, float *b)
+{
+	float ca[4], cb[4], t0 = 0.0f, t1 = 1.0f;
+	to_clip(vp, a, ca);
+	to_clip(vp, b, cb);
+	for (int k = 0; k < 6; k++) {
+		/* the distance inside plane k: w - x, w + x, w - y, ... */
+		float s = k & 1 ? 1.0f : -1.0f;
+		float da = ca[3] + s * ca[k / 2], db = cb[3] + s * cb[k / 2];
+		if (da < 0 && db < 0)
+			return 0;
+		if (da < 0)
+			t0 = fmaxf(t0, da / (da - db));
+		else if (db < 0)
+			t1 = fminf(t1, da / (da - db));
+	}
+	if (t0 >= t1)
+		return 0;
+	float from[3], to[3];
+	for (int k = 0; k < 3; k++) {
+		from[k] = a[k] + t0 * (b[k] - a[k]);
+		to[k] = a[k] + t1 * (b[k] - a[k]);
+	}
+	memcpy(a, from, sizeof from);
+	memcpy(b, to, sizeof to);
+	return 1;
+}
+
 void render_grid_and_shadow(renderer *r, const mat4 *vp, vec3 root)
 {
 	const gl_api *gl = r->gl;
@@ -26,8 +66,11 @@ void render_grid_and_shadow(renderer *r, const mat4 *vp, vec3 root)
 	for (int i = -half; i <= half; i++) {
 		float o = (float)i * step, e = (float)half * step;
 		float l[12] = { cx + o, y, cz - e, cx + o, y, cz + e, cx - e, y, cz + o, cx + e, y, cz + o };
-		memcpy(r->misc + n, l, sizeof l);
-		n += 12;
+		for (int k = 0; k < 12; k += 6)
+			if (keep_in_view(vp, l + k, l + k + 3)) {
+				memcpy(r->misc + n, l + k, 6 * sizeof(float));
+				n += 6;
+			}
 	}
 	static const float grid_rgba[4] = { 0.40f, 0.43f, 0.49f, 1.0f };
 	render_flat(r, vp, grid_rgba, GL_LINES, r->misc, n / 3, 1.0f);
