@@ -1,22 +1,71 @@
 #!/bin/sh
-# Runs every cmocka test program given, shows its output, and ends with one
+# Runs the cmocka test programs given, several at once, and ends with one
 # summary in cmocka's own format plus a plain "N passed, N failed" line.
+#
+#   run_tests.sh BUILD_DIR PROGRAM...
+#
+# SKP_TEST_JOBS programs run at a time (default: the machine's processors).
+# The slowest programs start first, by the times of the last run (kept in
+# BUILD_DIR/tests/.times), so that the run ends when its longest program
+# does. Each program's output is shown whole when it ends, followed by its
+# time; the five slowest are listed at the end.
+# (run_tests.sh --one PROGRAM: one program, for the parallel runs below)
+if [ "$1" != --one ]; then
 out=$1; shift
 export SKP_BUILD="$out"
 export SKP_SHARED="${SKP_SHARED:-../shared}"
 # Mesa's OSMesa keeps its framebuffer for ever: suppress that leak only
 export LSAN_OPTIONS="suppressions=$(pwd)/tests/lsan.supp${LSAN_OPTIONS:+:$LSAN_OPTIONS}"
 [ -d "$SKP_SHARED/data" ] || echo "note: $SKP_SHARED/data not found: tests that need the shared data report themselves skipped"
-run=0; passed=0; failed=0; skipped=0; failed_progs=""
-log=$(mktemp); trap 'rm -f "$log"' EXIT
-for t in "$@"; do
-	# cross boards (tests/cross_run.sh): skipped programs, and the emulator
-	case " $SKP_TEST_SKIP " in *" $(basename "$t") "*)
-		echo "[ SKIPPED  ] $(basename "$t"): $SKP_TEST_SKIP_WHY"
-		skipped=$((skipped + 1)); continue ;;
+jobs=${SKP_TEST_JOBS:-$(nproc 2>/dev/null || echo 1)}
+times=$out/tests/.times
+logs=$(mktemp -d); trap 'rm -rf "$logs"' EXIT
+start=$(date +%s)
+fi
+
+# one program: its log, exit status and wall time in $logs/NAME.*
+run_one() {
+	t=$1 name=$(basename "$1")
+	case " $SKP_TEST_SKIP " in *" $name "*)
+		echo "[ SKIPPED  ] $name: $SKP_TEST_SKIP_WHY" > "$logs/$name.log"
+		echo skip > "$logs/$name.rc"
+		flock "$logs/lock" cat "$logs/$name.log"
+		return ;;
 	esac
-	$SKP_TEST_RUNNER "$t" >"$log" 2>&1; rc=$?
-	cat "$log"
+	s=$(date +%s.%N)
+	$SKP_TEST_RUNNER "$t" > "$logs/$name.log" 2>&1
+	echo $? > "$logs/$name.rc"
+	awk -v s="$s" -v e="$(date +%s.%N)" 'BEGIN { printf "%.1f\n", e - s }' > "$logs/$name.time"
+	flock "$logs/lock" sh -c 'cat "$1"; echo "[ TIME     ] $2: $3 s"' sh "$logs/$name.log" "$name" "$(cat "$logs/$name.time")"
+}
+
+if [ "$1" = --one ]; then
+	run_one "$2"
+	exit 0
+fi
+
+# slowest first (unknown ones first of all: they may be slow)
+order() {
+	for t in "$@"; do
+		s=$(awk -v n="$(basename "$t")" '$1 == n { s = $2 } END { print (s == "" ? 1e9 : s) }' "$times" 2>/dev/null)
+		echo "${s:-1e9} $t"
+	done | sort -g -r -k1,1 | cut -d' ' -f2-
+}
+
+if [ "$jobs" -le 1 ]; then
+	for t in "$@"; do run_one "$t"; done
+else
+	export logs SKP_TEST_RUNNER SKP_TEST_SKIP SKP_TEST_SKIP_WHY
+	order "$@" | xargs -P "$jobs" -n 1 sh "$0" --one
+fi
+
+run=0; passed=0; failed=0; skipped=0; failed_progs=""
+mkdir -p "$out/tests"; : > "$times.new"
+for t in "$@"; do
+	name=$(basename "$t") log=$logs/$name.log
+	rc=$(cat "$logs/$name.rc" 2>/dev/null || echo 1)
+	if [ "$rc" = skip ]; then skipped=$((skipped + 1)); continue; fi
+	echo "$name $(cat "$logs/$name.time" 2>/dev/null || echo 0)" >> "$times.new"
 	# cmocka 1.1.7 (Debian 13) puts the group's name before the count:
 	# "[==========] tests: 4 test(s) run."; 1.1.5 (Debian 12) does not
 	g='\([^ ]*: \)\{0,1\}'
@@ -28,15 +77,25 @@ for t in "$@"; do
 	failed=$((failed + ${f:-0})); skipped=$((skipped + ${s:-0}))
 	if [ "$rc" -ne 0 ] || [ -z "$r" ]; then
 		[ -z "$f" ] && failed=$((failed + 1))
-		failed_progs="$failed_progs $(basename "$t")"
+		failed_progs="$failed_progs $name"
 	fi
 done
+# the times of programs not run this time are kept
+awk 'NR == FNR { run[$1] = 1; print; next } !($1 in run)' "$times.new" "$times" 2>/dev/null > "$times.all" &&
+	mv "$times.all" "$times" || mv "$times.new" "$times"
+slowest=$(sort -g -r -k2,2 "$times.new" | head -n 5 | awk '{ printf "%s%s %s s", (NR > 1 ? ", " : ""), $1, $2 }')
+rm -f "$times.new"
 echo
-echo "[==========] $run test(s) run from $# program(s)."
+echo "[==========] $run test(s) run from $# program(s), $jobs at a time, in $(($(date +%s) - start)) s."
+echo "slowest: $slowest"
 echo "[  PASSED  ] $passed test(s)."
 [ "$skipped" -gt 0 ] && echo "[  SKIPPED ] $skipped test(s)."
 if [ -n "$failed_progs" ]; then
 	echo "[  FAILED  ] $failed test(s), in:$failed_progs"
+	for name in $failed_progs; do
+		echo "== $name (failed): the end of its output"
+		tail -n 15 "$logs/$name.log"
+	done
 	echo "tests: $passed passed, $failed failed, $skipped skipped"
 	exit 1
 fi

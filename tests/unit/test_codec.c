@@ -1,8 +1,6 @@
-/* The compressed clip codec (app/codec, app/encode) on real motion capture
- * (../shared/data) and on made-up and broken input:
- * - every shared clip encodes within 0.01 cm of ACL's shell error (3 cm
- *   points) on every frame, as decoded here segment by segment (the sizes
- *   and ratios are printed);
+/* The compressed clip codec (app/codec, app/encode) on a few real clips
+ * (../shared/data) and on made-up and broken input (every shared clip:
+ * tests/integration/test_codec_corpus.c):
  * - a segment decoded on its own (a seek) gives the frames decoding from
  *   the clip's start gives;
  * - still and single-frame clips, every cut of a segment and bit flips:
@@ -14,133 +12,17 @@
 #include <cmocka.h>
 
 #include <math.h>
-#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
-#include "cli_common.h"
 #include "codec_decode.h"
-#include "encode.h"
-#include "encode_error.h"
-#include "test_clips.h"
-#include "test_paths.h"
+#include "test_codec_clip.h"
 
-#define BUDGET_CM 0.01
-#define SHELL_CM 3.0
-
-typedef struct clip {
-	skel s;
-	float *frames;
-	long n;
-	double cm;   /* cm a skeleton unit */
-} clip;
+typedef codec_test_clip clip;
 
 static clip clip_of;
 static codec_decoder dec;
 static float values[SKP_MAX_DOF];
-
-/* cm per unit of the shared skeletons: CMU and HDM05 inches, endorphin cm */
-static double unit_cm(const char *asf)
-{
-	return strstr(asf, "endorphin") ? 1.0 : 2.54;
-}
-
-static int load(const char *asf, const char *amc, clip *c)
-{
-	const char *a = test_data_path(asf);
-	if (!a)
-		return -1;
-	static cli_motion m;
-	static amc_frame f;
-	assert_int_equal(cli_load_skel(a, &c->s), 0);
-	assert_int_equal(cli_motion_open(&m, test_data_path(amc), &c->s), 0);
-	long cap = 1024;
-	c->frames = malloc(sizeof(float) * (size_t)cap * (size_t)c->s.dof_count);
-	c->n = 0;
-	while (cli_motion_next(&m, &f) == 1) {
-		if (c->n == cap)
-			c->frames = realloc(c->frames, sizeof(float) * (size_t)(cap *= 2) * (size_t)c->s.dof_count);
-		memcpy(c->frames + (size_t)c->n * (size_t)c->s.dof_count, f.value, sizeof(float) * (size_t)c->s.dof_count);
-		c->n++;
-	}
-	cli_motion_close(&m);
-	c->cm = unit_cm(asf);
-	return 0;
-}
-
-static void encode(const clip *c, encode_result *r)
-{
-	encode_opts o = { BUDGET_CM * 0.999 / c->cm, SHELL_CM / c->cm, 0, NULL, NULL };
-	skp_error err;
-	skp_status rc = encode_clip(&c->s, c->frames, c->n, &o, r, &err);
-	if (rc)
-		fail_msg("encode: %s", err.msg);
-}
-
-static const uint8_t *segment(const encode_result *r, uint32_t s, uint32_t *n)
-{
-	*n = r->offsets[s + 1] - r->offsets[s];
-	return r->bytes + r->offsets[s];
-}
-
-/* Decodes every frame, checking each against the source (and keeping the
- * values in keep, when given); the worst error in cm. */
-static double decode_all(const clip *c, const encode_result *r, float *keep)
-{
-	static skel_pose ref, got;
-	skp_error err;
-	double worst = 0;
-	long f = 0;
-	for (uint32_t s = 0; s < r->segments; s++) {
-		uint32_t n;
-		const uint8_t *b = segment(r, s, &n);
-		assert_int_equal(codec_begin(&dec, &r->clip, s, b, n, &err), SKP_OK);
-		int rc;
-		while ((rc = codec_next(&dec, values, &err)) == 1) {
-			if (keep)
-				memcpy(keep + (size_t)f * (size_t)c->s.dof_count, values, sizeof(float) * (size_t)c->s.dof_count);
-			fk_pose(&c->s, c->frames + (size_t)f * (size_t)c->s.dof_count, &ref);
-			fk_pose(&c->s, values, &got);
-			worst = fmax(worst, encode_shell_error(&c->s, &ref, &got, SHELL_CM / c->cm) * c->cm);
-			f++;
-		}
-		assert_int_equal(rc, 0);
-	}
-	assert_int_equal(f, c->n);
-	return worst;
-}
-
-static void test_every_shared_clip(void **state)
-{
-	(void)state;
-	if (!test_data_path("mocap"))
-		skip();
-#ifdef __SANITIZE_ADDRESS__
-	const int slow = 1;
-#else
-	const int slow = test_emulator() != NULL;
-#endif
-	for (int i = 0; i < test_clip_count; i++) {
-		/* under the sanitizers or an emulator (10x slower and more) the
-		 * short clips only: the same code, and make test natively checks
-		 * every clip */
-		if (slow && test_clips[i].frames > 400)
-			continue;
-		clip *c = &clip_of;
-		encode_result r;
-		assert_int_equal(load(test_clips[i].asf, test_clips[i].amc, c), 0);
-		encode(c, &r);
-		double worst = decode_all(c, &r, NULL);
-		double raw = 40.0 * c->s.count * (double)c->n;
-		print_message("%s: %ld frames, %.1f bytes a frame, %.1f:1, worst %.4f cm (encoder: %.4f, p99 %.4f)\n",
-			      test_clips[i].amc, c->n, (double)r.nbytes / (double)c->n, raw / (double)r.nbytes, worst,
-			      r.worst * c->cm, r.p99 * c->cm);
-		assert_true(worst <= BUDGET_CM);
-		assert_true(fabs(worst - r.worst * c->cm) < 1e-9);
-		encode_result_free(&r);
-		free(c->frames);
-	}
-}
 
 /* Segment by segment from the start, and each segment on its own after
  * another one was decoded: the same values, bit for bit. */
@@ -148,17 +30,17 @@ static void test_seek_lands_on_the_same_frame(void **state)
 {
 	(void)state;
 	clip *c = &clip_of;
-	if (load("mocap/cmu/kick.asf", "mocap/cmu/kick.amc", c))
+	if (codec_test_load("mocap/cmu/kick.asf", "mocap/cmu/kick.amc", c))
 		skip();
 	encode_result r;
 	skp_error err;
-	encode(c, &r);
+	codec_test_encode(c, &r);
 	assert_true(r.segments >= 3);
 	float *all = malloc(sizeof(float) * (size_t)c->n * (size_t)c->s.dof_count);
-	decode_all(c, &r, all);
+	codec_test_decode_all(c, &r, all);
 	for (uint32_t k = 0; k < r.segments; k++) {
 		uint32_t s = (k * 7 + 2) % r.segments, n;
-		const uint8_t *b = segment(&r, s, &n);
+		const uint8_t *b = codec_test_segment(&r, s, &n);
 		assert_int_equal(codec_begin(&dec, &r.clip, s, b, n, &err), SKP_OK);
 		for (long i = (long)s * r.clip.segment_frames; codec_next(&dec, values, &err) == 1; i++)
 			assert_memory_equal(values, all + (size_t)i * (size_t)c->s.dof_count,
@@ -175,22 +57,22 @@ static void test_still_and_single_frame(void **state)
 {
 	(void)state;
 	clip *c = &clip_of;
-	if (load("mocap/cmu/02.asf", "mocap/cmu/02_01.amc", c))
+	if (codec_test_load("mocap/cmu/02.asf", "mocap/cmu/02_01.amc", c))
 		skip();
 	for (long f = 1; f < 100; f++)
 		memcpy(c->frames + (size_t)f * (size_t)c->s.dof_count, c->frames, sizeof(float) * (size_t)c->s.dof_count);
 	c->n = 100;
 	encode_result r;
-	encode(c, &r);
+	codec_test_encode(c, &r);
 	for (int t = 0; t < r.clip.tracks; t++)
 		assert_int_equal(r.clip.track[t].bits, 0);
 	assert_true(r.nbytes <= 1);
-	assert_true(decode_all(c, &r, NULL) <= BUDGET_CM);
+	assert_true(codec_test_decode_all(c, &r, NULL) <= CODEC_TEST_BUDGET_CM);
 	encode_result_free(&r);
 	c->n = 1;
-	encode(c, &r);
+	codec_test_encode(c, &r);
 	assert_int_equal(r.segments, 1);
-	assert_true(decode_all(c, &r, NULL) <= BUDGET_CM);
+	assert_true(codec_test_decode_all(c, &r, NULL) <= CODEC_TEST_BUDGET_CM);
 	encode_result_free(&r);
 	free(c->frames);
 }
@@ -222,12 +104,12 @@ static void test_damaged_segments(void **state)
 {
 	(void)state;
 	clip *c = &clip_of;
-	if (load("mocap/cmu/09.asf", "mocap/cmu/09_06.amc", c))
+	if (codec_test_load("mocap/cmu/09.asf", "mocap/cmu/09_06.amc", c))
 		skip();
 	encode_result r;
-	encode(c, &r);
+	codec_test_encode(c, &r);
 	uint32_t n;
-	const uint8_t *b = segment(&r, 0, &n);
+	const uint8_t *b = codec_test_segment(&r, 0, &n);
 	uint8_t *copy = malloc(n);
 	int errors = 0;
 	for (uint32_t cut = 0; cut < n; cut++) {
@@ -286,7 +168,6 @@ int main(void)
 		cmocka_unit_test(test_still_and_single_frame),
 		cmocka_unit_test(test_seek_lands_on_the_same_frame),
 		cmocka_unit_test(test_damaged_segments),
-		cmocka_unit_test(test_every_shared_clip), /* last: the longest */
 	};
 	return cmocka_run_group_tests_name("codec", tests, NULL, NULL);
 }
