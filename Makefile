@@ -12,9 +12,9 @@ include board/$(BOARD)/board.mk
 include board/deps.mk
 
 # Microcontroller boards (cortex-m4, cortex-m0) build the portable core and
-# a semihosted test instead of the Linux programs: tests/embedded/mcu.mk.
+# a semihosted test instead of the Linux programs: board/mcu.mk.
 ifeq ($(BOARD_KIND),mcu)
-include tests/embedded/mcu.mk
+include board/mcu.mk
 else
 
 include app/sources.mk
@@ -273,13 +273,14 @@ check-layers: $(APP_OBJ) $(PLAT_OBJ)
 	@sh tests/check_file_cycles.sh $(NM) $(foreach m,$(APP_MODULES) platform,"$(m)=$(OBJ_$(m))")
 
 # skinplay, the device program, links none of the tool's code: no symbol
-# the analysis library or the report defines may be in it.
+# the importer, the analysis library, the clip encoder or the report
+# defines may be in it.
 REPORT_OBJ := $(filter $(OUT)/app/skintool/report/%,$(OBJ_skintool))
-check-lean: $(SKINPLAY) $(LIB_analysis) $(LIB_import) $(REPORT_OBJ)
-	@$(NM) --defined-only $(LIB_analysis) $(LIB_import) $(REPORT_OBJ) | awk '$$2 ~ /^[TDBR]$$/ { print $$3 }' | sort -u > $(OUT)/tool-symbols.txt
+check-lean: $(SKINPLAY) $(LIB_analysis) $(LIB_import) $(LIB_encode) $(REPORT_OBJ)
+	@$(NM) --defined-only $(LIB_analysis) $(LIB_import) $(LIB_encode) $(REPORT_OBJ) | awk '$$2 ~ /^[TDBR]$$/ { print $$3 }' | sort -u > $(OUT)/tool-symbols.txt
 	@leaked=$$($(NM) --defined-only $(SKINPLAY) | awk '{ print $$3 }' | grep -xFf $(OUT)/tool-symbols.txt | tr '\n' ' '); \
 	if [ -n "$$leaked" ]; then echo "check-lean: skinplay links tool-only code: $$leaked"; exit 1; fi; \
-	echo "check-lean: skinplay links none of the $$(wc -l < $(OUT)/tool-symbols.txt) symbols of the importer, analysis and report code"; \
+	echo "check-lean: skinplay links none of the $$(wc -l < $(OUT)/tool-symbols.txt) symbols of the importer, analysis, encoder and report code"; \
 	if $(NM) -D --undefined-only $(SKINPLAY) | grep -q ' ai[A-Z]'; then echo "check-lean: skinplay links libassimp"; exit 1; fi
 
 # Every test: the build's checks, then both tiers, several programs at a

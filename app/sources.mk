@@ -1,5 +1,5 @@
 # Every module of the build and the layers between them, in one place: the
-# Makefile, tests/embedded/mcu.mk and tests/hardening.mk include it, and
+# Makefile, board/mcu.mk and tests/hardening.mk include it, and
 # tests/lint/lint.sh and tests/check_layers.sh read it through them. A
 # module's files compile with -I for its own folders and for the folders of
 # the modules in its DEPS_ list only, so an include of a module above it (or
@@ -68,6 +68,13 @@ DEPS_tests    := import cli analysis encode $(CORE_MODULES) platform
 # The modules top down: the order of the archives on a link line (each
 # archive is searched once, so a module's calls resolve only downwards).
 LAYER_ORDER   := import analysis encode cli platform play kiosk render image bind skin mesh motion codec math base
+# ... checked against the DEPS_ lists whenever make reads this file: every
+# module but the programs is in it, after each module that depends on it.
+layer_after = $(if $(2),$(if $(filter $(1),$(firstword $(2))),$(wordlist 2,999,$(2)),$(call layer_after,$(1),$(wordlist 2,999,$(2)))))
+$(foreach m,$(filter-out $(PROGRAM_MODULES),$(APP_MODULES)) platform,$(if $(filter $(m),$(LAYER_ORDER)),,\
+  $(error app/sources.mk: LAYER_ORDER lacks $(m))))
+$(foreach m,$(LAYER_ORDER),$(foreach d,$(DEPS_$(m)),$(if $(filter $(d),$(call layer_after,$(m),$(LAYER_ORDER))),,\
+  $(error app/sources.mk: LAYER_ORDER has $(d) before $(m), which depends on it (DEPS_$(m))))))
 
 # A module's private folders: on its own include path, nobody else's.
 PRIVATE_skin     := kernels

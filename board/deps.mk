@@ -1,5 +1,5 @@
 # `make deps`, and the check that stops any build before it: included by the
-# Makefile and tests/embedded/mcu.mk. board.mk lists DEB_PKGS, every Debian
+# Makefile and board/mcu.mk. board.mk lists DEB_PKGS, every Debian
 # package the board's build, tests and packaging need (the compiler too),
 # NAME:ARCH for another architecture's libraries; DEPS_PREPARE runs before
 # apt-get (a cross board adds its architecture there).

@@ -80,10 +80,10 @@ for t in "$@"; do
 		failed_progs="$failed_progs $name"
 	fi
 done
+slowest=$(sort -g -r -k2,2 "$times.new" | head -n 5 | awk '{ printf "%s%s %s s", (NR > 1 ? ", " : ""), $1, $2 }')
 # the times of programs not run this time are kept
 awk 'NR == FNR { run[$1] = 1; print; next } !($1 in run)' "$times.new" "$times" 2>/dev/null > "$times.all" &&
 	mv "$times.all" "$times" || mv "$times.new" "$times"
-slowest=$(sort -g -r -k2,2 "$times.new" | head -n 5 | awk '{ printf "%s%s %s s", (NR > 1 ? ", " : ""), $1, $2 }')
 rm -f "$times.new"
 echo
 echo "[==========] $run test(s) run from $# program(s), $jobs at a time, in $(($(date +%s) - start)) s."

@@ -13,7 +13,7 @@ NM            := arm-none-eabi-nm
 AR            := arm-none-eabi-ar
 MCU_CPU       := -mcpu=cortex-m0 -mthumb -mfloat-abi=soft
 BOARD_CFLAGS  := $(MCU_CPU) -O2 -g -ffreestanding -ffunction-sections -fdata-sections -fstack-usage
-# app/math and app/skin (the skinning kernels): tests/embedded/mcu.mk
+# app/math and app/skin (the skinning kernels): board/mcu.mk
 MCU_KERNEL_OPT := -O3
 SIMD          := scalar
 MCU_FULL      := 0

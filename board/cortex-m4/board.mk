@@ -2,7 +2,7 @@
 # QEMU's mps2-an386. Builds the portable core (no display, no GL) with
 # Debian's bare-metal GCC and newlib (only memcpy/memset/strcmp and libm),
 # and the semihosted skinning test tests/embedded/ (rules in
-# tests/embedded/mcu.mk): `make BOARD=cortex-m4 [test|size]`.
+# board/mcu.mk): `make BOARD=cortex-m4 [test|size]`.
 BOARD_DESC    := Cortex-M4F, mps2-an386 under qemu-system-arm
 BOARD_KIND    := mcu
 CC            := arm-none-eabi-gcc
@@ -13,7 +13,7 @@ MCU_CPU       := -mcpu=cortex-m4 -mthumb -mfloat-abi=hard -mfpu=fpv4-sp-d16
 # -ffreestanding: no hosted libc assumed (newlib links only what the core
 # calls by name); -fstack-usage feeds `make size`.
 BOARD_CFLAGS  := $(MCU_CPU) -O2 -g -ffreestanding -ffunction-sections -fdata-sections -fstack-usage
-# app/math and app/skin (the skinning kernels): tests/embedded/mcu.mk
+# app/math and app/skin (the skinning kernels): board/mcu.mk
 MCU_KERNEL_OPT := -O3
 SIMD          := scalar
 # 1: the test also runs the float pipeline (parse, FK, bind) on the target.

@@ -19,7 +19,7 @@ DEB_LIBDIR      = $(if $(shell dpkg --compare-versions "$$(dpkg-query -W -f='$${
 
 .PHONY: deb deb-tree
 deb:
-	@$(MAKE) --no-print-directory BUILD=$(DEB_DIR)/build SKP_DEB_OUT=$(abspath $(BUILD)) SKP_DEB_DIR=$(abspath $(DEB_DIR)) \
+	@$(SUB_MAKE) BUILD=$(DEB_DIR)/build SKP_DEB_OUT=$(abspath $(BUILD)) SKP_DEB_DIR=$(abspath $(DEB_DIR)) \
 	  EXTRA_CFLAGS="$(call DEB_FLAGS,CFLAGS) $(call DEB_FLAGS,CPPFLAGS)" EXTRA_LDFLAGS="$(call DEB_FLAGS,LDFLAGS)" deb-tree
 	@if command -v lintian >/dev/null 2>&1; then \
 	  echo "deb: lintian $(notdir $(DEB_FILES))"; lintian --fail-on error $(DEB_FILES) && echo "deb: lintian: no errors"; \

@@ -8,7 +8,7 @@ board=${1:-host}; extra=$2; inc=$3; sources=$4
 fail=0
 
 if command -v cppcheck >/dev/null 2>&1; then
-	out=$(cppcheck -q --enable=warning,portability,performance --std=c11 --inline-suppr \
+	out=$(cppcheck -q -j "$(nproc 2>/dev/null || echo 1)" --enable=warning,portability,performance --std=c11 --inline-suppr \
 		--suppressions-list=tests/lint/cppcheck.supp $inc -Iboard/"$board" \
 		-DSKP_SIMD_AVX2 $(printf '%s\n' $extra | grep '^-D' | tr '\n' ' ') --error-exitcode=1 \
 		--template='{file}:{line}: {severity} [{id}] {message}' $sources 2>&1)
@@ -32,8 +32,11 @@ if command -v clang-tidy >/dev/null 2>&1; then
 	checks="$checks,bugprone-*,-bugprone-easily-swappable-parameters,-bugprone-narrowing-conversions"
 	checks="$checks,-bugprone-implicit-widening-of-multiplication-result,-bugprone-reserved-identifier"
 	checks="$checks,-bugprone-suspicious-string-compare,-bugprone-not-null-terminated-result,-bugprone-branch-clone"
-	log=$(mktemp); trap 'rm -f "$log"' EXIT
-	for f in $sources; do
+	logs=$(mktemp -d); trap 'rm -rf "$logs"' EXIT
+	# one clang-tidy a processor, each file's findings in a file of its own
+	export checks inc board extra logs
+	printf '%s\n' $sources | xargs -P "$(nproc 2>/dev/null || echo 1)" -n 1 sh -c '
+		f=$1
 		case $f in
 		app/skintool/*|app/skinplay/*|app/cli/*|app/analysis/*|app/import/*|platform/*) std=gnu11 ;;
 		*) std=c11 ;;
@@ -41,10 +44,10 @@ if command -v clang-tidy >/dev/null 2>&1; then
 		simd=""
 		case $f in *_avx2.c) simd="-mavx2 -mfma" ;; esac
 		# shellcheck disable=SC2086
-		clang-tidy -quiet --checks="$checks" "$f" -- -std=$std $inc -Iboard/"$board" \
-			-DSKP_SIMD_AVX2 $simd $extra 2>/dev/null | grep -E '^[^ ]+:[0-9]+:[0-9]+: (warning|error):' >>"$log"
-	done
-	new=$(sort -u "$log" | while IFS= read -r line; do
+		out=$(clang-tidy -quiet --checks="$checks" "$f" -- -std=$std $inc -Iboard/"$board" \
+			-DSKP_SIMD_AVX2 $simd $extra 2>/dev/null | grep -E "^[^ ]+:[0-9]+:[0-9]+: (warning|error):")
+		[ -z "$out" ] || printf "%s\n" "$out" > "$logs/$(echo "$f" | tr / _)"' sh
+	new=$(cat "$logs"/* 2>/dev/null | sort -u | while IFS= read -r line; do
 		file=$(echo "$line" | cut -d: -f1 | sed "s|^$(pwd)/||")
 		check=$(echo "$line" | sed -n 's/.*\[\([^]]*\)\]$/\1/p')
 		grep -qx "$file:$check" tests/lint/clang-tidy.supp || echo "$line"
