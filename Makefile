@@ -82,7 +82,7 @@ APP_OBJ  := $(foreach m,$(APP_MODULES),$(OBJ_$(m)))
 # One archive per module (app/sources.mk; platform's backends are one), and
 # every link takes only the archives of the DEPS_ list of what it links,
 # top layer first (app/sources.mk: LAYER_ORDER): skinplay links cli,
-# platform and the core, skintool adds import and analysis.
+# platform and the core, skintool adds import, analysis and encode.
 LIB_MODULES  := $(filter-out $(PROGRAM_MODULES),$(APP_MODULES)) platform
 $(foreach m,$(LIB_MODULES),$(eval LIB_$(m) := $$(OUT)/libskp_$(m).a))
 OBJ_platform  = $(PLAT_OBJ)

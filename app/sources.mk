@@ -6,20 +6,18 @@
 # beside it) does not compile.
 #
 #   skinplay   skintool (+ report/)            the programs: argv, stdio, main()
-#        \      /  |   \
-#          |   import  analysis                tool-only: rigged meshes (libassimp), measures
+#        \      /  |   \      \
+#          |   import  analysis  encode        tool-only: rigged meshes (libassimp), measures, clip encoder
 #          |   /
 #          cli                                 shared by both
-#           |
-#   platform/{display,input,storage,sys}       Linux backends (base + port headers)
-#           |
-#   play                                       the playback engine: clock in, pose out
-#           |
+#         /   \
+#   play   platform/{display,input,storage,sys}   the playback engine; the Linux backends
+#      \      |  (base + the port headers of image, kiosk, render)
 #   bind  image  render  kiosk                 features
 #      \    |    /
 #        skin (+ kernels/, private)            LBS, DQBS, DQBS fixed
 #           |
-#     mesh -> motion -> math -> base
+#     mesh -> motion -> math -> base          (codec: base only; image and play read it)
 
 # What each module owns (app/README.md has the whole map):
 #   base      errors, readers, tokens, lines, CRC-32, INI, algorithm/view names

@@ -1,7 +1,8 @@
 # Rules for microcontroller boards (board.mk sets BOARD_KIND := mcu): the
 # Makefile includes this file instead of its Linux rules. Builds
-#   $(OUT)/libskp.a       the portable core for the board (all of app/ but
-#                         the front ends, the GL renderer and the x86 kernels)
+#   $(OUT)/libskp.a       the portable core for the board (CORE_MODULES
+#                         of app/sources.mk less the GL renderer, the portable
+#                         kernels only)
 #   $(OUT)/emb_skin.elf   tests/embedded/emb_skin.c for the board (semihosted)
 #   $(OUT)/host/emb_skin  the same test built for the host: the reference
 # `make BOARD=... test` runs both and fails unless the fixed-kernel checksums

@@ -3,7 +3,7 @@
  * work space (obj_work, mesh_pick_work, manq_work, bind_balance_work, all
  * sized by the board's vertex limit; the quality gate's work after them), one
  * after another and never two at once (bind_args_load), so they share one
- * static area instead of holding three. Only the pointer a step was given
+ * static area instead of holding five. Only the pointer a step was given
  * is valid, and only until the next step starts. */
 #ifndef CLI_SCRATCH_H
 #define CLI_SCRATCH_H

@@ -10,11 +10,12 @@
  * reach allows (the distance its rotation moves the points it carries),
  * scaled together until the clip's worst error is within the budget, then
  * grown one track at a time while it stays so. A joint with three
- * rotational dofs takes up its ancestors' rounding (encode_comp.h): its
+ * rotational dofs takes up its ancestors' rounding (encode_compensate.c): its
  * angles are chosen against the decoded parent, not the source's, so
  * errors do not pile up down a limb. The grid values are then coded in
  * segments (encode_segment.h): per track the predictor (constant, last
- * value, or a straight line through the last two) and the Rice parameter
+ * value, a straight line through the last two, or the last plus half the
+ * last step) and the Rice parameter
  * that make it shortest, 120 Hz motion leaving small residuals. */
 #ifndef ENCODE_H
 #define ENCODE_H

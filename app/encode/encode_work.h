@@ -60,7 +60,7 @@ void enc_snap_restore(enc_work *w);
 
 /* Quantises the tracks of bone top and the bones below it with their
  * steps, bone by bone (parents first), the compensated bones' angles
- * chosen against their decoded parents (encode_comp.c): fills q, dec,
+ * chosen against their decoded parents (encode_compensate.c): fills q, dec,
  * gdec, pdec and track (top 0: every bone). 0, or -1 when a track needs
  * more than CODEC_MAX_BITS. */
 int enc_quantise(enc_work *w, int top);

@@ -1,7 +1,7 @@
 /* The skinplay flash image (.skn), format version 5: a skeleton, a bound
  * body and motion clips packed once by `skintool pack` and played from
  * CRC-checked fixed-size blocks with fixed memory (app/image/image_read.h,
- * app/image/image_play.h), with XOR parity that rebuilds any one bad block
+ * app/image/image_stream.h), with XOR parity that rebuilds any one bad block
  * per parity group, a copy of the directory and a copy of the header.
  * Every block carries the image's own random 128-bit id, and the header a
  * SHA-256 digest of every data block, so a block of another image is never

@@ -4,7 +4,7 @@
  * (image_block.h: CRC, image id, index, kind); a block that fails is
  * rebuilt (image_recover.h) from its parity group, or from its copy (block
  * 0 from the header, a directory block from the directory copy), else the
- * error names it. Playback of the clips is app/image/image_play.h. */
+ * error names it. Playback of the clips is app/image/image_stream.h. */
 #ifndef IMAGE_READ_H
 #define IMAGE_READ_H
 

@@ -1,6 +1,6 @@
 /* skintool's mesh importer (bind_args_set_importer): a rigged glTF, FBX or
  * COLLADA body onto an ASF or BVH skeleton, each decision said on stderr:
- *   1. read it (rig_import.h), the parts used named;
+ *   1. read it (rig_scene.h), the parts used named;
  *   2. map its joints (rig_map.h, --joint-map FILE), the unmapped listed;
  *   3. turn, scale and move it onto the skeleton by the mapped joints
  *      (rig_align.h; --no-fit keeps it as it is);

@@ -3,7 +3,7 @@
 #include <string.h>
 
 #include "ini.h"
-#include "show_modes.h"
+#include "modes.h"
 #include "skp_format.h"
 #include "text_tokens.h"
 
@@ -140,7 +140,7 @@ int board_streams_parse(const char *word)
 	return word ? pick(word, board_streams_names, BOARD_STREAMS_KINDS) : -1;
 }
 
-/* The index of v (any case) among a show_modes list, or -1. */
+/* The index of v (any case) among a modes.h list, or -1. */
 static int pick_mode(const char *v, const char *(*name)(int), int n)
 {
 	for (int i = 0; i < n; i++)
@@ -149,7 +149,7 @@ static int pick_mode(const char *v, const char *(*name)(int), int n)
 	return -1;
 }
 
-/* [display] algo and view: a name show_modes knows. The names, and the
+/* [display] algo and view: a name modes.h knows. The names, and the
  * "a, b or c" list a mistake shows, come from there, so a method or view
  * added there is taken and listed here without a second list. */
 static skp_status mode_key(int *out, const ini_entry *e, const char *(*name)(int), int n, skp_error *err)

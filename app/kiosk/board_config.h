@@ -7,7 +7,7 @@
  *              algo = lbs | dqbs | dqbs-fixed | compare   (skinplay --algo: the
  *              method the kiosk starts with; compare: LBS beside DQBS)
  *              view = body | skeleton | weights | difference   (skinplay --view:
- *              the view it starts with; the names are show_modes.h's)
+ *              the view it starts with; the names are modes.h's)
  *   [input]    backend = gpio   chip = gpiochip0   debounce_ms = 30   long_press_ms = 800
  *   [button.algo]  line = 17   active = low   bias = pull-up   (debounce_ms, long_press_ms)
  *   [storage]  slot = PATH   (one line per image slot)

@@ -3,7 +3,7 @@
  *   ALGO  press: cycle lbs -> dqbs -> dqbs-fixed -> compare
  *   PLAY  short: play / pause           long: restart the clip
  *   NEXT  press: next clip of the image
- *   VIEW  short: body -> skeleton -> weights   long: CPU / GPU skinning
+ *   VIEW  short: the next view (body, skeleton, weights, difference)   long: CPU / GPU skinning
  *
  * ALGO and NEXT act on the press; PLAY and VIEW on the release (or the long
  * press), so a long press never also does the short action. Pure logic: no
@@ -15,7 +15,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
-#include "show_modes.h"
+#include "modes.h"
 
 typedef enum control_button {
 	CONTROL_BTN_ALGO,

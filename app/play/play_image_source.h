@@ -1,4 +1,4 @@
-/* An image clip (app/image/image_play.h) as a play_source. A frame whose
+/* An image clip (app/image/image_stream.h) as a play_source. A frame whose
  * block is lost beyond repair is not decoded: the last good frame is held
  * in its place (the rest pose when the clip starts in a bad block), and
  * the caller is told through on_lost, so a dying flash costs smoothness,
@@ -6,7 +6,7 @@
 #ifndef PLAY_IMAGE_SOURCE_H
 #define PLAY_IMAGE_SOURCE_H
 
-#include "image_play.h"
+#include "image_stream.h"
 #include "play_source.h"
 
 typedef struct play_image_source {

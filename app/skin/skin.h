@@ -22,7 +22,7 @@
 #include "mesh.h"
 #include "rigid.h"
 #include "skin_weights.h"
-#include "show_modes.h"
+#include "modes.h"
 #include "skp_error.h"
 
 #define SKIN_LANES 8

@@ -12,7 +12,7 @@
 #include "cli_skin.h"
 #include "display.h"
 #include "play_engine.h"
-#include "play_survey.h"
+#include "play_extent.h"
 #include "skinplay_kiosk.h"
 #include "skel_joints.h"
 #include "skin_diff.h"
@@ -33,8 +33,8 @@ typedef struct skinplay {
 	cli_clip_source text; /* --asf/--amc, --bvh: the file as the engine's source */
 	show_source show;  /* --image: the clips of a packed image instead */
 	play_source src;   /* the clip playing */
-	play_survey survey; /* its length, facing and extent (one pass at its start) */
-	skel_pose scratch_pose; /* the survey's */
+	play_extent extent; /* its length, facing and extent (one pass at its start) */
+	skel_pose scratch_pose; /* the extent pass's */
 	amc_frame scratch_frame;
 	uint64_t now;      /* the frame's time (ns): the monotonic clock, or frame n / display rate */
 	uint64_t wall0;    /* the monotonic clock when the first frame was drawn */
@@ -101,7 +101,7 @@ long clips_pass_frames(skinplay *p);
 int clips_show_loops(const skinplay *p);
 
 /* Tells the renderer the space the body takes over the clip playing (the
- * survey's joints, grown by p->flesh), so the camera frames all of it. */
+ * extent's joints, grown by p->flesh), so the camera frames all of it. */
 void clips_frame(skinplay *p, int immediate);
 
 /* Opens the display --platform names (auto: what display_auto picks; where

@@ -31,10 +31,10 @@ static void bind_pose(skinplay *p)
 	fk_pose(&p->body.skel, p->body.pose_value, &p->skin.pose);
 }
 
-/* The joints' bounds in one pose (the held bind pose), as a survey's. */
+/* The joints' bounds in one pose (the held bind pose), as an extent's. */
 static void survey_pose(skinplay *p, const skel_pose *pose)
 {
-	play_survey *s = &p->survey;
+	play_extent *s = &p->extent;
 	s->frames = 1;
 	s->first_root = s->lo = s->hi = pose->tip[0];
 	for (int b = 0; b < p->body.skel.count; b++) {
@@ -45,7 +45,7 @@ static void survey_pose(skinplay *p, const skel_pose *pose)
 
 void clips_frame(skinplay *p, int immediate)
 {
-	const play_survey *s = &p->survey;
+	const play_extent *s = &p->extent;
 	if (!p->render_ready || s->frames <= 0 || !(s->hi.y >= s->lo.y))
 		return;
 	vec3 pad = vec3_make(p->flesh, p->flesh, p->flesh), root = vec3_make(s->first_root.x, 0.0f, s->first_root.z);
@@ -71,15 +71,15 @@ static void face_clip(skinplay *p)
 	skp_error err;
 	float yaw = p->o.yaw_mode == 1 ? p->o.yaw_deg * (float)(M_PI / 180.0) : 0.0f;
 	/* every other frame: the peak of a kick is not missed */
-	if (play_survey_clip(&p->body.skel, &p->src, 2, &p->scratch_frame, &p->scratch_pose, &p->survey, &err) !=
+	if (play_extent_clip(&p->body.skel, &p->src, 2, &p->scratch_frame, &p->scratch_pose, &p->extent, &err) !=
 	    SKP_OK)
-		p->survey.frames = 0;
-	if (p->o.yaw_mode == 0 && p->survey.frames > 0 && p->survey.facing_known)
-		yaw = p->survey.facing;
+		p->extent.frames = 0;
+	if (p->o.yaw_mode == 0 && p->extent.frames > 0 && p->extent.facing_known)
+		yaw = p->extent.facing;
 	p->yaw = yaw;
 	fprintf(cli_note(), "clip: %ld frames at %.6g Hz (%.2f s); camera yaw %.0f degrees%s\n", p->src.frames, p->src.rate,
 		(double)p->src.frames / p->src.rate, round(yaw / (M_PI / 180.0)) + 0.0, /* + 0.0: never "-0" */
-		p->o.yaw_mode == 1 ? " (--yaw)" : p->survey.facing_known ? " (the clip's mean facing)" : "");
+		p->o.yaw_mode == 1 ? " (--yaw)" : p->extent.facing_known ? " (the clip's mean facing)" : "");
 	if (p->render_ready)
 		render_set_yaw(&p->r, yaw, 0);
 	clips_frame(p, 0);
@@ -188,10 +188,10 @@ static int open_first(skinplay *p)
  * sole under its joints. The camera grows every clip's bounds by it. */
 static float flesh_past_joints(skinplay *p, vec3 lo, vec3 hi)
 {
-	play_survey saved = p->survey;
+	play_extent saved = p->extent;
 	survey_pose(p, &p->skin.pose);
-	vec3 a = vec3_sub(p->survey.lo, lo), b = vec3_sub(hi, p->survey.hi);
-	p->survey = saved;
+	vec3 a = vec3_sub(p->extent.lo, lo), b = vec3_sub(hi, p->extent.hi);
+	p->extent = saved;
 	float f = fmaxf(fmaxf(fmaxf(a.x, a.y), a.z), fmaxf(fmaxf(b.x, b.y), b.z));
 	return f > 0.0f ? f : 0.0f;
 }

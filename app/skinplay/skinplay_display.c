@@ -14,7 +14,9 @@ int open_display(skinplay *p)
 	const char *name = p->o.platform;
 	p->disp = !name || !strcmp(name, "auto") ? display_auto() : display_find(name);
 	if (!p->disp) {
-		fprintf(stderr, "skinplay: unknown platform '%s' (surfaceless, osmesa, kms, x11, auto)\n", name);
+		char names[128];
+		display_list(names, sizeof names);
+		fprintf(stderr, "skinplay: unknown platform '%s' (this build has: %s; or auto, none)\n", name, names);
 		return -1;
 	}
 	display_config cfg = { p->o.width, p->o.height, p->o.device, p->o.rotation };

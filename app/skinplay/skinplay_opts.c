@@ -32,8 +32,8 @@ static const cli_opt play_opts_table[] = {
 	  "board's [skin] split_verts vertices or more (default: the board's, else auto)" },
 	{ "streams", 0, "KIND", OPT_STREAMS, "float, or compact: LBS and DQBS read 16-bit vertex streams (38 bytes a "
 	  "vertex, not 72; default: the board's, else float)" },
-	{ "platform", 0, "NAME", OPT_PLATFORM, "auto, surfaceless, osmesa, kms, x11, or none: nothing drawn, the show's "
-	  "clock, images and logs run as headless (soak runs of days of frames; default auto)" },
+	{ "platform", 0, "NAME", OPT_PLATFORM, "auto, a display this build has (--version lists them), or none: nothing "
+	  "drawn, the show's clock, images and logs run as headless (soak runs of days of frames; default auto)" },
 	{ "device", 0, "DEV", OPT_DEVICE, "the DRM device for kms (default: the first with a screen)" },
 	{ "rotation", 0, "DEG", OPT_ROTATION, "turn the picture 0, 90, 180 or 270 degrees (portrait screens)" },
 	{ "size", 0, "WxH", OPT_SIZE, "the picture's size headless or in a window (default 1280x720)" },
@@ -170,7 +170,7 @@ static int take_timing(play_opts *o, int id, const char *v)
 	}
 }
 
-/* A name show_modes does not know: refused with the names it does, the
+/* A name modes.h does not know: refused with the names it does, the
  * list the board file and the buttons use, so a new method or view is
  * listed without a second list here. */
 #define MODE_NAMES_MAX ((int)SKIN_SHOW_COUNT > (int)RENDER_VIEW_COUNT ? (int)SKIN_SHOW_COUNT : (int)RENDER_VIEW_COUNT)

@@ -1,5 +1,5 @@
 /* Compile-time limits of the Raspberry Pi 4 kiosk, fitted to it: skinplay's
- * static RAM is about 24 MB here (`make BOARD=rpi4 size`), against 32 MB
+ * static RAM is about 26 MB here (`make BOARD=rpi4 size`), against 32 MB
  * budgeted, so that even a 1 GiB Pi keeps most of its memory for the GPU
  * and the page cache. */
 #ifndef BOARD_LIMITS_H

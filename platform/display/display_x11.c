@@ -1,6 +1,8 @@
 /* A fixed-size Xlib window with an EGL window surface (EGL platform X11).
- * q, Escape or the window manager's close button quit; the buttons come
- * from the input backends (keyboard: the terminal that started it). */
+ * q, Escape or the window manager's close button quit; other keys pressed
+ * in the window are handed to skinplay (display_backend.key: 1-4 the
+ * buttons, v VIEW, d the difference view), besides the input backends'
+ * buttons (keyboard: the terminal that started it). */
 #include "display.h"
 
 #include <string.h>

@@ -13,7 +13,7 @@
 #include "crc32.h"
 #include "fk.h"
 #include "image_accept.h"
-#include "image_play.h"
+#include "image_stream.h"
 #include "image_read.h"
 #include "image_survey.h"
 #include "ini.h"

@@ -21,7 +21,7 @@
 #include "amc.h"
 #include "crc32.h"
 #include "file_reader.h"
-#include "image_play.h"
+#include "image_stream.h"
 #include "cli_show.h"
 #include "storage_file.h"
 #include "test_clips.h"

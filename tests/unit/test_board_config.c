@@ -82,7 +82,7 @@ static void test_host_board(void **state)
 	assert_int_equal(cfg.view, -1);
 }
 
-/* [display] algo and view: the starting method and view, by show_modes'
+/* [display] algo and view: the starting method and view, by modes.h'
  * names in any case, like the other keys; not given: -1 (the program's
  * default). */
 static void test_display_algo_and_view(void **state)
@@ -100,7 +100,7 @@ static void test_display_algo_and_view(void **state)
 	assert_int_equal(cfg.problem_count, 0);
 	assert_int_equal(cfg.algo, SKIN_DQBS_FIXED);
 	assert_int_equal(cfg.view, RENDER_VIEW_WEIGHTS);
-	/* every name show_modes has is taken */
+	/* every name modes.h has is taken */
 	for (int i = 0; i < SKIN_SHOW_COUNT; i++) {
 		char text[64];
 		snprintf(text, sizeof text, "[display]\nalgo = %s\n", skin_algo_name(i));

@@ -18,7 +18,7 @@
 
 #include "crc32.h"
 #include "image_parity.h"
-#include "image_play.h"
+#include "image_stream.h"
 #include "image_write.h"
 #include "sha256.h"
 #include "test_box.h"

@@ -23,7 +23,7 @@
 #include "codec_synth.h"
 #include "encode.h"
 #include "encode_segment.h"
-#include "image_play.h"
+#include "image_stream.h"
 #include "image_write.h"
 #include "test_box.h"
 

@@ -15,7 +15,7 @@
 
 #include "play_engine.h"
 #include "play_policy.h"
-#include "play_survey.h"
+#include "play_extent.h"
 #include "test_parse.h"
 #include "test_rng.h"
 

@@ -14,7 +14,7 @@
 #include <unistd.h>
 
 #include "clock.h"
-#include "image_play.h"
+#include "image_stream.h"
 #include "image_write.h"
 #include "storage_faulty.h"
 #include "cli_show.h"

@@ -5,7 +5,7 @@
 #ifndef SKIN_AVX2_FLOAT_H
 #define SKIN_AVX2_FLOAT_H
 
-#include "skin_avx2.h"
+#include "skin_avx2_layout.h"
 #include "skin_kernels.h"
 
 #define SKIN_INLINE static inline __attribute__((always_inline))

@@ -10,7 +10,7 @@
 
 #ifdef SKP_SIMD_AVX2
 
-#include "skin_avx2.h"
+#include "skin_avx2_layout.h"
 
 static __m256i load_weights(const fx_w15 *w, int v)
 {

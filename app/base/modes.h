@@ -3,8 +3,8 @@
  * the side-by-side comparison) and the view (app/render, VIEW button).
  * Here, at the bottom, so that the kiosk, the renderer and the programs
  * share one list without depending on each other. */
-#ifndef SHOW_MODES_H
-#define SHOW_MODES_H
+#ifndef MODES_H
+#define MODES_H
 
 typedef enum skin_algo {
 	SKIN_LBS,

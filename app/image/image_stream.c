@@ -1,4 +1,4 @@
-#include "image_play.h"
+#include "image_stream.h"
 
 #include "image_error.h"
 

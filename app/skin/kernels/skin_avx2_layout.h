@@ -2,8 +2,8 @@
  * per-vertex (AoS) and per-lane (SoA) layouts.
  * No floating-point arithmetic here, so the fixed-point kernel may use
  * them too. */
-#ifndef SKIN_AVX2_H
-#define SKIN_AVX2_H
+#ifndef SKIN_AVX2_LAYOUT_H
+#define SKIN_AVX2_LAYOUT_H
 
 #include <immintrin.h>
 #include <stdint.h>

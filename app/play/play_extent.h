@@ -3,13 +3,13 @@
  * captured facing away is seen from the front) and the space the skeleton
  * takes over the whole clip, root motion taken out as in place (the
  * camera frames it). */
-#ifndef PLAY_SURVEY_H
-#define PLAY_SURVEY_H
+#ifndef PLAY_EXTENT_H
+#define PLAY_EXTENT_H
 
 #include "fk.h"
 #include "play_source.h"
 
-typedef struct play_survey {
+typedef struct play_extent {
 	long frames;             /* frames read */
 	float facing;            /* mean facing about the vertical, radians:
 	                          * 0 = +z, pi/2 = +x */
@@ -18,13 +18,13 @@ typedef struct play_survey {
 	                          * horizontal travel taken out */
 	vec3 first_root;         /* the first frame's root: every frame's
 	                          * root is moved over it for lo, hi */
-} play_survey;
+} play_extent;
 
 /* Reads src from its first frame to its last (FK every `stride`-th frame,
  * >= 1) and seeks back to the first. Frame buffers are the caller's
  * (frame, pose). SKP_OK or the source's error. */
-skp_status play_survey_clip(const skel *s, const play_source *src, int stride, amc_frame *frame,
-			    skel_pose *pose, play_survey *out, skp_error *err);
+skp_status play_extent_clip(const skel *s, const play_source *src, int stride, amc_frame *frame,
+			    skel_pose *pose, play_extent *out, skp_error *err);
 
 /* The direction a posed body faces, about the vertical: adds the unit
  * vectors its feet point along (ankle to toe tip, whatever the skeleton's

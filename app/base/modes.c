@@ -1,4 +1,4 @@
-#include "show_modes.h"
+#include "modes.h"
 
 #include <string.h>
 

@@ -22,8 +22,8 @@
  * A segment touching a block that cannot be read or rebuilt, or that the
  * decoder refuses, is lost (SKP_CLIP_LOST for each of its frames) and
  * playback goes on at the next segment. */
-#ifndef IMAGE_PLAY_H
-#define IMAGE_PLAY_H
+#ifndef IMAGE_STREAM_H
+#define IMAGE_STREAM_H
 
 #include "amc.h"
 #include "image_read.h"

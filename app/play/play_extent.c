@@ -1,4 +1,4 @@
-#include "play_survey.h"
+#include "play_extent.h"
 
 #include <math.h>
 
@@ -57,7 +57,7 @@ float play_pose_facing(const skel *s, const skel_pose *p, float *sin_sum, float 
 	return sqrtf(sx * sx + sz * sz);
 }
 
-static void grow_bounds(const skel *s, const skel_pose *p, vec3 root0, play_survey *out)
+static void grow_bounds(const skel *s, const skel_pose *p, vec3 root0, play_extent *out)
 {
 	/* in place: every frame's root over the first frame's */
 	vec3 shift = vec3_make(root0.x - p->tip[0].x, 0.0f, root0.z - p->tip[0].z);
@@ -68,8 +68,8 @@ static void grow_bounds(const skel *s, const skel_pose *p, vec3 root0, play_surv
 	}
 }
 
-skp_status play_survey_clip(const skel *s, const play_source *src, int stride, amc_frame *frame,
-			    skel_pose *pose, play_survey *out, skp_error *err)
+skp_status play_extent_clip(const skel *s, const play_source *src, int stride, amc_frame *frame,
+			    skel_pose *pose, play_extent *out, skp_error *err)
 {
 	float ss = 0.0f, cs = 0.0f, evidence = 0.0f;
 	vec3 root0 = vec3_make(0.0f, 0.0f, 0.0f);
