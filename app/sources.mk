@@ -9,7 +9,11 @@
 #        \      /  |   \      \
 #          |   import  analysis  encode        tool-only: rigged meshes (libassimp), measures, clip encoder
 #          |   /
-#          cli                                 shared by both
+#          setup                               binding at start-up: mesh, pose, weights, the gate
+#           |
+#          runtime                             the frame's path: slots, acceptance, clip sources, skinning run
+#           |
+#          cli                                 argv, messages, outputs, --version
 #         /   \
 #   play   platform/{display,input,storage,sys}   the playback engine; the Linux backends
 #      \      |  (base + the port headers of image, kiosk, render)
@@ -34,7 +38,9 @@
 #   play      the playback engine: clock, sampler, crossfades, root motion, facing, slot and clip policy
 #   analysis  tool-only measures: volume, radius, overlap, scenes
 #   import    tool-only: rigged glTF/FBX/COLLADA meshes through libassimp, joint maps
-#   cli       shared by both programs: bound body, skin run, show, errors, --version
+#   cli       the command lines: options, messages, progress, outputs, --version
+#   runtime   the frame's path on Linux: bound body, show slots, acceptance, clip sources, skinning run
+#   setup     binding at start-up: mesh pick and place, pose, weights, the gate
 #   skinplay  the device program; skintool: the host tool (+ report/)
 
 # The portable core, bottom up: no malloc, no stdio (make check-core).
@@ -50,22 +56,25 @@ DEPS_image    := codec skin mesh motion math base
 DEPS_render   := skin mesh motion math base
 DEPS_kiosk    := base
 DEPS_play     := image codec skin mesh motion math base
-# Host code, which may allocate and print: the tool-only measures, the layer
-# both programs share (loading, binding, showing, --version), the programs.
+# Host code, which may allocate and print: the tool-only measures and
+# encoder, the command lines (cli), the frame's path (runtime), binding at
+# start-up (setup), the importer, the programs.
 DEPS_analysis := skin mesh motion math base
 DEPS_encode   := codec motion math base
 DEPS_cli      := $(CORE_MODULES) platform
-DEPS_import   := cli $(CORE_MODULES) platform
-DEPS_skinplay := cli $(CORE_MODULES) platform
-DEPS_skintool := import cli analysis encode $(CORE_MODULES) platform
-HOST_MODULES  := analysis encode cli import skinplay skintool
+DEPS_runtime  := cli $(CORE_MODULES) platform
+DEPS_setup    := runtime cli $(CORE_MODULES) platform
+DEPS_import   := setup runtime cli $(CORE_MODULES) platform
+DEPS_skinplay := setup runtime cli $(CORE_MODULES) platform
+DEPS_skintool := import setup runtime cli analysis encode $(CORE_MODULES) platform
+HOST_MODULES  := analysis encode cli runtime setup import skinplay skintool
 APP_MODULES   := $(CORE_MODULES) $(HOST_MODULES)
 PROGRAM_MODULES := skinplay skintool
 # The tests are white-box: every module but the programs (which they run).
-DEPS_tests    := import cli analysis encode $(CORE_MODULES) platform
+DEPS_tests    := import setup runtime cli analysis encode $(CORE_MODULES) platform
 # The modules top down: the order of the archives on a link line (each
 # archive is searched once, so a module's calls resolve only downwards).
-LAYER_ORDER   := import analysis encode cli platform play kiosk render image bind skin mesh motion codec math base
+LAYER_ORDER   := import analysis encode setup runtime cli platform play kiosk render image bind skin mesh motion codec math base
 # ... checked against the DEPS_ lists whenever make reads this file: every
 # module but the programs is in it, after each module that depends on it.
 layer_after = $(if $(2),$(if $(filter $(1),$(firstword $(2))),$(wordlist 2,999,$(2)),$(call layer_after,$(1),$(wordlist 2,999,$(2)))))

@@ -5,7 +5,7 @@
  * vertex: 0-based index in the mesh's kept vertex order; bone: the ASF
  * name, or `root`; at most SKP_MAX_INFLUENCES rows per vertex, in any
  * order. Blank lines and `#` comments are skipped. The writer lives in the
- * front end (cli_weights.h): the core has no stdio. */
+ * front end (setup_weights.h): the core has no stdio. */
 #ifndef WEIGHTS_CSV_H
 #define WEIGHTS_CSV_H
 

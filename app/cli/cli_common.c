@@ -3,6 +3,7 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "cli_program.h"
 #include "text_tokens.h"
 
 void cli_error(const char *path, const skp_error *err)
@@ -30,4 +31,13 @@ const char *cli_basename(const char *path)
 {
 	const char *s = strrchr(path, '/');
 	return s ? s + 1 : path;
+}
+
+int cli_parse_long(const char *opt, const char *text, long *out)
+{
+	if (!text || tok_parse_long(text, out) != 0) {
+		fprintf(stderr, "%s: %s expects an integer, got '%s'\n", cli_program(), opt, text ? text : "");
+		return -1;
+	}
+	return 0;
 }

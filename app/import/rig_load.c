@@ -3,9 +3,11 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "cli_mesh_format.h"
-#include "cli_mesh_io.h"
-#include "cli_mesh_place.h"
+#include "runtime_body.h"
+#include "setup_bind.h"
+#include "setup_mesh_format.h"
+#include "setup_mesh_io.h"
+#include "setup_mesh_place.h"
 #include "cli_common.h"
 #include "cli_inputs.h"
 #include "cli_quiet.h"
@@ -52,7 +54,7 @@ static int import_makehuman(const bind_args *a, const char *path, bound_body *bo
 	const char *group = a->group ? a->group : "body", *wname = NULL, *wpath = NULL;
 	int missing, rc = -1;
 	skp_error err;
-	const obj_work *w = cli_load_obj(path, group, &body->mesh, &missing);
+	const obj_work *w = setup_load_obj(path, group, &body->mesh, &missing);
 	if (!w) {
 		if (missing)
 			fprintf(stderr, "%s: --rig: no faces in group '%s', the MakeHuman body (--group NAME picks "
@@ -107,17 +109,17 @@ static int import_scene(const bind_args *a, const char *path, bound_body *body)
 {
 	skp_error err;
 	scene.mesh = &body->mesh;
-	if (a->rig && bind_args_is_interchange(path)) {
+	if (a->rig && setup_bind_is_interchange(path)) {
 		fprintf(stderr, "%s: --rig gives an OBJ its MakeHuman rig; this mesh has its own joints (leave "
 			"--rig out)\n", path);
 		return -1;
 	}
 	if (a->rig)
 		return import_makehuman(a, path, body);
-	mesh_format fmt = cli_mesh_format(path);
-	cli_mesh_format_note(path, fmt);
+	mesh_format fmt = setup_mesh_format(path);
+	setup_mesh_format_note(path, fmt);
 	uint64_t t0 = clock_now_ns();
-	const char *hint = cli_mesh_format_named(path, fmt) ? NULL : mesh_format_extension(fmt);
+	const char *hint = setup_mesh_format_named(path, fmt) ? NULL : mesh_format_extension(fmt);
 	if (rig_import_as(path, hint, a->group, &scene, &err) != SKP_OK) {
 		fprintf(stderr, "%s: %s\n", path, err.msg);
 		if (!a->group)
@@ -321,9 +323,9 @@ static int bind_unrigged(const bind_args *a, const char *path, bound_body *body)
 	if (scene.joint_count)
 		fprintf(stderr, "%s: its arms and legs did not map onto the skeleton (a --joint-map FILE would map "
 			"them): bound like an OBJ, weights computed\n", path);
-	if (cli_place_mesh(a, path, body) < 0)
+	if (setup_place_mesh(a, path, body) < 0)
 		return -1;
-	return bind_args_weights(a, 0, path, body);
+	return setup_bind_weights(a, 0, path, body);
 }
 
 /* A rig that is not a biped's (rig_biped.h): 0 when it is, or --force
@@ -331,7 +333,7 @@ static int bind_unrigged(const bind_args *a, const char *path, bound_body *body)
 static int check_biped(const bind_args *a, const char *path, const bound_body *body)
 {
 	char why[256];
-	if (!cli_skel_is_biped(&body->skel, &body->pose) || rig_biped_check(&scene, why, sizeof why))
+	if (!setup_skel_is_biped(&body->skel, &body->pose) || rig_biped_check(&scene, why, sizeof why))
 		return 0;
 	fprintf(stderr, "%s: not a biped: %s; skintool plays human motion on bipeds%s\n", path, why,
 		a->force ? " (--force: bound anyway)" : " (--force binds it anyway)");
@@ -354,5 +356,5 @@ int rig_load_mesh(const bind_args *a, const char *path, bound_body *body)
 	pose_skeleton(a, path, body);
 	if (a->weights_mesh)
 		return mesh_weights(a, path, body);
-	return bind_args_weights(a, 0, path, body);
+	return setup_bind_weights(a, 0, path, body);
 }

@@ -1,4 +1,4 @@
-/* skintool's mesh importer (bind_args_set_importer): a rigged glTF, FBX or
+/* skintool's mesh importer (setup_bind_set_importer): a rigged glTF, FBX or
  * COLLADA body onto an ASF or BVH skeleton, each decision said on stderr:
  *   1. read it (rig_scene.h), the parts used named;
  *   2. map its joints (rig_map.h, --joint-map FILE), the unmapped listed;
@@ -8,12 +8,13 @@
  *      --bind-pose names a pose;
  *   5. weights: the mesh's own (--weights mesh, rig_weights.h) or computed.
  * A mesh without a skin, or whose joints do not map, is bound like an OBJ
- * of one's own (cli_mesh_place.h) with computed weights; --weights mesh
+ * of one's own (setup_mesh_place.h) with computed weights; --weights mesh
  * then fails with the report. */
 #ifndef RIG_LOAD_H
 #define RIG_LOAD_H
 
 #include "cli_bind_args.h"
+#include "runtime_body.h"
 
 /* Returns 0, or -1 after reporting the error. */
 int rig_load_mesh(const bind_args *a, const char *path, bound_body *body);

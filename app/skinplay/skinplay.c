@@ -14,6 +14,7 @@
 #include "cli_version.h"
 #include "clock.h"
 #include "png_writer.h"
+#include "setup_bind.h"
 #include "skinplay.h"
 
 /* Which kernels each panel runs, and where (GPU when asked and it fits). */
@@ -49,19 +50,19 @@ static void start_workers(skinplay *p)
 		return;
 	}
 	if (split == BOARD_SPLIT_AUTO)
-		cli_skin_measure_workers(&p->skin, p->pool);
+		runtime_skin_measure_workers(&p->skin, p->pool);
 	else
-		cli_skin_use_workers(&p->skin, p->pool);
+		runtime_skin_use_workers(&p->skin, p->pool);
 }
 
 /* Once, when the measurement of start_workers has chosen: what it chose. */
 static void log_measured_threads(skinplay *p)
 {
 	double one, pool;
-	if (p->threads_logged || cli_skin_measured(&p->skin, &one, &pool) < 0)
+	if (p->threads_logged || runtime_skin_measured(&p->skin, &one, &pool) < 0)
 		return;
 	p->threads_logged = 1;
-	int kept = cli_skin_threads(&p->skin) > 1;
+	int kept = runtime_skin_threads(&p->skin) > 1;
 	fprintf(cli_note(), "skinplay: a kernel run took %.3f ms on %d threads, %.3f on one: skinning on %s\n", pool,
 		workers_count(p->pool), one, kept ? "all of them" : "one");
 }
@@ -79,14 +80,14 @@ static int setup(skinplay *p)
 		p->no_show = 1; /* a kiosk waits for one (skinplay_wait.c) */
 		return -1;
 	}
-	if (!p->o.image_count && bind_args_load(&p->o.bind, p->o.asf, p->o.mesh, &p->body) < 0)
+	if (!p->o.image_count && setup_bind_load(&p->o.bind, p->o.asf, p->o.mesh, &p->body) < 0)
 		return -1;
-	if (cli_skin_init(&p->skin, &p->body.skel, &p->body.pose, &p->body.mesh, &p->body.weights,
+	if (runtime_skin_init(&p->skin, &p->body.skel, &p->body.pose, &p->body.mesh, &p->body.weights,
 			   p->o.image_count ? show_path(&p->show) : p->o.mesh ? p->o.mesh : "generated body") < 0)
 		return -1;
 	start_workers(p);
 	if (p->o.streams == BOARD_STREAMS_COMPACT)
-		cli_skin_use_compact(&p->skin);
+		runtime_skin_use_compact(&p->skin);
 	float floor_y = clips_first(p);
 	if (isnan(floor_y))
 		return -1;
@@ -129,7 +130,7 @@ static int setup(skinplay *p)
 static const char *threads_note(const skinplay *p)
 {
 	static char note[48];
-	int n = cli_skin_threads(&p->skin), at = 0;
+	int n = runtime_skin_threads(&p->skin), at = 0;
 	note[0] = '\0';
 	if (n > 1)
 		at = snprintf(note, sizeof note, " on %d threads", n);
@@ -141,23 +142,23 @@ static const char *threads_note(const skinplay *p)
 static void skin_panels(skinplay *p, render_frame *f)
 {
 	uint64_t t1 = clock_now_ns();
-	cli_skin_pose(&p->skin, &p->skin.pose);
+	runtime_skin_pose(&p->skin, &p->skin.pose);
 	uint64_t t2 = clock_now_ns();
 	stage_add(&p->stages, STAGE_BONES, t2 - t1);
 	f->panel_count = p->panel_count;
 	for (int i = 0; i < p->panel_count; i++) {
 		f->panel[i].algo = p->algo[i];
 		f->panel[i].label = p->panel_count > 1 ? (i ? "DQBS" : "LBS") : NULL;
-		int compact = cli_skin_compact(&p->skin, p->algo[i]);
+		int compact = runtime_skin_compact(&p->skin, p->algo[i]);
 		f->panel[i].pos = p->gpu[i] ? NULL : p->pos[i];
 		f->panel[i].nrm = p->gpu[i] || compact ? NULL : p->nrm[i];
 		f->panel[i].nrm16 = p->gpu[i] || !compact ? NULL : p->nrm16[i];
 		if (!p->gpu[i]) {
 			uint64_t t3 = clock_now_ns();
 			if (compact)
-				cli_skin_run16(&p->skin, p->algo[i], p->pos[i], p->nrm16[i]);
+				runtime_skin_run16(&p->skin, p->algo[i], p->pos[i], p->nrm16[i]);
 			else
-				cli_skin_run(&p->skin, p->algo[i], p->pos[i], p->nrm[i]);
+				runtime_skin_run(&p->skin, p->algo[i], p->pos[i], p->nrm[i]);
 			stage_add(&p->stages, STAGE_SKIN, clock_now_ns() - t3);
 		}
 	}
@@ -466,7 +467,7 @@ int main(int argc, char **argv)
 	if (rc == 0 && p.hold)
 		rc = 2;
 	skinplay_kiosk_shutdown(&p.kiosk);
-	cli_clip_source_close(&p.text);
+	clip_file_close(&p.text);
 	show_close(&p.show);
 	if (p.o.report_memory)
 		show_print_memory();

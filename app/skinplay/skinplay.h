@@ -6,10 +6,10 @@
 #ifndef SKINPLAY_H
 #define SKINPLAY_H
 
-#include "cli_clip_source.h"
+#include "clip_file.h"
 #include "cli_common.h"
-#include "cli_show.h"
-#include "cli_skin.h"
+#include "show_source.h"
+#include "runtime_skin.h"
 #include "display.h"
 #include "play_engine.h"
 #include "play_extent.h"
@@ -26,11 +26,11 @@ typedef struct skinplay {
 	long budget, shown;  /* frames to show (-1: until closed) and shown so far */
 	stage_times stages;  /* --report-timing */
 	bound_body body;
-	cli_skin skin;
+	runtime_skin skin;
 	workers *pool;           /* skinning threads (--threads), NULL: one */
 	int threads_logged;      /* what measuring them chose is in the log */
 	play_engine eng;   /* clock in, pose out */
-	cli_clip_source text; /* --asf/--amc, --bvh: the file as the engine's source */
+	clip_file text; /* --asf/--amc, --bvh: the file as the engine's source */
 	show_source show;  /* --image: the clips of a packed image instead */
 	play_source src;   /* the clip playing */
 	play_extent extent; /* its length, facing and extent (one pass at its start) */

@@ -172,7 +172,7 @@ static int open_first(skinplay *p)
 {
 	const char *what = p->o.image_count ? show_path(&p->show) : p->o.amc;
 	if (!p->o.image_count) {
-		if (cli_clip_source_open(&p->text, p->o.amc, &p->body.skel, p->o.fps, &p->src) < 0 ||
+		if (clip_file_open(&p->text, p->o.amc, &p->body.skel, p->o.fps, &p->src) < 0 ||
 		    start_clip(p, cli_basename(p->o.amc), 1) < 0)
 			return -1;
 	} else if (p->o.clip || p->o.start >= 0) {
@@ -208,8 +208,8 @@ float clips_first(skinplay *p)
 		return NAN;
 	if (!p->hold && clips_pose(p) < 0)
 		return NAN;
-	cli_skin_pose(&p->skin, &p->skin.pose);
-	cli_skin_run(&p->skin, SKIN_DQBS, p->pos[0], p->nrm[0]);
+	runtime_skin_pose(&p->skin, &p->skin.pose);
+	runtime_skin_run(&p->skin, SKIN_DQBS, p->pos[0], p->nrm[0]);
 	vec3 lo = vec3_make(INFINITY, INFINITY, INFINITY), hi = vec3_scale(lo, -1.0f);
 	for (int v = 0; v < p->body.mesh.vert_count; v++) {
 		const float *q = &p->pos[0][3 * v];

@@ -34,7 +34,7 @@ static int positions(skinplay *p, int need_every_frame)
 		return 0;
 	for (int i = 0; i < p->panel_count; i++)
 		if (p->gpu[i])
-			cli_skin_run(&p->skin, p->algo[i], p->pos[i], p->nrm[i]);
+			runtime_skin_run(&p->skin, p->algo[i], p->pos[i], p->nrm[i]);
 	return 1;
 }
 

@@ -6,7 +6,7 @@
 #ifndef BENCH_IMAGE_CODEC_H
 #define BENCH_IMAGE_CODEC_H
 
-#include "cli_show.h"
+#include "show_source.h"
 
 /* src: the clip's source (AMC or BVH), or NULL; acl: the anchor's program
  * (../shared/tools/acl-bench, built), or NULL. -1 after reporting. */

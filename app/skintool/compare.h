@@ -9,7 +9,8 @@
 #include <stdio.h>
 
 #include "cli_bind_args.h"
-#include "cli_skin.h"
+#include "runtime_body.h"
+#include "runtime_skin.h"
 #include "measure.h"
 #include "report.h"
 
@@ -47,7 +48,7 @@ typedef struct region_volume {
 
 typedef struct compare_run {
 	bound_body body;
-	cli_skin sk;
+	runtime_skin sk;
 	measure_state meas;
 	report rep;
 	int joint[SKP_MAX_VERTS], region[SKP_MAX_VERTS];
@@ -84,7 +85,7 @@ void compare_region_volume(const compare_run *c, const float *pos, const skel_po
 
 /* The measuring part: each returns 0, or -1 after reporting. The scenes
  * leave c->sk holding the scene (c->scene) for compare_render_scenes,
- * until the clip is loaded: one cli_skin at a time. */
+ * until the clip is loaded: one runtime_skin at a time. */
 int compare_measure_scenes(compare_run *c);
 int compare_load_clip(compare_run *c, const compare_args *a);
 int compare_measure_clip(compare_run *c, const compare_args *a);

@@ -13,7 +13,9 @@
 #include "cli_progress.h"
 #include "cli_quiet.h"
 #include "compare.h"
+#include "motion_file.h"
 #include "overlap.h"
+#include "setup_bind.h"
 
 #define OVERLAP_GRID 256
 #define OVERLAP_HITS (1 << 22)
@@ -27,7 +29,7 @@ int compare_measure_scenes(compare_run *c)
 	static const int angles[REPORT_ANGLES] = { 45, 90, 135, 180 };
 	report *r = &c->rep;
 	scene_build(sc);
-	if (cli_skin_init(&c->sk, &sc->skel, &sc->bind, &sc->mesh, &sc->weights, "scene") < 0 ||
+	if (runtime_skin_init(&c->sk, &sc->skel, &sc->bind, &sc->mesh, &sc->weights, "scene") < 0 ||
 	    measure_init(&c->meas, &sc->mesh, &sc->bind, sc->skel.count, "scene") < 0)
 		return -1;
 	r->scene_count = 0;
@@ -39,10 +41,10 @@ int compare_measure_scenes(compare_run *c)
 			/* as skintool metrics --scene computes the angle */
 			double deg = angles[i];
 			scene_pose(sc, s->kind, (float)(deg * (3.14159265358979323846 / 180.0)), &pose);
-			cli_skin_pose(&c->sk, &pose);
+			runtime_skin_pose(&c->sk, &pose);
 			measure_pose(&c->meas, &c->sk.pose);
 			for (int a = 0; a < NALGO; a++) {
-				cli_skin_run(&c->sk, (skin_algo)a, c->pos, c->nrm);
+				runtime_skin_run(&c->sk, (skin_algo)a, c->pos, c->nrm);
 				measure_row row = measure_skinned(&c->meas, c->pos, NULL);
 				s->vol[a] = row.volume_ratio;
 				s->rmin[a] = row.radius.min;
@@ -207,7 +209,7 @@ static void measure_frame(compare_run *c, long frame, int keep)
 	int at_min[REGION_COUNT], at_max[REGION_COUNT];
 	measure_pose(&c->meas, &c->sk.pose);
 	for (int a = 0; a < NALGO; a++) {
-		cli_skin_run(&c->sk, (skin_algo)a, c->pos, c->nrm);
+		runtime_skin_run(&c->sk, (skin_algo)a, c->pos, c->nrm);
 		row[a] = measure_skinned(&c->meas, c->pos, c->ratio[a]);
 		st[a].vol = (float)row[a].volume_ratio;
 		st[a].rmin = row[a].radius.min;
@@ -247,15 +249,15 @@ static void measure_frame(compare_run *c, long frame, int keep)
 
 static long count_frames(const compare_args *a, const skel *s)
 {
-	static cli_motion mo;
+	static motion_file mo;
 	static amc_frame f;
 	long n = 0;
 	int rc;
-	if (cli_motion_open(&mo, a->amc, s) < 0)
+	if (motion_file_open(&mo, a->amc, s) < 0)
 		return -1;
-	while ((rc = cli_motion_next(&mo, &f)) > 0)
+	while ((rc = motion_file_next(&mo, &f)) > 0)
 		n++;
-	cli_motion_close(&mo);
+	motion_file_close(&mo);
 	if (rc < 0)
 		return -1;
 	if (n == 0)
@@ -283,8 +285,8 @@ int compare_load_clip(compare_run *c, const compare_args *a)
 {
 	report *r = &c->rep;
 	const char *what = a->mesh ? a->mesh : GENERATED_BODY;
-	if (bind_args_load(&a->bind, a->asf, a->mesh, &c->body) < 0 ||
-	    cli_skin_init(&c->sk, &c->body.skel, &c->body.pose, &c->body.mesh, &c->body.weights, what) < 0 ||
+	if (setup_bind_load(&a->bind, a->asf, a->mesh, &c->body) < 0 ||
+	    runtime_skin_init(&c->sk, &c->body.skel, &c->body.pose, &c->body.mesh, &c->body.weights, what) < 0 ||
 	    measure_init(&c->meas, &c->body.mesh, &c->body.pose, c->body.skel.count, what) < 0)
 		return -1;
 	r->skel = &c->body.skel;
@@ -311,11 +313,11 @@ int compare_load_clip(compare_run *c, const compare_args *a)
 
 int compare_measure_clip(compare_run *c, const compare_args *a)
 {
-	static cli_motion mo;
+	static motion_file mo;
 	static amc_frame f;
 	report *r = &c->rep;
 	long total = count_frames(a, &c->body.skel);
-	if (total < 0 || open_csv(c, a) < 0 || cli_motion_open(&mo, a->amc, &c->body.skel) < 0)
+	if (total < 0 || open_csv(c, a) < 0 || motion_file_open(&mo, a->amc, &c->body.skel) < 0)
 		return -1;
 	c->stride = (int)((total + STORE_MAX - 1) / STORE_MAX);
 	c->kept = 0;
@@ -327,12 +329,12 @@ int compare_measure_clip(compare_run *c, const compare_args *a)
 	cli_progress_start(&pr, what, "frames", total);
 	long n = 0;
 	int rc;
-	while ((rc = cli_motion_next(&mo, &f)) > 0) {
-		cli_skin_frame(&c->sk, f.value);
+	while ((rc = motion_file_next(&mo, &f)) > 0) {
+		runtime_skin_frame(&c->sk, f.value);
 		measure_frame(c, f.number, n % c->stride == 0);
 		cli_progress_step(&pr, ++n);
 	}
-	cli_motion_close(&mo);
+	motion_file_close(&mo);
 	cli_progress_end(&pr, " x 3 algorithms measured");
 	r->frames = n;
 	r->seconds = cli_progress_seconds(&pr);
@@ -355,8 +357,8 @@ static void measure_overlap(compare_run *c, const float *values)
 	static const overlap_work work = { OVERLAP_GRID, OVERLAP_HITS, ray_start, hit_z, hit_dir };
 	if (!(c->meas.rest_volume > 0.0))
 		return;
-	cli_skin_frame(&c->sk, values);
-	cli_skin_run(&c->sk, SKIN_DQBS, c->pos, c->nrm);
+	runtime_skin_frame(&c->sk, values);
+	runtime_skin_run(&c->sk, SKIN_DQBS, c->pos, c->nrm);
 	const mesh *m = &c->body.mesh;
 	int ok;
 	double excess = overlap_of_mesh(c->pos, m->vert_count, (const uint32_t (*)[3])m->tri, m->tri_count,
@@ -376,7 +378,7 @@ int compare_explain_volume(compare_run *c, const compare_args *a)
 		j->frame = -1;
 		if (frame[k] < 0)
 			continue;
-		if (cli_read_frame(a->amc, &c->body.skel, frame[k], &f) < 0)
+		if (motion_read_frame(a->amc, &c->body.skel, frame[k], &f) < 0)
 			return -1;
 		if (k == SKIN_DQBS)
 			measure_overlap(c, f.value);
@@ -405,9 +407,9 @@ int compare_other_weights(compare_run *main_run, const compare_args *a)
 	main_run->rep.other_weights = other.rep.weights;
 	main_run->rep.other_csv = oa.csv_name;
 	main_run->rep.other_algo = other.rep.algo;
-	/* cli_skin keeps one body's vertices (a static block), now the other
+	/* runtime_skin keeps one body's vertices (a static block), now the other
 	 * weights': the renders and the rest of the report are the main run's */
 	const compare_run *m = main_run;
-	return cli_skin_init(&main_run->sk, &m->body.skel, &m->body.pose, &m->body.mesh, &m->body.weights,
+	return runtime_skin_init(&main_run->sk, &m->body.skel, &m->body.pose, &m->body.mesh, &m->body.weights,
 			     m->rep.mesh_name);
 }

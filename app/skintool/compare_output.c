@@ -9,6 +9,7 @@
 
 #include "cli_common.h"
 #include "compare.h"
+#include "motion_file.h"
 #include "report_chart.h"
 #include "report_render.h"
 
@@ -194,7 +195,7 @@ int compare_render_scenes(compare_run *c, const compare_args *a)
 		s->dqbs_rmin = row->rmin[SKIN_DQBS];
 		s->dqbs_rmax = row->rmax[SKIN_DQBS];
 		scene_pose(sc, s->kind, (float)(s->angle_deg * (3.14159265358979323846 / 180.0)), &pose);
-		cli_skin_pose(&c->sk, &pose);
+		runtime_skin_pose(&c->sk, &pose);
 		keep_closeup(&s->closeup, report_view_pose(&view, &c->sk));
 		snprintf(hud0, sizeof hud0, "%s SCENE: THE SECOND BONE %s %d DEG", s->kind == SCENE_TWIST ? "TWIST" : "BEND",
 			 what[k], s->angle_deg);
@@ -287,11 +288,11 @@ int compare_render_stills(compare_run *c, const compare_args *a)
 	int rc = 0;
 	for (int i = 0; i < r->still_count && rc == 0; i++) {
 		report_still *s = &r->still[i];
-		if (cli_read_frame(a->amc, &c->body.skel, s->frame, &f) < 0) {
+		if (motion_read_frame(a->amc, &c->body.skel, s->frame, &f) < 0) {
 			rc = -1;
 			break;
 		}
-		cli_skin_frame(&c->sk, f.value);
+		runtime_skin_frame(&c->sk, f.value);
 		const report_part *part = report_view_pose(&view, &c->sk);
 		keep_closeup(&s->closeup, part);
 		/* the two ratios at the still's vertex, for the caption */

@@ -9,6 +9,7 @@
 #include <stdio.h>
 
 #include "cli_common.h"
+#include "motion_file.h"
 #include "skel.h"
 
 /* Why s cannot be written (a bone's length channel `l`, which neither
@@ -19,7 +20,7 @@ const char *convert_unsupported(const skel *s, int *bone);
  * Xrotation, the root also Xposition Yposition Zposition, other joints
  * positions only when they translate), then MOTION with frames frames of
  * m. Returns 0, or -1 after reporting a read error of m. */
-int convert_write_bvh(FILE *f, const skel *s, cli_motion *m, long frames, double frame_time);
+int convert_write_bvh(FILE *f, const skel *s, motion_file *m, long frames, double frame_time);
 
 /* ASF with :units length 1 and angle deg; a bone that starts off its
  * parent's tip (a BVH sibling joint) or translates gets tx ty tz. */
@@ -27,6 +28,6 @@ void convert_write_asf(FILE *f, const skel *s);
 
 /* AMC for that ASF: the frames of m numbered from 1, in degrees. Returns
  * the frame count, or -1 after reporting a read error of m. */
-long convert_write_amc(FILE *f, const skel *s, cli_motion *m);
+long convert_write_amc(FILE *f, const skel *s, motion_file *m);
 
 #endif

@@ -7,6 +7,7 @@
 #include <string.h>
 
 #include "convert.h"
+#include "motion_file.h"
 
 #define DEG_PER_RAD 57.295779513082320876798
 
@@ -124,13 +125,13 @@ static void write_bone_values(FILE *f, const skel_bone *b, const char *name, con
 	fputc('\n', f);
 }
 
-long convert_write_amc(FILE *f, const skel *s, cli_motion *m)
+long convert_write_amc(FILE *f, const skel *s, motion_file *m)
 {
 	static amc_frame fr;
 	fprintf(f, "# written by skintool convert\n:FULLY-SPECIFIED\n:DEGREES\n");
 	long n = 0;
 	int r;
-	while ((r = cli_motion_next(m, &fr)) > 0) {
+	while ((r = motion_file_next(m, &fr)) > 0) {
 		fprintf(f, "%ld\n", ++n);
 		for (int b = 0; b < s->count; b++) {
 			uint8_t ch[SKEL_MAX_CHANNELS + 3];

@@ -7,6 +7,7 @@
 #include <string.h>
 
 #include "convert.h"
+#include "motion_file.h"
 
 #define DEG_PER_RAD 57.295779513082320876798
 
@@ -175,14 +176,14 @@ static void write_frame_joint(FILE *f, const skel *s, int b, const float *values
 		}
 }
 
-int convert_write_bvh(FILE *f, const skel *s, cli_motion *m, long frames, double frame_time)
+int convert_write_bvh(FILE *f, const skel *s, motion_file *m, long frames, double frame_time)
 {
 	static amc_frame fr;
 	fprintf(f, "HIERARCHY\n");
 	write_joint(f, s, 0, 0);
 	fprintf(f, "MOTION\nFrames: %ld\nFrame Time: %.9g\n", frames, frame_time);
 	int r = 0;
-	for (long i = 0; i < frames && (r = cli_motion_next(m, &fr)) > 0; i++) {
+	for (long i = 0; i < frames && (r = motion_file_next(m, &fr)) > 0; i++) {
 		write_frame_joint(f, s, 0, fr.value);
 		fputc('\n', f);
 	}

@@ -11,7 +11,10 @@
 #include "cli_common.h"
 #include "cli_opts.h"
 #include "cli_progress.h"
-#include "cli_skin.h"
+#include "motion_file.h"
+#include "runtime_body.h"
+#include "runtime_skin.h"
+#include "setup_bind.h"
 #include "skin.h"
 #include "skin_compact.h"
 #include "skintool_cmds.h"
@@ -160,21 +163,21 @@ static void make_bones(skin_bones *bones)
 }
 
 /* The user's body (SKELETON [MESH], bound as `skintool bind` binds it),
- * laid out and posed as the other commands do (cli_skin), in the motion's
+ * laid out and posed as the other commands do (runtime_skin), in the motion's
  * first frame, or in the skeleton's rest pose when no motion is given;
  * *pose_name says which. */
 static int load_body(bench *b, const tool_common *c, const char **pose_name)
 {
 	static bound_body body;
-	static cli_skin sk;
+	static runtime_skin sk;
 	static amc_frame f;
-	if (bind_args_load(&c->bind, c->asf, c->mesh, &body) < 0 ||
-	    (c->amc && cli_read_frame(c->amc, &body.skel, -1, &f) < 0) ||
-	    cli_skin_init(&sk, &body.skel, &body.pose, &body.mesh, &body.weights,
+	if (setup_bind_load(&c->bind, c->asf, c->mesh, &body) < 0 ||
+	    (c->amc && motion_read_frame(c->amc, &body.skel, -1, &f) < 0) ||
+	    runtime_skin_init(&sk, &body.skel, &body.pose, &body.mesh, &body.weights,
 			  c->mesh ? c->mesh : "generated body") < 0)
 		return -1;
-	cli_skin_use_compact(&sk);
-	cli_skin_frame(&sk, c->amc ? f.value : NULL);
+	runtime_skin_use_compact(&sk);
+	runtime_skin_frame(&sk, c->amc ? f.value : NULL);
 	*pose_name = c->amc ? "the motion's first frame" : "the skeleton's rest pose";
 	b->soa = sk.soa;
 	b->compact = sk.compact;

@@ -17,7 +17,7 @@
 #include "cli_common.h"
 #include "cli_opts.h"
 #include "bench_image_codec.h"
-#include "cli_show.h"
+#include "show_source.h"
 #include "clock.h"
 #include "fk.h"
 #include "skintool_cmds.h"

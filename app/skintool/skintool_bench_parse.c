@@ -12,6 +12,7 @@
 #include "cli_common.h"
 #include "cli_opts.h"
 #include "clock.h"
+#include "motion_file.h"
 #include "skintool_cmds.h"
 
 #define MAX_FILES 64
@@ -78,7 +79,7 @@ static int measure(const char *path, const skel *s, long runs, parse_figure *out
 	uint64_t best = UINT64_MAX;
 	for (long i = 0; i < runs; i++) {
 		uint64_t t0 = clock_now_ns();
-		if ((out->frames = cli_motion_count(path, s)) < 0)
+		if ((out->frames = motion_file_count(path, s)) < 0)
 			return -1;
 		uint64_t ns = clock_now_ns() - t0;
 		best = ns < best ? ns : best;
@@ -106,7 +107,7 @@ int cmd_bench_parse(int argc, char **argv)
 		const char *p = a.file[i];
 		size_t n = strlen(p);
 		if (n > 4 && !strcmp(p + n - 4, ".asf")) {
-			if (cli_load_skel(p, &asf) < 0)
+			if (motion_load_skel(p, &asf) < 0)
 				return 1;
 			have_asf = 1;
 			continue;
@@ -114,7 +115,7 @@ int cmd_bench_parse(int argc, char **argv)
 		int bvh = bvh_is_path(p);
 		if (!bvh && !have_asf)
 			return fprintf(stderr, "skintool bench-parse: %s: give its ASF before it\n", p), 1;
-		if (bvh && cli_load_skel(p, &own) < 0)
+		if (bvh && motion_load_skel(p, &own) < 0)
 			return 1;
 		parse_figure f = { 0, 0, 0 };
 		struct stat st;

@@ -10,7 +10,9 @@
 
 #include "cli_bind_args.h"
 #include "cli_common.h"
-#include "cli_weights.h"
+#include "runtime_body.h"
+#include "setup_bind.h"
+#include "setup_weights.h"
 #include "skintool_cmds.h"
 #include "tool_args.h"
 
@@ -168,9 +170,9 @@ int cmd_bind(int argc, char **argv)
 	b.c.bind.gate_motion = b.motion;
 	b.c.bind.gate_motion_count = b.motion_count;
 	b.c.bind.gate_report = b.want_report;
-	if (bind_args_load(&b.c.bind, b.c.asf, b.c.mesh, &body) < 0)
+	if (setup_bind_load(&b.c.bind, b.c.asf, b.c.mesh, &body) < 0)
 		return 1;
-	if (cli_write_weights(b.c.out, &body.skel, &body.weights) < 0)
+	if (setup_write_weights(b.c.out, &body.skel, &body.weights) < 0)
 		return 1;
 	if (b.want_report)
 		report(stderr, &b.c.bind, &body);

@@ -10,6 +10,7 @@
 #include "cli_opts.h"
 #include "cli_quiet.h"
 #include "convert.h"
+#include "motion_file.h"
 #include "skintool_cmds.h"
 #include "text_tokens.h"
 
@@ -104,19 +105,19 @@ static int parse(convert_args *a, int argc, char **argv)
 
 static int to_bvh(const convert_args *a, const skel *s)
 {
-	static cli_motion m;
+	static motion_file m;
 	static cli_text_out out;
-	long frames = cli_motion_count(a->motion_path, s);
-	if (frames < 0 || cli_motion_open(&m, a->motion_path, s) < 0)
+	long frames = motion_file_count(a->motion_path, s);
+	if (frames < 0 || motion_file_open(&m, a->motion_path, s) < 0)
 		return -1;
 	double fps = a->fps > 0 ? a->fps : m.is_bvh && m.layout.frame_time > 0 ? 1.0 / m.layout.frame_time
 									: AMC_DEFAULT_FPS;
 	if (cli_text_out_open(&out, a->out) < 0) {
-		cli_motion_close(&m);
+		motion_file_close(&m);
 		return -1;
 	}
 	int rc = convert_write_bvh(out.f, s, &m, frames, 1.0 / fps);
-	cli_motion_close(&m);
+	motion_file_close(&m);
 	if (rc < 0) {
 		cli_text_out_abort(&out);
 		return -1;
@@ -130,7 +131,7 @@ static int to_bvh(const convert_args *a, const skel *s)
 
 static int to_asf(convert_args *a, const skel *s)
 {
-	static cli_motion m;
+	static motion_file m;
 	static cli_text_out asf, amc;
 	size_t n = strlen(a->out);
 	if (n >= sizeof a->amc_out) {
@@ -139,18 +140,18 @@ static int to_asf(convert_args *a, const skel *s)
 	}
 	memcpy(a->amc_out, a->out, n - 4);
 	memcpy(a->amc_out + n - 4, ".amc", 5);
-	if (cli_motion_open(&m, a->motion_path, s) < 0)
+	if (motion_file_open(&m, a->motion_path, s) < 0)
 		return -1;
 	asf.f = NULL;
 	if (cli_text_out_open(&asf, a->out) < 0 || cli_text_out_open(&amc, a->amc_out) < 0) {
 		if (asf.f)
 			cli_text_out_abort(&asf);
-		cli_motion_close(&m);
+		motion_file_close(&m);
 		return -1;
 	}
 	convert_write_asf(asf.f, s);
 	long frames = convert_write_amc(amc.f, s, &m);
-	cli_motion_close(&m);
+	motion_file_close(&m);
 	if (frames < 0) {
 		cli_text_out_abort(&amc);
 		cli_text_out_abort(&asf);
@@ -175,7 +176,7 @@ int cmd_convert(int argc, char **argv)
 	int rc = parse(&a, argc, argv);
 	if (rc != 0)
 		return rc < 0;
-	if (cli_load_skel(a.skel_path, &s) < 0)
+	if (motion_load_skel(a.skel_path, &s) < 0)
 		return 1;
 	int bone;
 	const char *why = ends_with(a.out, ".bvh") ? convert_unsupported(&s, &bone) : NULL;

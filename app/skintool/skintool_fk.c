@@ -8,10 +8,11 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "cli_clip_source.h"
+#include "clip_file.h"
 #include "cli_common.h"
 #include "cli_opts.h"
-#include "cli_show.h"
+#include "motion_file.h"
+#include "show_source.h"
 #include "fk.h"
 #include "play_engine.h"
 #include "play_image_source.h"
@@ -130,7 +131,7 @@ static const cli_command fk_command = {
 
 /* A clip's frames one by one: from a motion file, or from an image. */
 typedef struct fk_frames {
-	cli_motion m;
+	motion_file m;
 	play_image_source img;
 	int is_image;
 	const char *path;
@@ -139,7 +140,7 @@ typedef struct fk_frames {
 static int frames_next(fk_frames *fr, amc_frame *f)
 {
 	if (!fr->is_image)
-		return cli_motion_next(&fr->m, f);
+		return motion_file_next(&fr->m, f);
 	skp_error err;
 	int r = skp_clip_stream_next(&fr->img.stream, f, &err);
 	if (r == SKP_CLIP_LOST) {
@@ -206,23 +207,23 @@ static int print_times(const skel *s, const char *path, play_source *src, const 
 
 static int fk_motion(const skel *s, const char *amc, const fk_args *a)
 {
-	static cli_clip_source clip;
+	static clip_file clip;
 	static fk_frames fr;
 	play_source src;
 	int rc;
 	if (a->times) {
-		if (cli_clip_source_open(&clip, amc, s, a->fps, &src) < 0)
+		if (clip_file_open(&clip, amc, s, a->fps, &src) < 0)
 			return 1;
 		rc = print_times(s, amc, &src, a);
-		cli_clip_source_close(&clip);
+		clip_file_close(&clip);
 		return rc;
 	}
 	fr.is_image = 0;
 	fr.path = amc;
-	if (cli_motion_open(&fr.m, amc, s) < 0)
+	if (motion_file_open(&fr.m, amc, s) < 0)
 		return 1;
 	rc = print_frames(s, &fr, a->only);
-	cli_motion_close(&fr.m);
+	motion_file_close(&fr.m);
 	return rc;
 }
 
@@ -296,7 +297,7 @@ int cmd_fk(int argc, char **argv)
 	cli_bvh_slots(&asf, &amc, NULL);
 	if (!asf || !amc)
 		return -cli_missing(fk_command.prog, "SKELETON.asf MOTION.amc, MOTION.bvh or SHOW.skn");
-	if (cli_load_skel(asf, &s) < 0)
+	if (motion_load_skel(asf, &s) < 0)
 		return 1;
 	return fk_motion(&s, amc, &args);
 }

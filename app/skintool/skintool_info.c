@@ -9,7 +9,7 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "cli_show.h"
+#include "show_source.h"
 #include "skintool_cmds.h"
 #include "tool_args.h"
 
@@ -145,7 +145,7 @@ static long scan_raw(storage_file *sf)
 	return bad;
 }
 
-/* What skinplay checks before playing (cli_accept.c), so that info and
+/* What skinplay checks before playing (show_accept.c), so that info and
  * skinplay never disagree: 1 when the body is refused (nothing would play)
  * or a clip cannot play (each listed). */
 static int accept(show_image *s)

@@ -4,7 +4,8 @@
 #include <string.h>
 
 #include "cli_common.h"
-#include "cli_mesh_io.h"
+#include "motion_file.h"
+#include "setup_mesh_io.h"
 #include "cli_opts.h"
 #include "cli_quiet.h"
 #include "mannequin.h"
@@ -87,7 +88,7 @@ int cmd_mannequin(int argc, char **argv)
 	int rc = parse_args(argc, argv, &a);
 	if (rc != 0)
 		return rc < 0;
-	if (cli_load_skel(a.asf, &s) < 0)
+	if (motion_load_skel(a.asf, &s) < 0)
 		return 1;
 	if (manq_build(&s, (int)a.detail, &work, &body, &err) != SKP_OK) {
 		cli_error(a.asf, &err);

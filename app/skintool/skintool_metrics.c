@@ -15,9 +15,12 @@
 #include "cli_common.h"
 #include "cli_progress.h"
 #include "measure.h"
-#include "cli_skin.h"
+#include "motion_file.h"
+#include "runtime_body.h"
+#include "runtime_skin.h"
 #include "metrics.h"
 #include "scene.h"
+#include "setup_bind.h"
 #include "skintool_cmds.h"
 #include "tool_args.h"
 #include "text_tokens.h"
@@ -33,7 +36,7 @@ typedef struct metrics_args {
 
 /* The bound body and the per-frame scratch. */
 typedef struct metrics_run {
-	cli_skin sk;
+	runtime_skin sk;
 	measure_state meas;
 	float pos[3 * SKP_MAX_VERTS], nrm[3 * SKP_MAX_VERTS];
 } metrics_run;
@@ -148,7 +151,7 @@ static int parse_args(metrics_args *a, int argc, char **argv)
 static int start(metrics_run *r, const skel *s, const skel_pose *bind, const mesh *m,
 		 const skin_weights *w, const char *what)
 {
-	if (cli_skin_init(&r->sk, s, bind, m, w, what) < 0 ||
+	if (runtime_skin_init(&r->sk, s, bind, m, w, what) < 0 ||
 	    measure_init(&r->meas, m, bind, s->count, what) < 0)
 		return -1;
 	printf("frame,algo,volume_ratio,min_radius_ratio,max_radius_ratio\n");
@@ -160,7 +163,7 @@ static void metrics_pose(metrics_run *r, const metrics_args *a, long frame)
 {
 	measure_pose(&r->meas, &r->sk.pose);
 	for (int k = 0; k < a->algo_count; k++) {
-		cli_skin_run(&r->sk, a->algo[k], r->pos, r->nrm);
+		runtime_skin_run(&r->sk, a->algo[k], r->pos, r->nrm);
 		measure_row row = measure_skinned(&r->meas, r->pos, NULL);
 		printf("%ld,%s,%.6f,%.6f,%.6f\n", frame, skin_algo_name(a->algo[k]),
 		       row.volume_ratio, (double)row.radius.min, (double)row.radius.max);
@@ -176,7 +179,7 @@ static int run_scene(metrics_run *r, const metrics_args *a)
 		return -1;
 	float rad = (float)(a->angle_deg * (3.14159265358979323846 / 180.0));
 	scene_pose(&sc, (scene_kind)a->scene, rad, &pose);
-	cli_skin_pose(&r->sk, &pose);
+	runtime_skin_pose(&r->sk, &pose);
 	metrics_pose(r, a, 0);
 	return 0;
 }
@@ -184,29 +187,29 @@ static int run_scene(metrics_run *r, const metrics_args *a)
 static int run_clip(metrics_run *r, metrics_args *a)
 {
 	static bound_body body;
-	static cli_motion mo;
+	static motion_file mo;
 	static amc_frame f;
 	a->c.bind.gate_motion = &a->c.amc;
 	a->c.bind.gate_motion_count = 1;
-	if (bind_args_load(&a->c.bind, a->c.asf, a->c.mesh, &body) < 0 ||
+	if (setup_bind_load(&a->c.bind, a->c.asf, a->c.mesh, &body) < 0 ||
 	    start(r, &body.skel, &body.pose, &body.mesh, &body.weights, a->c.mesh) < 0 ||
-	    cli_motion_open(&mo, a->c.amc, &body.skel) < 0)
+	    motion_file_open(&mo, a->c.amc, &body.skel) < 0)
 		return -1;
 	static cli_progress pr;
 	static char what[300], extra[96];
-	long total = cli_motion_count(a->c.amc, &body.skel);
+	long total = motion_file_count(a->c.amc, &body.skel);
 	if (total < 0)
 		return -1;
 	snprintf(what, sizeof what, "metrics %s", cli_basename(a->c.amc));
 	cli_progress_start(&pr, what, "frames", total);
 	long frames = 0;
 	int rc;
-	while ((rc = cli_motion_next(&mo, &f)) > 0) {
-		cli_skin_frame(&r->sk, f.value);
+	while ((rc = motion_file_next(&mo, &f)) > 0) {
+		runtime_skin_frame(&r->sk, f.value);
 		metrics_pose(r, a, f.number);
 		cli_progress_step(&pr, ++frames);
 	}
-	cli_motion_close(&mo);
+	motion_file_close(&mo);
 	snprintf(extra, sizeof extra, ", %d algorithms, %d vertices", a->algo_count, body.mesh.vert_count);
 	cli_progress_end(&pr, extra);
 	return rc < 0 ? -1 : 0;

@@ -23,7 +23,9 @@
 #include "cli_image_out.h"
 #include "cli_progress.h"
 #include "cli_quiet.h"
-#include "cli_show.h"
+#include "motion_file.h"
+#include "setup_bind.h"
+#include "show_source.h"
 #include "tool_clip.h"
 #include "image_write.h"
 #include "pack_encode.h"
@@ -202,22 +204,22 @@ static void clip_name(const char *path, char *out, size_t cap)
  * 0 for an AMC, which carries none. */
 static int clip_range(const char *path, const skel *s, skp_clip_range *range, double *rate)
 {
-	static cli_motion m;
+	static motion_file m;
 	static amc_frame f;
 	skp_error err;
 	int r;
 	skp_clip_range_init(range, s);
-	if (cli_motion_open(&m, path, s) < 0)
+	if (motion_file_open(&m, path, s) < 0)
 		return -1;
 	*rate = m.is_bvh ? 1.0 / m.layout.frame_time : 0.0;
-	while ((r = cli_motion_next(&m, &f)) > 0) {
+	while ((r = motion_file_next(&m, &f)) > 0) {
 		if (skp_clip_range_add(range, &f, &err) != SKP_OK) {
 			cli_error(path, &err);
 			r = -1;
 			break;
 		}
 	}
-	cli_motion_close(&m);
+	motion_file_close(&m);
 	if (r == 0 && range->frames == 0) {
 		fprintf(stderr, "%s: no frames\n", path);
 		return -1;
@@ -263,7 +265,7 @@ static int pack_coded(skp_image_writer *w, const char *path, double fps, const p
 static int pack_clip(skp_image_writer *w, const char *path, double fps)
 {
 	static skp_clip_range range;
-	static cli_motion m;
+	static motion_file m;
 	static amc_frame f;
 	char name[SKP_MAX_NAME + 16];
 	skp_error err;
@@ -279,14 +281,14 @@ static int pack_clip(skp_image_writer *w, const char *path, double fps)
 		cli_error(path, &err);
 		return -1;
 	}
-	if (cli_motion_open(&m, path, w->s) < 0)
+	if (motion_file_open(&m, path, w->s) < 0)
 		return -1;
 	static cli_progress pr;
 	static char what[SKP_MAX_NAME + 32];
 	snprintf(what, sizeof what, "pack %s", name);
 	cli_progress_start(&pr, what, "frames", range.frames);
 	long n = 0;
-	while ((r = cli_motion_next(&m, &f)) > 0) {
+	while ((r = motion_file_next(&m, &f)) > 0) {
 		if (skp_image_clip_frame(w, &f, &err) != SKP_OK) {
 			cli_error(path, &err);
 			r = -1;
@@ -295,7 +297,7 @@ static int pack_clip(skp_image_writer *w, const char *path, double fps)
 		cli_progress_step(&pr, ++n);
 	}
 	cli_progress_clear(&pr);
-	cli_motion_close(&m);
+	motion_file_close(&m);
 	if (r == 0)
 		fprintf(cli_summary(), "clip %s: %ld frames, max error %.3g rad (%.3g deg), %.3g length units\n", name,
 		       range.frames, (double)w->dir[w->clip_count - 1].max_rot_err,
@@ -313,7 +315,7 @@ static void refuse_written(const char *out, const char *what, const skp_error *e
 }
 
 /* What skinplay would refuse is not written: the image as written, opened
- * and judged by the very acceptance skinplay runs (cli_accept.c). */
+ * and judged by the very acceptance skinplay runs (show_accept.c). */
 static int accept_written(const skp_blockdev *dev, const char *out)
 {
 	static skp_image im;
@@ -378,7 +380,7 @@ int cmd_pack(int argc, char **argv)
 		return rc < 0;
 	p.bind.gate_motion = p.amc;
 	p.bind.gate_motion_count = p.amc_count;
-	if (bind_args_load(&p.bind, p.asf, p.mesh, &body) < 0 ||
+	if (setup_bind_load(&p.bind, p.asf, p.mesh, &body) < 0 ||
 	    cli_image_out_open(&out, p.out, (uint32_t)p.block_size) < 0)
 		return 1;
 	if (write_image(&p, &body, &out.sf) < 0) {

@@ -15,7 +15,7 @@
 #include "cli_common.h"
 #include "cli_image_out.h"
 #include "cli_quiet.h"
-#include "cli_show.h"
+#include "show_source.h"
 #include "image_copies.h"
 #include "image_parity.h"
 #include "sha256.h"

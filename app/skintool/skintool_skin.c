@@ -7,8 +7,11 @@
 
 #include "cli_bind_args.h"
 #include "cli_common.h"
-#include "cli_mesh_io.h"
-#include "cli_skin.h"
+#include "motion_file.h"
+#include "runtime_body.h"
+#include "setup_bind.h"
+#include "setup_mesh_io.h"
+#include "runtime_skin.h"
 #include "skintool_cmds.h"
 #include "tool_args.h"
 
@@ -83,7 +86,7 @@ int cmd_skin(int argc, char **argv)
 {
 	static skin_args a;
 	static bound_body body;
-	static cli_skin sk;
+	static runtime_skin sk;
 	static amc_frame f;
 	static float pos[3 * SKP_MAX_VERTS], nrm[3 * SKP_MAX_VERTS];
 
@@ -92,14 +95,14 @@ int cmd_skin(int argc, char **argv)
 		return rc < 0;
 	a.c.bind.gate_motion = &a.c.amc;
 	a.c.bind.gate_motion_count = 1;
-	if (bind_args_load(&a.c.bind, a.c.asf, a.c.mesh, &body) < 0)
+	if (setup_bind_load(&a.c.bind, a.c.asf, a.c.mesh, &body) < 0)
 		return 1;
-	if (cli_read_frame(a.c.amc, &body.skel, a.frame, &f) < 0)
+	if (motion_read_frame(a.c.amc, &body.skel, a.frame, &f) < 0)
 		return 1;
-	if (cli_skin_init(&sk, &body.skel, &body.pose, &body.mesh, &body.weights, a.c.mesh) < 0)
+	if (runtime_skin_init(&sk, &body.skel, &body.pose, &body.mesh, &body.weights, a.c.mesh) < 0)
 		return 1;
-	cli_skin_frame(&sk, f.value);
-	cli_skin_run(&sk, (skin_algo)a.algo, pos, nrm);
+	runtime_skin_frame(&sk, f.value);
+	runtime_skin_run(&sk, (skin_algo)a.algo, pos, nrm);
 	store(&body.mesh, pos, nrm);
 	return mesh_write_obj(a.c.out, &body.mesh, NULL) < 0 ? 1 : 0;
 }

@@ -6,6 +6,7 @@
 #include <string.h>
 
 #include "cli_common.h"
+#include "motion_file.h"
 
 static int grow(tool_clip *c, long *cap)
 {
@@ -20,16 +21,16 @@ static int grow(tool_clip *c, long *cap)
 
 int tool_clip_load(const char *path, const skel *s, tool_clip *c)
 {
-	static cli_motion m;
+	static motion_file m;
 	static amc_frame f;
 	long cap = 0;
 	int r;
 	memset(c, 0, sizeof *c);
 	c->dofs = s->dof_count;
-	if (cli_motion_open(&m, path, s) < 0)
+	if (motion_file_open(&m, path, s) < 0)
 		return -1;
 	c->rate = m.is_bvh ? 1.0 / m.layout.frame_time : 0.0;
-	while ((r = cli_motion_next(&m, &f)) > 0) {
+	while ((r = motion_file_next(&m, &f)) > 0) {
 		if (c->n == cap && grow(c, &cap) < 0) {
 			fprintf(stderr, "%s: out of memory at frame %ld\n", path, f.number);
 			r = -1;
@@ -40,7 +41,7 @@ int tool_clip_load(const char *path, const skel *s, tool_clip *c)
 		memcpy(c->frames + (size_t)c->n * (size_t)c->dofs, f.value, sizeof(float) * (size_t)c->dofs);
 		c->n++;
 	}
-	cli_motion_close(&m);
+	motion_file_close(&m);
 	if (r == 0 && c->n == 0) {
 		fprintf(stderr, "%s: no frames\n", path);
 		r = -1;

@@ -1,4 +1,4 @@
-/* The quality gate every bind passes (cli_bind_gate.h), through the real
+/* The quality gate every bind passes (setup_gate.h), through the real
  * command line on the project's own skeleton and its generated body (no
  * shared data needed): the body as bound by skintool passes with every
  * figure reported; weights that leave every vertex to the root, or hand

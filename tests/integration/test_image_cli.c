@@ -22,7 +22,7 @@
 #include "crc32.h"
 #include "file_reader.h"
 #include "image_stream.h"
-#include "cli_show.h"
+#include "show_source.h"
 #include "storage_file.h"
 #include "test_clips.h"
 #include "test_parse.h"

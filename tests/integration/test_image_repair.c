@@ -2,7 +2,7 @@
  * and body, two short clips): every block damaged in turn (one byte
  * flipped, then the whole block zeroed) plays exactly as the undamaged
  * image, checked by a checksum of the skinned vertices of every frame of
- * every clip, through the code skinplay plays with (cli_show.h, one slot);
+ * every clip, through the code skinplay plays with (show_source.h, one slot);
  * skinplay itself exits 0 on a sample of them. Beyond repair: two bad
  * blocks of one frame group hold the last frame, a clip whose quantisation
  * is lost is skipped while the other plays, and with no clip left the body
@@ -23,8 +23,8 @@
 #include <time.h>
 #include <unistd.h>
 
-#include "cli_show.h"
-#include "cli_skin.h"
+#include "show_source.h"
+#include "runtime_skin.h"
 #include "test_paths.h"
 #include "test_run.h"
 
@@ -79,7 +79,7 @@ static uint64_t played(const char *path, int *clips)
 {
 	static show_source show;
 	static bound_body body;
-	static cli_skin sk;
+	static runtime_skin sk;
 	static amc_frame f;
 	static float pos[3 * SKP_MAX_VERTS], nrm[3 * SKP_MAX_VERTS];
 	const char *paths[1] = { path };
@@ -87,7 +87,7 @@ static uint64_t played(const char *path, int *clips)
 	*clips = 0;
 	if (show_open(&show, paths, 1, &body) < 0)
 		return 0;
-	assert_int_equal(cli_skin_init(&sk, &body.skel, &body.pose, &body.mesh, &body.weights, path), 0);
+	assert_int_equal(runtime_skin_init(&sk, &body.skel, &body.pose, &body.mesh, &body.weights, path), 0);
 	for (int c = 0; c < show_clip_count(&show); c++) {
 		play_source src;
 		skp_error err;
@@ -95,8 +95,8 @@ static uint64_t played(const char *path, int *clips)
 			continue;
 		(*clips)++;
 		while (src.next(src.ctx, &f, &err) == 1) {
-			cli_skin_frame(&sk, f.value);
-			cli_skin_run(&sk, SKIN_DQBS, pos, nrm);
+			runtime_skin_frame(&sk, f.value);
+			runtime_skin_run(&sk, SKIN_DQBS, pos, nrm);
 			h = fnv(h, pos, sizeof(float) * 3 * (size_t)body.mesh.vert_count);
 		}
 	}

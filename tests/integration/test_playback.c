@@ -14,7 +14,8 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "cli_clip_source.h"
+#include "clip_file.h"
+#include "motion_file.h"
 #include "play_engine.h"
 #include "test_paths.h"
 
@@ -22,7 +23,7 @@
 #define MAX_SHOWN 20000
 
 static skel sk;
-static cli_clip_source files[2];
+static clip_file files[2];
 static play_engine eng;
 static skel_pose prev;
 static double moves[MAX_SHOWN];
@@ -66,10 +67,10 @@ static seam play_through(const char *asf, const char *amc, const char *next_amc,
 	play_source a, b;
 	skp_error err;
 	seam out = { 0, 0, 0 };
-	assert_int_equal(cli_load_skel(asf, &sk), 0);
-	assert_int_equal(cli_clip_source_open(&files[0], amc, &sk, 120.0, &a), 0);
+	assert_int_equal(motion_load_skel(asf, &sk), 0);
+	assert_int_equal(clip_file_open(&files[0], amc, &sk, 120.0, &a), 0);
 	if (next_amc)
-		assert_int_equal(cli_clip_source_open(&files[1], next_amc, &sk, 120.0, &b), 0);
+		assert_int_equal(clip_file_open(&files[1], next_amc, &sk, 120.0, &b), 0);
 	play_config cfg = { 1.0, blend_ms, PLAY_ROOT_IN_PLACE, 1 };
 	play_init(&eng, &sk, &cfg);
 	assert_int_equal(play_start(&eng, &a, 0, &err), SKP_OK);
@@ -96,9 +97,9 @@ static seam play_through(const char *asf, const char *amc, const char *next_amc,
 		prev = eng.pose;
 	}
 	out.median = median(moves, n);
-	cli_clip_source_close(&files[0]);
+	clip_file_close(&files[0]);
 	if (next_amc)
-		cli_clip_source_close(&files[1]);
+		clip_file_close(&files[1]);
 	return out;
 }
 

@@ -20,6 +20,7 @@
 #include <unistd.h>
 
 #include "cli_common.h"
+#include "motion_file.h"
 #include "rig_map.h"
 #include "test_paths.h"
 #include "test_run.h"
@@ -104,7 +105,7 @@ static void check_map(const char *skel_rel, const want_map *want, size_t n)
 	static skel_pose p;
 	static rig_map m;
 	skp_error err;
-	if (!data(skel_rel, path, sizeof path) || cli_load_skel(path, &s) < 0)
+	if (!data(skel_rel, path, sizeof path) || motion_load_skel(path, &s) < 0)
 		fail_msg("%s: cannot load", skel_rel);
 	fk_pose(&s, NULL, &p);
 	assert_int_equal(rig_map_joints(&scene, &s, &p, NULL, &m, &err), SKP_OK);

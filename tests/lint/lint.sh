@@ -38,7 +38,7 @@ if command -v clang-tidy >/dev/null 2>&1; then
 	printf '%s\n' $sources | xargs -P "$(nproc 2>/dev/null || echo 1)" -n 1 sh -c '
 		f=$1
 		case $f in
-		app/skintool/*|app/skinplay/*|app/cli/*|app/analysis/*|app/import/*|platform/*) std=gnu11 ;;
+		app/skintool/*|app/skinplay/*|app/cli/*|app/runtime/*|app/setup/*|app/analysis/*|app/import/*|platform/*) std=gnu11 ;;
 		*) std=c11 ;;
 		esac
 		simd=""

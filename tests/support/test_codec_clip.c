@@ -13,6 +13,7 @@
 #include "cli_common.h"
 #include "codec_decode.h"
 #include "encode_error.h"
+#include "motion_file.h"
 #include "test_paths.h"
 
 /* cm per unit of the shared skeletons: CMU and HDM05 inches, endorphin cm */
@@ -26,20 +27,20 @@ int codec_test_load(const char *asf, const char *amc, codec_test_clip *c)
 	const char *a = test_data_path(asf);
 	if (!a)
 		return -1;
-	static cli_motion m;
+	static motion_file m;
 	static amc_frame f;
-	assert_int_equal(cli_load_skel(a, &c->s), 0);
-	assert_int_equal(cli_motion_open(&m, test_data_path(amc), &c->s), 0);
+	assert_int_equal(motion_load_skel(a, &c->s), 0);
+	assert_int_equal(motion_file_open(&m, test_data_path(amc), &c->s), 0);
 	long cap = 1024;
 	c->frames = malloc(sizeof(float) * (size_t)cap * (size_t)c->s.dof_count);
 	c->n = 0;
-	while (cli_motion_next(&m, &f) == 1) {
+	while (motion_file_next(&m, &f) == 1) {
 		if (c->n == cap)
 			c->frames = realloc(c->frames, sizeof(float) * (size_t)(cap *= 2) * (size_t)c->s.dof_count);
 		memcpy(c->frames + (size_t)c->n * (size_t)c->s.dof_count, f.value, sizeof(float) * (size_t)c->s.dof_count);
 		c->n++;
 	}
-	cli_motion_close(&m);
+	motion_file_close(&m);
 	c->cm = unit_cm(asf);
 	return 0;
 }

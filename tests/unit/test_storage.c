@@ -17,7 +17,7 @@
 #include "image_stream.h"
 #include "image_write.h"
 #include "storage_faulty.h"
-#include "cli_show.h"
+#include "show_source.h"
 #include "storage_file.h"
 #include "test_parse.h"
 #include "test_paths.h"

@@ -6,7 +6,7 @@
 #define REPORT_H
 
 #include "measure.h"
-#include "cli_skin.h"
+#include "runtime_skin.h"
 #include "skel.h"
 #include "skel_joints.h"
 #include "skin.h"
@@ -94,7 +94,7 @@ typedef struct report_joints {
  * values (bind_values): the joints whose bend moves the volume most.
  * The root is left out (it moves the body rigidly); so are translations.
  * sk is left in an arbitrary pose; pos and nrm are scratch. */
-void report_find_joints(cli_skin *sk, const measure_state *meas, skin_algo algo, long frame,
+void report_find_joints(runtime_skin *sk, const measure_state *meas, skin_algo algo, long frame,
 			const float *values, const float *bind_values, float *pos, float *nrm,
 			report_joints *out);
 

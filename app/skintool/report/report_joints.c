@@ -60,11 +60,11 @@ static int describe(const skel *s, int b, const float *values, report_joint *j)
 	return j->count > 0 ? 0 : -1;
 }
 
-static double volume_of(cli_skin *sk, const measure_state *meas, skin_algo algo, const float *values,
+static double volume_of(runtime_skin *sk, const measure_state *meas, skin_algo algo, const float *values,
 			float *pos, float *nrm)
 {
-	cli_skin_frame(sk, values);
-	cli_skin_run(sk, algo, pos, nrm);
+	runtime_skin_frame(sk, values);
+	runtime_skin_run(sk, algo, pos, nrm);
 	return measure_volume(meas, pos);
 }
 
@@ -83,7 +83,7 @@ static void keep_largest(report_joints *out, const report_joint *j)
 	out->joint[k] = *j;
 }
 
-void report_find_joints(cli_skin *sk, const measure_state *meas, skin_algo algo, long frame,
+void report_find_joints(runtime_skin *sk, const measure_state *meas, skin_algo algo, long frame,
 			const float *values, const float *bind_values, float *pos, float *nrm,
 			report_joints *out)
 {

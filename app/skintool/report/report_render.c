@@ -32,7 +32,7 @@ static int open_display(report_view *v, int w, int h)
 	return 0;
 }
 
-int report_view_open(report_view *v, const cli_skin *sk, const mesh *m, float floor_y, int w, int h)
+int report_view_open(report_view *v, const runtime_skin *sk, const mesh *m, float floor_y, int w, int h)
 {
 	skp_error err;
 	if (w > REPORT_VIEW_MAX_W || h > REPORT_VIEW_MAX_H) {
@@ -73,7 +73,7 @@ void report_view_scene(report_view *v, float span)
 
 /* A scene: the main camera frames both posed bodies, from the root's
  * horizontal place (render_set_extent). */
-static void frame_both(report_view *v, const cli_skin *sk)
+static void frame_both(report_view *v, const runtime_skin *sk)
 {
 	vec3 lo = vec3_make(INFINITY, INFINITY, INFINITY), hi = vec3_scale(lo, -1.0f);
 	for (int i = 0; i < 2; i++)
@@ -108,7 +108,7 @@ static float reach(const report_view *v, int joint, vec3 focus)
 /* The inset's texts: the joint's name, how it turned, how far apart the
  * methods put its skin (in mm at the body's size, as the kiosk says it; a
  * synthetic scene in its own units). */
-static void describe(report_view *v, const cli_skin *sk, report_part *p)
+static void describe(report_view *v, const runtime_skin *sk, report_part *p)
 {
 	p->mm_per_unit = v->r.mm_per_unit;
 	p->size_assumed = v->r.size_assumed;
@@ -126,12 +126,12 @@ static void describe(report_view *v, const cli_skin *sk, report_part *p)
 		snprintf(p->effect, sizeof p->effect, "LBS %d MM FROM DQBS", (int)lroundf(p->apart * p->mm_per_unit));
 }
 
-const report_part *report_view_pose(report_view *v, cli_skin *sk)
+const report_part *report_view_pose(report_view *v, runtime_skin *sk)
 {
 	static const skin_algo algo[2] = { SKIN_LBS, SKIN_DQBS };
 	report_part *p = &v->part;
 	for (int i = 0; i < 2; i++)
-		cli_skin_run(sk, algo[i], v->pos[i], v->nrm[i]);
+		runtime_skin_run(sk, algo[i], v->pos[i], v->nrm[i]);
 	skin_diff_between(&v->diff, v->pos[0], v->pos[1], v->dist);
 	p->joint = skin_diff_worst(&v->diff);
 	p->apart = p->joint >= 0 ? v->diff.score[p->joint] : 0.0f;
@@ -151,7 +151,7 @@ const report_part *report_view_pose(report_view *v, cli_skin *sk)
 
 /* The close-up camera on the focus, at once, as the kiosk's renderer
  * moves it (seen square to the bend, or across the bone). */
-static void aim_inset(report_view *v, const cli_skin *sk)
+static void aim_inset(report_view *v, const runtime_skin *sk)
 {
 	int j = v->part.joint, up = sk->skel->bone[j].parent;
 	vec3 axis = vec3_sub(sk->pose.tip[j], sk->pose.head[j]);
@@ -217,7 +217,7 @@ static void flip(report_view *v)
 		memcpy(v->top_down + row * (size_t)y, v->rgba + row * (size_t)(v->info.height - 1 - y), row);
 }
 
-int report_view_write(report_view *v, const cli_skin *sk, report_shot shot, const char *hud0, const char *hud1,
+int report_view_write(report_view *v, const runtime_skin *sk, report_shot shot, const char *hud0, const char *hud1,
 		      const char *path)
 {
 	static const char *label[2] = { "LBS", "DQBS" };

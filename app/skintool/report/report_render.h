@@ -9,7 +9,7 @@
 #ifndef REPORT_RENDER_H
 #define REPORT_RENDER_H
 
-#include "cli_skin.h"
+#include "runtime_skin.h"
 #include "display.h"
 #include "render.h"
 #include "skel_joints.h"
@@ -64,7 +64,7 @@ typedef struct report_view {
  * triangles; floor_y the ground height); the difference view's legend in
  * millimetres at the skeleton's size (skel_unit_cm). Returns 0 or -1
  * (reported). */
-int report_view_open(report_view *v, const cli_skin *sk, const mesh *m, float floor_y, int w, int h);
+int report_view_open(report_view *v, const runtime_skin *sk, const mesh *m, float floor_y, int w, int h);
 
 /* A synthetic scene rather than a body: the main camera frames the
  * posed bodies of the next report_view_pose, the close-up shows a sphere
@@ -73,11 +73,11 @@ void report_view_scene(report_view *v, float span);
 
 /* Skins sk's current pose with LBS and DQBS and finds where they part.
  * Returns v->part. */
-const report_part *report_view_pose(report_view *v, cli_skin *sk);
+const report_part *report_view_pose(report_view *v, runtime_skin *sk);
 
 /* Renders the pose of the last report_view_pose as shot, with up to two
  * HUD lines, to path. Returns 0 or -1 (reported). */
-int report_view_write(report_view *v, const cli_skin *sk, report_shot shot, const char *hud0, const char *hud1,
+int report_view_write(report_view *v, const runtime_skin *sk, report_shot shot, const char *hud0, const char *hud1,
 		      const char *path);
 
 void report_view_close(report_view *v);

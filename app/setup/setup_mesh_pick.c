@@ -1,12 +1,12 @@
-#include "cli_mesh_pick.h"
+#include "setup_mesh_pick.h"
 
 #include <stdio.h>
 #include <string.h>
 #include <strings.h>
 
-#include "cli_mesh_io.h"
+#include "setup_mesh_io.h"
 #include "cli_quiet.h"
-#include "cli_scratch.h"
+#include "setup_scratch.h"
 
 static void list_groups(const char *path, const obj_work *w)
 {
@@ -36,12 +36,12 @@ static int pick_body_group(const char *path, const obj_work *w, mesh *out)
 	long all_verts = w->file_verts, other_faces = w->file_faces - g->faces;
 	snprintf(name, sizeof name, "%s", g->name);
 	int others = w->group_count - 1;
-	if (!cli_load_obj(path, name, out, NULL))
+	if (!setup_load_obj(path, name, out, NULL))
 		return -1;
 	fprintf(cli_note(), "%s: using group '%s' (%d vertices); left out %d other group%s (%ld faces, %ld vertices",
 		path, name, out->vert_count, others, others == 1 ? "" : "s", other_faces,
 		all_verts - out->vert_count);
-	w = &cli_scratch_area()->obj;
+	w = &setup_scratch_area()->obj;
 	for (int i = 0, shown = 0; i < w->group_count && shown < 4; i++)
 		if (strcmp(w->group[i].name, name) != 0 && w->group[i].faces > 0)
 			fprintf(cli_note(), "%s %s", shown++ ? "," : ":", w->group[i].name);
@@ -159,7 +159,7 @@ static void find_parts(const mesh *m, mesh_pick_work *p)
  * no allocation in skinplay, which binds --mesh at start-up too. */
 static void pick_largest_part(const char *path, mesh *m)
 {
-	mesh_pick_work *p = &cli_scratch_area()->pick;
+	mesh_pick_work *p = &setup_scratch_area()->pick;
 	long all = m->vert_count;
 	find_parts(m, p);
 	mark_open_parts(m, p);
@@ -173,12 +173,12 @@ static void pick_largest_part(const char *path, mesh *m)
 		path, closed ? "closed " : "", kept, count - 1, count == 2 ? "" : "s", all - kept);
 }
 
-int cli_pick_mesh(const char *path, const char *group, mesh *out)
+int setup_pick_mesh(const char *path, const char *group, mesh *out)
 {
 	int missing;
-	const obj_work *w = cli_load_obj(path, group, out, &missing);
+	const obj_work *w = setup_load_obj(path, group, out, &missing);
 	if (!w && missing) {
-		list_groups(path, &cli_scratch_area()->obj);
+		list_groups(path, &setup_scratch_area()->obj);
 		return -1;
 	}
 	if (!w)

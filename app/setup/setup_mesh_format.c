@@ -1,4 +1,4 @@
-#include "cli_mesh_format.h"
+#include "setup_mesh_format.h"
 
 #include <stdio.h>
 #include <string.h>
@@ -6,7 +6,7 @@
 
 #include "cli_quiet.h"
 
-mesh_format cli_mesh_format(const char *path)
+mesh_format setup_mesh_format(const char *path)
 {
 	unsigned char head[MESH_FORMAT_HEAD];
 	FILE *f = fopen(path, "rb");
@@ -36,9 +36,9 @@ static const char *const interchange_ext[] = {
 	".mdl", ".md5mesh", ".smd", ".ogex", ".iqm", ".xml", ".3mf", ".ase", ".lwo", ".ac", ".off", ".nff",
 };
 
-int cli_mesh_is_interchange(const char *path)
+int setup_mesh_is_interchange(const char *path)
 {
-	mesh_format f = cli_mesh_format(path);
+	mesh_format f = setup_mesh_format(path);
 	if (mesh_format_is_interchange(f))
 		return 1;
 	/* an OBJ's statements are common words (NFF's "v" is its viewpoint):
@@ -46,7 +46,7 @@ int cli_mesh_is_interchange(const char *path)
 	return has_extension(path, interchange_ext, sizeof interchange_ext / sizeof interchange_ext[0]);
 }
 
-int cli_mesh_format_named(const char *path, mesh_format f)
+int setup_mesh_format_named(const char *path, mesh_format f)
 {
 	static const char *const obj[] = { ".obj" }, *const glb[] = { ".glb", ".vrm" },
 				 *const gltf[] = { ".gltf" }, *const fbx[] = { ".fbx" },
@@ -65,21 +65,21 @@ int cli_mesh_format_named(const char *path, mesh_format f)
 	}
 }
 
-void cli_mesh_format_note(const char *path, mesh_format f)
+void setup_mesh_format_note(const char *path, mesh_format f)
 {
-	if (cli_mesh_format_named(path, f) || !*extension(path))
+	if (setup_mesh_format_named(path, f) || !*extension(path))
 		return;
 	fprintf(cli_note(), "%s: the file is %s, whatever its name says ('%s'): read as that\n", path,
 		mesh_format_name(f), extension(path));
 }
 
-int cli_mesh_check_obj(const char *path)
+int setup_mesh_check_obj(const char *path)
 {
 	FILE *f = fopen(path, "rb");
 	if (!f)
 		return 0;
 	fclose(f);
-	mesh_format fmt = cli_mesh_format(path);
+	mesh_format fmt = setup_mesh_format(path);
 	if (fmt == MESH_FMT_OBJ)
 		return 0;
 	fprintf(stderr, "%s: the file is %s, not a mesh skintool reads: give an OBJ (v and f lines) or a rigged "

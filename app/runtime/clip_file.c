@@ -1,12 +1,13 @@
-#include "cli_clip_source.h"
+#include "clip_file.h"
+#include "motion_file.h"
 
 #include <math.h>
 #include <stdio.h>
 
 static int clip_next(void *ctx, amc_frame *f, skp_error *err)
 {
-	cli_clip_source *c = ctx;
-	int r = cli_motion_read(&c->m, f, err);
+	clip_file *c = ctx;
+	int r = motion_file_read(&c->m, f, err);
 	if (r > 0)
 		c->next++;
 	return r;
@@ -15,12 +16,12 @@ static int clip_next(void *ctx, amc_frame *f, skp_error *err)
 static skp_status clip_seek(void *ctx, long index, skp_error *err)
 {
 	static amc_frame skipped;
-	cli_clip_source *c = ctx;
+	clip_file *c = ctx;
 	if (index < c->next || !c->open) {
 		if (c->open)
-			cli_motion_close(&c->m);
+			motion_file_close(&c->m);
 		c->open = 0;
-		if (cli_motion_open(&c->m, c->path, c->s) < 0)
+		if (motion_file_open(&c->m, c->path, c->s) < 0)
 			return skp_fail(err, SKP_ERR_IO, 0, "cannot reopen the file");
 		c->open = 1;
 		c->next = 0;
@@ -33,9 +34,9 @@ static skp_status clip_seek(void *ctx, long index, skp_error *err)
 	return SKP_OK;
 }
 
-int cli_clip_source_open(cli_clip_source *c, const char *path, const skel *s, double amc_fps, play_source *out)
+int clip_file_open(clip_file *c, const char *path, const skel *s, double amc_fps, play_source *out)
 {
-	long frames = cli_motion_count(path, s);
+	long frames = motion_file_count(path, s);
 	c->path = path;
 	c->s = s;
 	c->open = 0;
@@ -45,7 +46,7 @@ int cli_clip_source_open(cli_clip_source *c, const char *path, const skel *s, do
 		fprintf(stderr, "%s: no frames\n", path);
 		return -1;
 	}
-	if (cli_motion_open(&c->m, path, s) < 0)
+	if (motion_file_open(&c->m, path, s) < 0)
 		return -1;
 	c->open = 1;
 	c->next = 0;
@@ -54,7 +55,7 @@ int cli_clip_source_open(cli_clip_source *c, const char *path, const skel *s, do
 		double ft = c->m.layout.frame_time;
 		if (!(ft >= 1e-6 && ft <= 10.0)) {
 			fprintf(stderr, "%s: Frame Time %g s: expected 1 us to 10 s\n", path, ft);
-			cli_clip_source_close(c);
+			clip_file_close(c);
 			return -1;
 		}
 		rate = 1.0 / ft;
@@ -64,9 +65,9 @@ int cli_clip_source_open(cli_clip_source *c, const char *path, const skel *s, do
 	return 0;
 }
 
-void cli_clip_source_close(cli_clip_source *c)
+void clip_file_close(clip_file *c)
 {
 	if (c->open)
-		cli_motion_close(&c->m);
+		motion_file_close(&c->m);
 	c->open = 0;
 }

@@ -1,12 +1,11 @@
-/* Motion for the programs: a skeleton and its frames from ASF/AMC or from
- * one BVH file (bvh.h), streamed the same way whatever the format. */
+#include "motion_file.h"
+
 #include <stdio.h>
 #include <string.h>
 
 #include "asf.h"
 #include "bvh.h"
 #include "cli_common.h"
-#include "cli_opts.h"
 #include "text_tokens.h"
 
 static int open_lines(const char *path, file_reader *fr, text_lines *tl)
@@ -20,7 +19,7 @@ static int open_lines(const char *path, file_reader *fr, text_lines *tl)
 	return 0;
 }
 
-int cli_load_skel(const char *path, skel *out)
+int motion_load_skel(const char *path, skel *out)
 {
 	static file_reader fr;
 	static text_lines tl;
@@ -51,7 +50,7 @@ static int same_joints(const skel *a, const skel *b)
 	return -1;
 }
 
-int cli_motion_open(cli_motion *m, const char *path, const skel *s)
+int motion_file_open(motion_file *m, const char *path, const skel *s)
 {
 	/* a loop reopens the same file: its cut frame is reported once */
 	if (m->path != path)
@@ -82,7 +81,7 @@ int cli_motion_open(cli_motion *m, const char *path, const skel *s)
 	return 0;
 }
 
-int cli_motion_read(cli_motion *m, amc_frame *f, skp_error *err)
+int motion_file_read(motion_file *m, amc_frame *f, skp_error *err)
 {
 	int r = m->is_bvh ? bvh_next(&m->bvh, f, err) : amc_next(&m->stream, f, err);
 	if (r == 0 && m->is_bvh && m->bvh.cut_frames > 0 && !m->warned_cut) {
@@ -98,10 +97,10 @@ int cli_motion_read(cli_motion *m, amc_frame *f, skp_error *err)
 	return r;
 }
 
-int cli_motion_next(cli_motion *m, amc_frame *f)
+int motion_file_next(motion_file *m, amc_frame *f)
 {
 	skp_error err;
-	int r = cli_motion_read(m, f, &err);
+	int r = motion_file_read(m, f, &err);
 	if (r < 0) {
 		cli_error(m->path, &err);
 		return -1;
@@ -109,32 +108,23 @@ int cli_motion_next(cli_motion *m, amc_frame *f)
 	return r;
 }
 
-void cli_motion_close(cli_motion *m)
+void motion_file_close(motion_file *m)
 {
 	file_reader_close(&m->file);
 }
 
-long cli_motion_count(const char *path, const skel *s)
+long motion_file_count(const char *path, const skel *s)
 {
-	static cli_motion m;
+	static motion_file m;
 	static amc_frame f;
-	if (cli_motion_open(&m, path, s) < 0)
+	if (motion_file_open(&m, path, s) < 0)
 		return -1;
 	long n = 0;
 	int r;
-	while ((r = cli_motion_next(&m, &f)) > 0)
+	while ((r = motion_file_next(&m, &f)) > 0)
 		n++;
-	cli_motion_close(&m);
+	motion_file_close(&m);
 	return r < 0 ? -1 : n;
-}
-
-int cli_parse_long(const char *opt, const char *text, long *out)
-{
-	if (!text || tok_parse_long(text, out) != 0) {
-		fprintf(stderr, "%s: %s expects an integer, got '%s'\n", cli_program(), opt, text ? text : "");
-		return -1;
-	}
-	return 0;
 }
 
 static void no_frame(const char *path, long number, long first, long last)
@@ -146,21 +136,21 @@ static void no_frame(const char *path, long number, long first, long last)
 			first, last);
 }
 
-int cli_read_frame(const char *path, const skel *s, long number, amc_frame *f)
+int motion_read_frame(const char *path, const skel *s, long number, amc_frame *f)
 {
-	static cli_motion m;
-	if (cli_motion_open(&m, path, s) < 0)
+	static motion_file m;
+	if (motion_file_open(&m, path, s) < 0)
 		return -1;
 	int r;
 	long first = -1, last = -1;
-	while ((r = cli_motion_next(&m, f)) > 0) {
+	while ((r = motion_file_next(&m, f)) > 0) {
 		if (first < 0)
 			first = f->number;
 		last = f->number;
 		if (number < 0 || f->number == number)
 			break;
 	}
-	cli_motion_close(&m);
+	motion_file_close(&m);
 	if (r < 0)
 		return -1;
 	if (r == 0) {

@@ -4,19 +4,20 @@
  * DQBS. A failing bind is refused with the region, the figure and the fix
  * (--joint-map, --weights mesh or not, --group); --force binds anyway with
  * the same warning. */
-#ifndef CLI_BIND_GATE_H
-#define CLI_BIND_GATE_H
+#ifndef SETUP_GATE_H
+#define SETUP_GATE_H
 
 #include <stdio.h>
 
 #include "cli_bind_args.h"
+#include "runtime_body.h"
 
 /* Fills body->gate (and prints it when a->gate_report). Returns 0 (passed, or failed under --force after the
  * warning), or -1 after refusing; name is the mesh's file (or the
  * skeleton's, for the generated body). */
-int cli_bind_gate(const bind_args *a, const char *name, bound_body *body);
+int setup_gate(const bind_args *a, const char *name, bound_body *body);
 
 /* The gate's figures, for bind --report. */
-void cli_bind_gate_report(FILE *to, const bound_body *body);
+void setup_gate_report(FILE *to, const bound_body *body);
 
 #endif

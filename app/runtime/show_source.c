@@ -1,4 +1,4 @@
-#include "cli_show.h"
+#include "show_source.h"
 
 #include <errno.h>
 #include <stdio.h>

@@ -1,13 +1,14 @@
-#include "cli_mesh_place.h"
+#include "setup_mesh_place.h"
 
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
 
 #include "bind_shape.h"
-#include "cli_mesh_io.h"
+#include "runtime_body.h"
+#include "setup_mesh_io.h"
 #include "cli_quiet.h"
-#include "cli_scratch.h"
+#include "setup_scratch.h"
 #include "skel_roles.h"
 #include "skel_tpose.h"
 
@@ -74,7 +75,7 @@ static void set_pose(bound_body *body, const float *values)
 	fk_pose(&body->skel, body->pose_value, &body->pose);
 }
 
-int cli_skel_is_biped(const skel *s, const skel_pose *pose)
+int setup_skel_is_biped(const skel *s, const skel_pose *pose)
 {
 	static skel_roles r;
 	if (s->count < 2)
@@ -88,7 +89,7 @@ int cli_skel_is_biped(const skel *s, const skel_pose *pose)
 static int check_shape(const bind_args *a, const char *obj, const bound_body *body)
 {
 	bind_shape sh;
-	if (!cli_skel_is_biped(&body->skel, &body->pose))
+	if (!setup_skel_is_biped(&body->skel, &body->pose))
 		return 0;   /* a test arm, a robot arm: any shape goes */
 	bind_shape_measure(body->mesh.pos, body->mesh.vert_count, &sh);
 	if (sh.biped || !(sh.height > 0.0f))
@@ -136,9 +137,9 @@ static float refit_to_guess(bound_body *body, float *values, bind_guess_work *w)
 	return f.scale;
 }
 
-int cli_place_mesh(const bind_args *a, const char *obj, bound_body *body)
+int setup_place_mesh(const bind_args *a, const char *obj, bound_body *body)
 {
-	int generated = cli_obj_is_generated(obj), fitted = 0;
+	int generated = setup_obj_is_generated(obj), fitted = 0;
 	if (!generated && check_shape(a, obj, body) < 0)
 		return -1;
 	if (a->fit)
@@ -150,7 +151,7 @@ int cli_place_mesh(const bind_args *a, const char *obj, bound_body *body)
 	if (a->pose_path || a->rest_pose)
 		return 0;
 	static float values[SKP_MAX_DOF];
-	bind_guess_work *w = &cli_scratch_area()->guess;
+	bind_guess_work *w = &setup_scratch_area()->guess;
 	if (generated) {
 		body->arms_raised = skel_tpose(&body->skel, values, &w->pose);
 		set_pose(body, values);

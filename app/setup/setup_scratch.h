@@ -2,20 +2,20 @@
  * part, the generated body and the weight balancing each need megabytes of
  * work space (obj_work, mesh_pick_work, manq_work, bind_balance_work, all
  * sized by the board's vertex limit; the quality gate's work after them), one
- * after another and never two at once (bind_args_load), so they share one
+ * after another and never two at once (setup_bind_load), so they share one
  * static area instead of holding five. Only the pointer a step was given
  * is valid, and only until the next step starts. */
-#ifndef CLI_SCRATCH_H
-#define CLI_SCRATCH_H
+#ifndef SETUP_SCRATCH_H
+#define SETUP_SCRATCH_H
 
 #include "bind_balance.h"
 #include "bind_gate.h"
 #include "bind_pose_guess.h"
-#include "cli_skin.h"
+#include "runtime_skin.h"
 #include "mannequin.h"
 #include "obj.h"
 
-/* cli_mesh_pick.c: a mesh's connected parts, and which are closed. */
+/* setup_mesh_pick.c: a mesh's connected parts, and which are closed. */
 typedef struct mesh_pick_work {
 	int up[SKP_MAX_VERTS];              /* union-find over vertices */
 	long tris[SKP_MAX_VERTS], verts[SKP_MAX_VERTS]; /* per root */
@@ -25,7 +25,7 @@ typedef struct mesh_pick_work {
 	uint32_t edge_other[3 * SKP_MAX_TRIS]; /* edges bucketed by their smaller vertex */
 } mesh_pick_work;
 
-typedef union cli_scratch {
+typedef union setup_scratch {
 	obj_work obj;
 	mesh_pick_work pick;
 	manq_work manq;
@@ -33,11 +33,11 @@ typedef union cli_scratch {
 	bind_guess_work guess;
 	struct {
 		bind_gate_work work;
-		cli_skin skin;
+		runtime_skin skin;
 		skel_pose pose;
 	} gate;
-} cli_scratch;
+} setup_scratch;
 
-cli_scratch *cli_scratch_area(void);
+setup_scratch *setup_scratch_area(void);
 
 #endif

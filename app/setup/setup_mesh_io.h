@@ -1,7 +1,7 @@
-/* Mesh files for the front ends: OBJ in (through the core parser, errors
+/* Mesh files for both programs: OBJ in (through the core parser, errors
  * reported as FILE:LINE: message) and OBJ out. */
-#ifndef CLI_MESH_IO_H
-#define CLI_MESH_IO_H
+#ifndef SETUP_MESH_IO_H
+#define SETUP_MESH_IO_H
 
 #include "mesh.h"
 #include "obj.h"
@@ -10,8 +10,8 @@
  * Returns the parser's work area (vertex mapping in ->source, counts,
  * groups), or NULL after reporting the error (*group_missing, when not
  * NULL, then says whether it was that the group has no faces). The work area is the start-up scratch
- * (cli_scratch.h): valid until the next call or the next binding step. */
-const obj_work *cli_load_obj(const char *path, const char *group, mesh *out, int *group_missing);
+ * (setup_scratch.h): valid until the next call or the next binding step. */
+const obj_work *setup_load_obj(const char *path, const char *group, mesh *out, int *group_missing);
 
 /* Writes a first comment "# WHAT: N vertices, M triangles" (what NULL:
  * "skinplay mesh"), v (9 significant digits), vn and `f a//a b//b c//c`
@@ -23,6 +23,6 @@ int mesh_write_obj(const char *path, const mesh *m, const char *what);
 #define TOOL_GENERATED_BODY "skintool mannequin, the generated body"
 
 /* 1 when path starts with that comment. */
-int cli_obj_is_generated(const char *path);
+int setup_obj_is_generated(const char *path);
 
 #endif

@@ -1,26 +1,27 @@
-/* The show source for the front ends: animation played from packed flash
+/* The show source for both programs: animation played from packed flash
  * images (app/image/image_format.h) instead of ASF/AMC text.
  *
  * Given one or more image slots (skinplay --image PATH, repeatable), it
  * plays the newest valid one: slots are tried by decreasing header
- * sequence; one that fails acceptance (cli_accept.c: header, skeleton,
+ * sequence; one that fails acceptance (show_accept.c: header, skeleton,
  * bound body, directory; every check made before anything plays) is
  * refused with a message, and with more than one slot a slot with a block
  * beyond repair yields to an intact older one, so an update cut short by
  * power loss never bricks the display. Blocks that fail their check are
  * rebuilt from parity or the copies, logged once each. A clip whose frames or
  * quantisation cannot be read is skipped, not the image. It fills the
- * bound body as bind_args_load does and hands out amc_frames: a frame lost
+ * bound body as setup_bind_load does and hands out amc_frames: a frame lost
  * in a block beyond repair is replaced by the last good frame, each such
  * block logged once as "image: block N bad (CRC mismatch), holding frame
  * F", and each pass over a clip that lost or rebuilt anything ends with one
  * summary line. */
-#ifndef CLI_SHOW_H
-#define CLI_SHOW_H
+#ifndef SHOW_SOURCE_H
+#define SHOW_SOURCE_H
 
 #include "cli_bind_args.h"
 #include "image_survey.h"
 #include "play_image_source.h"
+#include "runtime_body.h"
 #include "skp_ratelimit.h"
 #include "storage_file.h"
 
@@ -37,7 +38,7 @@ typedef struct show_image {
 	unsigned long unlisted;         /* damaged blocks past the table: counted */
 } show_image;
 
-/* Acceptance (cli_accept.c, app/image/image_accept.h): the skeleton and
+/* Acceptance (show_accept.c, app/image/image_accept.h): the skeleton and
  * the bound body into body, loaded and judged; each clip of skeleton s:
  * its quantisation, its meaning and its frame count. The same for any
  * opened image (pack judges what it wrote). Return 0, or -1 with err

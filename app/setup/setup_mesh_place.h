@@ -4,17 +4,18 @@
  * by bind_guess_pose (an A-posed mesh on a T-posed skeleton), unless
  * --bind-pose names one. The generated body's OBJ binds in its own pose
  * (skel_tpose.h). Each decision is said on stderr. */
-#ifndef CLI_MESH_PLACE_H
-#define CLI_MESH_PLACE_H
+#ifndef SETUP_MESH_PLACE_H
+#define SETUP_MESH_PLACE_H
 
 #include "cli_bind_args.h"
+#include "runtime_body.h"
 
 /* 1 when the skeleton (posed as pose) has a human's two legs and two
  * arms: only then is a mesh refused for not being a biped (bind_shape.h,
  * rig_biped.h). */
-int cli_skel_is_biped(const skel *s, const skel_pose *pose);
+int setup_skel_is_biped(const skel *s, const skel_pose *pose);
 
 /* Returns 0, or -1 after reporting the error. */
-int cli_place_mesh(const bind_args *a, const char *obj, bound_body *body);
+int setup_place_mesh(const bind_args *a, const char *obj, bound_body *body);
 
 #endif

@@ -1,16 +1,16 @@
-#include "cli_mesh_io.h"
+#include "setup_mesh_io.h"
 
 #include <stdio.h>
 #include <string.h>
 
 #include "cli_common.h"
-#include "cli_scratch.h"
+#include "setup_scratch.h"
 #include "cli_text_out.h"
 #include "file_reader.h"
 
-const obj_work *cli_load_obj(const char *path, const char *group, mesh *out, int *group_missing)
+const obj_work *setup_load_obj(const char *path, const char *group, mesh *out, int *group_missing)
 {
-	obj_work *work = &cli_scratch_area()->obj;
+	obj_work *work = &setup_scratch_area()->obj;
 	static file_reader fr;
 	static text_lines tl;
 	obj_options opt = { group, 0, 0 };
@@ -57,7 +57,7 @@ int mesh_write_obj(const char *path, const mesh *m, const char *what)
 	return cli_text_out_commit(&out);
 }
 
-int cli_obj_is_generated(const char *path)
+int setup_obj_is_generated(const char *path)
 {
 	char line[128];
 	FILE *f = fopen(path, "r");

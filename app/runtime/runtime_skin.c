@@ -1,4 +1,4 @@
-#include "cli_skin.h"
+#include "runtime_skin.h"
 
 #include <stdio.h>
 #include <string.h>
@@ -11,14 +11,14 @@ static _Alignas(SKIN_ALIGN) unsigned char compact_block[SKIN_COMPACT_BYTES(SKP_M
 /* The fixed-point kernel's output before conversion. */
 static int32_t fpos[3 * SKP_MAX_VERTS], fnrm[3 * SKP_MAX_VERTS];
 
-static void tune_reset(cli_skin_tune *u, int on)
+static void tune_reset(runtime_skin_tune *u, int on)
 {
 	memset(u, 0, sizeof *u);
 	u->choice = -1;
 	u->on = on;
 }
 
-int cli_skin_init(cli_skin *t, const skel *s, const skel_pose *bind, const mesh *m,
+int runtime_skin_init(runtime_skin *t, const skel *s, const skel_pose *bind, const mesh *m,
 		   const skin_weights *w, const char *what)
 {
 	skp_error err;
@@ -37,21 +37,21 @@ int cli_skin_init(cli_skin *t, const skel *s, const skel_pose *bind, const mesh 
 		cli_error(what, &err);
 		return -1;
 	}
-	cli_skin_pose(t, bind);
+	runtime_skin_pose(t, bind);
 	return 0;
 }
 
-void cli_skin_pose(cli_skin *t, const skel_pose *pose)
+void runtime_skin_pose(runtime_skin *t, const skel_pose *pose)
 {
 	if (pose != &t->pose)
 		t->pose = *pose;
 	skin_bones_compute(&t->bones, t->skel, t->bind, &t->pose);
 }
 
-void cli_skin_frame(cli_skin *t, const float *values)
+void runtime_skin_frame(runtime_skin *t, const float *values)
 {
 	fk_pose(t->skel, values, &t->pose);
-	cli_skin_pose(t, &t->pose);
+	runtime_skin_pose(t, &t->pose);
 }
 
 static void from_q16(const int32_t *in, float *out, int n)
@@ -60,25 +60,25 @@ static void from_q16(const int32_t *in, float *out, int n)
 		out[i] = (float)in[i] * (1.0f / 65536.0f);
 }
 
-void cli_skin_use_workers(cli_skin *t, workers *pool)
+void runtime_skin_use_workers(runtime_skin *t, workers *pool)
 {
 	t->pool = pool;
 }
 
-void cli_skin_measure_workers(cli_skin *t, workers *pool)
+void runtime_skin_measure_workers(runtime_skin *t, workers *pool)
 {
-	cli_skin_use_workers(t, pool);
+	runtime_skin_use_workers(t, pool);
 	tune_reset(&t->tune, pool != NULL && workers_count(pool) > 1);
 }
 
-int cli_skin_measured(const cli_skin *t, double *one_ms, double *pool_ms)
+int runtime_skin_measured(const runtime_skin *t, double *one_ms, double *pool_ms)
 {
 	*one_ms = t->tune.one_ms;
 	*pool_ms = t->tune.pool_ms;
 	return t->tune.choice;
 }
 
-int cli_skin_tune_pick(const uint64_t ns[][2], const int runs[][2], int algos, double *one_ms,
+int runtime_skin_tune_pick(const uint64_t ns[][2], const int runs[][2], int algos, double *one_ms,
 		       double *pool_ms)
 {
 	double mean[2] = { 0, 0 };
@@ -95,48 +95,48 @@ int cli_skin_tune_pick(const uint64_t ns[][2], const int runs[][2], int algos, d
 	return both ? mean[1] <= 0.9 * mean[0] : -1;
 }
 
-int cli_skin_threads(const cli_skin *t)
+int runtime_skin_threads(const runtime_skin *t)
 {
 	return t->pool && t->tune.choice != 0 ? workers_count(t->pool) : 1;
 }
 
 /* While measuring: whether this run of algo goes to the pool (-1: the
  * algorithm's first, unmeasured, on one thread). */
-static int tune_mode(const cli_skin_tune *u, skin_algo algo)
+static int tune_mode(const runtime_skin_tune *u, skin_algo algo)
 {
 	if (u->seen[algo] == 0)
 		return -1;
 	return u->runs[algo][0] > u->runs[algo][1];
 }
 
-static void tune_note(cli_skin_tune *u, skin_algo algo, int mode, uint64_t ns)
+static void tune_note(runtime_skin_tune *u, skin_algo algo, int mode, uint64_t ns)
 {
 	u->seen[algo]++;
 	if (mode < 0)
 		return;
 	u->runs[algo][mode]++;
 	u->ns[algo][mode] += ns;
-	if (++u->total < CLI_SKIN_TUNE_RUNS)
+	if (++u->total < RUNTIME_SKIN_TUNE_RUNS)
 		return;
-	u->choice = cli_skin_tune_pick((const uint64_t (*)[2])u->ns, (const int (*)[2])u->runs, SKIN_ALGO_COUNT,
+	u->choice = runtime_skin_tune_pick((const uint64_t (*)[2])u->ns, (const int (*)[2])u->runs, SKIN_ALGO_COUNT,
 				       &u->one_ms, &u->pool_ms);
 	u->on = 0;
 }
 
-void cli_skin_use_compact(cli_skin *t)
+void runtime_skin_use_compact(runtime_skin *t)
 {
 	skin_compact_attach(&t->compact, compact_block, t->soa.count);
 	skin_compact_load(&t->compact, &t->soa);
 	t->use_compact = 1;
 }
 
-int cli_skin_compact(const cli_skin *t, skin_algo algo)
+int runtime_skin_compact(const runtime_skin *t, skin_algo algo)
 {
 	return t->use_compact && (algo == SKIN_LBS || algo == SKIN_DQBS);
 }
 
 typedef struct skin_job {
-	const cli_skin *t;
+	const runtime_skin *t;
 	skin_algo algo;
 	int compact;
 	skin_out out;
@@ -158,10 +158,10 @@ static void run_share(void *ctx, int slice, int slices)
 	run_part(j, first, count);
 }
 
-static void run_kernel(cli_skin *t, skin_algo algo, int compact, const skin_out *out)
+static void run_kernel(runtime_skin *t, skin_algo algo, int compact, const skin_out *out)
 {
 	skin_job job = { t, algo, compact, *out };
-	int mode = t->tune.on ? tune_mode(&t->tune, algo) : cli_skin_threads(t) > 1;
+	int mode = t->tune.on ? tune_mode(&t->tune, algo) : runtime_skin_threads(t) > 1;
 	uint64_t t0 = t->tune.on ? clock_now_ns() : 0;
 	if (mode > 0)
 		workers_run(t->pool, run_share, &job);
@@ -171,13 +171,13 @@ static void run_kernel(cli_skin *t, skin_algo algo, int compact, const skin_out 
 		tune_note(&t->tune, algo, mode, clock_now_ns() - t0);
 }
 
-void cli_skin_run16(cli_skin *t, skin_algo algo, float *pos, int16_t *nrm16)
+void runtime_skin_run16(runtime_skin *t, skin_algo algo, float *pos, int16_t *nrm16)
 {
 	skin_out out = { pos, NULL, NULL, NULL, nrm16 };
 	run_kernel(t, algo, 1, &out);
 }
 
-void cli_skin_run(cli_skin *t, skin_algo algo, float *pos, float *nrm)
+void runtime_skin_run(runtime_skin *t, skin_algo algo, float *pos, float *nrm)
 {
 	int n = t->soa.count;
 	if (algo != SKIN_DQBS_FIXED) {

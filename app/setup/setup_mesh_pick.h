@@ -3,12 +3,12 @@
  * the file has one beside others (MakeHuman's helper geometry: eyes,
  * teeth, clothes, joint markers), else the largest closed connected part.
  * What is left out is said on stderr. */
-#ifndef CLI_MESH_PICK_H
-#define CLI_MESH_PICK_H
+#ifndef SETUP_MESH_PICK_H
+#define SETUP_MESH_PICK_H
 
 #include "mesh.h"
 
 /* Returns 0, or -1 after reporting the error. */
-int cli_pick_mesh(const char *path, const char *group, mesh *out);
+int setup_pick_mesh(const char *path, const char *group, mesh *out);
 
 #endif

@@ -8,7 +8,7 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "cli_show.h"
+#include "show_source.h"
 #include "fk.h"
 #include "image_accept.h"
 

@@ -1,9 +1,11 @@
-#include "cli_bind_gate.h"
+#include "setup_gate.h"
 
 #include <string.h>
 
 #include "cli_common.h"
-#include "cli_scratch.h"
+#include "motion_file.h"
+#include "runtime_body.h"
+#include "setup_scratch.h"
 
 /* Where a figure was worst, for messages: "with lfemur forward 60 degrees"
  * or "at frame 84 of walk.amc". */
@@ -68,12 +70,12 @@ static void say_failures(FILE *to, const char *name, const bind_args *a, const b
 			(double)bind_gate_default_limits.follow_min, fix_for(a, body, BIND_GATE_RIGID));
 }
 
-static int run_moves(const bound_body *body, bind_gate_work *w, cli_skin *sk, skel_pose *pose)
+static int run_moves(const bound_body *body, bind_gate_work *w, runtime_skin *sk, skel_pose *pose)
 {
 	for (int k = 0; k < body->rom.count; k++) {
 		bind_rom_pose(&body->skel, &body->pose, &body->rom.move[k], pose);
-		cli_skin_pose(sk, pose);
-		cli_skin_run(sk, SKIN_DQBS, w->xyz, w->nrm);
+		runtime_skin_pose(sk, pose);
+		runtime_skin_run(sk, SKIN_DQBS, w->xyz, w->nrm);
 		bind_gate_add(w, pose, w->xyz, &body->rom.move[k], k, 0);
 	}
 	return 0;
@@ -82,32 +84,32 @@ static int run_moves(const bound_body *body, bind_gate_work *w, cli_skin *sk, sk
 /* Frames of the motion, at most GATE_FRAMES of them evenly spread. */
 #define GATE_FRAMES 240
 
-static int run_motion(const char *path, long cap, const bound_body *body, bind_gate_work *w, cli_skin *sk)
+static int run_motion(const char *path, long cap, const bound_body *body, bind_gate_work *w, runtime_skin *sk)
 {
-	static cli_motion mo;
+	static motion_file mo;
 	static amc_frame f;
-	long total = cli_motion_count(path, &body->skel), n = 0;
-	if (total < 0 || cli_motion_open(&mo, path, &body->skel) < 0)
+	long total = motion_file_count(path, &body->skel), n = 0;
+	if (total < 0 || motion_file_open(&mo, path, &body->skel) < 0)
 		return -1;
 	long stride = total > cap ? (total + cap - 1) / cap : 1;
 	int rc;
-	while ((rc = cli_motion_next(&mo, &f)) > 0) {
+	while ((rc = motion_file_next(&mo, &f)) > 0) {
 		if (n++ % stride)
 			continue;
-		cli_skin_frame(sk, f.value);
-		cli_skin_run(sk, SKIN_DQBS, w->xyz, w->nrm);
+		runtime_skin_frame(sk, f.value);
+		runtime_skin_run(sk, SKIN_DQBS, w->xyz, w->nrm);
 		bind_gate_add(w, &sk->pose, w->xyz, NULL, -1, f.number);
 	}
-	cli_motion_close(&mo);
+	motion_file_close(&mo);
 	return rc < 0 ? -1 : 0;
 }
 
-int cli_bind_gate(const bind_args *a, const char *name, bound_body *body)
+int setup_gate(const bind_args *a, const char *name, bound_body *body)
 {
-	cli_scratch *sc = cli_scratch_area();
+	setup_scratch *sc = setup_scratch_area();
 	bind_gate_work *w = &sc->gate.work;
 	const mesh *m = &body->mesh;
-	if (cli_skin_init(&sc->gate.skin, &body->skel, &body->pose, m, &body->weights, name) < 0)
+	if (runtime_skin_init(&sc->gate.skin, &body->skel, &body->pose, m, &body->weights, name) < 0)
 		return -1;
 	bind_rom_build(&body->skel, &body->pose, &body->rom);
 	bind_gate_start(w, &body->skel, &body->pose, m, &body->weights, body->has_orphans ? body->orphan : NULL, NULL);
@@ -119,7 +121,7 @@ int cli_bind_gate(const bind_args *a, const char *name, bound_body *body)
 	}
 	bind_gate_finish(w, &body->gate);
 	if (a->gate_report)
-		cli_bind_gate_report(stderr, body);
+		setup_gate_report(stderr, body);
 	if (!body->gate.failed)
 		return 0;
 	say_failures(stderr, name, a, body);
@@ -136,7 +138,7 @@ static const char *verdict(const bound_body *body, unsigned check)
 	return body->gate.failed & check ? "FAILED" : "ok";
 }
 
-void cli_bind_gate_report(FILE *to, const bound_body *body)
+void setup_gate_report(FILE *to, const bound_body *body)
 {
 	const bind_gate_result *g = &body->gate;
 	const bind_gate_limits *lim = &bind_gate_default_limits;

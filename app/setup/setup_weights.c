@@ -1,4 +1,4 @@
-#include "cli_weights.h"
+#include "setup_weights.h"
 
 #include <errno.h>
 #include <stdio.h>
@@ -21,7 +21,7 @@ static int write_rows(FILE *f, const skel *s, const skin_weights *w)
 	return 0;
 }
 
-int cli_write_weights(const char *path, const skel *s, const skin_weights *w)
+int setup_write_weights(const char *path, const skel *s, const skin_weights *w)
 {
 	static cli_text_out out;
 	if (strcmp(path, "-") == 0) {
@@ -36,7 +36,7 @@ int cli_write_weights(const char *path, const skel *s, const skin_weights *w)
 	return cli_text_out_commit(&out);
 }
 
-int cli_load_weights(const char *path, const skel *s, int vert_count, skin_weights *out)
+int setup_load_weights(const char *path, const skel *s, int vert_count, skin_weights *out)
 {
 	static file_reader fr;
 	static text_lines tl;
