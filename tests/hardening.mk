@@ -51,25 +51,30 @@ FUZZ_SEEDS_makehuman := tests/fuzz/seeds/makehuman
 FUZZ_SEEDS_mesh_format := tests/fuzz/seeds/mesh_format
 FUZZ_SEEDS_codec := tests/fuzz/seeds/codec
 
-# Each target runs SECONDS on a corpus kept in the build directory. A crash
+# Each target runs SECONDS on a corpus kept in the build directory, one
+# target a job (make -j: `make fuzz-smoke` runs one a processor). A crash
 # leaves its input in $(FUZZ_OUT)/crash/<target>/: fix the parser, copy the
 # input to tests/fuzz/regressions/<target>/ and `make test` keeps it fixed.
+FUZZ_RUNS := $(FUZZ_NAMES:%=fuzz-run-%)
+.PHONY: $(FUZZ_RUNS)
+$(FUZZ_RUNS): fuzz-run-%: $(FUZZ_OUT)/fuzz_%
+	@c=$(FUZZ_OUT)/corpus/$*; mkdir -p $$c $(FUZZ_OUT)/crash/$* tests/fuzz/regressions/$*; rm -f $(FUZZ_OUT)/$*.failed; \
+	seeds=""; for d in $(FUZZ_SEEDS_$*) tests/fuzz/regressions/$*; do [ -d $$d ] && seeds="$$seeds $$d"; done; \
+	$(FUZZ_OUT)/fuzz_$* -max_total_time=$(SECONDS) -max_len=8192 -timeout=10 -rss_limit_mb=4096 \
+	  -print_final_stats=1 -artifact_prefix=$(FUZZ_OUT)/crash/$*/ $$c $$seeds > $(FUZZ_OUT)/$*.log 2>&1 \
+	  || touch $(FUZZ_OUT)/$*.failed; \
+	{ echo "== fuzz $* for $(SECONDS) s"; \
+	  grep -E '^stat::number_of_executed_units|^stat::peak_rss_mb|^#[0-9]+ *DONE|ERROR:|SUMMARY:' $(FUZZ_OUT)/$*.log | sed "s/^/  $*: /"; }
+
 fuzz: $(FUZZ_BIN)
-	@$(foreach t,$(FUZZ_NAMES),seeds_$(t)="$(FUZZ_SEEDS_$(t))";) \
-	fail=""; for t in $(FUZZ_NAMES); do \
-	  c=$(FUZZ_OUT)/corpus/$$t; mkdir -p $$c $(FUZZ_OUT)/crash/$$t tests/fuzz/regressions/$$t; \
-	  seeds=""; for d in $$(eval echo \$$seeds_$$t) tests/fuzz/regressions/$$t; do [ -d $$d ] && seeds="$$seeds $$d"; done; \
-	  echo "== fuzz $$t for $(SECONDS) s"; \
-	  $(FUZZ_OUT)/fuzz_$$t -max_total_time=$(SECONDS) -max_len=8192 -timeout=10 -rss_limit_mb=4096 \
-	    -print_final_stats=1 -artifact_prefix=$(FUZZ_OUT)/crash/$$t/ $$c $$seeds > $(FUZZ_OUT)/$$t.log 2>&1 \
-	    || fail="$$fail $$t"; \
-	  grep -E '^stat::number_of_executed_units|^stat::peak_rss_mb|^#[0-9]+ *DONE|ERROR:|SUMMARY:' $(FUZZ_OUT)/$$t.log | sed "s/^/  $$t: /"; \
-	done; \
-	if [ -n "$$fail" ]; then echo "fuzz: crashes in:$$fail (inputs in $(FUZZ_OUT)/crash/, logs $(FUZZ_OUT)/*.log)"; exit 1; fi; \
-	echo "fuzz: $(words $(FUZZ_NAMES)) targets, $(SECONDS) s each, no crash"
+	@rm -f $(FUZZ_OUT)/*.failed
+	@$(SUB_MAKE) $(FUZZ_RUNS)
+	@fail=$$(cd $(FUZZ_OUT) && ls *.failed 2>/dev/null | sed 's/\.failed$$//' | tr '\n' ' '); \
+	if [ -n "$$fail" ]; then echo "fuzz: crashes in: $$fail(inputs in $(FUZZ_OUT)/crash/, logs $(FUZZ_OUT)/*.log)"; exit 1; fi; \
+	echo "fuzz: $(words $(FUZZ_NAMES)) targets, $(SECONDS) s each, $(JOBS) at a time, no crash"
 
 fuzz-smoke:
-	@$(MAKE) --no-print-directory fuzz SECONDS=10
+	@$(SUB_MAKE) fuzz SECONDS=10
 
 -include $(wildcard $(FUZZ_OUT)/app/*/*.d $(FUZZ_OUT)/app/*/*/*.d $(FUZZ_OUT)/tests/fuzz/*.d)
 

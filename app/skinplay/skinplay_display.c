@@ -10,26 +10,14 @@
 
 int open_display(skinplay *p)
 {
-	skp_error err;
-	const char *name = p->o.platform;
-	p->disp = !name || !strcmp(name, "auto") ? display_auto() : display_find(name);
-	if (!p->disp) {
-		char names[128];
-		display_list(names, sizeof names);
-		fprintf(stderr, "skinplay: unknown platform '%s' (this build has: %s; or auto, none)\n", name, names);
-		return -1;
-	}
+	skp_error err, first;
 	display_config cfg = { p->o.width, p->o.height, p->o.device, p->o.rotation };
-	if (p->disp->init(&cfg, &p->info, &err) != 0) {
-		fprintf(stderr, "skinplay: %s: %s\n", p->disp->name, err.msg);
-		/* headless EGL can be missing where Mesa's OSMesa still works */
-		if (name && strcmp(name, "auto"))
-			return -1;
-		p->disp = display_find("osmesa");
-		if (p->disp->init(&cfg, &p->info, &err) != 0) {
-			fprintf(stderr, "skinplay: osmesa: %s\n", err.msg);
-			return -1;
-		}
+	p->disp = display_open(p->o.platform, &cfg, &p->info, &first, &err);
+	if (first.code != SKP_OK)
+		fprintf(stderr, "skinplay: %s; trying osmesa\n", first.msg);
+	if (!p->disp) {
+		fprintf(stderr, "skinplay: %s\n", err.msg);
+		return -1;
 	}
 	if (gl_api_load(&p->gl, p->disp->get_proc, &err) != SKP_OK) {
 		fprintf(stderr, "skinplay: %s: %s\n", p->disp->name, err.msg);

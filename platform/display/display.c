@@ -62,3 +62,27 @@ const display_backend *display_auto(void)
 		return x11;
 	return display_find("surfaceless");
 }
+
+const display_backend *display_open(const char *name, const display_config *cfg, display_info *info,
+				    skp_error *first, skp_error *err)
+{
+	int chosen = name && strcmp(name, "auto") && strcmp(name, "headless");
+	const display_backend *d = !chosen ? (name && !strcmp(name, "headless") ? display_find("surfaceless")
+										 : display_auto())
+					   : display_find(name);
+	skp_error_clear(first);
+	if (!d) {
+		char names[128];
+		display_list(names, sizeof names);
+		skp_fail(err, SKP_ERR_RANGE, 0, "unknown platform '%s' (this build has: %s; or auto)", name, names);
+		return NULL;
+	}
+	if (d->init(cfg, info, err) == 0)
+		return d;
+	/* headless EGL can be missing where Mesa's OSMesa still works */
+	const display_backend *soft = display_find("osmesa");
+	if (chosen || !soft || soft == d)
+		return NULL;
+	skp_fail(first, err->code, 0, "%s: %s", d->name, err->msg);
+	return soft->init(cfg, info, err) == 0 ? soft : NULL;
+}

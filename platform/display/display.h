@@ -58,6 +58,16 @@ const display_backend *display_find(const char *name);
  * surfaceless otherwise (of those the board builds). */
 const display_backend *display_auto(void);
 
+/* Starts a display: the backend named, or for NULL or "auto"
+ * display_auto's pick, for "headless" surfaceless. When auto's or the
+ * headless pick does not start, OSMesa where this build has it (headless
+ * EGL can be missing where Mesa's OSMesa still works), the first failure
+ * then in *first ("NAME: why"; code SKP_OK when there was none). Returns
+ * the started backend, or NULL with err filled (an unknown name lists the
+ * ones built). */
+const display_backend *display_open(const char *name, const display_config *cfg, display_info *info,
+				    skp_error *first, skp_error *err);
+
 /* The backends built in, by name, space-separated, into out. */
 void display_list(char *out, size_t size);
 

@@ -306,6 +306,28 @@ static void test_find_and_auto(void **state)
 	assert_ptr_equal(display_auto(), backend("kms")->available() ? backend("kms") : backend("surfaceless"));
 }
 
+/* display_open: an unknown name refused with the ones built, headless
+ * starts surfaceless, a named backend that cannot start does not fall
+ * back (the user asked for it). */
+static void test_open(void **state)
+{
+	display_config cfg = { W, H, "/nonexistent/dri/card0", 0 };
+	display_info info;
+	skp_error err, first;
+	(void)state;
+	assert_null(display_open("wayland", &cfg, &info, &first, &err));
+	assert_non_null(strstr(err.msg, "unknown platform 'wayland'"));
+	assert_non_null(strstr(err.msg, "surfaceless osmesa kms x11"));
+	assert_int_equal(first.code, SKP_OK);
+	assert_ptr_equal(display_open("headless", &cfg, &info, &first, &err), backend("surfaceless"));
+	assert_int_equal(first.code, SKP_OK);
+	assert_int_equal(info.width, W);
+	backend("surfaceless")->shutdown();
+	assert_null(display_open("kms", &cfg, &info, &first, &err));
+	assert_non_null(strstr(err.msg, "/nonexistent/dri/card0"));
+	assert_int_equal(first.code, SKP_OK);
+}
+
 static void test_png_errors(void **state)
 {
 	skp_error err;
@@ -337,6 +359,7 @@ int main(void)
 		cmocka_unit_test(test_x11_without_server),
 		cmocka_unit_test_teardown(test_x11_under_xvfb, stop_xvfb),
 		cmocka_unit_test(test_find_and_auto),
+		cmocka_unit_test(test_open),
 		cmocka_unit_test(test_png_errors),
 	};
 	return cmocka_run_group_tests(tests, NULL, NULL);

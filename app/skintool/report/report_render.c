@@ -11,17 +11,14 @@
 
 static int open_display(report_view *v, int w, int h)
 {
-	skp_error err;
+	skp_error err, first;
 	display_config cfg = { w, h, NULL, 0 };
-	v->disp = display_find("surfaceless");
-	if (v->disp->init(&cfg, &v->info, &err) != 0) {
-		fprintf(stderr, "skintool compare: surfaceless: %s; trying osmesa\n", err.msg);
-		v->disp = display_find("osmesa");
-		if (v->disp->init(&cfg, &v->info, &err) != 0) {
-			fprintf(stderr, "skintool compare: osmesa: %s\n", err.msg);
-			v->disp = NULL;
-			return -1;
-		}
+	v->disp = display_open("headless", &cfg, &v->info, &first, &err);
+	if (first.code != SKP_OK)
+		fprintf(stderr, "skintool compare: %s; trying osmesa\n", first.msg);
+	if (!v->disp) {
+		fprintf(stderr, "skintool compare: %s\n", err.msg);
+		return -1;
 	}
 	if (gl_api_load(&v->gl, v->disp->get_proc, &err) != SKP_OK) {
 		fprintf(stderr, "skintool compare: %s: %s\n", v->disp->name, err.msg);
