@@ -10,7 +10,6 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <time.h>
 
 #include "bind.h"
 #include "bind_fit.h"
@@ -612,38 +611,6 @@ static void test_makehuman_apose_regions(void **state)
 	assert_int_equal(st.bone_verts[0], root_verts);
 }
 
-static double now_s(void)
-{
-	struct timespec ts;
-	clock_gettime(CLOCK_MONOTONIC, &ts);
-	return ts.tv_sec + ts.tv_nsec * 1e-9;
-}
-
-/* 20000 vertices (the body plus jittered copies) on 31 bones. */
-static void test_bind_speed(void **state)
-{
-	(void)state;
-	if (!load_makehuman())
-		skip();
-	static vec3 p[20000];
-	srand(3);
-	for (int v = 0; v < 20000; v++) {
-		vec3 q = body.pos[v % body.vert_count];
-		p[v] = v < body.vert_count ? q
-			: vec3_add(q, vec3_make(0.3f * rand() / RAND_MAX, 0.3f * rand() / RAND_MAX,
-						0.3f * rand() / RAND_MAX));
-	}
-	double best = 1e9;
-	for (int rep = 0; rep < 5; rep++) {
-		double t0 = now_s();
-		bind_prepare(&rig, &s, &pose, NULL);
-		bind_points(p, 20000, NULL);
-		best = fmin(best, now_s() - t0);
-	}
-	print_message("bind: 20000 vertices x %d bones in %.2f ms (best of 5)\n", s.count, best * 1e3);
-	assert_true(best < 0.25);
-}
-
 int main(void)
 {
 	const struct CMUnitTest tests[] = {
@@ -664,7 +631,6 @@ int main(void)
 		cmocka_unit_test(test_csv_good),
 		cmocka_unit_test(test_csv_errors),
 		cmocka_unit_test(test_makehuman_apose_regions),
-		cmocka_unit_test(test_bind_speed),
 	};
 	return cmocka_run_group_tests(tests, NULL, NULL);
 }
