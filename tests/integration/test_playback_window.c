@@ -195,10 +195,15 @@ static void test_window_keys(void **state)
 	if (!x)
 		skip();
 	const char *log = test_scratch("keys.log");
-	int rc = test_run("export DISPLAY=%s; %s --asf assets/cmu/02.asf --amc assets/cmu/02_01.amc --platform x11 "
-			  "--size 320x240 --input none --algo compare 2>'%s' & pid=$!; sleep 3; xdotool mousemove 160 120; "
-			  "xdotool key d; sleep 1; xdotool key d; sleep 1; xdotool key 1; sleep 1; kill -TERM $pid; wait $pid",
-			  name, test_tool_path("skinplay"), log);
+	/* each key once the one before it shows in the log (up to 30 s: a
+	 * sanitizer build under a parallel test run starts slowly) */
+	int rc = test_run("export DISPLAY=%s; log='%s'; "
+			  "seen() { for i in $(seq 300); do grep -q \"$1\" \"$log\" && return 0; sleep 0.1; done; return 1; }; "
+			  "%s --asf assets/cmu/02.asf --amc assets/cmu/02_01.amc --platform x11 --size 320x240 --input none "
+			  "--algo compare 2>\"$log\" & pid=$!; seen '^display: x11' && sleep 0.5 && xdotool mousemove 160 120 && "
+			  "xdotool key d && seen 'key d -> difference' && xdotool key d && seen 'key d -> body' && "
+			  "xdotool key 1 && seen 'ALGO -> '; kill -TERM $pid; wait $pid",
+			  name, log, test_tool_path("skinplay"));
 	test_xvfb_stop(x);
 	assert_int_equal(rc, 0);
 	static const char *const want[] = { "input: key d -> difference", "input: key d -> body", "input: ALGO -> ",

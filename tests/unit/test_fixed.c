@@ -1,9 +1,12 @@
-/* Fixed-point DQ skinning (fixed.h) against double-precision references
- * written here. The fixed inputs are converted to double exactly, so the
- * measured errors are those of the integer arithmetic alone; one test also
- * goes end to end from float dqs through fixed_convert.h. Targets: below
- * 1e-6 for unit components, below 1e-3 model units for positions with
- * |p| < 1000 and |t| < 1000. The measured maxima are printed. */
+/* Fixed-point quaternion and DQ skinning (fixed.h) against double-precision
+ * references written here: quaternion products and rotations (any int32
+ * vector, saturating), DQ products, the blend and its normalisation. The
+ * fixed inputs are converted to double exactly, so the measured errors are
+ * those of the integer arithmetic alone; one test also goes end to end
+ * from float dqs through fixed_convert.h. Targets: below 1e-6 for unit
+ * components, below 1e-3 model units for positions with |p| < 1000 and
+ * |t| < 1000. The measured maxima are printed. The scalar operations and
+ * conversions: test_fixed_scalar.c. */
 #include <stdarg.h>
 #include <stddef.h>
 #include <setjmp.h>
@@ -15,31 +18,27 @@
 
 #include "dq.h"
 #include "fixed.h"
-#include "test_rng.h"
 #include "fixed_convert.h"
+#include "test_fx.h"
+#include "test_rng.h"
 
 #define N_RANDOM 5000
 #define PI 3.14159265358979323846
 #define Q30 1073741824.0
 #define POS ((double)FX_POS_ONE)
 
-static int rng_reset(void **state)
-{
-	(void)state;
-	test_rng_seed(0x1d872b41u);
-	return 0;
-}
-
-
 /* ---- double references ---------------------------------------------------- */
 
-static double q30d(int32_t v) { return v / Q30; }
 static double posd(int32_t v) { return v / POS; }
-static int32_t to_raw(double x, double one) { return (int32_t)llround(x * one); }
 
 typedef struct dquat { double c[4]; } dquat;   /* w x y z */
 
-static dquat dquat_q30(fx_quat q) { dquat r = { { q30d(q.w), q30d(q.x), q30d(q.y), q30d(q.z) } }; return r; }
+static dquat dquat_q30(fx_quat q)
+{
+	dquat r = { { test_fx_q30d(q.w), test_fx_q30d(q.x), test_fx_q30d(q.y), test_fx_q30d(q.z) } };
+	return r;
+}
+
 static dquat dquat_pos(fx_quat q) { dquat r = { { posd(q.w), posd(q.x), posd(q.y), posd(q.z) } }; return r; }
 
 static dquat dquat_mul(dquat a, dquat b)
@@ -120,14 +119,14 @@ static dquat rand_unit(void)
 
 static fx_quat fx_unit(dquat q)
 {
-	fx_quat r = { to_raw(q.c[0], Q30), to_raw(q.c[1], Q30), to_raw(q.c[2], Q30), to_raw(q.c[3], Q30) };
+	fx_quat r = { test_fx_raw(q.c[0], Q30), test_fx_raw(q.c[1], Q30), test_fx_raw(q.c[2], Q30), test_fx_raw(q.c[3], Q30) };
 	return r;
 }
 
 static fx_vec3 rand_pos(double r)
 {
-	fx_vec3 v = { to_raw(test_rng_range(-r, r), POS), to_raw(test_rng_range(-r, r), POS),
-		      to_raw(test_rng_range(-r, r), POS) };
+	fx_vec3 v = { test_fx_raw(test_rng_range(-r, r), POS), test_fx_raw(test_rng_range(-r, r), POS),
+		      test_fx_raw(test_rng_range(-r, r), POS) };
 	return v;
 }
 
@@ -135,7 +134,7 @@ static fx_vec3 rand_normal(void)
 {
 	dquat q = rand_unit();
 	double n = sqrt(q.c[1] * q.c[1] + q.c[2] * q.c[2] + q.c[3] * q.c[3]);
-	fx_vec3 v = { to_raw(q.c[1] / n, Q30), to_raw(q.c[2] / n, Q30), to_raw(q.c[3] / n, Q30) };
+	fx_vec3 v = { test_fx_raw(q.c[1] / n, Q30), test_fx_raw(q.c[2] / n, Q30), test_fx_raw(q.c[3] / n, Q30) };
 	return v;
 }
 
@@ -151,39 +150,12 @@ static int rand_weights(fx_w15 *w)
 	return n;
 }
 
-/* ---- error tracking ------------------------------------------------------------- */
+/* ---- error tracking (test_fx.h) ------------------------------------------------- */
 
-enum { E_MUL, E_QMUL, E_ROT_N, E_ROT_P, E_RSQRT, E_DQMUL_R, E_DQMUL_P, E_BLEND_R,
-       E_BLEND_P, E_BLEND_N, E_E2E_P, E_COUNT };
-static double max_err[E_COUNT];
-
-static void track(int slot, double got, double want, double tol, const char *what)
-{
-	double e = fabs(got - want);
-
-	if (e > max_err[slot])
-		max_err[slot] = e;
-	if (!(e <= tol))
-		fail_msg("%s: got %.12g want %.12g (error %.3g > %.3g)", what, got, want, e, tol);
-}
+enum { E_QMUL, E_ROT_N, E_ROT_P, E_DQMUL_R, E_DQMUL_P, E_BLEND_R, E_BLEND_P, E_BLEND_N, E_E2E_P, E_COUNT };
+_Static_assert(E_COUNT <= TEST_FX_SLOTS, "more slots than test_fx keeps");
 
 /* ---- tests ---------------------------------------------------------------------- */
-
-static void test_mul_q30(void **state)
-{
-	(void)state;
-	for (int i = 0; i < 20 * N_RANDOM; i++) {
-		/* a in [-1, 1], b anything: the result must be a * b rounded */
-		int32_t a = to_raw(test_rng_range(-1, 1), Q30), b = (int32_t)test_rng_u32();
-		double want = q30d(a) * b;
-		track(E_MUL, fx_mul_q30(a, b), want, 0.5 + 1e-6, "fx_mul_q30 (LSB of b's format)");
-	}
-	assert_int_equal(fx_mul_q30(FX_Q30_ONE, 12345), 12345);
-	assert_int_equal(fx_mul_q30(FX_Q30_ONE / 2, 3), 2);    /* 1.5 rounds up */
-	assert_int_equal(fx_mul_q30(FX_Q30_ONE / 2, -3), -1);  /* -1.5 rounds up too */
-	assert_int_equal(fx_mul_q30(INT32_MIN, INT32_MIN), INT32_MAX);  /* 4 saturates */
-	print_message("fx_mul_q30: max error %.3g LSB (bound 0.5)\n", max_err[E_MUL]);
-}
 
 static void test_quat_mul(void **state)
 {
@@ -193,21 +165,21 @@ static void test_quat_mul(void **state)
 		fx_quat r = fx_quat_mul(a, b);
 		dquat want = dquat_mul(dquat_q30(a), dquat_q30(b)), got = dquat_q30(r);
 		for (int k = 0; k < 4; k++)
-			track(E_QMUL, got.c[k], want.c[k], 1e-9, "fx_quat_mul");
+			test_fx_track(E_QMUL, got.c[k], want.c[k], 1e-9, "fx_quat_mul");
 		/* unit times a Q16.16 quaternion: result in Q16.16 */
-		fx_quat d = { to_raw(test_rng_range(-500, 500), POS), to_raw(test_rng_range(-500, 500), POS),
-			      to_raw(test_rng_range(-500, 500), POS), to_raw(test_rng_range(-500, 500), POS) };
+		fx_quat d = { test_fx_raw(test_rng_range(-500, 500), POS), test_fx_raw(test_rng_range(-500, 500), POS),
+			      test_fx_raw(test_rng_range(-500, 500), POS), test_fx_raw(test_rng_range(-500, 500), POS) };
 		dquat wd = dquat_mul(dquat_q30(a), dquat_pos(d)), gd = dquat_pos(fx_quat_mul(a, d));
 		for (int k = 0; k < 4; k++)
-			track(E_QMUL, gd.c[k] * 1e-6, wd.c[k] * 1e-6, 1e-9, "fx_quat_mul mixed (scaled)");
+			test_fx_track(E_QMUL, gd.c[k] * 1e-6, wd.c[k] * 1e-6, 1e-9, "fx_quat_mul mixed (scaled)");
 		/* exact dot product */
 		dquat da = dquat_q30(a), db = dquat_q30(b);
 		double dot = 0;
 		for (int k = 0; k < 4; k++)
 			dot += da.c[k] * db.c[k];
-		track(E_QMUL, (double)fx_quat_dot(a, b) / (Q30 * Q30), dot, 1e-15, "fx_quat_dot");
+		test_fx_track(E_QMUL, (double)fx_quat_dot(a, b) / (Q30 * Q30), dot, 1e-15, "fx_quat_dot");
 	}
-	print_message("fx_quat_mul: max error %.3g (unit components)\n", max_err[E_QMUL]);
+	print_message("fx_quat_mul: max error %.3g (unit components)\n", test_fx_max_err[E_QMUL]);
 }
 
 static void test_rotate(void **state)
@@ -219,21 +191,21 @@ static void test_rotate(void **state)
 		dquat_mat(dquat_q30(q), m);
 
 		fx_vec3 n = rand_normal(), rn = fx_quat_rotate(q, n);
-		double dn[3] = { q30d(n.x), q30d(n.y), q30d(n.z) };
+		double dn[3] = { test_fx_q30d(n.x), test_fx_q30d(n.y), test_fx_q30d(n.z) };
 		dmat_apply(m, dn, want);
-		track(E_ROT_N, q30d(rn.x), want[0], 1e-8, "rotate normal x");
-		track(E_ROT_N, q30d(rn.y), want[1], 1e-8, "rotate normal y");
-		track(E_ROT_N, q30d(rn.z), want[2], 1e-8, "rotate normal z");
+		test_fx_track(E_ROT_N, test_fx_q30d(rn.x), want[0], 1e-8, "rotate normal x");
+		test_fx_track(E_ROT_N, test_fx_q30d(rn.y), want[1], 1e-8, "rotate normal y");
+		test_fx_track(E_ROT_N, test_fx_q30d(rn.z), want[2], 1e-8, "rotate normal z");
 
 		fx_vec3 p = rand_pos(1000), rp = fx_quat_rotate(q, p);
 		double dp[3] = { posd(p.x), posd(p.y), posd(p.z) };
 		dmat_apply(m, dp, want);
-		track(E_ROT_P, posd(rp.x), want[0], 1e-4, "rotate point x");
-		track(E_ROT_P, posd(rp.y), want[1], 1e-4, "rotate point y");
-		track(E_ROT_P, posd(rp.z), want[2], 1e-4, "rotate point z");
+		test_fx_track(E_ROT_P, posd(rp.x), want[0], 1e-4, "rotate point x");
+		test_fx_track(E_ROT_P, posd(rp.y), want[1], 1e-4, "rotate point y");
+		test_fx_track(E_ROT_P, posd(rp.z), want[2], 1e-4, "rotate point z");
 	}
 	print_message("fx_quat_rotate: max error %.3g (normals), %.3g units (points |p| < 1000)\n",
-		      max_err[E_ROT_N], max_err[E_ROT_P]);
+		      test_fx_max_err[E_ROT_N], test_fx_max_err[E_ROT_P]);
 }
 
 /* Any int32 vector, even |v| > 2^31: no overflow inside (UBSan would trap
@@ -264,72 +236,6 @@ static void test_rotate_extremes(void **state)
 	}
 }
 
-static void test_isqrt_rsqrt(void **state)
-{
-	(void)state;
-	const uint64_t edge[] = { 0, 1, 2, 3, 4, 5, 15, 16, 17, UINT32_MAX, (uint64_t)UINT32_MAX * UINT32_MAX,
-				  (uint64_t)UINT32_MAX * UINT32_MAX - 1, UINT64_MAX, UINT64_MAX - 1,
-				  (uint64_t)1 << 62, ((uint64_t)1 << 62) - 1 };
-	for (size_t i = 0; i < sizeof edge / sizeof edge[0] + 20 * N_RANDOM; i++) {
-		uint64_t x = i < sizeof edge / sizeof edge[0] ? edge[i] : test_rng_u64() >> (test_rng_u32() % 64);
-		unsigned __int128 s = fx_isqrt64(x);
-		if (!(s * s <= x && (s + 1) * (s + 1) > x))
-			fail_msg("isqrt(%llu) = %llu", (unsigned long long)x, (unsigned long long)s);
-	}
-	double worst = 0;
-	for (int i = 0; i < 20 * N_RANDOM; i++) {
-		/* squared norms from 2^-30 up to just below 4 (Q60) */
-		uint64_t x = (test_rng_u64() >> 2) >> (test_rng_u32() % 61);
-		if (x == 0)
-			continue;
-		int shift;
-		uint32_t m = fx_rsqrt_q60(x, &shift);
-		double want = 1.0 / sqrt((double)x / 1152921504606846976.0);
-		double got = ldexp(m, -shift);
-		double rel = fabs(got / want - 1.0);
-		if (rel > worst)
-			worst = rel;
-		/* Newton in Q31 with a Q30 copy of x: within two LSBs of Q31 */
-		assert_true(rel < 2.0 / Q30);
-		assert_true(m >= (1u << 30) && m < (1u << 31) && shift >= 1 && shift <= 31);
-	}
-	max_err[E_RSQRT] = worst;
-	int shift = 7;
-	assert_int_equal(fx_rsqrt_q60(0, &shift), 0);
-	assert_int_equal(shift, 0);
-	assert_int_equal(fx_rsqrt_q60((uint64_t)1 << 62, &shift), 0);
-	print_message("fx_isqrt64 exact; fx_rsqrt_q60: max relative error %.3g (bound 2^-29 = 1.9e-9)\n", worst);
-}
-
-static void test_recip(void **state)
-{
-	(void)state;
-	double worst = 0;
-	for (int i = 0; i < 20 * N_RANDOM + 4; i++) {
-		/* squared norms from 2^-60 up to just below 2 (Q60), the ends
-		 * of the range and of the seed's segments among them */
-		uint64_t x = i == 0 ? 1 : i == 1 ? ((uint64_t)1 << 61) - 1 : i == 2 ? (uint64_t)1 << 60
-			   : i == 3 ? ((uint64_t)9 << 57) - 1 : (test_rng_u64() >> 3) >> (test_rng_u32() % 61);
-		if (x == 0)
-			continue;
-		int e;
-		uint32_t y = fx_recip_q60(x, &e);
-		double want = 1152921504606846976.0 / (double)x, got = ldexp(y, e - 31);
-		double rel = fabs(got / want - 1.0);
-		if (rel > worst)
-			worst = rel;
-		/* X cut to Q30 (up to 2^-30) and Newton in Q31 */
-		assert_true(rel < 2.0 / Q30);
-		assert_true(y >= (1u << 30) && y <= (1u << 31) && e >= 0 && e <= 60);
-	}
-	int e = 7;
-	assert_int_equal(fx_recip_q60(0, &e), 0);
-	assert_int_equal(e, 0);
-	assert_int_equal(fx_recip_q60((uint64_t)1 << 61, &e), 0);
-	assert_int_equal(fx_recip_q60(UINT64_MAX, &e), 0);
-	print_message("fx_recip_q60: max relative error %.3g (bound 2^-29 = 1.9e-9)\n", worst);
-}
-
 /* Bone with a rotation and |t| < tmax, built in fixed from exact Q30/Q16. */
 static fx_dq rand_fx_bone(double tmax)
 {
@@ -346,15 +252,15 @@ static void test_dq_mul(void **state)
 
 		/* from_quat_trans + translation round trip */
 		fx_vec3 t2 = fx_dq_translation(&a);
-		track(E_DQMUL_P, posd(t2.x), posd(ta.x), 1e-3, "fx_dq_translation x");
-		track(E_DQMUL_P, posd(t2.y), posd(ta.y), 1e-3, "fx_dq_translation y");
-		track(E_DQMUL_P, posd(t2.z), posd(ta.z), 1e-3, "fx_dq_translation z");
+		test_fx_track(E_DQMUL_P, posd(t2.x), posd(ta.x), 1e-3, "fx_dq_translation x");
+		test_fx_track(E_DQMUL_P, posd(t2.y), posd(ta.y), 1e-3, "fx_dq_translation y");
+		test_fx_track(E_DQMUL_P, posd(t2.z), posd(ta.z), 1e-3, "fx_dq_translation z");
 
 		/* reference: p -> Ra (Rb p + tb) + ta in double */
 		fx_dq ab = fx_dq_mul(&a, &b);
 		dquat want = dquat_mul(dquat_q30(qa), dquat_q30(qb)), got = dquat_q30(ab.real);
 		for (int k = 0; k < 4; k++)
-			track(E_DQMUL_R, got.c[k], want.c[k], 1e-6, "fx_dq_mul real");
+			test_fx_track(E_DQMUL_R, got.c[k], want.c[k], 1e-6, "fx_dq_mul real");
 		double ma[3][3], mb[3][3], dtb[3] = { posd(tb.x), posd(tb.y), posd(tb.z) };
 		dquat_mat(dquat_q30(qa), ma);
 		dquat_mat(dquat_q30(qb), mb);
@@ -366,12 +272,12 @@ static void test_dq_mul(void **state)
 		dmat_apply(ma, x, y);
 		y[0] += posd(ta.x); y[1] += posd(ta.y); y[2] += posd(ta.z);
 		fx_vec3 r = fx_dq_transform_point(&ab, p);
-		track(E_DQMUL_P, posd(r.x), y[0], 1e-3, "fx_dq_mul point x");
-		track(E_DQMUL_P, posd(r.y), y[1], 1e-3, "fx_dq_mul point y");
-		track(E_DQMUL_P, posd(r.z), y[2], 1e-3, "fx_dq_mul point z");
+		test_fx_track(E_DQMUL_P, posd(r.x), y[0], 1e-3, "fx_dq_mul point x");
+		test_fx_track(E_DQMUL_P, posd(r.y), y[1], 1e-3, "fx_dq_mul point y");
+		test_fx_track(E_DQMUL_P, posd(r.z), y[2], 1e-3, "fx_dq_mul point z");
 	}
 	print_message("fx_dq_mul: max error %.3g (real), %.3g units (points, |p|, |t| < 1000)\n",
-		      max_err[E_DQMUL_R], max_err[E_DQMUL_P]);
+		      test_fx_max_err[E_DQMUL_R], test_fx_max_err[E_DQMUL_P]);
 }
 
 /* Bones with translations up to tmax per axis, points |p| < 1000. */
@@ -413,26 +319,26 @@ static void blend_run(double tmax)
 		double nb = dquat_norm(b0);
 		dquat got = dquat_q30(b.real);
 		for (int k = 0; k < 4; k++)
-			track(E_BLEND_R, got.c[k], b0.c[k] / nb, 1e-6, "blend real / |real|");
+			test_fx_track(E_BLEND_R, got.c[k], b0.c[k] / nb, 1e-6, "blend real / |real|");
 
 		/* the kernels' path: the transform with the division folded in */
 		fx_vec3 p = rand_pos(1000), nn = rand_normal(), np, rn;
 		fx_dq_transform_blend(&blend, p, nn, &np, &rn);
 		double dp[3] = { posd(p.x), posd(p.y), posd(p.z) }, want[3];
 		dmat_apply(ref.r, dp, want);
-		track(E_BLEND_P, posd(np.x), want[0] + ref.t[0], 1e-3, "DQBS point x");
-		track(E_BLEND_P, posd(np.y), want[1] + ref.t[1], 1e-3, "DQBS point y");
-		track(E_BLEND_P, posd(np.z), want[2] + ref.t[2], 1e-3, "DQBS point z");
+		test_fx_track(E_BLEND_P, posd(np.x), want[0] + ref.t[0], 1e-3, "DQBS point x");
+		test_fx_track(E_BLEND_P, posd(np.y), want[1] + ref.t[1], 1e-3, "DQBS point y");
+		test_fx_track(E_BLEND_P, posd(np.z), want[2] + ref.t[2], 1e-3, "DQBS point z");
 
-		double dn[3] = { q30d(nn.x), q30d(nn.y), q30d(nn.z) };
+		double dn[3] = { test_fx_q30d(nn.x), test_fx_q30d(nn.y), test_fx_q30d(nn.z) };
 		dmat_apply(ref.r, dn, want);
-		track(E_BLEND_N, q30d(rn.x), want[0], 1e-6, "DQBS normal x");
-		track(E_BLEND_N, q30d(rn.y), want[1], 1e-6, "DQBS normal y");
-		track(E_BLEND_N, q30d(rn.z), want[2], 1e-6, "DQBS normal z");
+		test_fx_track(E_BLEND_N, test_fx_q30d(rn.x), want[0], 1e-6, "DQBS normal x");
+		test_fx_track(E_BLEND_N, test_fx_q30d(rn.y), want[1], 1e-6, "DQBS normal y");
+		test_fx_track(E_BLEND_N, test_fx_q30d(rn.z), want[2], 1e-6, "DQBS normal z");
 	}
 	print_message("fixed DQBS (1-4 influences, |t_i| < %.0f per axis, |p| < 1000): max error %.3g "
 		      "(real components), %.3g units (points), %.3g (normals)\n", tmax,
-		      max_err[E_BLEND_R], max_err[E_BLEND_P], max_err[E_BLEND_N]);
+		      test_fx_max_err[E_BLEND_R], test_fx_max_err[E_BLEND_P], test_fx_max_err[E_BLEND_N]);
 }
 
 static void test_blend(void **state)
@@ -446,7 +352,7 @@ static void test_blend(void **state)
 static void test_blend_far(void **state)
 {
 	(void)state;
-	max_err[E_BLEND_R] = max_err[E_BLEND_P] = max_err[E_BLEND_N] = 0;
+	test_fx_max_err[E_BLEND_R] = test_fx_max_err[E_BLEND_P] = test_fx_max_err[E_BLEND_N] = 0;
 	blend_run(4000);
 }
 
@@ -532,99 +438,24 @@ static void test_end_to_end_from_float(void **state)
 		dmat_apply(ref.r, dp, want);
 		/* float dq input, Q16 point input and float output each add
 		 * rounding; the target is the same 1e-3 */
-		track(E_E2E_P, got.x, want[0] + ref.t[0], 1e-3, "end to end x");
-		track(E_E2E_P, got.y, want[1] + ref.t[1], 1e-3, "end to end y");
-		track(E_E2E_P, got.z, want[2] + ref.t[2], 1e-3, "end to end z");
+		test_fx_track(E_E2E_P, got.x, want[0] + ref.t[0], 1e-3, "end to end x");
+		test_fx_track(E_E2E_P, got.y, want[1] + ref.t[1], 1e-3, "end to end y");
+		test_fx_track(E_E2E_P, got.z, want[2] + ref.t[2], 1e-3, "end to end z");
 	}
-	print_message("end to end from float dqs: max error %.3g units\n", max_err[E_E2E_P]);
-}
-
-static void test_convert(void **state)
-{
-	(void)state;
-	assert_int_equal(fx_q30_from_float(1.0f), FX_Q30_ONE);
-	assert_int_equal(fx_q30_from_float(-1.0f), -FX_Q30_ONE);
-	assert_int_equal(fx_q30_from_float(2.0f), INT32_MAX);
-	assert_int_equal(fx_q30_from_float(-2.0f), INT32_MIN);
-	assert_int_equal(fx_q30_from_float(1e30f), INT32_MAX);
-	assert_int_equal(fx_q30_from_float(NAN), 0);
-	assert_int_equal(fx_pos_from_float(1.5f), 3 * FX_POS_ONE / 2);
-	assert_int_equal(fx_pos_from_float(40000.0f), INT32_MAX);
-	assert_int_equal(fx_pos_from_float(-40000.0f), INT32_MIN);
-	/* ties away from zero, otherwise nearest */
-	assert_int_equal(fx_pos_from_float(0.5f / FX_POS_ONE), 1);
-	assert_int_equal(fx_pos_from_float(-0.5f / FX_POS_ONE), -1);
-	assert_int_equal(fx_pos_from_float(0.49f / FX_POS_ONE), 0);
-	assert_int_equal(fx_w15_from_float(1.0f), 32768);
-	assert_int_equal(fx_w15_from_float(2.0f), 32768);
-	assert_int_equal(fx_w15_from_float(-1.0f), 0);
-	for (int i = 0; i < N_RANDOM; i++) {
-		float f = (float)test_rng_range(-1000, 1000);
-		assert_true(fabs(fx_pos_to_double(fx_pos_from_float(f)) - f) <= 0.5 / POS);
-		float u = (float)test_rng_range(-1, 1);
-		assert_true(fabs(fx_q30_to_double(fx_q30_from_float(u)) - u) <= 0.5 / Q30);
-		/* from 2^-7 up a float's ulp is a multiple of 2^-30: exact */
-		if (fabsf(u) >= 1.0f / 128)
-			assert_true(fx_q30_to_float(fx_q30_from_float(u)) == u);
-	}
-	dq d = dq_from_quat_trans(quat_from_axis_angle(vec3_make(0, 0, 1), 0.5f), vec3_make(10, 20, 30));
-	fx_dq fd = fx_dq_from_dq(&d);
-	dq back = fx_dq_to_dq(&fd);
-	assert_true(fabs(back.real.z - d.real.z) < 1e-7 && fabs(back.dual.x - d.dual.x) < 1e-4);
-}
-
-static void test_weights(void **state)
-{
-	(void)state;
-	fx_w15 out[8];
-	const float thirds[3] = { 1, 1, 1 };
-	assert_int_equal(fx_weights_from_float(thirds, out, 3), SKP_OK);
-	assert_int_equal(out[0] + out[1] + out[2], 32768);
-	const float one[1] = { 0.3f };
-	assert_int_equal(fx_weights_from_float(one, out, 1), SKP_OK);
-	assert_int_equal(out[0], 32768);
-	const float zeros[2] = { 0, 0 }, neg[2] = { 1, -0.5f };
-	assert_int_equal(fx_weights_from_float(zeros, out, 2), SKP_ERR_RANGE);
-	assert_int_equal(out[0], 32768);
-	assert_int_equal(fx_weights_from_float(neg, out, 2), SKP_ERR_RANGE);
-
-	for (int i = 0; i < N_RANDOM; i++) {
-		int n = 1 + (int)(test_rng_u32() % 8);
-		float w[8];
-		double s = 0;
-		for (int j = 0; j < n; j++) {
-			/* include tiny and zero weights */
-			w[j] = (test_rng_u32() % 5 == 0) ? 0.0f : (float)pow(10, test_rng_range(-6, 0));
-			s += w[j];
-		}
-		if (s == 0)
-			w[0] = 1, s = 1;
-		assert_int_equal(fx_weights_from_float(w, out, n), SKP_OK);
-		unsigned sum = 0;
-		for (int j = 0; j < n; j++) {
-			sum += out[j];
-			assert_true(fabs(out[j] - w[j] / s * 32768) < 1.0);
-		}
-		assert_int_equal(sum, 32768);
-	}
+	print_message("end to end from float dqs: max error %.3g units\n", test_fx_max_err[E_E2E_P]);
 }
 
 int main(void)
 {
 	const struct CMUnitTest tests[] = {
-		cmocka_unit_test_setup(test_mul_q30, rng_reset),
-		cmocka_unit_test_setup(test_quat_mul, rng_reset),
-		cmocka_unit_test_setup(test_rotate, rng_reset),
-		cmocka_unit_test_setup(test_rotate_extremes, rng_reset),
-		cmocka_unit_test_setup(test_isqrt_rsqrt, rng_reset),
-		cmocka_unit_test_setup(test_recip, rng_reset),
-		cmocka_unit_test_setup(test_dq_mul, rng_reset),
-		cmocka_unit_test_setup(test_blend, rng_reset),
-		cmocka_unit_test_setup(test_blend_far, rng_reset),
-		cmocka_unit_test_setup(test_blend_special, rng_reset),
-		cmocka_unit_test_setup(test_end_to_end_from_float, rng_reset),
-		cmocka_unit_test_setup(test_convert, rng_reset),
-		cmocka_unit_test_setup(test_weights, rng_reset),
+		cmocka_unit_test_setup(test_quat_mul, test_fx_rng_reset),
+		cmocka_unit_test_setup(test_rotate, test_fx_rng_reset),
+		cmocka_unit_test_setup(test_rotate_extremes, test_fx_rng_reset),
+		cmocka_unit_test_setup(test_dq_mul, test_fx_rng_reset),
+		cmocka_unit_test_setup(test_blend, test_fx_rng_reset),
+		cmocka_unit_test_setup(test_blend_far, test_fx_rng_reset),
+		cmocka_unit_test_setup(test_blend_special, test_fx_rng_reset),
+		cmocka_unit_test_setup(test_end_to_end_from_float, test_fx_rng_reset),
 	};
 	return cmocka_run_group_tests_name("fixed", tests, NULL, NULL);
 }
