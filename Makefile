@@ -101,6 +101,9 @@ test_bins    = $(patsubst %.c,$(OUT)/tests/%,$(notdir $(wildcard tests/$(1)/test
 TEST_UNIT_BIN  := $(call test_bins,unit)
 TEST_INTEG_BIN := $(call test_bins,integration)
 TEST_BIN       := $(TEST_UNIT_BIN) $(TEST_INTEG_BIN)
+# kept between runs (make would delete them as intermediates, and the
+# next run would compile them again)
+.SECONDARY: $(TESTLIB_OBJ) $(TEST_BIN:$(OUT)/tests/%=$(OUT)/tests/obj/%.o)
 # Builds and test programs use every processor unless make was given -j.
 JOBS      ?= $(shell nproc 2>/dev/null || echo 1)
 SUB_MAKE  := $(MAKE) --no-print-directory $(if $(filter -j%,$(MAKEFLAGS)),,-j$(JOBS))

@@ -102,7 +102,8 @@ $(OUT)/host/emb/%.o: tests/embedded/%.c $(EMB_TABLES) $(EMB_FLOAT) $(EMB_CODEC) 
 # No crt0, no syscalls: newlib's libc and libm only resolve what the core
 # names (memcpy, strcmp, sinf...). Anything that would need malloc or a
 # system call fails to link; the nm check below makes it explicit.
-$(EMB_ELF): $(OUT)/emb/emb_skin.o $(OUT)/emb/emb_cortex_m.o $(CORE_LIB) tests/embedded/mps2.ld
+$(EMB_ELF): $(OUT)/emb/emb_skin.o $(OUT)/emb/emb_hash.o $(OUT)/emb/emb_stress.o $(OUT)/emb/emb_cortex_m.o \
+            $(CORE_LIB) tests/embedded/mps2.ld
 	$(CC) $(MCU_CPU) -nostartfiles -T tests/embedded/mps2.ld -Wl,--gc-sections \
 	  -Wl,-Map=$(OUT)/emb_skin.map -o $@ $(filter %.o %.a,$^) -lm -lc -lgcc
 	@if $(NM) $@ | grep -qwE '_?(malloc|calloc|realloc|free|_sbrk|_write|printf)'; then \
@@ -113,7 +114,8 @@ ifneq ($(MCU_FULL),1)
 	  echo "$@: the fixed-point build links floating-point helpers:"; $(NM) $@ | grep -E '__aeabi_[fd]|__(add|sub|mul|div)[sd]f3'; \
 	  rm -f $@; exit 1; fi
 endif
-$(EMB_HOST): $(OUT)/host/emb/emb_skin.o $(OUT)/host/emb/emb_host.o $(HOST_CORE_LIB)
+$(EMB_HOST): $(OUT)/host/emb/emb_skin.o $(OUT)/host/emb/emb_hash.o $(OUT)/host/emb/emb_stress.o \
+             $(OUT)/host/emb/emb_host.o $(HOST_CORE_LIB)
 	$(HOSTCC) -o $@ $^ -lm
 
 # The benchmark (tests/embedded/emb_bench.c): both DQBS kernels, floating

@@ -2,7 +2,8 @@
  * qemu-system-arm, output through semihosting) and on the host, and the
  * two must print the same fixed-kernel checksum.
  *
- * 1. Bit-exact part (every build): the fixed-point DQBS kernel
+ * 1. Bit-exact part (every build; the stress inputs in emb_stress.c, the
+ *    hash in emb_hash.c): the fixed-point DQBS kernel
  *    (skin_dqbs_fixed, integer only) skins the body for every frame from
  *    tables made on the host (emb_tables.h: Q15.16 positions, Q2.30
  *    normals, Q1.15 weights, per-frame bone dual quaternions). The vertex
@@ -26,7 +27,9 @@
 #include <stdint.h>
 #include <string.h>
 
+#include "emb_hash.h"
 #include "emb_port.h"
+#include "emb_stress.h"
 #include "emb_tables.h"
 #ifdef EMB_FULL
 #include "codec_decode.h"
@@ -49,21 +52,6 @@
 
 _Static_assert(EMB_BONES <= SKP_MAX_BONES, "the embedded skeleton exceeds the board's SKP_MAX_BONES");
 
-#define CHUNK 64 /* vertices skinned per call: a multiple of SKIN_LANES */
-
-typedef struct fnv {
-	uint32_t h;
-} fnv;
-
-static void fnv_i32(fnv *f, int32_t v)
-{
-	uint32_t u = (uint32_t)v;
-	for (int i = 0; i < 4; i++) {
-		f->h ^= (u >> (8 * i)) & 0xffu;
-		f->h *= 16777619u;
-	}
-}
-
 static void hex32(char *out, uint32_t v)
 {
 	static const char digits[] = "0123456789abcdef";
@@ -80,168 +68,25 @@ static void say(const char *s)
 	emb_puts("\n");
 }
 
-static skin_bones bones;
-static int32_t out_pos[3 * CHUNK], out_nrm[3 * CHUNK];
-
-/* Skins vertices [0, in->count) into the hash in chunks of CHUNK. */
-static void skin_hash(const skin_soa *in, fnv *f)
-{
-	skin_out o = { NULL, NULL, out_pos, out_nrm, NULL };
-	for (int first = 0; first < in->count; first += CHUNK) {
-		int n = in->count - first < CHUNK ? in->count - first : CHUNK;
-		skin_soa view = *in;
-		view.count = n;
-		view.fpx = in->fpx + first; view.fpy = in->fpy + first; view.fpz = in->fpz + first;
-		view.fnx = in->fnx + first; view.fny = in->fny + first; view.fnz = in->fnz + first;
-		for (int k = 0; k < SKP_MAX_INFLUENCES; k++) {
-			view.bone[k] = in->bone[k] + first;
-			view.fweight[k] = in->fweight[k] + first;
-		}
-		skin_dqbs_fixed(&view, &bones, 0, n, &o);
-		for (int i = 0; i < 3 * n; i++)
-			fnv_i32(f, out_pos[i]);
-		for (int i = 0; i < 3 * n; i++)
-			fnv_i32(f, out_nrm[i]);
-	}
-}
-
 static void load_frame_table(int frame)
 {
-	bones.count = EMB_BONES;
+	emb_bones.count = EMB_BONES;
 	for (int b = 0; b <= EMB_BONES; b++) {
 		const int32_t *v = emb_fdq[frame][b];
 		fx_dq d = { { v[0], v[1], v[2], v[3] }, { v[4], v[5], v[6], v[7] } };
-		bones.fdq[b == EMB_BONES ? SKIN_IDENTITY_BONE : b] = d;
+		emb_bones.fdq[b == EMB_BONES ? SKIN_IDENTITY_BONE : b] = d;
 	}
-	skin_bones_derive(&bones); /* the kernel's per-frame tables, where the board has them */
+	skin_bones_derive(&emb_bones); /* the kernel's per-frame tables, where the board has them */
 }
 
 static uint32_t fixed_checksum(void)
 {
 	skin_soa s;
-	fnv f = { 2166136261u };
+	fnv f = { EMB_FNV_START };
 	emb_table_soa(&s);
 	for (int fr = 0; fr < EMB_FRAMES; fr++) {
 		load_frame_table(fr);
-		skin_hash(&s, &f);
-	}
-	return f.h;
-}
-
-/* Stress: the fixed kernel on made-up inputs meant to reach every path
- * of every board's arithmetic (on a Cortex-M0 the split sums of
- * skin_fixed.c and fixed_move.c, elsewhere 64-bit multiply-adds; in both
- * the sign test left to the exact dot, saturation, the definition taken
- * again when a fast path gives up): near-unit and arbitrary quaternions,
- * bones a quarter turn apart, translations and positions near the
- * format's ends, weights summing to 1 and past it; rotations within
- * fx_quat_dot's domain. The same LCG on every
- * board, so the checksums must be equal. */
-#define STRESS_VERTS 64
-#define STRESS_ROUNDS 48
-
-static uint32_t lcg_state;
-
-static uint32_t lcg(void)
-{
-	lcg_state = lcg_state * 1664525u + 1013904223u;
-	return lcg_state ^ (lcg_state >> 15);
-}
-
-/* A value in [-range, range] (range < 2^31), or any int32 for range 0. */
-static int32_t lcg_in(uint32_t range)
-{
-	uint32_t u = lcg();
-	return range ? (int32_t)(u % (2 * range + 1)) - (int32_t)range : (int32_t)u;
-}
-
-static void stress_bones(int mode)
-{
-	/* rotations within fx_quat_dot's domain (shorter than 2: its int64
-	 * sums would wrap past it) */
-	const uint32_t rot = (1u << 30) - 1, dual = mode == 1 ? 0 : mode == 3 ? (1u << 31) - 1 : 1u << 26;
-	bones.count = EMB_BONES;
-	for (int b = 0; b <= EMB_BONES; b++) {
-		fx_dq d = { { lcg_in(rot), lcg_in(rot), lcg_in(rot), lcg_in(rot) },
-			    { lcg_in(dual), lcg_in(dual), lcg_in(dual), lcg_in(dual) } };
-		if (mode == 2) { /* a quarter turn from bone 0, give or take 2^-20 */
-			fx_quat q = { lcg_in(1024), (int32_t)(1 << 30) + lcg_in(1024), lcg_in(1024), lcg_in(1024) };
-			if (b > 0 && b % 2)
-				d.real = q;
-			else
-				d.real = (fx_quat){ (int32_t)(1 << 30) + lcg_in(1024), lcg_in(1024), lcg_in(1024), lcg_in(1024) };
-		}
-		bones.fdq[b == EMB_BONES ? SKIN_IDENTITY_BONE : b] = d;
-	}
-	if (mode == 3) {
-		/* bone 2 opposite bone 1 with a dual component at INT32_MIN:
-		 * stress_vertex's vertex 0 (all its weight on bone 2, pivot bone
-		 * 1) negates it, and the blend's exact sum, 2^46, leaves int32:
-		 * the definition saturates it, and the kernels of skin_fixed.c
-		 * must hand that vertex to the definition */
-		fx_dq *o = &bones.fdq[2];
-		const fx_quat *r = &bones.fdq[1].real;
-		o->real = (fx_quat){ -r->w, -r->x, -r->y, -r->z };
-		o->dual.x = INT32_MIN;
-		/* the same overflow where nothing after the blend would catch a
-		 * blend that wrapped instead (vertices 1 and 2): bone 3 nearly a half
-		 * turn about x (w 0.2, y = z = 0), so the dual's x moves the
-		 * point by 0.4 of it and the move fits either way; -2^31 for
-		 * the definition's 2^31 - 1 lands 2^32 x 0.4 LSB away */
-		bones.fdq[3] = (fx_dq){ { 214748365, 1052047834, 0, 0 }, { 0, 0, 0, 0 } };
-		bones.fdq[4] = (fx_dq){ { -214748365, -1052047834, 0, 0 }, { 0, INT32_MIN, 0, 0 } };
-	}
-	skin_bones_derive(&bones);
-}
-
-static int32_t st_p[6][STRESS_VERTS];
-static uint16_t st_bone[SKP_MAX_INFLUENCES][STRESS_VERTS], st_w[SKP_MAX_INFLUENCES][STRESS_VERTS];
-
-static void stress_vertex(int v, int mode)
-{
-	const uint32_t pos = mode == 3 ? 0 : 1u << 27;
-	for (int i = 0; i < 3; i++) {
-		st_p[i][v] = lcg_in(pos);
-		st_p[3 + i][v] = lcg_in(1u << 30);
-	}
-	uint32_t left = FX_W15_ONE + (lcg() % 8 == 0 ? lcg() % 40000 : 0); /* past 1 now and then */
-	for (int k = 0; k < SKP_MAX_INFLUENCES; k++) {
-		uint32_t w = k == SKP_MAX_INFLUENCES - 1 ? left : lcg() % (left + 1);
-		w = w > 65535 ? 65535 : w;
-		st_w[k][v] = (uint16_t)w;
-		left -= w < left ? w : left;
-		st_bone[k][v] = (uint16_t)(lcg() % 9 == 0 ? SKIN_IDENTITY_BONE : lcg() % EMB_BONES);
-	}
-	if (mode == 3 && v <= 1) /* see stress_bones */
-		for (int k = 0; k < SKP_MAX_INFLUENCES; k++) {
-			st_w[k][v] = k == 1 ? FX_W15_ONE : 0;
-			st_bone[k][v] = (uint16_t)(k == 1 ? 2 + 2 * v : 1 + 2 * v);
-		}
-	if (mode == 3 && v == 2) /* vertex 1's blend over three slots (the 4-slot sums) */
-		for (int k = 0; k < SKP_MAX_INFLUENCES; k++) {
-			st_w[k][v] = (uint16_t)(k == 0 ? 0 : k == 1 ? FX_W15_ONE / 2 : FX_W15_ONE / 4);
-			st_bone[k][v] = (uint16_t)(k == 0 ? 3 : 4);
-		}
-}
-
-static uint32_t stress_checksum(void)
-{
-	skin_soa s;
-	fnv f = { 2166136261u };
-	lcg_state = 12345u;
-	memset(&s, 0, sizeof s);
-	s.count = s.padded = STRESS_VERTS;
-	s.fpx = st_p[0]; s.fpy = st_p[1]; s.fpz = st_p[2];
-	s.fnx = st_p[3]; s.fny = st_p[4]; s.fnz = st_p[5];
-	for (int k = 0; k < SKP_MAX_INFLUENCES; k++) {
-		s.bone[k] = st_bone[k];
-		s.fweight[k] = st_w[k];
-	}
-	for (int round = 0; round < STRESS_ROUNDS; round++) {
-		stress_bones(round % 4);
-		for (int v = 0; v < STRESS_VERTS; v++)
-			stress_vertex(v, round % 4);
-		skin_hash(&s, &f);
+		emb_skin_hash(&s, &f);
 	}
 	return f.h;
 }
@@ -332,7 +177,7 @@ static int pipeline_on_target(uint32_t *sum)
 	skp_error err;
 	skp_mem_source src;
 	diff soa_diff = { 0, 0 }, dq_diff = { 0, 0 };
-	fnv f = { 2166136261u };
+	fnv f = { EMB_FNV_START };
 	int frames = 0, r;
 	char line[200], hex[11];
 
@@ -342,15 +187,15 @@ static int pipeline_on_target(uint32_t *sum)
 	amc_open(&as, &sk, &tl);
 	while ((r = amc_next(&as, &frame, &err)) == 1 && frames < EMB_FRAMES) {
 		fk_pose(&sk, frame.value, &pose);
-		skin_bones_compute(&bones, &sk, &bind_pose, &pose);
+		skin_bones_compute(&emb_bones, &sk, &bind_pose, &pose);
 		for (int b = 0; b <= EMB_BONES; b++) {
-			const fx_dq *d = &bones.fdq[b == EMB_BONES ? SKIN_IDENTITY_BONE : b];
+			const fx_dq *d = &emb_bones.fdq[b == EMB_BONES ? SKIN_IDENTITY_BONE : b];
 			const int32_t got[8] = { d->real.w, d->real.x, d->real.y, d->real.z,
 						 d->dual.w, d->dual.x, d->dual.y, d->dual.z };
 			for (int i = 0; i < 8; i++)
 				diff_add(&dq_diff, got[i], emb_fdq[frames][b][i]);
 		}
-		skin_hash(&soa, &f);
+		emb_skin_hash(&soa, &f);
 		frames++;
 	}
 	if (r < 0)
@@ -398,10 +243,10 @@ static void hash_pose(fnv *f, const play_engine *e)
 		for (int i = 0; i < 7; i++) {
 			uint32_t u;
 			memcpy(&u, &v[i], sizeof u);
-			fnv_i32(f, (int32_t)u);
+			emb_fnv_i32(f, (int32_t)u);
 		}
 	}
-	fnv_i32(f, (int32_t)e->number);
+	emb_fnv_i32(f, (int32_t)e->number);
 }
 
 /* The clip (EMB_FRAMES frames at 10 Hz) over 3 s of display frames at
@@ -412,7 +257,7 @@ static int sampler_checksum(uint32_t *sum)
 	play_config cfg = { 1.0, 300, PLAY_ROOT_IN_PLACE, 1 };
 	play_source src = { NULL, clip_next, clip_seek, EMB_FRAMES, 10.0, 0 };
 	skp_error err;
-	fnv f = { 2166136261u };
+	fnv f = { EMB_FNV_START };
 	uint32_t seed = 12345u;
 	long samples = 0;
 	for (int k = 0; k < 4; k++) {
@@ -505,7 +350,7 @@ int emb_main(void)
 	hex32(hex, fixed_checksum());
 	emb_puts("emb: fixed-kernel checksum ");
 	say(hex);
-	hex32(hex, stress_checksum());
+	hex32(hex, emb_stress_checksum(EMB_BONES));
 	emb_puts("emb: stress checksum ");
 	say(hex);
 #ifdef EMB_FULL
