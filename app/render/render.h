@@ -62,6 +62,9 @@ typedef struct render_frame {
 	 * own colour */
 	const float *diff;
 	int diff_signed;
+	/* the character alone on a see-through background: no floor, grid,
+	 * shadow, close-up, labels or HUD (headless frames for compositing) */
+	int transparent;
 } render_frame;
 
 typedef struct renderer {

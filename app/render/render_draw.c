@@ -238,7 +238,8 @@ static layout lay_out(renderer *r, const render_frame *f, int n, int lw, int lh)
 	}
 	if (l.legend_rows)
 		l.top += (2 + l.legend_rows * (FONT_CELL_H + 2)) * l.legend;
-	if (l.top + l.foot > panel_rect(0, n, lw, lh).h / 2) /* a tiny screen: the body first */
+	/* a tiny screen, or the character alone: the body first */
+	if (l.top + l.foot > panel_rect(0, n, lw, lh).h / 2 || f->transparent)
 		l.top = l.foot = 0;
 	return l;
 }
@@ -301,11 +302,14 @@ static void draw_panel(renderer *r, const render_frame *f, const layout *l, int 
 	render_bands bands = { l->foot, l->top, l->hud };
 	render_rect body, inset;
 	int n = f->panel_count < 1 ? 1 : f->panel_count;
-	int closeup = render_inset_split(r, f, n, area, &bands, &body, &inset);
+	int closeup = !f->transparent && render_inset_split(r, f, n, area, &bands, &body, &inset);
+	if (!closeup)
+		body = area;
 	render_set_viewport(r, body);
 	mat4 cam = panel_camera(r, l, body, lh, f->pose->tip[0]);
 	mat4 vp = mat4_mul(&r->screen, &cam);
-	render_grid_and_shadow(r, &vp, f->pose->tip[0]);
+	if (!f->transparent)
+		render_grid_and_shadow(r, &vp, f->pose->tip[0]);
 	render_body(r, &vp, f, i);
 	if (f->view == RENDER_VIEW_SKELETON)
 		render_skeleton(r, &vp, f->pose);
@@ -314,7 +318,7 @@ static void draw_panel(renderer *r, const render_frame *f, const layout *l, int 
 		render_inset_draw(r, f, i, area, inset, &bands);
 	}
 	render_set_viewport(r, area);
-	if (l->label)
+	if (l->label && !f->transparent)
 		draw_label(r, f, l, i, area);
 }
 
@@ -391,17 +395,24 @@ void render_draw(renderer *r, const render_frame *f)
 	gl->CullFace(GL_BACK);
 	gl->Viewport(0, 0, r->width, r->height);
 	gl->ColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-	gl->ClearColor(0.13f, 0.15f, 0.19f, 1.0f);
+	if (f->transparent)
+		gl->ClearColor(0.0f, 0.0f, 0.0f, 0.0f);
+	else
+		gl->ClearColor(0.13f, 0.15f, 0.19f, 1.0f);
 	gl->Clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
 	/* keep the cleared, opaque alpha: blended shadow and text must not
-	 * make screenshots see-through */
-	gl->ColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_FALSE);
+	 * make screenshots see-through; on a see-through background the body
+	 * (alpha 1) writes its own */
+	if (!f->transparent)
+		gl->ColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_FALSE);
 	int n = f->panel_count < 1 ? 1 : f->panel_count;
 	layout l = lay_out(r, f, n, lw, lh);
 	for (int i = 0; i < n; i++)
 		draw_panel(r, f, &l, i, panel_rect(i, n, lw, lh), lh);
 	render_rect full = { 0, 0, lw, lh };
 	render_set_viewport(r, full);
+	if (f->transparent)
+		return;
 	if (n > 1)
 		draw_divider(r, lw, lh);
 	draw_hud(r, f, &l, full);

@@ -379,6 +379,7 @@ static int play(skinplay *p)
 	render_frame f;
 	memset(&f, 0, sizeof f);
 	f.view = p->o.view;
+	f.transparent = p->o.transparent;
 	double fps = 0;
 	long shown = 0;
 	int quit = 0, r = 1;

@@ -12,7 +12,8 @@ enum {
 	OPT_IMAGE = 1, OPT_CLIP, OPT_ASF, OPT_AMC, OPT_BVH, OPT_MESH, OPT_ALGO, OPT_SKIN, OPT_PLATFORM, OPT_DEVICE,
 	OPT_ROTATION, OPT_SIZE, OPT_FRAMES, OPT_START, OPT_OUT, OPT_EVERY, OPT_SHEET, OPT_VIEW, OPT_FPS,
 	OPT_HUD_FPS, OPT_REPORT_MEMORY, OPT_BOARD, OPT_INPUT, OPT_PRINT_PLATFORM, OPT_HUD, OPT_REPORT_TIMING,
-	OPT_THREADS, OPT_STREAMS, OPT_DISPLAY_RATE, OPT_SPEED, OPT_BLEND, OPT_ROOT, OPT_YAW, OPT_LOOP, OPT_POSE_DIGEST
+	OPT_THREADS, OPT_STREAMS, OPT_DISPLAY_RATE, OPT_SPEED, OPT_BLEND, OPT_ROOT, OPT_YAW, OPT_LOOP, OPT_POSE_DIGEST,
+	OPT_BACKGROUND
 };
 
 static const cli_opt play_opts_table[] = {
@@ -43,6 +44,8 @@ static const cli_opt play_opts_table[] = {
 	{ "out", 0, "DIR", OPT_OUT, "the same as --output" },
 	{ "every", 0, "K", OPT_EVERY, "with --output: every K-th frame (default 1)" },
 	{ "sheet", 0, "F.png", OPT_SHEET, "with --output: also a contact sheet of the frames written" },
+	{ "background", 0, "scene|transparent", OPT_BACKGROUND, "with --output: transparent writes the character alone "
+	  "on a see-through background (PNG alpha: no floor, grid, shadow, close-up or HUD; default scene)" },
 	{ "view", 0, "VIEW", OPT_VIEW, "body, skeleton, weights or difference (the body coloured by how far LBS lies "
 	  "from DQBS in the compare view, or the skin from its bone as bound with one method, in millimetres; "
 	  "default: the board's [display] view, else body)" },
@@ -186,6 +189,7 @@ static int bad_mode(const char *opt, const char *v, const char *(*name)(int), in
 static int take_choice(play_opts *o, int id, const char *v)
 {
 	static const char *const skins[] = { "cpu", "gpu" }, *const onoff[] = { "off", "on" };
+	static const char *const backgrounds[] = { "scene", "transparent" };
 	int k;
 	switch (id) {
 	case OPT_ALGO:
@@ -202,6 +206,8 @@ static int take_choice(play_opts *o, int id, const char *v)
 		return 0;
 	case OPT_SKIN:
 		return (k = cli_choice(PROG, "skin", v, skins, 2)) < 0 ? -1 : (o->gpu = k, 0);
+	case OPT_BACKGROUND:
+		return (k = cli_choice(PROG, "background", v, backgrounds, 2)) < 0 ? -1 : (o->transparent = k, 0);
 	default:
 		return (k = cli_choice(PROG, "hud-fps", v, onoff, 2)) < 0 ? -1 : (o->hud_fps = k, 0);
 	}
@@ -220,7 +226,8 @@ static int take(void *ctx, int id, const char *v)
 	case OPT_AMC: return take_motion(o, v);
 	case OPT_BVH: o->bvh = v; return 0;
 	case OPT_MESH: o->mesh = v; return 0;
-	case OPT_ALGO: case OPT_VIEW: case OPT_SKIN: case OPT_HUD_FPS: return take_choice(o, id, v);
+	case OPT_ALGO: case OPT_VIEW: case OPT_SKIN: case OPT_HUD_FPS: case OPT_BACKGROUND:
+		return take_choice(o, id, v);
 	case OPT_PLATFORM: o->platform = v; return 0;
 	case OPT_DEVICE: o->device = v; return 0;
 	case OPT_ROTATION:
@@ -317,6 +324,11 @@ int play_parse(play_opts *o, int argc, char **argv)
 		return 0;
 	if (o->sheet_path && !o->out_dir) {
 		fprintf(stderr, PROG ": --sheet collects the frames --out writes: give --out too\n");
+		return -1;
+	}
+	if (o->transparent && !o->out_dir) {
+		fprintf(stderr, PROG ": --background=transparent is for the frames --out writes (a screen shows no "
+			"alpha): give --out too\n");
 		return -1;
 	}
 	/* a BVH is the skeleton and the motion in one file */

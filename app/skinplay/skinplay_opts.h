@@ -30,6 +30,7 @@ typedef struct play_opts {
 	long start;              /* first frame number to show, -1: the clip's first */
 	const char *out_dir;
 	const char *sheet_path;  /* --sheet: contact sheet of the frames written */
+	int transparent;         /* --background=transparent: the character alone, PNG alpha */
 	int print_platform;      /* --print-platform: say what auto picks, exit */
 	long every;
 	render_view view;
