@@ -15,6 +15,7 @@
 #include "clock.h"
 #include "png_writer.h"
 #include "setup_bind.h"
+#include "signals.h"
 #include "skinplay.h"
 
 /* Which kernels each panel runs, and where (GPU when asked and it fits). */
@@ -467,6 +468,8 @@ int main(int argc, char **argv)
 	 * the status says the show is damaged (a kiosk keeps holding instead) */
 	if (rc == 0 && p.hold)
 		rc = 2;
+	if (p.reload && rc == 0)
+		signals_hold();
 	skinplay_kiosk_shutdown(&p.kiosk);
 	clip_file_close(&p.text);
 	show_close(&p.show);

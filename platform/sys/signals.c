@@ -3,11 +3,20 @@
 
 #include <errno.h>
 #include <fcntl.h>
+#include <pthread.h>
 #include <signal.h>
 #include <string.h>
 #include <unistd.h>
 
 static int pipe_fd[2] = { -1, -1 };
+
+static void signal_set(sigset_t *s)
+{
+	sigemptyset(s);
+	sigaddset(s, SIGTERM);
+	sigaddset(s, SIGINT);
+	sigaddset(s, SIGHUP);
+}
 
 static void on_signal(int sig)
 {
@@ -33,7 +42,17 @@ int signals_init(void)
 		signals_shutdown();
 		return -e;
 	}
+	sigset_t s;
+	signal_set(&s);
+	pthread_sigmask(SIG_UNBLOCK, &s, NULL);
 	return pipe_fd[0];
+}
+
+void signals_hold(void)
+{
+	sigset_t s;
+	signal_set(&s);
+	pthread_sigmask(SIG_BLOCK, &s, NULL);
 }
 
 unsigned signals_take(void)

@@ -9,8 +9,17 @@ enum {
 	SIGNALS_RELOAD = 2       /* SIGHUP */
 };
 
-/* Installs the handlers. Returns the fd to poll for POLLIN, or -errno. */
+/* Installs the handlers, then lets the three signals through (one held
+ * by signals_hold before an exec arrives now). Returns the fd to poll for
+ * POLLIN, or -errno. */
 int signals_init(void);
+
+/* Blocks SIGTERM, SIGINT and SIGHUP: one that arrives from now on waits,
+ * through signals_shutdown and an exec, until signals_init takes it. A
+ * re-exec for SIGHUP holds them first: a second SIGHUP in between (two
+ * `systemctl reload`s) would otherwise meet the default action and kill
+ * the kiosk. */
+void signals_hold(void);
 
 /* The SIGNALS_* bits of what arrived since the last call (never blocks). */
 unsigned signals_take(void);

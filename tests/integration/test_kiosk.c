@@ -294,6 +294,69 @@ static void test_notify_signals_and_watchdog(void **state)
 	assert_true(dogs >= 2);
 }
 
+/* The log's count of lines starting with prefix, waiting up to ms for it
+ * to reach want. */
+static int wait_lines(const char *prefix, int want, int ms)
+{
+	int n = 0;
+	for (int t = 0; t < ms; t += 20) {
+		char *log = kiosk_read_log();
+		n = count_lines(log, prefix);
+		free(log);
+		if (n >= want)
+			break;
+		usleep(20000);
+	}
+	return n;
+}
+
+/* `systemctl reload` twice in a row: two SIGHUPs 0-20 ms apart, ten times;
+ * skinplay re-executes for each reload it sees and never dies of one (a
+ * SIGHUP between taking down the handlers and the new process's start met
+ * the default action). SIGTERM at the end: exit 0. */
+static void test_sighup_twice(void **state)
+{
+	(void)state;
+	test_write_text(kiosk_log_path, "");
+	pid_t pid = fork();
+	assert_true(pid >= 0);
+	if (pid == 0) {
+		char amc[512];
+		snprintf(amc, sizeof amc, "%s", test_tool_path("assets/demo.amc"));
+		setenv("ASAN_OPTIONS", "detect_leaks=0", 1);
+		if (!freopen(kiosk_log_path, "a", stderr))
+			_exit(126);
+		execl(test_tool_path("skinplay"), "skinplay", "--asf", "assets/demo.asf", "--amc", amc, "--platform",
+		      "surfaceless", "--size", "64x64", "--frames", "100000000", "--input", "none", (char *)NULL);
+		_exit(127);
+	}
+	int starts = wait_lines("display: surfaceless", 1, 20000), status;
+	for (int round = 0; round < 10 && starts >= 1; round++) {
+		kill(pid, SIGHUP);
+		usleep((useconds_t)(round * 2000));
+		kill(pid, SIGHUP);
+		int now = wait_lines("display: surfaceless", starts + 1, 20000);
+		if (waitpid(pid, &status, WNOHANG) != 0 || now <= starts) {
+			kill(pid, SIGKILL);
+			waitpid(pid, &status, 0);
+			fail_msg("round %d: skinplay %s after two SIGHUPs %d ms apart", round,
+				 now <= starts ? "did not start again" : "died", round * 2);
+		}
+		starts = now;
+	}
+	if (starts < 1) {
+		kill(pid, SIGKILL);
+		waitpid(pid, &status, 0);
+		fail_msg("skinplay did not start");
+	}
+	usleep(200000);
+	kill(pid, SIGTERM);
+	assert_int_equal(waitpid(pid, &status, 0), pid);
+	print_message("two SIGHUPs 0-18 ms apart, 10 times: %d starts, then SIGTERM: %s %d\n", starts,
+		      WIFEXITED(status) ? "exit" : "signal", WIFEXITED(status) ? WEXITSTATUS(status) : WTERMSIG(status));
+	assert_true(WIFEXITED(status) && WEXITSTATUS(status) == 0);
+}
+
 static void test_bad_board_config_is_said_and_played_through(void **state)
 {
 	(void)state;
@@ -375,6 +438,7 @@ int main(void)
 		cmocka_unit_test(test_headless_pause_ends),
 		cmocka_unit_test(test_visitor_hud),
 		cmocka_unit_test(test_notify_signals_and_watchdog),
+		cmocka_unit_test(test_sighup_twice),
 		cmocka_unit_test(test_bad_board_config_is_said_and_played_through),
 		cmocka_unit_test(test_board_sets_starting_algo_and_view),
 	};
