@@ -11,8 +11,15 @@
 # skinplay-tools and runs `skintool info` on the image, purges both and
 # checks that nothing is left.
 #
-#   tests/fresh_machine.sh [--suite=trixie|bookworm] [--deb] [--cross=rpi4]
-#                          [--keep] [--cache=DIR] [--mirror=URL] [--quiet]
+#   tests/fresh_machine.sh [--suite=trixie|bookworm] [--deb | --debs=DIR]
+#                          [--test=all|unit] [--cross=rpi4] [--keep]
+#                          [--cache=DIR] [--mirror=URL] [--quiet]
+#
+# --test=unit runs `make test-unit` where the README says `make test`: for
+# a release whose every tier this machine already ran (CI on Debian 12).
+# --debs=DIR installs the packages `make deb` made on this machine (DIR,
+# usually build/) in the pristine root instead of building them in the
+# fresh one: this machine's release only.
 #
 # --cross=BOARD then cross-builds that board in the same root, as its README
 # (board/rpi4/README.md) says: `make deps BOARD=rpi4`, `make BOARD=rpi4
@@ -32,13 +39,15 @@
 # is printed), 2 for bad usage or a machine that cannot run the check.
 set -eu
 
-suite=trixie deb=0 keep=0 quiet=0 refresh=0 cross=
+suite=trixie deb=0 keep=0 quiet=0 refresh=0 cross= tier=all debs=
 cache=/var/cache/skinplay-fresh mirror=http://deb.debian.org/debian
 repo=$(cd "$(dirname "$0")/.." && pwd)
 for a in "$@"; do
 	case $a in
 	--suite=*) suite=${a#*=} ;;
 	--deb) deb=1 ;;
+	--debs=*) deb=1 debs=${a#*=} ;;
+	--test=*) tier=${a#*=} ;;
 	--cross=*) cross=${a#*=} ;;
 	--keep) keep=1 ;;
 	--quiet) quiet=1 ;;
@@ -93,6 +102,12 @@ for c in debootstrap unshare chroot; do
 	command -v $c >/dev/null 2>&1 || die "needs $c (apt-get install debootstrap util-linux)"
 done
 case $suite in bookworm|trixie) ;; *) die "--suite is bookworm or trixie, got '$suite'" ;; esac
+case $tier in all|unit) ;; *) die "--test is all or unit, got '$tier'" ;; esac
+if [ -n "$debs" ]; then
+	debs=$(cd "$debs" 2>/dev/null && pwd) || die "--debs: no directory '$debs'"
+	ls "$debs"/skinplay_*.deb "$debs"/skinplay-tools_*.deb >/dev/null 2>&1 ||
+		die "--debs: no skinplay_*.deb and skinplay-tools_*.deb in $debs (make deb)"
+fi
 [ -z "$cross" ] || [ -f "$repo/board/$cross/board.mk" ] || die "--cross: no board/$cross/board.mk"
 git -C "$repo" rev-parse HEAD >/dev/null 2>&1 || die "$repo is not a git clone"
 
@@ -160,7 +175,11 @@ rev=$(git -C "$repo" rev-parse --short HEAD)
 say "clone of $rev, then the README's commands"
 step build clone "git clone -q /src/repo /root/work/main && git -C /root/work/main log --oneline -1"
 # exactly as the README says, from the clone
-step build "make-test" "cd /root/work/main && make test"
+if [ "$tier" = all ]; then
+	step build "make-test" "cd /root/work/main && make test"
+else
+	step build "make-test-unit" "cd /root/work/main && make test-unit"
+fi
 # the default show's character: the MakeHuman body (13,380 vertices) named
 # in the log, and its skin on the contact sheet (tests/fresh_pixels.c)
 step build "make-run" "cd /root/work/main && { make run >/root/run.log 2>&1; rc=\$?; cat /root/run.log; [ \$rc = 0 ]; } &&
@@ -171,14 +190,21 @@ step build "make-run" "cd /root/work/main && { make run >/root/run.log 2>&1; rc=
 	echo \"run: \$(ls out/frame_*.png | wc -l) frames and out/contact_sheet.png, the MakeHuman body in them\""
 
 if [ "$deb" = 1 ]; then
-	step build "make-deb" "cd /root/work/main && make deb"
-	# what the build root wrote is in its overlay's upper layer (or the copy)
 	mkdir -p "$work/package-upper/root" "$work/package/root"
-	for d in build-upper build; do
-		for f in "$work/$d/root/work/main/build/"skinplay*_*.deb; do
-			[ -f "$f" ] && cp "$f" "$work/package-upper/root/" && cp "$f" "$work/package/root/"
+	if [ -n "$debs" ]; then
+		say "the packages make deb made on this machine ($debs)"
+		for f in "$debs"/skinplay*_*.deb; do
+			cp "$f" "$work/package-upper/root/" && cp "$f" "$work/package/root/"
 		done
-	done
+	else
+		step build "make-deb" "cd /root/work/main && make deb"
+		# what the build root wrote is in its overlay's upper layer (or the copy)
+		for d in build-upper build; do
+			for f in "$work/$d/root/work/main/build/"skinplay*_*.deb; do
+				[ -f "$f" ] && cp "$f" "$work/package-upper/root/" && cp "$f" "$work/package/root/"
+			done
+		done
+	fi
 	pkg=$(basename "$work/package-upper/root/"skinplay_*.deb)
 	tools=$(basename "$work/package-upper/root/"skinplay-tools_*.deb)
 	say "$pkg: $(du -k "$work/package-upper/root/$pkg" | cut -f1) KiB, $tools: $(du -k "$work/package-upper/root/$tools" | cut -f1) KiB"
