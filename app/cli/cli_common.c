@@ -4,10 +4,21 @@
 #include <string.h>
 
 #include "cli_program.h"
+#include "skp_format.h"
 #include "text_tokens.h"
+
+const char *cli_shown(const char *text)
+{
+	static char buf[4][1024];
+	static int next;
+	char *out = buf[next++ % 4];
+	skp_escape_name(out, sizeof buf[0], text ? text : "");
+	return out;
+}
 
 void cli_error(const char *path, const skp_error *err)
 {
+	path = cli_shown(path);
 	if (err->line > 0)
 		fprintf(stderr, "%s:%ld: %s\n", path, err->line, err->msg);
 	else if (err->block >= 0)
@@ -23,7 +34,7 @@ int cli_take_positional(const char *cmd, const char **const *slots, int n, const
 			*slots[k] = arg;
 			return 0;
 		}
-	fprintf(stderr, "%s: unexpected argument '%s'\n", cmd, arg);
+	fprintf(stderr, "%s: unexpected argument '%s'\n", cmd, cli_shown(arg));
 	return -1;
 }
 

@@ -6,8 +6,14 @@
 
 #include "skp_error.h"
 
-/* Prints "FILE:LINE: message" (or "FILE: message" without a line). */
+/* Prints "FILE:LINE: message" (or "FILE: message" without a line), the
+ * path's control characters as \xNN. */
 void cli_error(const char *path, const skp_error *err);
+
+/* text (a path or name from the command line or a file) with its control
+ * characters as \xNN, for messages: in one of 4 rotating buffers, cut to
+ * 1023 bytes. */
+const char *cli_shown(const char *text);
 
 /* Puts arg into the first of the n slots still NULL; -1 after reporting
  * "CMD: unexpected argument" when every slot is taken. */

@@ -3,6 +3,7 @@
 #include <getopt.h>
 #include <string.h>
 
+#include "cli_common.h"
 #include "cli_inputs.h"
 #include "cli_program.h"
 #include "cli_quiet.h"
@@ -208,7 +209,7 @@ int cli_missing(const char *prog, const char *what)
 
 int cli_bad_choice(const char *prog, const char *opt, const char *value, const char *const *choices, int n)
 {
-	fprintf(stderr, "%s: unknown value '%s' for --%s; one of:", prog, value ? value : "", opt);
+	fprintf(stderr, "%s: unknown value '%s' for --%s; one of:", prog, cli_shown(value), opt);
 	for (int i = 0; i < n; i++)
 		fprintf(stderr, "%s %s", i ? "," : "", choices[i]);
 	fprintf(stderr, "\n");

@@ -271,7 +271,8 @@ int show_select_clip(show_source *s, const char *name, play_source *src)
 		return -1;
 	}
 	if (c < 0 || c >= img->im.clip_count) {
-		fprintf(stderr, "%s: no clip '%s' (%d clips)\n", img->path, name ? name : "", img->im.clip_count);
+		fprintf(stderr, "%s: no clip '%s' (%d clips)\n", cli_shown(img->path), cli_shown(name),
+			img->im.clip_count);
 		return -1;
 	}
 	if (!s->playable[c]) {

@@ -146,9 +146,30 @@ static int start_at_frame(skinplay *p, const char *what)
 	return 0;
 }
 
-/* The clip asked for by name (--clip) or frame (--start); one that is not
- * in the show or cannot play gives way to the next that can, with a
- * notice: a kiosk never goes dark over it. 1 when it plays as asked. */
+/* A run for its frames, not a screen's (the display is not open yet when
+ * the first clip is chosen): frames written, or a headless GL platform
+ * named. --platform none stands for the kiosk in soaks: it plays on. */
+static int batch_run(const skinplay *p)
+{
+	const char *pl = p->o.platform;
+	return p->o.out_dir || (pl && (!strcmp(pl, "surfaceless") || !strcmp(pl, "osmesa")));
+}
+
+/* In a batch run a --clip the show does not have is a mistake: refused,
+ * with the names it has. -1. */
+static int no_such_clip(skinplay *p)
+{
+	fprintf(stderr, "skinplay: %s has no clip '%s'; its clips:", cli_shown(show_path(&p->show)), cli_shown(p->o.clip));
+	for (int i = 0; i < show_clip_count(&p->show); i++)
+		fprintf(stderr, "%s %s", i ? "," : "", cli_shown(show_clip(&p->show, i)->name));
+	fprintf(stderr, "\n");
+	return -1;
+}
+
+/* The clip asked for by name (--clip) or frame (--start); on a screen one
+ * that is not in the show or cannot play gives way to the next that can,
+ * with a notice: a kiosk never goes dark over it. 1 when it plays as
+ * asked, -1 (a batch run, no such clip) refused. */
 static int open_asked(skinplay *p)
 {
 	if (show_select_clip(&p->show, p->o.clip, &p->src) == 0 &&
@@ -156,13 +177,16 @@ static int open_asked(skinplay *p)
 		p->kiosk.ps.clip = p->show.clip;
 		return 1;
 	}
-	int c = 0;
+	int c = -1;
 	for (int i = 0; p->o.clip && i < show_clip_count(&p->show); i++)
 		if (!strcmp(show_clip(&p->show, i)->name, p->o.clip))
 			c = i;
+	if (c < 0 && p->o.clip && batch_run(p))
+		return no_such_clip(p);
+	c = c < 0 ? 0 : c;
 	char text[96];
-	snprintf(text, sizeof text, "CLIP %s CANNOT PLAY", p->o.clip ? p->o.clip : "");
-	fprintf(stderr, "skinplay: --clip %s cannot play: the next clip that can plays instead\n", p->o.clip ? p->o.clip : "");
+	snprintf(text, sizeof text, "CLIP %s CANNOT PLAY", cli_shown(p->o.clip));
+	fprintf(stderr, "skinplay: --clip %s cannot play: the next clip that can plays instead\n", cli_shown(p->o.clip));
 	select_clip(p, c);
 	clips_notice(p, text, 5.0);
 	return 0;
@@ -176,8 +200,9 @@ static int open_first(skinplay *p)
 		    start_clip(p, cli_basename(p->o.amc), 1) < 0)
 			return -1;
 	} else if (p->o.clip || p->o.start >= 0) {
-		if (!open_asked(p))
-			return 0;   /* --start was for the clip asked for */
+		int asked = open_asked(p);
+		if (asked <= 0)
+			return asked; /* --start was for the clip asked for */
 	} else
 		select_clip(p, 0);
 	return p->o.start >= 0 && !p->hold ? start_at_frame(p, what) : 0;

@@ -221,7 +221,11 @@ static int take(void *ctx, int id, const char *v)
 		return bind_args_take(&o->bind, PROG, id, v);
 	switch (id) {
 	case OPT_IMAGE: return take_image(o, v);
-	case OPT_CLIP: o->clip = v; return 0;
+	case OPT_CLIP:
+		if (!*v)
+			return fprintf(stderr, PROG ": --clip expects a clip's name (skintool info SHOW.skn lists them)\n"), -1;
+		o->clip = v;
+		return 0;
 	case OPT_ASF: o->asf = v; return 0;
 	case OPT_AMC: return take_motion(o, v);
 	case OPT_BVH: o->bvh = v; return 0;

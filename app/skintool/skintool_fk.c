@@ -7,6 +7,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 
 #include "clip_file.h"
 #include "cli_common.h"
@@ -155,12 +156,13 @@ static int print_frames(const skel *s, fk_frames *fr, long only)
 	static amc_frame f;
 	static skel_pose pose;
 	char when[32];
-	printf("frame,bone,x,y,z,qw,qx,qy,qz\n");
 	int r, found = 0;
 	long first = -1, last = -1;
 	while ((r = frames_next(fr, &f)) > 0) {
-		if (first < 0)
+		if (first < 0) {
 			first = f.number;
+			printf("frame,bone,x,y,z,qw,qx,qy,qz\n"); /* not before a frame: no frames is an error */
+		}
 		last = f.number;
 		if (only >= 0 && f.number != only)
 			continue;
@@ -176,6 +178,10 @@ static int print_frames(const skel *s, fk_frames *fr, long only)
 	}
 	if (r < 0)
 		return 1;
+	if (first < 0) {
+		fprintf(stderr, "%s: no frames (a motion needs at least one frame after its header)\n", cli_shown(fr->path));
+		return 1;
+	}
 	if (only >= 0 && !found) {
 		fprintf(stderr, "%s: no frame %ld (the file has frames %ld..%ld)\n", fr->path, only, first, last);
 		return 1;
@@ -233,6 +239,11 @@ static int is_image(const char *path)
 	size_t n = strlen(path);
 	if (n > 4 && !strcmp(path + n - 4, ".skn"))
 		return 1;
+	/* a FIFO (a pipe, <(...)) is read once, as motion: sniffing it would
+	 * eat the bytes its reader needs */
+	struct stat st;
+	if (stat(path, &st) != 0 || !(S_ISREG(st.st_mode) || S_ISBLK(st.st_mode)))
+		return 0;
 	char head[SKP_IMAGE_BLOCK_HDR + 8];
 	FILE *f = fopen(path, "rb");
 	int yes = f && fread(head, 1, sizeof head, f) == sizeof head && !memcmp(head + SKP_IMAGE_BLOCK_HDR, SKP_IMAGE_MAGIC, 8);

@@ -32,6 +32,7 @@ static const cli_case cases[] = {
 	{ "tiny.asf", "bad/garbled_number.amc", "tests/data/bad/garbled_number.amc:8:", "found 'zero'" },
 	{ "tiny.asf", "bad/long_line.amc", "tests/data/bad/long_line.amc:2:", "SKP_MAX_LINE" },
 	{ "tiny.asf", "missing.amc", "tests/data/missing.amc: cannot open", "No such file" },
+	{ "tiny.asf", "bad/empty.amc", "tests/data/bad/empty.amc: no frames", "at least one frame" },
 	{ "tiny.asf", "tiny.amc --frame 9", "tests/data/tiny.amc: no frame 9", "1..2" },
 	{ "tiny.asf", "tiny.amc --frame x", "skintool: --frame expects an integer", "'x'" },
 };
@@ -74,11 +75,44 @@ static void test_usage_errors(void **state)
 	assert_true(WIFEXITED(status) && WEXITSTATUS(status) == 1);
 }
 
+/* Motion through a pipe is read once, as motion (the image sniff does not
+ * eat its first bytes); a header and no frame prints nothing on stdout. */
+static void test_pipe_and_empty(void **state)
+{
+	(void)state;
+	char fifo[] = "/tmp/skp_cli_fifo_XXXXXX", cmd[2400];
+	assert_non_null(mkdtemp(fifo));
+	snprintf(cmd, sizeof cmd, "cd %s && mkfifo m && (cat \"$OLDPWD/tests/data/tiny.amc\" > m &) && "
+		 "timeout 20 \"$OLDPWD/%s\" fk \"$OLDPWD/tests/data/tiny.asf\" m > out.csv", fifo,
+		 test_tool_path("skintool"));
+	int status = system(cmd);
+	char path[1100];
+	snprintf(path, sizeof path, "%s/out.csv", fifo);
+	size_t n;
+	char *out = test_read_file(path, &n);
+	assert_true(WIFEXITED(status) && WEXITSTATUS(status) == 0);
+	assert_non_null(out);
+	assert_non_null(strstr(out, "\n1,root,"));
+	assert_non_null(strstr(out, "\n2,root,"));
+	free(out);
+	snprintf(cmd, sizeof cmd, "%s fk tests/data/tiny.asf tests/data/bad/empty.amc > %s 2>/dev/null",
+		 test_tool_path("skintool"), path);
+	status = system(cmd);
+	assert_true(WIFEXITED(status) && WEXITSTATUS(status) == 1);
+	out = test_read_file(path, &n);
+	assert_non_null(out);
+	assert_int_equal(n, 0);
+	free(out);
+	snprintf(cmd, sizeof cmd, "rm -rf %s", fifo);
+	assert_int_equal(system(cmd), 0);
+}
+
 int main(void)
 {
 	const struct CMUnitTest tests[] = {
 		cmocka_unit_test(test_bad_inputs_fail_cleanly),
 		cmocka_unit_test(test_usage_errors),
+		cmocka_unit_test(test_pipe_and_empty),
 	};
 	return cmocka_run_group_tests_name("cli_errors", tests, NULL, NULL);
 }

@@ -1,7 +1,9 @@
 /* The kiosk never exits on what it can survive, and its log does not grow
  * with the passes: a FIFO in a slot is refused at once (no blocking open)
  * and the next slot plays; --clip naming a clip that cannot play (or is
- * not there) plays the next that can, with a notice; a short clip played
+ * not there) plays the next that can, with a notice (a batch run writing
+ * frames refuses a clip that is not there, naming those that are, and
+ * --clip '' is refused by the command line); a short clip played
  * for six virtual hours over a block beyond repair logs its pass summary
  * once an hour, not once a pass (skinplay --platform none: the show's
  * clock and logs, nothing drawn). */
@@ -117,6 +119,24 @@ static void test_clip_that_cannot_play_gives_way(void **state)
 	assert_true(test_file_contains(log, "clip: 10 frames"));
 }
 
+static void test_batch_refuses_a_missing_clip(void **state)
+{
+	(void)state;
+	const char *log = test_scratch("batch.txt");
+	assert_int_equal(test_run("%s --image '%s' --clip nosuch --platform surfaceless --frames 3 >'%s' 2>&1",
+				  test_tool_path("skinplay"), show, log),
+			 1);
+	assert_true(test_file_contains(log, "has no clip 'nosuch'; its clips: "));
+	assert_int_equal(test_run("%s --image '%s' --clip \"$(printf 'no\\033such')\" --platform none --frames 3 >'%s' 2>&1",
+				  test_tool_path("skinplay"), show, log),
+			 0);
+	assert_true(test_file_contains(log, "--clip no\\x1bsuch cannot play"));
+	assert_int_equal(test_run("%s --image '%s' --clip '' --platform none --frames 3 >'%s' 2>&1",
+				  test_tool_path("skinplay"), show, log),
+			 1);
+	assert_true(test_file_contains(log, "--clip expects a clip's name"));
+}
+
 static int count_lines(const char *path, const char *needle, int *all)
 {
 	size_t n;
@@ -157,6 +177,7 @@ int main(void)
 	const struct CMUnitTest tests[] = {
 		cmocka_unit_test(test_fifo_slot_refused_at_once),
 		cmocka_unit_test(test_clip_that_cannot_play_gives_way),
+		cmocka_unit_test(test_batch_refuses_a_missing_clip),
 		cmocka_unit_test(test_logs_bounded_over_hours),
 	};
 	return cmocka_run_group_tests(tests, setup, test_scratch_teardown);
