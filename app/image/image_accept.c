@@ -145,6 +145,10 @@ skp_status skp_accept_clip(const skel *s, const skp_image_clip *c, const float *
 			return skp_fail(err, SKP_ERR_RANGE, 0,
 					"value %d: a translation of up to %g units takes the skeleton beyond the "
 					"fixed-point range (%g)", d + 1, travel, SKP_ACCEPT_REACH);
+		if (ch >= 0 && ch < SKEL_TX && travel > SKP_ACCEPT_ANGLE)
+			return skp_fail(err, SKP_ERR_RANGE, 0,
+					"value %d: a rotation of up to %g, beyond %g either way (a float angle that "
+					"large is noise)", d + 1, travel, SKP_ACCEPT_ANGLE);
 	}
 	return SKP_OK;
 }

@@ -15,6 +15,11 @@
  * reach from the origin, its root's travel included, stays inside it. */
 #define SKP_ACCEPT_REACH 32767.0
 
+/* Rotation channels: a million degrees (2,778 turns) either way, where a
+ * float still holds a sixteenth of a degree; past it a value is noise
+ * (1e30 plays as garbage). */
+#define SKP_ACCEPT_ANGLE 1e6
+
 /* Clip rates: a frame time from 1 us to 10 s. */
 #define SKP_ACCEPT_MIN_FPS 0.1
 #define SKP_ACCEPT_MAX_FPS 1e6
@@ -32,8 +37,9 @@ skp_status skp_accept_skel(const skel *s, skp_error *err);
 skp_status skp_accept_body(const skel *s, const skel_pose *bind, const mesh *m, skp_error *err);
 
 /* A clip: a rate of SKP_ACCEPT_MIN_FPS..SKP_ACCEPT_MAX_FPS, frames,
- * finite non-negative steps, and translation channels whose range keeps
- * the skeleton within SKP_ACCEPT_REACH. */
+ * finite non-negative steps, translation channels whose range keeps the
+ * skeleton within SKP_ACCEPT_REACH and rotation channels within
+ * SKP_ACCEPT_ANGLE. */
 skp_status skp_accept_clip(const skel *s, const skp_image_clip *c, const float *qmin, const float *qstep,
 			   skp_error *err);
 

@@ -1,7 +1,7 @@
 /* CRC-valid nonsense: images whose every block checks but whose content
  * cannot play (a body of 0 vertices, all-degenerate triangles, a flat
  * body, a bone 3e38 long, a root 1e30 away, by its position or by a
- * clip's translation, a non-unit axis quaternion, a frame count one past
+ * clip's translation, a rotation of 1e30 degrees, a non-unit axis quaternion, a frame count one past
  * the data, a rate of 1e-9 frames a second), written here with the core
  * writer as a forger would. The same acceptance judges them in skinplay
  * (refused, or the clip skipped; of two slots the older good one plays),
@@ -99,6 +99,7 @@ static void flat(void) { for (int v = 0; v < m.vert_count; v++) m.pos[v].z = 0.3
 static void long_bone(void) { s.bone[1].length = 3e38f; }
 static void far_root(void) { s.root_position.x = 1e30f; }
 static void far_travel(void) { frames[0].value[0] = 1e30f; }
+static void far_angle(void) { frames[0].value[4] = 1e30f; }
 static void non_unit_axis(void) { s.bone[2].axis_rot.w = 2.0f; }
 static void slow(void) { fps = 1e-9f; }
 
@@ -116,6 +117,7 @@ static const nonsense cases[] = {
 	{ "long_bone", long_bone, 0, "skeleton: reaches 3.00000e38 units" },
 	{ "far_root", far_root, 0, "skeleton: reaches 1.00000e30 units" },
 	{ "far_travel", far_travel, 1, "a translation of up to 1.00000e30 units" },
+	{ "far_angle", far_angle, 1, "a rotation of up to 1.00000e30" },
 	{ "non_unit_axis", non_unit_axis, 0, "not a unit quaternion" },
 	{ "one_frame_more", NULL, 1, "the clip's last block holds 2 frames, the directory says 3" },
 	{ "slow", slow, 1, "a rate of 1.00000e-9 frames a second" },
