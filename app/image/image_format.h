@@ -247,6 +247,12 @@ typedef struct skp_image_section {
 	uint32_t first, count, bytes;
 } skp_image_section;
 
+/* The earliest unix time pack takes from the clock for a sequence
+ * (2024-01-01): a clock behind it is wrong (a board without a real-time
+ * clock starts in 1970), and `info` says when a sequence lies ahead of
+ * its own clock. */
+#define SKP_IMAGE_SEQUENCE_CLOCK_FLOOR 1704067200L
+
 typedef struct skp_image_header {
 	uint16_t version;
 	uint16_t header_size;

@@ -8,6 +8,7 @@
  * be read at all. */
 #include <stdio.h>
 #include <string.h>
+#include <time.h>
 
 #include "show_source.h"
 #include "skintool_cmds.h"
@@ -36,13 +37,34 @@ static void print_parity(const skp_image_header *h)
 	       100.0 * (h->block_count - h->data_blocks) / h->data_blocks);
 }
 
+/* The sequence, with the date it stands for when it is a unix time (pack's
+ * default), and a word when that date lies ahead of this machine's clock:
+ * a pack on a machine whose clock ran ahead beats every image packed
+ * before that date. */
+static void print_sequence(uint64_t seq)
+{
+	printf("  sequence    %llu", (unsigned long long)seq);
+	time_t t = (time_t)seq, now = time(NULL);
+	struct tm tm;
+	char when[32];
+	if (seq >= (uint64_t)SKP_IMAGE_SEQUENCE_CLOCK_FLOOR && seq <= 0xffffffffULL && gmtime_r(&t, &tm)) {
+		strftime(when, sizeof when, "%Y-%m-%d %H:%M UTC", &tm);
+		printf(" (packed %s", when);
+		if (t > now + 86400)
+			printf(": ahead of this machine's clock, so it beats every image packed before then; a pack on "
+			       "a machine whose clock ran ahead? skintool pack --sequence N sets one");
+		printf(")");
+	}
+	printf("\n");
+}
+
 static void print_header(const show_image *s)
 {
 	const skp_image_header *h = &s->im.hdr;
 	static const char *const names[] = { "skeleton", "bind", "directory", "clips" };
 	printf("%s: skinplay image, format version %u\n", s->path, (unsigned)h->version);
 	print_hex("  id          ", h->id, SKP_IMAGE_ID_BYTES);
-	printf("  sequence    %llu\n", (unsigned long long)h->sequence);
+	print_sequence(h->sequence);
 	printf("  blocks      %lu of %lu bytes (%llu bytes), CRC-32 each; header CRC %08lx\n",
 	       (unsigned long)h->block_count, (unsigned long)h->block_size,
 	       (unsigned long long)h->block_count * h->block_size, (unsigned long)h->crc);

@@ -167,11 +167,32 @@ static const cli_command pack_command = {
 	},
 };
 
+/* The default sequence, the unix time, from a clock that can be right: a
+ * board without a real-time clock boots in 1970 (its pack would lose to
+ * every older show), and past 2106 the time does not fit. Refused, saying
+ * so, else: --sequence says what the clock cannot. */
+static int sequence_from_clock(pack_args *p)
+{
+	time_t now = time(NULL);
+	if (now >= (time_t)SKP_IMAGE_SEQUENCE_CLOCK_FLOOR && now <= (time_t)0xffffffffL) {
+		p->sequence = (long)now;
+		return 0;
+	}
+	char when[32] = "an unknown time";
+	struct tm tm;
+	if (gmtime_r(&now, &tm))
+		strftime(when, sizeof when, "%Y-%m-%d", &tm);
+	fprintf(stderr, "skintool pack: the clock says %s: no sequence number to trust (an image packed now would "
+		"lose to older shows, or beat every later one); set the clock, or give --sequence N (1 to 4294967295; "
+		"of two valid images the larger plays)\n", when);
+	return -1;
+}
+
 static int pack_parse(pack_args *p, int argc, char **argv)
 {
 	bind_args_init(&p->bind);
 	p->fps = 0.0;   /* not given: the BVH's rate, else 120 */
-	p->sequence = (long)time(NULL);
+	p->sequence = -1; /* not given: the clock's */
 	p->block_size = SKP_IMAGE_DEFAULT_BLOCK;
 	p->codec.error_cm = 0.01;
 	int rc = cli_parse(&pack_command, p, argc, argv, 0);
@@ -186,7 +207,7 @@ static int pack_parse(pack_args *p, int argc, char **argv)
 	if (!p->asf || !p->amc_count || !p->out) {
 		return cli_missing(pack_command.prog, "SKELETON MOTION... and -o SHOW.skn");
 	}
-	return 0;
+	return p->sequence < 0 ? sequence_from_clock(p) : 0;
 }
 
 /* The clip's name: the AMC's file name without directory and extension,

@@ -177,11 +177,39 @@ static void test_fk_and_bench_of_a_packed_clip(void **state)
 	free(text);
 }
 
+/* pack's default sequence is the clock's: one that says 1969 is refused
+ * (no output), --sequence stands in for it, and an image packed by a
+ * clock in 2100 is said by info to lie ahead of this machine's clock.
+ * faketime sets the clock (skipped without it). */
+static void test_sequence_from_the_clock(void **state)
+{
+	(void)state;
+	if (test_run("command -v faketime >/dev/null") != 0) {
+		print_message("faketime not installed (apt-get install faketime)\n");
+		skip();
+	}
+	const char *tool = test_tool_path("skintool"), *image = test_scratch("clock.skn"), *err = test_scratch("clock.txt");
+	const char *motion = "assets/cmu/02.asf assets/cmu/02_01.amc";
+	assert_int_equal(test_run("faketime '1969-12-31 12:00:00' %s pack %s -q -o '%s' 2>'%s'", tool, motion, image, err),
+			 1);
+	static const char *const said[] = { "the clock says 1969-12-31", "--sequence N", NULL };
+	test_assert_contains_all(err, said);
+	assert_int_equal(test_run("test -e '%s'", image), 1);
+	assert_int_equal(test_run("faketime '1969-12-31 12:00:00' %s pack %s -q --sequence=7 -o '%s'", tool, motion, image),
+			 0);
+	assert_int_equal(test_run("faketime '2100-01-01 12:00:00' %s pack %s -q -o '%s'", tool, motion, image), 0);
+	assert_int_equal(test_run("%s info '%s' >'%s'", tool, image, err), 0);
+	static const char *const ahead[] = { "sequence    4102488000 (packed 2100-01-01 12:00 UTC: ahead of this machine's clock",
+					     NULL };
+	test_assert_contains_all(err, ahead);
+}
+
 int main(void)
 {
 	const struct CMUnitTest tests[] = {
 		cmocka_unit_test(test_pack_decode_every_clip),
 		cmocka_unit_test(test_fk_and_bench_of_a_packed_clip),
+		cmocka_unit_test(test_sequence_from_the_clock),
 	};
 	return cmocka_run_group_tests(tests, test_scratch_setup, test_scratch_teardown);
 }
