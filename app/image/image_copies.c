@@ -40,21 +40,42 @@ int skp_image_copy_at(const uint8_t *p, uint64_t at, skp_image_header *h)
  * multiples of 16 bytes: it starts at an offset = -SKP_IMAGE_TAIL mod 16. */
 #define COPY_PHASE ((16 - SKP_IMAGE_TAIL % 16) % 16)
 
+/* Whether a block of some image could start at byte offset at (p: its
+ * first SKP_IMAGE_BLOCK_HDR bytes): an index that puts it at a block size
+ * the format allows, a kind, the zero byte. Evidence enough to search on
+ * for the header copy. */
+static int block_frame_at(const uint8_t *p, uint64_t at)
+{
+	uint32_t index = le_get32(p + 16);
+	if (index == 0 || p[20] < SKP_KIND_HEADER || p[20] > SKP_KIND_FRAMES || p[21] != 0 || at % index)
+		return 0;
+	uint64_t bs = at / index;
+	return bs >= SKP_IMAGE_MIN_BLOCK && bs <= SKP_IMAGE_BLOCK_SIZE && bs % 16 == 0;
+}
+
 int skp_image_find_copy(skp_reader rd, uint8_t *win, uint32_t cap, skp_image_header *h, uint64_t *at)
 {
 	const uint32_t keep = SKP_IMAGE_HEADER_SIZE + 16;
 	uint64_t base = 0, next = COPY_PHASE;   /* win[0]'s offset; the next candidate */
 	uint32_t fill = 0;
+	int seen = 0;                           /* a block frame met */
 	long n;
 	if (cap < 2 * keep)
 		return 0;
 	while ((n = rd.read(rd.ctx, win + fill, cap - fill)) > 0) {
 		fill += (uint32_t)n;
-		for (; next + SKP_IMAGE_HEADER_SIZE <= base + fill; next += 16)
+		for (; next + SKP_IMAGE_HEADER_SIZE <= base + fill; next += 16) {
 			if (skp_image_copy_at(win + (next - base), next, h)) {
 				*at = next;
 				return 1;
 			}
+			/* the block boundary candidate 16 - COPY_PHASE bytes on */
+			uint64_t b = next + 16 - COPY_PHASE;
+			if (!seen && b + SKP_IMAGE_BLOCK_HDR <= base + fill)
+				seen = block_frame_at(win + (b - base), b);
+		}
+		if (!seen && base + fill >= SKP_IMAGE_FIND_BARREN)
+			return 0;
 		if (fill == cap) {
 			memmove(win, win + cap - keep, keep);
 			base += cap - keep;

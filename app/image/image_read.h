@@ -37,7 +37,10 @@ int skp_image_copy_at(const uint8_t *p, uint64_t at, skp_image_header *h);
  * layout puts its copy (at + SKP_IMAGE_TAIL == (copy_block + 1) * block
  * size), whatever comes after it. win: cap >= 512 bytes of the caller's.
  * Returns 1 with the header in *h and its byte offset in *at, 0 when the
- * stream holds none. */
+ * stream holds none, or when its first SKP_IMAGE_FIND_BARREN bytes hold
+ * nothing that looks like a block of any image (a zero-filled 2 GiB slot is
+ * refused in milliseconds, not searched to its end). */
+#define SKP_IMAGE_FIND_BARREN (16u << 20)
 int skp_image_find_copy(skp_reader rd, uint8_t *win, uint32_t cap, skp_image_header *h, uint64_t *at);
 
 typedef struct skp_image {

@@ -137,30 +137,55 @@ static void bad_block(void *ctx, uint32_t b, const skp_block_report *r)
 		 : "beyond repair (another block of its group is bad)");
 }
 
+/* Prints a run of blocks [from, to] in state st (not OK). */
+static void print_bad_run(uint32_t from, uint32_t to, skp_block_state st)
+{
+	if (from == to)
+		printf("block %lu bad: %s\n", (unsigned long)from, skp_block_state_name(st));
+	else
+		printf("blocks %lu..%lu bad: %s\n", (unsigned long)from, (unsigned long)to, skp_block_state_name(st));
+}
+
+static skp_block_state raw_state(storage_file *sf, uint32_t b, uint32_t bs, uint8_t *buf)
+{
+	int n = sf->bd.read(sf, b, buf);
+	return n < 0 ? SKP_BLOCK_IO : n < (int)bs ? SKP_BLOCK_SHORT : skp_block_crc_ok(buf, bs) ? SKP_BLOCK_OK : SKP_BLOCK_CRC;
+}
+
 /* The header is not trusted: find the block size under which most blocks
- * check, then name every block whose CRC fails at that size. */
+ * of the first SKP_IMAGE_FIND_BARREN bytes check, then name the blocks
+ * whose CRC fails at that size, runs of them as ranges. None checking
+ * there at any size: no image, said at once (a zero-filled 2 GiB slot is
+ * not read to its end). */
 static long scan_raw(storage_file *sf)
 {
 	static uint8_t buf[SKP_IMAGE_BLOCK_SIZE];
 	uint32_t best = SKP_IMAGE_DEFAULT_BLOCK;
-	long best_good = -1, bad = 0;
+	long best_good = 0, bad = 0;
 	for (uint32_t bs = SKP_IMAGE_MIN_BLOCK; bs <= SKP_IMAGE_BLOCK_SIZE; bs *= 2) {
 		long good = 0;
 		storage_file_set_block_size(sf, bs);
-		for (uint32_t b = 0; b < sf->bd.block_count; b++)
-			good += sf->bd.read(sf, b, buf) == (int)bs && skp_block_crc_ok(buf, bs);
+		uint32_t look = sf->bd.block_count < SKP_IMAGE_FIND_BARREN / bs ? sf->bd.block_count : SKP_IMAGE_FIND_BARREN / bs;
+		for (uint32_t b = 0; b < look; b++)
+			good += raw_state(sf, b, bs, buf) == SKP_BLOCK_OK;
 		if (good > best_good)
 			best_good = good, best = bs;
 	}
+	if (best_good == 0) {
+		printf("verify: no block of the first %u MiB checks at any block size: not an image (zero-filled, or "
+		       "another file)\n", SKP_IMAGE_FIND_BARREN >> 20);
+		return 1;
+	}
 	storage_file_set_block_size(sf, best);
-	for (uint32_t b = 0; b < sf->bd.block_count; b++) {
-		int n = sf->bd.read(sf, b, buf);
-		skp_block_state st = n < 0 ? SKP_BLOCK_IO : n < (int)best ? SKP_BLOCK_SHORT
-				   : skp_block_crc_ok(buf, best) ? SKP_BLOCK_OK : SKP_BLOCK_CRC;
-		if (st != SKP_BLOCK_OK) {
-			printf("block %lu bad: %s\n", (unsigned long)b, skp_block_state_name(st));
-			bad++;
-		}
+	uint32_t run = 0;
+	skp_block_state run_st = SKP_BLOCK_OK;
+	for (uint32_t b = 0; b <= sf->bd.block_count; b++) {
+		skp_block_state st = b < sf->bd.block_count ? raw_state(sf, b, best, buf) : SKP_BLOCK_OK;
+		if (st != run_st && run_st != SKP_BLOCK_OK)
+			print_bad_run(run, b - 1, run_st);
+		if (st != run_st)
+			run = b, run_st = st;
+		bad += st != SKP_BLOCK_OK;
 	}
 	printf("verify: %lu blocks of %lu bytes (block size found from their CRCs): %ld bad\n",
 	       (unsigned long)sf->bd.block_count, (unsigned long)best, bad);

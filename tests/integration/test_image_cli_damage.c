@@ -176,6 +176,46 @@ static void test_info_refuses_truncated_and_wrong_version(void **state)
 	expect_info(test_scratch("missing.skn"), 1, "cannot open");
 }
 
+/* Bytes [from, to) of the file set to 0. */
+static void zero_bytes(const char *path, long from, long to)
+{
+	FILE *f = fopen(path, "r+b");
+	assert_non_null(f);
+	assert_int_equal(fseek(f, from, SEEK_SET), 0);
+	for (long i = from; i < to; i++)
+		fputc(0, f);
+	fclose(f);
+}
+
+/* A slot with nothing in it (4 GiB of zeros, sparse) is refused by info
+ * and skinplay after its first 16 MiB, not read to its end (timeout is a
+ * hang guard: the whole read took 30 s for 2 GiB); an image refused for
+ * its header still has its bad blocks named, runs of them as ranges. */
+static void test_barren_slot_and_bad_runs(void **state)
+{
+	(void)state;
+	const char *zero = test_scratch("zero.skn"), *out = test_scratch("zero.txt");
+	assert_int_equal(test_run("truncate -s 4G '%s'", zero), 0);
+	assert_int_equal(test_run("timeout 60 %s info '%s' >'%s' 2>&1", test_tool_path("skintool"), zero, out), 2);
+	static const char *const none[] = { "not a skinplay image", "no block of the first 16 MiB checks", NULL };
+	test_assert_contains_all(out, none);
+	assert_int_equal(test_run("timeout 60 %s --image '%s' --platform none --frames 2 >'%s' 2>&1",
+				  test_tool_path("skinplay"), zero, out),
+			 1);
+	static const char *const refused[] = { "no valid image among 1 slot", NULL };
+	test_assert_contains_all(out, refused);
+	unlink(zero);
+	char bad[512];
+	snprintf(bad, sizeof bad, "%s", test_scratch("runs.skn"));
+	copy(small_image(), bad);
+	set_version(bad, 6);
+	zero_bytes(bad, 2 * 512, 5 * 512);
+	assert_int_equal(test_run("%s info '%s' >'%s' 2>&1", test_tool_path("skintool"), bad, out), 2);
+	static const char *const runs[] = { "blocks 2..4 bad: CRC mismatch", "blocks of 512 bytes (block size found from their CRCs)",
+					    NULL };
+	test_assert_contains_all(out, runs);
+}
+
 /* skinplay headless on the image; returns its status, log in log. */
 static int play(const char *args, const char *log)
 {
@@ -302,6 +342,7 @@ int main(void)
 		cmocka_unit_test(test_info_names_every_block),
 		cmocka_unit_test(test_info_random_bytes_of_big_image),
 		cmocka_unit_test(test_info_refuses_truncated_and_wrong_version),
+		cmocka_unit_test(test_barren_slot_and_bad_runs),
 		cmocka_unit_test(test_skinplay_rebuilds_and_holds),
 	};
 	return cmocka_run_group_tests(tests, test_scratch_setup, test_scratch_teardown);
