@@ -83,7 +83,7 @@ static void test_pipe_and_empty(void **state)
 	char fifo[] = "/tmp/skp_cli_fifo_XXXXXX", cmd[2400];
 	assert_non_null(mkdtemp(fifo));
 	snprintf(cmd, sizeof cmd, "cd %s && mkfifo m && (cat \"$OLDPWD/tests/data/tiny.amc\" > m &) && "
-		 "timeout 20 \"$OLDPWD/%s\" fk \"$OLDPWD/tests/data/tiny.asf\" m > out.csv", fifo,
+		 "timeout 300 \"$OLDPWD/%s\" fk \"$OLDPWD/tests/data/tiny.asf\" m > out.csv", fifo,
 		 test_tool_path("skintool"));
 	int status = system(cmd);
 	char path[1100];
