@@ -7,6 +7,8 @@
 
 int cli_image_out_replace(cli_image_out *o, const char *path, uint32_t block_size)
 {
+	if (cli_output_file_check(path, 1) < 0)
+		return -1;
 	int rc = atomic_file_open(&o->af, path);
 	if (rc == 0 && (rc = storage_file_use_fd(&o->sf, o->af.fd, block_size)) < 0)
 		atomic_file_abort(&o->af);

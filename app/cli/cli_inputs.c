@@ -4,7 +4,9 @@
 #include <string.h>
 #include <sys/stat.h>
 
+#include "cli_common.h"
 #include "cli_program.h"
+#include "storage_file.h"
 
 #define MAX_INPUTS 640
 
@@ -47,11 +49,23 @@ void cli_inputs_add(const char *path)
 		add_file(first + 1, path);                                  /* script:FILE */
 }
 
+int cli_output_file_check(const char *path, int block_ok)
+{
+	struct stat st;
+	if (stat(path, &st) != 0 || S_ISREG(st.st_mode) || (block_ok && S_ISBLK(st.st_mode)))
+		return 0;
+	fprintf(stderr, "%s: %s is %s: %s; not written\n", cli_program(), cli_shown(path),
+		S_ISBLK(st.st_mode) ? "a block device" : storage_file_kind(path),
+		block_ok ? "an image goes to a file or a block device" : "this output is a file");
+	return -1;
+}
+
 int cli_output_check(const char *path)
 {
 	struct stat st;
 	if (stat(path, &st) != 0)
 		return 0;   /* not there yet: no input */
+
 	for (int i = 0; i < input_count; i++)
 		if (inputs[i].dev == st.st_dev && inputs[i].ino == st.st_ino) {
 			fprintf(stderr, "%s: %s is also an input (%s): not written; name another output\n", cli_program(),

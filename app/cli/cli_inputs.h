@@ -19,4 +19,10 @@ void cli_inputs_add(const char *path);
  * input it is ("PATH: is also an input (WORD): not written"). */
 int cli_output_check(const char *path);
 
+/* 0 when path can take a file written whole (atomic_file.h): not there
+ * yet, a file, or with block_ok a block device (an image's raw slot); -1
+ * after saying what it is instead (a character device, a FIFO, a socket,
+ * a directory). Symbolic links are followed: their target is written. */
+int cli_output_file_check(const char *path, int block_ok);
+
 #endif

@@ -9,7 +9,7 @@
 int cli_text_out_open(cli_text_out *o, const char *path)
 {
 	o->f = NULL;
-	if (cli_output_check(path) < 0)
+	if (cli_output_check(path) < 0 || cli_output_file_check(path, 0) < 0)
 		return -1;
 	int rc = atomic_file_open(&o->af, path);
 	if (rc == 0 && !(o->f = fdopen(o->af.fd, "w"))) {

@@ -33,15 +33,69 @@ static int fail(atomic_file *a)
 	return -e;
 }
 
+/* path with its symbolic links followed, into out: the file a write
+ * through the link replaces (a dangling link: the path it names). */
+static int follow_links(const char *path, char *out, size_t size)
+{
+	char cur[PATH_MAX], link[PATH_MAX], dir[PATH_MAX];
+	const char *name;
+	struct stat st;
+	snprintf(cur, sizeof cur, "%s", path);
+	for (int depth = 0; depth < 16; depth++) {
+		if (lstat(cur, &st) != 0 || !S_ISLNK(st.st_mode))
+			return snprintf(out, size, "%s", cur) < (int)size ? 0 : -ENAMETOOLONG;
+		ssize_t n = readlink(cur, link, sizeof link - 1);
+		if (n < 0)
+			return -errno;
+		link[n] = '\0';
+		split(cur, dir, sizeof dir, &name);
+		if (link[0] == '/' || !strcmp(dir, "."))
+			snprintf(cur, sizeof cur, "%s", link);
+		else if (snprintf(cur, sizeof cur, "%s/%s", dir, link) >= (int)sizeof cur)
+			return -ENAMETOOLONG;
+	}
+	return -ELOOP;
+}
+
+/* A block device: written in place (synced by commit). */
+static int open_in_place(atomic_file *a)
+{
+	a->fd = open(a->path, O_RDWR | O_CLOEXEC);
+	if (a->fd < 0)
+		return -errno;
+	a->in_place = 1;
+	return 0;
+}
+
+/* The replaced file's mode and owner on the temporary (an owner this
+ * process may not give is left as it is). */
+static int keep_mode(atomic_file *a, const struct stat *st)
+{
+	if (fchmod(a->fd, st->st_mode & 07777) != 0)
+		return -1;
+	if (fchown(a->fd, st->st_uid, st->st_gid) != 0 && errno != EPERM)
+		return -1;
+	return 0;
+}
+
 int atomic_file_open(atomic_file *a, const char *path)
 {
 	char dir[PATH_MAX];
 	const char *name;
+	struct stat st;
 	memset(a, 0, sizeof *a);
 	a->fd = a->dir_fd = -1;
 	if (strlen(path) + 16 >= sizeof a->path)
 		return -ENAMETOOLONG;
-	snprintf(a->path, sizeof a->path, "%s", path);
+	int rc = follow_links(path, a->path, sizeof a->path - 16);
+	if (rc < 0)
+		return rc;
+	int exists = stat(a->path, &st) == 0;
+	if (exists && S_ISBLK(st.st_mode))
+		return open_in_place(a);
+	if (exists && !S_ISREG(st.st_mode))
+		return S_ISDIR(st.st_mode) ? -EISDIR : -EINVAL;
+	path = a->path;
 	split(path, dir, sizeof dir, &name);
 	if (!*name)
 		return -EISDIR;
@@ -54,13 +108,15 @@ int atomic_file_open(atomic_file *a, const char *path)
 		return -ENAMETOOLONG;
 	}
 	a->fd = open(dir, O_TMPFILE | O_RDWR | O_CLOEXEC, 0644);
-	if (a->fd >= 0)
-		return 0;
-	/* no O_TMPFILE here: a named temporary, removed on abort */
-	a->fd = mkstemp(a->tmp);
-	if (a->fd < 0 || fchmod(a->fd, 0644) != 0)
+	if (a->fd < 0) {
+		/* no O_TMPFILE here: a named temporary, removed on abort */
+		a->fd = mkstemp(a->tmp);
+		if (a->fd < 0 || fchmod(a->fd, 0644) != 0)
+			return fail(a);
+		a->named = 1;
+	}
+	if (exists && keep_mode(a, &st) != 0)
 		return fail(a);
-	a->named = 1;
 	return 0;
 }
 
@@ -87,6 +143,8 @@ static int link_tmpfile(atomic_file *a)
 
 int atomic_file_commit(atomic_file *a)
 {
+	if (a->in_place)
+		return fsync(a->fd) == 0 ? 0 : -errno;
 	if (fsync(a->fd) != 0 || (!a->named && link_tmpfile(a) != 0) || rename(a->tmp, a->path) != 0)
 		return -errno;
 	a->named = 0;

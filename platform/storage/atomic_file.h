@@ -5,7 +5,14 @@
  * syncs the directory. Where the file system has no O_TMPFILE (FAT on an SD
  * card), a unique named temporary (".NAME.XXXXXX") takes its place and
  * abort removes it. Two writers to one path never share a temporary: the
- * last commit wins whole. */
+ * last commit wins whole.
+ *
+ * A symbolic link is written through: its target is replaced (the
+ * temporary in the target's directory), the link stays a link. A file
+ * replaced keeps its mode and, where allowed, its owner. A block device (a
+ * raw A/B slot partition) is written in place, then synced: it cannot be
+ * renamed over. Anything else that is not a regular file (a character
+ * device, a FIFO, a socket, a directory) is refused: -EINVAL. */
 #ifndef ATOMIC_FILE_H
 #define ATOMIC_FILE_H
 
@@ -15,6 +22,7 @@ typedef struct atomic_file {
 	int fd;                    /* write the contents here */
 	int dir_fd;
 	int named;                 /* tmp exists in the directory */
+	int in_place;              /* a block device: fd is the device itself */
 	char path[PATH_MAX];
 	char tmp[PATH_MAX];
 } atomic_file;

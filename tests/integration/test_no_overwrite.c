@@ -3,7 +3,10 @@
  * a symbolic link, and the names a command makes itself (convert's .amc
  * beside its .asf, skinplay's contact sheet) - with exit 1, a message
  * naming the input, and the input byte for byte as it was. repair, which
- * replaces its input by design, still does. */
+ * replaces its input by design, still does. An output that is a symbolic
+ * link is written through (the link stays, the target keeps its mode); a
+ * FIFO, a directory or a character device is refused and left as it was;
+ * an image goes onto a block device in place (as root, on a loop device). */
 #include <stdarg.h>
 #include <stddef.h>
 #include <setjmp.h>
@@ -114,11 +117,62 @@ static void test_repair_still_replaces(void **state)
 	assert_int_equal(test_run("cd '%s' && %s repair show.skn >/dev/null", d, tool("skintool")), 0);
 }
 
+/* cd scratch && the command: its exit status */
+static int in_scratch(const char *fmt, const char *arg)
+{
+	char cmd[2048];
+	snprintf(cmd, sizeof cmd, fmt, arg);
+	return test_run("cd '%s' && %s", test_scratch_dir(), cmd);
+}
+
+static void test_links_devices_and_fifos(void **state)
+{
+	(void)state;
+	const char *t = tool("skintool");
+	char cmd[1400];
+	/* through a link: the target replaced, its mode kept, the link a link */
+	snprintf(cmd, sizeof cmd, "%s pack tiny.asf tiny.amc -q -o real.skn && chmod 640 real.skn && "
+		 "ln -s real.skn link.skn && %s pack tiny.asf tiny.amc -q --sequence 9 -o link.skn && test -L link.skn && "
+		 "test \"$(stat -c %%a real.skn)\" = 640 && %s info link.skn | grep -q 'sequence    9' && "
+		 "%s repair link.skn >/dev/null && test -L link.skn && test \"$(stat -c %%a real.skn)\" = 640", t, t, t, t);
+	assert_int_equal(in_scratch("%s", cmd), 0);
+	/* what is not a file: refused, left as it was */
+	const char *log = test_scratch("kinds.txt");
+	snprintf(cmd, sizeof cmd, "mkfifo fifo.skn && mkdir dir.csv && { %s pack tiny.asf tiny.amc -o fifo.skn; "
+		 "echo $? > rc1; %s bind tiny.asf body.obj -o dir.csv; echo $? > rc2; } >'%s' 2>&1; "
+		 "test -p fifo.skn && test -d dir.csv && test \"$(cat rc1 rc2)\" = \"$(printf '1\\n1')\"", t, t, log);
+	assert_int_equal(in_scratch("%s", cmd), 0);
+	static const char *const said[] = { "fifo.skn is a FIFO", "dir.csv is a directory", NULL };
+	test_assert_contains_all(log, said);
+	if (geteuid() != 0) {
+		print_message("not root: character and block devices not tried\n");
+		return;
+	}
+	snprintf(cmd, sizeof cmd, "mknod null.skn c 1 3 && %s pack tiny.asf tiny.amc -o null.skn 2>'%s'; test $? = 1 && "
+		 "test -c null.skn", t, log);
+	assert_int_equal(in_scratch("%s", cmd), 0);
+	static const char *const chr[] = { "null.skn is a character device", NULL };
+	test_assert_contains_all(log, chr);
+	/* a raw slot: a loop device over a file */
+	snprintf(cmd, sizeof cmd, "truncate -s 4M slot.img && dev=$(losetup -f --show slot.img 2>/dev/null) || exit 77; "
+		 "%s pack tiny.asf tiny.amc -q --sequence 11 -o \"$dev\" && %s info \"$dev\" > info.txt; rc=$?; "
+		 "%s bind tiny.asf body.obj -o \"$dev\" 2>>info.txt; rc2=$?; losetup -d \"$dev\"; "
+		 "test $rc = 0 && test $rc2 = 1 && grep -q 'sequence    11' info.txt && grep -q 'is a block device' info.txt",
+		 t, t, t);
+	int rc = in_scratch("%s", cmd);
+	if (rc == 77) {
+		print_message("no loop device here: the block device not tried\n");
+		return;
+	}
+	assert_int_equal(rc, 0);
+}
+
 int main(void)
 {
 	const struct CMUnitTest tests[] = {
 		cmocka_unit_test(test_every_command_refuses),
 		cmocka_unit_test(test_repair_still_replaces),
+		cmocka_unit_test(test_links_devices_and_fifos),
 	};
 	return cmocka_run_group_tests(tests, setup, test_scratch_teardown);
 }
