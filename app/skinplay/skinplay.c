@@ -81,6 +81,7 @@ static int setup(skinplay *p)
 		p->no_show = 1; /* a kiosk waits for one (skinplay_wait.c) */
 		return -1;
 	}
+	show_watch_init(&p->watch, p->o.image, p->o.image_count);
 	if (!p->o.image_count && setup_bind_load(&p->o.bind, p->o.asf, p->o.mesh, &p->body) < 0)
 		return -1;
 	if (runtime_skin_init(&p->skin, &p->body.skel, &p->body.pose, &p->body.mesh, &p->body.weights,
@@ -374,6 +375,19 @@ static uint64_t frame_time(skinplay *p, long n)
 	return p->headless ? play_display_time(n, p->o.display_rate) : wall - p->wall0;
 }
 
+/* A slot changed under the show and now holds a whole image (a new show
+ * copied in, or one written over the playing one): the show opens again,
+ * as for SIGHUP. Not in a run writing frames: its output is the frames
+ * of what it started with. */
+static unsigned slots_news(skinplay *p)
+{
+	if (!p->o.image_count || p->o.out_dir || !show_watch_poll(&p->watch, clock_now_ns(), 1))
+		return 0;
+	fprintf(cli_note(), "image: a slot changed and holds a whole image -> reopen the show\n");
+	sdnotify_send(&p->kiosk.sd, "RELOADING=1");
+	return SKINPLAY_ACT_RELOAD;
+}
+
 static int play(skinplay *p)
 {
 	stage_start(&p->stages, clock_now_ns());
@@ -391,7 +405,7 @@ static int play(skinplay *p)
 	p->eng.cfg.loop = budget < 0 || p->o.frames >= 0 || clips_show_loops(p);
 	uint64_t prev = 0;
 	while (!quit && (budget < 0 || shown < budget)) {
-		unsigned act = skinplay_kiosk_frame(&p->kiosk, shown);
+		unsigned act = skinplay_kiosk_frame(&p->kiosk, shown) | slots_news(p);
 		if (act & (SKINPLAY_ACT_QUIT | SKINPLAY_ACT_RELOAD)) {
 			p->reload = !(act & SKINPLAY_ACT_QUIT);
 			break;
@@ -466,7 +480,7 @@ int main(int argc, char **argv)
 		     play(&p) == 0 ? 0 : 1;
 	/* headless, the show had nothing to play: the held frame was rendered,
 	 * the status says the show is damaged (a kiosk keeps holding instead) */
-	if (rc == 0 && p.hold)
+	if (rc == 0 && p.hold && !p.reload)
 		rc = 2;
 	if (p.reload && rc == 0)
 		signals_hold();

@@ -9,6 +9,7 @@
 #include "clip_file.h"
 #include "cli_common.h"
 #include "show_source.h"
+#include "show_watch.h"
 #include "runtime_skin.h"
 #include "display.h"
 #include "play_engine.h"
@@ -32,6 +33,7 @@ typedef struct skinplay {
 	play_engine eng;   /* clock in, pose out */
 	clip_file text; /* --asf/--amc, --bvh: the file as the engine's source */
 	show_source show;  /* --image: the clips of a packed image instead */
+	show_watch watch;  /* the image slots' files, while the show plays */
 	play_source src;   /* the clip playing */
 	play_extent extent; /* its length, facing and extent (one pass at its start) */
 	skel_pose scratch_pose; /* the extent pass's */

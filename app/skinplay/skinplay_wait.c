@@ -5,67 +5,12 @@
  * still for a moment (a new show copied in), it starts over. */
 #include <stdio.h>
 #include <string.h>
-#include <sys/stat.h>
 
 #include "clock.h"
+#include "show_watch.h"
 #include "skinplay.h"
 
-#define WAIT_POLL_NS 250000000ull   /* a look at the slots and the screen four times a second */
-#define WAIT_SETTLE_NS 2000000000ull /* a changed slot must stand still this long (a copy in progress) */
-
-/* What a slot file is now: enough to see that it changed. */
-typedef struct slot_state {
-	int exists;
-	dev_t dev;
-	ino_t ino;
-	off_t size;
-	struct timespec mtime;
-} slot_state;
-
-static slot_state slot_now(const char *path)
-{
-	struct stat st;
-	slot_state s;
-	memset(&s, 0, sizeof s);
-	if (stat(path, &st) == 0) {
-		s.exists = 1;
-		s.dev = st.st_dev;
-		s.ino = st.st_ino;
-		s.size = st.st_size;
-		s.mtime = st.st_mtim;
-	}
-	return s;
-}
-
-static int same(const slot_state *a, const slot_state *b)
-{
-	return a->exists == b->exists && a->dev == b->dev && a->ino == b->ino && a->size == b->size &&
-	       a->mtime.tv_sec == b->mtime.tv_sec && a->mtime.tv_nsec == b->mtime.tv_nsec;
-}
-
-typedef struct slot_watch {
-	slot_state seen[SHOW_MAX_SLOTS], last[SHOW_MAX_SLOTS];
-	uint64_t changed_at;     /* when a slot last changed; 0: none since the start */
-} slot_watch;
-
-/* 1 when a slot has changed since the start and has not changed for
- * WAIT_SETTLE_NS. */
-static int slots_settled(slot_watch *w, const play_opts *o, uint64_t now)
-{
-	for (int i = 0; i < o->image_count && i < SHOW_MAX_SLOTS; i++) {
-		slot_state s = slot_now(o->image[i]);
-		if (!same(&s, &w->last[i])) {
-			w->last[i] = s;
-			w->changed_at = now;
-		}
-	}
-	if (!w->changed_at || now - w->changed_at < WAIT_SETTLE_NS)
-		return 0;
-	for (int i = 0; i < o->image_count && i < SHOW_MAX_SLOTS; i++)
-		if (!same(&w->seen[i], &w->last[i]))
-			return 1;
-	return 0;
-}
+#define WAIT_POLL_NS SHOW_WATCH_POLL_NS /* the screen redrawn as often as the slots are looked at */
 
 /* The notice's lines: what is wrong, the slots, where to read more. */
 static int notice_lines(const play_opts *o, char slots[160], const char *lines[5])
@@ -93,7 +38,7 @@ static int show_notice(skinplay *p, const char *const *lines, int n)
 	return 0;
 }
 
-static int wait_loop(skinplay *p, slot_watch *w)
+static int wait_loop(skinplay *p, show_watch *w)
 {
 	char slots[160];
 	const char *lines[5];
@@ -105,7 +50,7 @@ static int wait_loop(skinplay *p, slot_watch *w)
 			return 0;
 		}
 		uint64_t now = clock_now_ns();
-		if (slots_settled(w, &p->o, now)) {
+		if (show_watch_poll(w, now, 0)) {
 			fprintf(stderr, "skinplay: an image slot changed: starting over\n");
 			p->reload = 1;
 			return 0;
@@ -122,10 +67,8 @@ static int wait_loop(skinplay *p, slot_watch *w)
 int wait_for_show(skinplay *p)
 {
 	skp_error err;
-	slot_watch w;
-	memset(&w, 0, sizeof w);
-	for (int i = 0; i < p->o.image_count && i < SHOW_MAX_SLOTS; i++)
-		w.seen[i] = w.last[i] = slot_now(p->o.image[i]);
+	show_watch w;
+	show_watch_init(&w, p->o.image, p->o.image_count);
 	/* a batch run, or nowhere to say it: the error stands */
 	if ((p->o.platform && !strcmp(p->o.platform, "none")) || open_display(p) < 0 || p->headless)
 		return 1;

@@ -3,7 +3,10 @@
  * and the next slot plays; --clip naming a clip that cannot play (or is
  * not there) plays the next that can, with a notice (a batch run writing
  * frames refuses a clip that is not there, naming those that are, and
- * --clip '' is refused by the command line); a short clip played
+ * --clip '' is refused by the command line); a slot written over while it
+ * plays (a slow copy, then a half-written one) is played on until it holds
+ * a whole image, which then plays (no restart for the half-written one);
+ * a short clip played
  * for six virtual hours over a block beyond repair logs its pass summary
  * once an hour, not once a pass (skinplay --platform none: the show's
  * clock and logs, nothing drawn). */
@@ -139,6 +142,33 @@ static void test_batch_refuses_a_missing_clip(void **state)
 	assert_true(test_file_contains(log, "--clip expects a clip's name"));
 }
 
+/* The playing slot overwritten in place by a slow copy of another show:
+ * skinplay plays on, then opens the new show once the copy is whole;
+ * the same slot then half written over: said, played on, no restart. */
+static void test_slot_written_while_playing(void **state)
+{
+	(void)state;
+	const char *slot = test_scratch("slot.skn"), *next = test_scratch("next.skn"), *log = test_scratch("slot.txt");
+	assert_int_equal(test_run("cp '%s' '%s' && %s pack assets/demo.asf '%s' --sequence 6 -q -o '%s'", show, slot,
+				  test_tool_path("skintool"), test_tool_path("assets/demo.amc"), next),
+			 0);
+	int rc = test_run(
+		"log='%s'; seen() { for i in $(seq 600); do grep -q \"$1\" \"$log\" && return 0; sleep 0.1; done; return 1; }; "
+		"%s --image '%s' --platform none --frames 1000000000 >\"$log\" 2>&1 & pid=$!; "
+		"seen 'playing .*slot.skn (sequence 5' && "
+		"dd if='%s' of='%s' bs=4096 count=8 conv=notrunc status=none && sleep 1 && "
+		"dd if='%s' of='%s' bs=4096 skip=8 seek=8 conv=notrunc status=none && "
+		"seen 'reopen the show' && seen 'playing .*slot.skn (sequence 6' && "
+		"head -c 20000 '%s' > half.skn && dd if=half.skn of='%s' conv=notrunc status=none && "
+		"seen 'changed but holds no whole image'; ok=$?; sleep 3; kill -TERM $pid; wait $pid; st=$?; "
+		"test $ok = 0 && test $st = 0 && test $(grep -c 'playing .*slot.skn' \"$log\") = 2",
+		log, test_tool_path("skinplay"), slot, next, slot, next, slot, show, slot);
+	if (rc != 0) {
+		char *text = test_read_file(log, NULL);
+		fail_msg("status %d, log:\n%s", rc, text ? text : "");
+	}
+}
+
 static int count_lines(const char *path, const char *needle, int *all)
 {
 	size_t n;
@@ -180,6 +210,7 @@ int main(void)
 		cmocka_unit_test(test_fifo_slot_refused_at_once),
 		cmocka_unit_test(test_clip_that_cannot_play_gives_way),
 		cmocka_unit_test(test_batch_refuses_a_missing_clip),
+		cmocka_unit_test(test_slot_written_while_playing),
 		cmocka_unit_test(test_logs_bounded_over_hours),
 	};
 	return cmocka_run_group_tests(tests, setup, test_scratch_teardown);
