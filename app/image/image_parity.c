@@ -5,6 +5,7 @@
 
 #include <string.h>
 
+#include "image_copies.h"
 #include "image_error.h"
 #include "image_read.h"
 
@@ -26,6 +27,14 @@ skp_block_state skp_image_rebuild(skp_image *im, uint32_t block, int kind, unsig
 		if (b == block)
 			continue;
 		st = skp_image_read_raw(im, b, im->scratch);
+		/* block 0 holds the header alone: made again from it (its copy
+		 * gave it) when block 0 itself is bad, so its group's other bad
+		 * block still rebuilds */
+		if (b == 0 && (st != SKP_BLOCK_OK || !skp_block_crc_ok(im->scratch, bs) ||
+			       memcmp(im->scratch, h->id, SKP_IMAGE_ID_BYTES))) {
+			skp_header_block_frame(im->scratch, h);
+			st = SKP_BLOCK_OK;
+		}
 		xor_into(buf, im->scratch, bs);
 	}
 	return st != SKP_BLOCK_OK ? st : skp_image_frame_check(im, block, kind, item, buf);

@@ -240,24 +240,37 @@ static skp_status header_from_copy(skp_image *im, skp_status rc0)
 	return SKP_OK;
 }
 
-/* A whole block 0 may still be another image's (copied in with a good
- * CRC): block 1, always data, says whose the image is. 1 when block 1
- * agrees with the header or cannot tell (then block 0 is trusted). */
-static int header_confirmed(skp_image *im)
+#define HEADER_WITNESSES 3 /* data blocks after block 0 asked whose the image is */
+
+/* Whose blocks 1..HEADER_WITNESSES are: *own of them carry the header's
+ * id, *other a whole block of another id (kept in other_id). */
+static void witnesses(skp_image *im, int *own, int *other, uint8_t *other_id)
 {
-	if (skp_image_read_raw(im, 1, im->buf) != SKP_BLOCK_OK || !skp_block_crc_ok(im->buf, im->hdr.block_size))
-		return 1;
-	return memcmp(im->buf, im->hdr.id, SKP_IMAGE_ID_BYTES) == 0;
+	*own = *other = 0;
+	for (uint32_t b = 1; b <= HEADER_WITNESSES && b < im->hdr.data_blocks; b++) {
+		if (skp_image_read_raw(im, b, im->buf) != SKP_BLOCK_OK || !skp_block_crc_ok(im->buf, im->hdr.block_size))
+			continue;
+		if (!memcmp(im->buf, im->hdr.id, SKP_IMAGE_ID_BYTES)) {
+			(*own)++;
+		} else {
+			(*other)++;
+			memcpy(other_id, im->buf, SKP_IMAGE_ID_BYTES);
+		}
+	}
 }
 
-/* Block 0 is another image's: the copy's header when block 1 is the
- * copy's image's (im->buf holds block 1). */
-static void header_of_block1(skp_image *im)
+/* A whole block 0 may still be another image's: copied in with a good CRC,
+ * or an in-place write of another pack cut short after a block or two. The
+ * blocks after it say whose the image is: when more of them carry another
+ * id than block 0's, and the header copy is that image's, the copy's header
+ * is the image's. */
+static void header_confirm(skp_image *im)
 {
 	uint8_t id[SKP_IMAGE_ID_BYTES];
 	skp_image_header h;
-	memcpy(id, im->buf, sizeof id);
-	if (!skp_image_copy_header(im, &h) || memcmp(h.id, id, sizeof id))
+	int own, other;
+	witnesses(im, &own, &other, id);
+	if (other <= own || !skp_image_copy_header(im, &h) || memcmp(h.id, id, sizeof id))
 		return;
 	im->hdr = h;
 	im->header_from_copy = 1;
@@ -283,8 +296,8 @@ skp_status skp_image_open(skp_image *im, const skp_blockdev *dev, skp_error *err
 	if (rc && !older && header_from_copy(im, rc) == SKP_OK) {
 		skp_error_clear(err);
 		rc = SKP_OK;
-	} else if (!rc && !header_confirmed(im)) {
-		header_of_block1(im);
+	} else if (!rc) {
+		header_confirm(im);
 	}
 	if (!rc) rc = check_limits(&im->hdr, err);
 	if (!rc) rc = check_layout(&im->hdr, err);
