@@ -10,6 +10,7 @@
 #include <string.h>
 #include <time.h>
 
+#include "cli_common.h"
 #include "show_source.h"
 #include "skintool_cmds.h"
 #include "tool_args.h"
@@ -273,9 +274,13 @@ int cmd_info(int argc, char **argv)
 	show_image_verify(&s, bad_block, &s, &v);
 	if (v.bad == 0)
 		printf("verify: %lu blocks: all good, 0 bad\n", (unsigned long)s.im.hdr.block_count);
-	else
-		printf("verify: %lu blocks: %ld bad, %ld repairable (skintool repair %s), %ld beyond repair\n",
-		       (unsigned long)s.im.hdr.block_count, v.bad, v.bad - v.beyond, s.path, v.beyond);
+	else if (v.beyond == 0 && v.digest > 0)
+		printf("verify: %lu blocks: %ld bad, all repairable (skintool repair %s)\n",
+		       (unsigned long)s.im.hdr.block_count, v.bad, cli_shown(s.path));
+	else /* repair commits only an image that matches its digest: it would refuse */
+		printf("verify: %lu blocks: %ld bad, %ld rebuildable one by one, %ld beyond repair; not repairable as a "
+		       "whole (%s): pack the show again\n", (unsigned long)s.im.hdr.block_count, v.bad, v.bad - v.beyond,
+		       v.beyond, v.beyond ? "blocks beyond repair" : "the data would not match the image's digest");
 	printf("digest: %s\n", v.digest > 0 ? "the data blocks match it"
 				: v.digest < 0 ? "not checked (a data block is beyond repair)"
 				: "MISMATCH: a data block was altered and keeps a good CRC (not this image as packed)");

@@ -23,8 +23,9 @@
 #include <time.h>
 #include <unistd.h>
 
-#include "show_source.h"
+#include "crc32.h"
 #include "runtime_skin.h"
+#include "show_source.h"
 #include "test_paths.h"
 #include "test_run.h"
 
@@ -289,6 +290,24 @@ static void test_repair_restores_the_image(void **state)
 	free(d);
 	d = load(bad, &m);
 	assert_memory_equal(d, r, n);
+	/* info advises repair only where repair would write: not here, nor for
+	 * a block altered with its CRC made good (the digest) */
+	const char *said = test_scratch("said.txt");
+	static const char *const beyond[] = { "not repairable as a whole (blocks beyond repair)", NULL };
+	assert_int_equal(test_run("%s info '%s' >'%s' 2>&1", test_tool_path("skintool"), bad, said), 2);
+	test_assert_contains_all(said, beyond);
+	assert_false(test_file_contains(said, "(skintool repair"));
+	free(d);
+	d = load(image, &n);
+	d[f * BS + 60] ^= 1;
+	le_put32(d + f * BS + BS - 4, crc32_compute(d + f * BS, BS - 4));
+	d[(f + 1) * BS + 60] ^= 1;
+	save(bad, d, n);
+	static const char *const forged[] = { "the data would not match the image's digest", "digest: MISMATCH", NULL };
+	assert_int_equal(test_run("%s info '%s' >'%s' 2>&1", test_tool_path("skintool"), bad, said), 2);
+	test_assert_contains_all(said, forged);
+	assert_false(test_file_contains(said, "(skintool repair"));
+	assert_int_equal(test_run("%s repair '%s' >/dev/null 2>&1", test_tool_path("skintool"), bad), 2);
 	free(d);
 	free(r);
 }
