@@ -252,6 +252,31 @@ static int wait_for(int fd, const char *want, int ms, int *watchdogs)
 	return 0;
 }
 
+/* skinplay as a kiosk that runs until told (the demo motion, headless,
+ * no buttons), its stderr in the kiosk log (emptied first); under
+ * "systemd" (notify: the socket's name, a 100 ms watchdog) or not. */
+static pid_t start_kiosk(const char *notify)
+{
+	test_write_text(kiosk_log_path, "");
+	pid_t pid = fork();
+	assert_true(pid >= 0);
+	if (pid == 0) {
+		char amc[512];
+		snprintf(amc, sizeof amc, "%s", test_tool_path("assets/demo.amc"));
+		if (notify) {
+			setenv("NOTIFY_SOCKET", notify, 1);
+			setenv("WATCHDOG_USEC", "100000", 1);
+		}
+		setenv("ASAN_OPTIONS", "detect_leaks=0", 1);
+		if (!freopen(kiosk_log_path, "a", stderr))
+			_exit(126);
+		execl(test_tool_path("skinplay"), "skinplay", "--asf", "assets/demo.asf", "--amc", amc, "--platform",
+		      "surfaceless", "--size", "64x64", "--frames", "100000000", "--input", "none", (char *)NULL);
+		_exit(127);
+	}
+	return pid;
+}
+
 /* Under "systemd": READY=1, WATCHDOG=1 every half period, SIGHUP: a fresh
  * start (READY=1 again), SIGTERM: a clean exit with status 0. */
 static void test_notify_signals_and_watchdog(void **state)
@@ -260,20 +285,7 @@ static void test_notify_signals_and_watchdog(void **state)
 	char name[64];
 	snprintf(name, sizeof name, "@skp_kiosk_%d", (int)getpid());
 	int srv = listen_at(name);
-	pid_t pid = fork();
-	assert_true(pid >= 0);
-	if (pid == 0) {
-		char amc[512];
-		snprintf(amc, sizeof amc, "%s", test_tool_path("assets/demo.amc"));
-		setenv("NOTIFY_SOCKET", name, 1);
-		setenv("WATCHDOG_USEC", "100000", 1);
-		setenv("ASAN_OPTIONS", "detect_leaks=0", 1);
-		if (!freopen(kiosk_log_path, "w", stderr))
-			_exit(126);
-		execl(test_tool_path("skinplay"), "skinplay", "--asf", "assets/demo.asf", "--amc", amc, "--platform",
-		      "surfaceless", "--size", "64x64", "--frames", "100000000", "--input", "none", (char *)NULL);
-		_exit(127);
-	}
+	pid_t pid = start_kiosk(name);
 	int dogs = 0;
 	assert_true(wait_for(srv, "READY=1", 20000, &dogs));
 	assert_true(wait_for(srv, "WATCHDOG=1", 5000, &dogs));
@@ -317,19 +329,7 @@ static int wait_lines(const char *prefix, int want, int ms)
 static void test_sighup_twice(void **state)
 {
 	(void)state;
-	test_write_text(kiosk_log_path, "");
-	pid_t pid = fork();
-	assert_true(pid >= 0);
-	if (pid == 0) {
-		char amc[512];
-		snprintf(amc, sizeof amc, "%s", test_tool_path("assets/demo.amc"));
-		setenv("ASAN_OPTIONS", "detect_leaks=0", 1);
-		if (!freopen(kiosk_log_path, "a", stderr))
-			_exit(126);
-		execl(test_tool_path("skinplay"), "skinplay", "--asf", "assets/demo.asf", "--amc", amc, "--platform",
-		      "surfaceless", "--size", "64x64", "--frames", "100000000", "--input", "none", (char *)NULL);
-		_exit(127);
-	}
+	pid_t pid = start_kiosk(NULL);
 	int starts = wait_lines("display: surfaceless", 1, 20000), status;
 	for (int round = 0; round < 10 && starts >= 1; round++) {
 		kill(pid, SIGHUP);

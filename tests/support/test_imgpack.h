@@ -33,6 +33,27 @@ typedef struct test_imgpack {
 	skp_blockdev *rdev;
 } test_imgpack;
 
+/* The storage a test program packs into and opens from (static: megabytes),
+ * and the test_imgpack `pk` naming it. */
+#define TEST_IMGPACK_CAP (1 << 20)
+#define TEST_IMGPACK_STORAGE                                                                                      \
+	static skel s, s2;                                                                                        \
+	static mesh m, m2;                                                                                        \
+	static skin_weights w, w2;                                                                                \
+	static uint8_t img[TEST_IMGPACK_CAP];                                                                     \
+	static size_t img_size;                                                                                   \
+	static skp_image im;                                                                                      \
+	static skp_clip_stream pl;                                                                                \
+	static skp_image_writer wr;                                                                               \
+	static skp_clip_range range;                                                                              \
+	static amc_frame frames[64];                                                                              \
+	static int frame_count;                                                                                   \
+	static amc_frame synth[TEST_IMGPACK_SYNTH];                                                               \
+	static skp_mem_blockdev rb;                                                                               \
+	static skp_blockdev rdev;                                                                                 \
+	static const test_imgpack pk = { &s, &m, &w, frames, &frame_count, synth, &wr, &range,                    \
+					 img, TEST_IMGPACK_CAP, &img_size, &im, &rb, &rdev }
+
 /* A made-up id per pack (pack draws it at random): each call another. */
 void test_imgpack_next_id(uint8_t id[SKP_IMAGE_ID_BYTES]);
 

@@ -26,24 +26,9 @@
 #include "test_paths.h"
 
 #define BS TEST_IMGPACK_BS
-#define CAP (1 << 20)
+#define CAP TEST_IMGPACK_CAP
 
-static skel s, s2;
-static mesh m, m2;
-static skin_weights w, w2;
-static uint8_t img[CAP];
-static size_t img_size;
-static skp_image im;
-static skp_clip_stream pl;
-static skp_image_writer wr;
-static skp_clip_range range;
-static amc_frame frames[64];
-static int frame_count;
-static amc_frame synth[TEST_IMGPACK_SYNTH];
-static skp_mem_blockdev rb;
-static skp_blockdev rdev;
-static const test_imgpack pk = { &s, &m, &w, frames, &frame_count, synth, &wr, &range,
-				 img, CAP, &img_size, &im, &rb, &rdev };
+TEST_IMGPACK_STORAGE;
 
 static void test_crc32_vectors(void **state)
 {
