@@ -375,19 +375,6 @@ static uint64_t frame_time(skinplay *p, long n)
 	return p->headless ? play_display_time(n, p->o.display_rate) : wall - p->wall0;
 }
 
-/* A slot changed under the show and now holds a whole image (a new show
- * copied in, or one written over the playing one): the show opens again,
- * as for SIGHUP. Not in a run writing frames: its output is the frames
- * of what it started with. */
-static unsigned slots_news(skinplay *p)
-{
-	if (!p->o.image_count || p->o.out_dir || !show_watch_poll(&p->watch, clock_now_ns(), 1))
-		return 0;
-	fprintf(cli_note(), "image: a slot changed and holds a whole image -> reopen the show\n");
-	sdnotify_send(&p->kiosk.sd, "RELOADING=1");
-	return SKINPLAY_ACT_RELOAD;
-}
-
 static int play(skinplay *p)
 {
 	stage_start(&p->stages, clock_now_ns());

@@ -116,6 +116,11 @@ int open_display(skinplay *p);
  * no display at all, it is an error. Returns the exit status. */
 int wait_for_show(skinplay *p);
 
+/* While the show plays: SKINPLAY_ACT_RELOAD when a slot changed and now
+ * holds a whole image (said, and RELOADING=1 to systemd), else 0. Not in a
+ * run writing frames. */
+unsigned slots_news(skinplay *p);
+
 /* The close-up and the difference view (skinplay_closeup.c): set up once
  * the body is bound (and the renderer up); each frame after skinning, the
  * joint shown and the values coloured into f. */

@@ -1,11 +1,14 @@
-/* A kiosk with no show it can play (every image slot missing, damaged
- * beyond use or refused): it does not exit into a restart loop and a dark
- * screen. It says so on the screen, keeps feeding the watchdog and answers
- * signals, and watches the slot files: once one has changed and then stood
- * still for a moment (a new show copied in), it starts over. */
+/* The image slots watched (show_watch.h). A kiosk with no show it can
+ * play (every image slot missing, damaged beyond use or refused) does not
+ * exit into a restart loop and a dark screen: it says so on the screen,
+ * keeps feeding the watchdog and answers signals, and once a slot file has
+ * changed and then stood still for a moment (a new show copied in), it
+ * starts over. While a show plays, a slot that changed and holds a whole
+ * image starts it over too. */
 #include <stdio.h>
 #include <string.h>
 
+#include "cli_quiet.h"
 #include "clock.h"
 #include "show_watch.h"
 #include "skinplay.h"
@@ -80,4 +83,17 @@ int wait_for_show(skinplay *p)
 		return 1;
 	fprintf(stderr, "skinplay: no image slot holds a show that can play: saying so on the screen, waiting for one\n");
 	return wait_loop(p, &w);
+}
+
+/* A slot changed under the show and now holds a whole image (a new show
+ * copied in, or one written over the playing one): the show opens again,
+ * as for SIGHUP. Not in a run writing frames: its output is the frames
+ * of what it started with. */
+unsigned slots_news(skinplay *p)
+{
+	if (!p->o.image_count || p->o.out_dir || !show_watch_poll(&p->watch, clock_now_ns(), 1))
+		return 0;
+	fprintf(cli_note(), "image: a slot changed and holds a whole image -> reopen the show\n");
+	sdnotify_send(&p->kiosk.sd, "RELOADING=1");
+	return SKINPLAY_ACT_RELOAD;
 }
