@@ -150,7 +150,7 @@ static void test_slot_written_while_playing(void **state)
 	(void)state;
 	const char *slot = test_scratch("slot.skn"), *next = test_scratch("next.skn"), *log = test_scratch("slot.txt");
 	assert_int_equal(test_run("cp '%s' '%s' && %s pack assets/demo.asf '%s' --sequence 6 -q -o '%s'", show, slot,
-				  test_tool_path("skintool"), test_tool_path("assets/demo.amc"), next),
+				  test_tool_path("skintool"), test_scratch("turn.amc"), next),
 			 0);
 	int rc = test_run(
 		"log='%s'; seen() { for i in $(seq 600); do grep -q \"$1\" \"$log\" && return 0; sleep 0.1; done; return 1; }; "
