@@ -6,7 +6,7 @@
 DEPS_MISSING = $(shell sh board/deps.sh $(DEB_PKGS))
 
 # Goals that need no packages, or that run `make deps` first themselves.
-DEPS_FREE_GOALS := deps help clean test run
+DEPS_FREE_GOALS := deps help clean test test-unit test-integration run
 ifneq ($(filter-out $(DEPS_FREE_GOALS),$(or $(MAKECMDGOALS),all)),)
 ifneq ($(SKP_DEPS_CHECKED),$(BOARD))
 DEPS_NOW := $(DEPS_MISSING)
