@@ -159,7 +159,7 @@ static void test_slot_written_while_playing(void **state)
 		"dd if='%s' of='%s' bs=4096 count=8 conv=notrunc status=none && sleep 1 && "
 		"dd if='%s' of='%s' bs=4096 skip=8 seek=8 conv=notrunc status=none && "
 		"seen 'reopen the show' && seen 'playing .*slot.skn (sequence 6' && "
-		"head -c 20000 '%s' > half.skn && dd if=half.skn of='%s' conv=notrunc status=none && "
+		"head -c 20000 '%s' | dd of='%s' conv=notrunc status=none && "
 		"seen 'changed but holds no whole image'; ok=$?; sleep 3; kill -TERM $pid; wait $pid; st=$?; "
 		"test $ok = 0 && test $st = 0 && test $(grep -c 'playing .*slot.skn' \"$log\") = 2",
 		log, test_tool_path("skinplay"), slot, next, slot, next, slot, show, slot);
