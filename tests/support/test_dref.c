@@ -65,14 +65,19 @@ vec3 rand_vec(double r)
 {
 	return vec3_make((float)test_rng_range(-r, r), (float)test_rng_range(-r, r), (float)test_rng_range(-r, r));
 }
-void close_to(double got, double want, double tol, int slot, const char *what)
+void test_error_track(double *worst, double got, double want, double tol, const char *what)
 {
 	double e = fabs(got - want);
 
-	if (e > test_max_err[slot])
-		test_max_err[slot] = e;
+	if (e > *worst)
+		*worst = e;
 	if (!(e <= tol))
-		fail_msg("%s: got %.9g want %.9g (error %.3g > %.3g)", what, got, want, e, tol);
+		fail_msg("%s: got %.12g want %.12g (error %.3g > %.3g)", what, got, want, e, tol);
+}
+
+void close_to(double got, double want, double tol, int slot, const char *what)
+{
+	test_error_track(&test_max_err[slot], got, want, tol, what);
 }
 void vec_close(vec3 got, dvec want, double tol, int slot, const char *what)
 {

@@ -28,6 +28,9 @@ dvec drigid_apply(const drigid *a, dvec p);
 vec3 rand_axis(void);
 vec3 rand_vec(double r);
 void close_to(double got, double want, double tol, int slot, const char *what);
+/* The same against any tracker: *worst the largest error seen; fails the
+ * test past tol. */
+void test_error_track(double *worst, double got, double want, double tol, const char *what);
 void vec_close(vec3 got, dvec want, double tol, int slot, const char *what);
 
 #endif

@@ -8,6 +8,7 @@
 
 #include <math.h>
 
+#include "test_dref.h"
 #include "test_rng.h"
 
 #define Q30 1073741824.0
@@ -26,10 +27,5 @@ int32_t test_fx_raw(double x, double one) { return (int32_t)llround(x * one); }
 
 void test_fx_track(int slot, double got, double want, double tol, const char *what)
 {
-	double e = fabs(got - want);
-
-	if (e > test_fx_max_err[slot])
-		test_fx_max_err[slot] = e;
-	if (!(e <= tol))
-		fail_msg("%s: got %.12g want %.12g (error %.3g > %.3g)", what, got, want, e, tol);
+	test_error_track(&test_fx_max_err[slot], got, want, tol, what);
 }
