@@ -298,18 +298,3 @@ void show_close(show_source *s)
 		show_image_close(&s->slot[i]);
 	s->active = -1;
 }
-
-void show_print_memory(void)
-{
-	char line[256], hwm[64] = "?", rss[64] = "?";
-	FILE *f = fopen("/proc/self/status", "r");
-	while (f && fgets(line, sizeof line, f)) {
-		if (!strncmp(line, "VmHWM:", 6))
-			sscanf(line + 6, " %63[^\n]", hwm);
-		else if (!strncmp(line, "VmRSS:", 6))
-			sscanf(line + 6, " %63[^\n]", rss);
-	}
-	if (f)
-		fclose(f);
-	fprintf(stderr, "memory: VmHWM %s, VmRSS %s\n", hwm, rss);
-}

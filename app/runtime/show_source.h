@@ -109,8 +109,5 @@ int show_select_clip(show_source *s, const char *name, play_source *src);
 
 void show_close(show_source *s);
 
-/* Prints the process's peak and current resident memory (VmHWM, VmRSS from
- * /proc/self/status) on stderr, for skinplay --report-memory. */
-void show_print_memory(void);
 
 #endif

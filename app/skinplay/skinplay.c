@@ -13,6 +13,7 @@
 #include "cli_quiet.h"
 #include "cli_version.h"
 #include "clock.h"
+#include "mem_report.h"
 #include "png_writer.h"
 #include "setup_bind.h"
 #include "signals.h"
@@ -475,7 +476,7 @@ int main(int argc, char **argv)
 	clip_file_close(&p.text);
 	show_close(&p.show);
 	if (p.o.report_memory)
-		show_print_memory();
+		mem_report(stderr);
 	if (p.disp) {
 		render_shutdown(&p.r);
 		p.disp->shutdown();
