@@ -105,4 +105,4 @@ soak: all
 # clang-tidy). Suppressions, each with its reason: tests/lint/*.supp.
 lint: $(VERSION_H)
 	@sh tests/lint/lint.sh $(BOARD) "$(PLAT_CFLAGS) $(BACKEND_DEFS)" "$(sort $(TEST_INC)) -I$(OUT)/gen" \
-	  "$(foreach m,$(APP_MODULES),$(SRC_$(m))) $(PLAT_SRC)"
+	  "$(foreach m,$(APP_MODULES),$(SRC_$(m))) $(PLAT_SRC)" "$(HOST_MODULES)"

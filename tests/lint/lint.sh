@@ -3,8 +3,9 @@
 # clang static analyzer and the bugprone checks that are not style).
 # Fails on any finding not listed, with its reason, in tests/lint/*.supp.
 # Usage: lint.sh BOARD "EXTRA CFLAGS (pkg-config, backend defines)" \
-#                "-I FLAGS OF EVERY MODULE (app/sources.mk)" "SOURCES"
+#                "-I FLAGS OF EVERY MODULE (app/sources.mk)" "SOURCES" "HOST MODULES"
 board=${1:-host}; extra=$2; inc=$3; sources=$4
+hosts=$5   # app/sources.mk's HOST_MODULES: GNU C (they talk to Linux), the core C11
 fail=0
 
 if command -v cppcheck >/dev/null 2>&1; then
@@ -34,13 +35,12 @@ if command -v clang-tidy >/dev/null 2>&1; then
 	checks="$checks,-bugprone-suspicious-string-compare,-bugprone-not-null-terminated-result,-bugprone-branch-clone"
 	logs=$(mktemp -d); trap 'rm -rf "$logs"' EXIT
 	# one clang-tidy a processor, each file's findings in a file of its own
-	export checks inc board extra logs
+	export checks inc board extra logs hosts
 	printf '%s\n' $sources | xargs -P "$(nproc 2>/dev/null || echo 1)" -n 1 sh -c '
 		f=$1
-		case $f in
-		app/skintool/*|app/skinplay/*|app/cli/*|app/runtime/*|app/setup/*|app/analysis/*|app/import/*|platform/*) std=gnu11 ;;
-		*) std=c11 ;;
-		esac
+		m=${f#app/}; m=${m%%/*}
+		case " $hosts " in *" $m "*) std=gnu11 ;; *) std=c11 ;; esac
+		case $f in platform/*) std=gnu11 ;; esac
 		simd=""
 		case $f in *_avx2.c) simd="-mavx2 -mfma" ;; esac
 		# shellcheck disable=SC2086
