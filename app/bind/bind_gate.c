@@ -150,7 +150,8 @@ static int root_alone(const skin_weights *wt, int v)
 }
 
 void bind_gate_start(bind_gate_work *w, const skel *s, const skel_pose *bind, const mesh *m,
-		     const skin_weights *wt, const uint8_t *orphan, const bind_gate_limits *lim)
+		     const skin_weights *wt, const uint8_t *orphan, const uint8_t *held,
+		     const bind_gate_limits *lim)
 {
 	w->skel = s;
 	w->bind = bind;
@@ -178,7 +179,7 @@ void bind_gate_start(bind_gate_work *w, const skel *s, const skel_pose *bind, co
 		w->bind_dist[v] = nearest(w, m->pos[v], &r);
 		w->own_dist[v] = fmaxf(w->bind_dist[v], own_distance(w, bind, wt, v));
 		w->region[v] = (int16_t)r;
-		w->inner[v] = along(w, r, m->pos[v]) >= GATE_INNER && in_limb(w, wt, v, r);
+		w->inner[v] = along(w, r, m->pos[v]) >= GATE_INNER && in_limb(w, wt, v, r) && !(held && held[v]);
 		w->region_verts[r] += w->inner[v];
 		w->root_only[v] = (uint8_t)(orphan ? orphan[v] != 0 : root_alone(wt, v));
 		w->drifted[v] = 0;

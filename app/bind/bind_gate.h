@@ -100,9 +100,12 @@ typedef struct bind_gate_work {
 /* Sets up the measures for mesh m bound with weights wt to s posed as
  * bind, judged by lim (NULL: the defaults). orphan (NULL: vertices
  * weighted to the root alone) marks the vertices left to the root for
- * want of a mapped joint. */
+ * want of a mapped joint; held (may be NULL) those of a rigid part held by
+ * one joint (a spear by the hand), which the region they lie in (a thigh
+ * beside the spear) need not move. */
 void bind_gate_start(bind_gate_work *w, const skel *s, const skel_pose *bind, const mesh *m,
-		     const skin_weights *wt, const uint8_t *orphan, const bind_gate_limits *lim);
+		     const skin_weights *wt, const uint8_t *orphan, const uint8_t *held,
+		     const bind_gate_limits *lim);
 
 /* One test pose and the mesh skinned in it (xyz per vertex): move is the
  * range-of-motion move it came from (index move_index), or NULL for a

@@ -13,10 +13,37 @@ static vec3 at(const rig_scene *r, int j)
 	return r->joint[j].head;
 }
 
-int rig_biped_check(const rig_scene *r, char *why, size_t n)
+/* A limb's end as mapped: the first of the slots given that is. */
+static int mapped_end(const rig_map *m, const rig_scene *r, rig_side side, rig_slot end, rig_slot before)
+{
+	int j = rig_map_part_joint(m, r, side, end);
+	return j >= 0 ? j : rig_map_part_joint(m, r, side, before);
+}
+
+/* The parts as the map has them (by the joints' names, a file, or the
+ * shape), when it found the hips, the head and every limb's end: a rig
+ * with control and IK chains beside its deforming bones (Paladin's
+ * Ctrl_UpLeg_FK_Left) has more mirror pairs than limbs, and its shape alone
+ * can take a control chain for a leg. */
+static int mapped_parts(const rig_scene *r, const rig_map *m, rig_shape_parts *p)
+{
+	if (!m || m->hips < 0 || m->head < 0)
+		return 0;
+	*p = (rig_shape_parts){ .hips = m->hips, .chest = m->chest, .head = m->head };
+	for (int k = 0; k < 2; k++) {
+		rig_side side = k ? RIG_RIGHT : RIG_LEFT;
+		p->leg_end[k] = mapped_end(m, r, side, RIG_FOOT, RIG_SHIN);
+		p->arm_end[k] = mapped_end(m, r, side, RIG_HAND, RIG_FOREARM);
+		if (p->leg_end[k] < 0 || p->arm_end[k] < 0)
+			return 0;
+	}
+	return 1;
+}
+
+int rig_biped_check(const rig_scene *r, const rig_map *m, char *why, size_t n)
 {
 	rig_shape_parts p;
-	if (!rig_topology_parts(r, &p))
+	if (!mapped_parts(r, m, &p) && !rig_topology_parts(r, &p))
 		return 1;
 	vec3 feet = vec3_scale(vec3_add(at(r, p.leg_end[0]), at(r, p.leg_end[1])), 0.5f);
 	vec3 down = vec3_sub(feet, at(r, p.hips)), up = vec3_sub(at(r, p.head), at(r, p.hips));

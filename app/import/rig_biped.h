@@ -1,7 +1,6 @@
 /* Whether a rigged mesh is a biped, for a human skeleton's motion: a
- * quadruped has a biped's topology (two limb pairs and a neck, as
- * rig_topology.h finds them) but not its geometry. Judged on the joints as
- * the file has them:
+ * quadruped has a biped's topology (two limb pairs and a neck) but not
+ * its geometry. Judged on the joints as the file has them:
  *   - the legs hang from the hips the other way from the spine (hips to
  *     head): at least 120 degrees between them; a quadruped's spine lies
  *     level, square to its legs;
@@ -15,10 +14,14 @@
 
 #include <stddef.h>
 
+#include "rig_map.h"
 #include "rig_scene.h"
 
 /* 1 when the rig is a biped or cannot be judged; 0 with why (a sentence
- * of at most n bytes) when it is not. */
-int rig_biped_check(const rig_scene *r, char *why, size_t n);
+ * of at most n bytes) when it is not. Judged on the joints m (may be NULL)
+ * mapped to the hips, head, feet and hands when it mapped them all (a rig
+ * with control chains beside its bones has more limb-like pairs than
+ * limbs), else on the parts its shape shows. */
+int rig_biped_check(const rig_scene *r, const rig_map *m, char *why, size_t n);
 
 #endif

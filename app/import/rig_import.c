@@ -13,6 +13,7 @@
 #include "mem_cap.h"
 #include "mesh_normals.h"
 #include "rig_limits.h"
+#include "rig_names.h"
 #include "rig_rest.h"
 #include "rig_weld.h"
 
@@ -37,6 +38,7 @@ typedef struct import_walk {
 	int group_found;
 	int rigid_count;
 	rigid_part rigid[RIG_MAX_PARTS];
+	const struct aiNode *part_node[RIG_MAX_PARTS]; /* the node each part is */
 	vec3 *rest_pos;                 /* the vertices in the nodes' rest pose (rig_rest.h) */
 	vec3 rest_head[RIG_MAX_JOINTS]; /* the joints there */
 	/* each joint's rest pose to its bind pose (bind x rest^-1) */
@@ -103,7 +105,7 @@ static skp_status place_vertices(import_walk *w, const struct aiMesh *am, const 
 	for (unsigned v = 0; v < am->mNumVertices; v++) {
 		const struct aiVector3D *p = &am->mVertices[v];
 		m->pos[base + (int)v] = w->rest_pos[base + (int)v] = transform_point(node_m, vec3_make(p->x, p->y, p->z));
-		w->out->infl_count[base + (int)v] = 0;
+		w->out->infl_count[base + (int)v] = w->out->held[base + (int)v] = 0;
 	}
 	if (!am->mNumBones || !am->mNumVertices)
 		return SKP_OK;
@@ -125,7 +127,12 @@ static skp_status add_mesh(import_walk *w, const struct aiMesh *am, const struct
 	skp_status rc = place_vertices(w, am, node_m, base);
 	if (rc != SKP_OK)
 		return rc;
-	if (!am->mNumBones && part >= 0 && w->rigid_count < RIG_MAX_PARTS)
+	rigid_part *last = w->rigid_count ? &w->rigid[w->rigid_count - 1] : NULL;
+	if (am->mNumBones || part < 0)
+		;
+	else if (last && last->part == part && last->first + last->count == base)
+		last->count += (int)am->mNumVertices;   /* the node's next primitive */
+	else if (w->rigid_count < RIG_MAX_PARTS)
 		w->rigid[w->rigid_count++] = (rigid_part){ part, base, (int)am->mNumVertices, node };
 	m->vert_count = base + (int)am->mNumVertices;
 	for (unsigned f = 0; f < am->mNumFaces; f++) {
@@ -148,15 +155,25 @@ static int wanted(const import_walk *w, const struct aiNode *node, const struct 
 	return strcmp(am->mName.data, w->group) == 0 || strcmp(node->mName.data, w->group) == 0;
 }
 
-/* The part's index, or -1 past RIG_MAX_PARTS. */
-static int note_part(rig_scene *r, const struct aiNode *node, const struct aiMesh *am, int used)
+/* The part's index, or -1 past RIG_MAX_PARTS. A part is a node's meshes
+ * with or without a skin: the library splits a mesh by material (a
+ * Paladin's spear in 56 pieces), named for the node then. */
+static int note_part(import_walk *w, const struct aiNode *node, const struct aiMesh *am, int used)
 {
+	rig_scene *r = w->out;
+	for (int p = 0; p < r->part_count; p++)
+		if (w->part_node[p] == node && r->part_skinned[p] == (am->mNumBones > 0)) {
+			r->part_used[p] |= used;
+			return p;
+		}
 	if (r->part_count >= RIG_MAX_PARTS)
 		return -1;
-	rig_rest_name(r->part[r->part_count], am->mName.length ? &am->mName : &node->mName);
+	int one = node->mNumMeshes == 1 && am->mName.length;
+	rig_rest_name(r->part[r->part_count], one || !node->mName.length ? &am->mName : &node->mName);
+	w->part_node[r->part_count] = node;
 	r->part_used[r->part_count] = used;
 	r->part_skinned[r->part_count] = am->mNumBones > 0;
-	r->part_joint[r->part_count] = -1;
+	r->part_joint[r->part_count] = r->part_near[r->part_count] = -1;
 	return r->part_count++;
 }
 
@@ -167,7 +184,7 @@ static skp_status walk_node(import_walk *w, const struct aiNode *node, const str
 	for (unsigned k = 0; k < node->mNumMeshes; k++) {
 		const struct aiMesh *am = w->scene->mMeshes[node->mMeshes[k]];
 		int use = (am->mPrimitiveTypes & aiPrimitiveType_TRIANGLE) && wanted(w, node, am);
-		int part = note_part(w->out, node, am, use);
+		int part = note_part(w, node, am, use);
 		if (!use)
 			continue;
 		w->group_found = 1;
@@ -240,21 +257,93 @@ static void take_rest_pose(import_walk *w)
 		r->joint[j].head = w->rest_head[j];
 }
 
+#define HOLD_REACH 0.15f /* of the joints' extent: a held part comes this near its joint */
+
+/* How near the part's edges come to joint j (a long lance's faces have
+ * their corners far from the hand beside it). */
+static float part_distance(const rig_scene *r, const rigid_part *p, int j)
+{
+	const mesh *m = r->mesh;
+	float best = -1.0f;
+	for (int t = 0; t < m->tri_count; t++) {
+		int a = (int)m->tri[t][0];
+		if (a < p->first || a >= p->first + p->count)
+			continue;
+		for (int k = 0; k < 3; k++) {
+			float d = vec3_segment_distance(m->pos[m->tri[t][k]], m->pos[m->tri[t][(k + 1) % 3]],
+							r->joint[j].head);
+			best = best < 0.0f || d < best ? d : best;
+		}
+	}
+	return best;
+}
+
+/* The joints' extent: the diagonal of the box round their heads. */
+static float joints_extent(const rig_scene *r)
+{
+	vec3 lo = r->joint[0].head, hi = lo;
+	for (int j = 1; j < r->joint_count; j++) {
+		lo = vec3_min(lo, r->joint[j].head);
+		hi = vec3_max(hi, r->joint[j].head);
+	}
+	return vec3_length(vec3_sub(hi, lo));
+}
+
+/* Which joint a part beside the armature is held by: of the joints that
+ * deform skin (not a control or IK helper) and come near it (within twice
+ * the nearest one's distance, or 2% of the skeleton's extent beyond it), a
+ * hand first (a spear whose butt rests by a foot is held in the hand),
+ * then one on the body's middle (a cape by the spine, not a shoulder),
+ * then any; the nearest of them. -1 when no joint deforms skin or none
+ * comes within HOLD_REACH of the skeleton's extent (a crate on the floor
+ * beside the figure is scenery). */
+static int part_holder(const rig_scene *r, const rigid_part *p)
+{
+	static float dist[RIG_MAX_JOINTS];
+	float nearest = -1.0f;
+	for (int j = 0; j < r->joint_count; j++) {
+		dist[j] = r->joint[j].weighted ? part_distance(r, p, j) : -1.0f;
+		if (dist[j] >= 0.0f && (nearest < 0.0f || dist[j] < nearest))
+			nearest = dist[j];
+	}
+	float extent = joints_extent(r), near = fmaxf(2.0f * nearest, nearest + 0.02f * extent);
+	if (nearest < 0.0f || nearest > HOLD_REACH * extent)
+		return -1;
+	int best = -1, best_rank = -1;
+	for (int j = 0; j < r->joint_count; j++) {
+		if (dist[j] < 0.0f || dist[j] > near)
+			continue;
+		rig_name n;
+		rig_name_parse(r->joint[j].name, &n);
+		int rank = n.slot == RIG_HAND ? 2 : rig_name_side(r->joint[j].name) == RIG_CENTRE;
+		if (best < 0 || rank > best_rank || (rank == best_rank && dist[j] < dist[best])) {
+			best = j;
+			best_rank = rank;
+		}
+	}
+	return best;
+}
+
 /* Parts without a skin move wholly with the joint above them, from where
  * the nodes put them to where the skin's bind pose puts that joint (a
- * helmet, a prop in a hand: the nodes may hold another pose). */
+ * helmet, a prop in a hand: the nodes may hold another pose). A part with
+ * no joint above it (a spear or a cape beside the armature, not under it)
+ * moves with the joint that holds it (part_holder), where it is. */
 static void attach_rigid(import_walk *w)
 {
 	rig_scene *r = w->out;
 	for (int k = 0; k < w->rigid_count; k++) {
 		const rigid_part *p = &w->rigid[k];
-		int j = rig_rest_joint_above(w->scene, r, p->node);
+		int j = rig_rest_joint_above(w->scene, r, p->node), near = -1;
 		r->part_joint[p->part] = j;
+		if (j < 0)
+			j = r->part_near[p->part] = near = part_holder(r, p);
 		if (j < 0)
 			continue;
 		for (int v = p->first; v < p->first + p->count; v++) {
 			rig_add_influence(r, v, j, 1.0f);
-			if (!r->rest_posed)
+			r->held[v] = near >= 0;
+			if (!r->rest_posed && near < 0)
 				r->mesh->pos[v] = transform_point(&w->rest_to_bind[j], r->mesh->pos[v]);
 		}
 		r->joint[j].weighted += p->count;

@@ -152,8 +152,9 @@ static void say_unmapped(const char *path, const char *skel_name)
 	fprintf(cli_note(), "%s: %d joints unmapped, moving with their nearest mapped parent:", path, count);
 	for (int j = 0; j < scene.joint_count; j++)
 		if (map.bone[j] < 0)
-			fprintf(cli_note(), " %s->%s", scene.joint[j].name,
-				map.via[j] >= 0 ? scene.joint[map.via[j]].name : skel_name);
+			fprintf(cli_note(), " %s->%s%s", scene.joint[j].name,
+				map.via[j] >= 0 ? scene.joint[map.via[j]].name : skel_name,
+				map.beside[j] ? " (the nearest: no mapped joint above it)" : "");
 	fprintf(cli_note(), "\n");
 }
 
@@ -279,14 +280,21 @@ static void pose_skeleton(const bind_args *a, const char *path, bound_body *body
 }
 
 /* Parts with no skin and no joint above them in the file's node tree
- * cannot follow a limb: named, so that a prop meant for a hand is not
- * left behind unnoticed. */
+ * follow the joint nearest them (rig_scene.h): said, so that a prop meant
+ * for the other hand is not left there unnoticed. */
 static void say_loose_parts(const char *path)
 {
-	for (int p = 0; p < scene.part_count; p++)
-		if (scene.part_used[p] && !scene.part_skinned[p] && scene.part_joint[p] < 0)
+	for (int p = 0; p < scene.part_count; p++) {
+		if (!scene.part_used[p] || scene.part_skinned[p] || scene.part_joint[p] >= 0)
+			continue;
+		if (scene.part_near[p] >= 0)
+			fprintf(stderr, "%s: mesh '%s' has no skin and no joint above it: it moves with %s, the joint "
+				"that holds it (parent it to a joint in the file to choose, or --group leaves it out)\n", path,
+				scene.part[p], scene.joint[scene.part_near[p]].name);
+		else
 			fprintf(stderr, "%s: warning: mesh '%s' has no skin and no joint above it: it moves with the "
 				"root (parent it to a joint in the file, or --group leaves it out)\n", path, scene.part[p]);
+	}
 }
 
 static int mesh_weights(const bind_args *a, const char *path, bound_body *body)
@@ -302,7 +310,6 @@ static int mesh_weights(const bind_args *a, const char *path, bound_body *body)
 	if (info.unweighted)
 		fprintf(cli_note(), ", %d vertices without weights given to the root", info.unweighted);
 	fprintf(cli_note(), "\n");
-	say_loose_parts(path);
 	return 0;
 }
 
@@ -333,17 +340,36 @@ static int bind_unrigged(const bind_args *a, const char *path, bound_body *body)
 static int check_biped(const bind_args *a, const char *path, const bound_body *body)
 {
 	char why[256];
-	if (!setup_skel_is_biped(&body->skel, &body->pose) || rig_biped_check(&scene, why, sizeof why))
+	if (!setup_skel_is_biped(&body->skel, &body->pose) || rig_biped_check(&scene, &map, why, sizeof why))
 		return 0;
 	fprintf(stderr, "%s: not a biped: %s; skintool plays human motion on bipeds%s\n", path, why,
 		a->force ? " (--force: bound anyway)" : " (--force binds it anyway)");
 	return a->force ? 0 : -1;
 }
 
+/* The vertices of parts held by the joint nearest them (rig_scene.h)
+ * for the gate; computed weights would spread a spear over every bone it
+ * passes, so they keep the one bone their joint moves with. */
+static void keep_held(bound_body *body, int computed)
+{
+	body->has_held = 0;
+	for (int v = 0; v < body->mesh.vert_count; v++) {
+		body->held[v] = scene.held[v];
+		if (!scene.held[v] || !scene.infl_count[v])
+			continue;
+		body->has_held = 1;
+		if (!computed)
+			continue;
+		body->weights.count[v] = 1;
+		body->weights.bone[v][0] = (uint16_t)map.follow[scene.infl_joint[v][0]];
+		body->weights.weight[v][0] = 1.0f;
+	}
+}
+
 int rig_load_mesh(const bind_args *a, const char *path, bound_body *body)
 {
-	if (import_scene(a, path, body) < 0 || (scene.joint_count && check_biped(a, path, body) < 0) ||
-	    (scene.joint_count && load_map(a, path, body) < 0))
+	if (import_scene(a, path, body) < 0 || (scene.joint_count && load_map(a, path, body) < 0) ||
+	    (scene.joint_count && check_biped(a, path, body) < 0))
 		return -1;
 	if (!scene.joint_count || (map.limbs < 2 && !a->joint_map))
 		return bind_unrigged(a, path, body);
@@ -354,7 +380,12 @@ int rig_load_mesh(const bind_args *a, const char *path, bound_body *body)
 		fit_proportions(path, body);
 	}
 	pose_skeleton(a, path, body);
-	if (a->weights_mesh)
-		return mesh_weights(a, path, body);
-	return setup_bind_weights(a, 0, path, body);
+	if (!a->weights_mesh && !a->weights_path)
+		fprintf(stderr, "%s: weights computed from the skeleton (--weights mesh keeps the file's own)\n", path);
+	int rc = a->weights_mesh ? mesh_weights(a, path, body) : setup_bind_weights(a, 0, path, body);
+	if (rc == 0) {
+		say_loose_parts(path);
+		keep_held(body, !a->weights_mesh && !a->weights_path);
+	}
+	return rc;
 }

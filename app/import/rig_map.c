@@ -179,6 +179,25 @@ static skp_status apply_file(const rig_scene *r, const skel *s, const rig_map_fi
 	return SKP_OK;
 }
 
+/* The mapped joint nearest joint j, or -1. */
+static int nearest_mapped(const rig_scene *r, const rig_map *m, int j)
+{
+	int best = -1;
+	float best_d = 0.0f;
+	for (int a = 0; a < r->joint_count; a++) {
+		float d = vec3_length(vec3_sub(r->joint[a].head, r->joint[j].head));
+		if (m->bone[a] >= 0 && (best < 0 || d < best_d)) {
+			best = a;
+			best_d = d;
+		}
+	}
+	return best;
+}
+
+/* An unmapped joint moves with its nearest mapped ancestor. One with none
+ * that moves skin (a slot for a helmet parented to the armature, not to
+ * the head, as Soldier's HelmetSlot) moves with the mapped joint nearest
+ * it instead of the root. */
 static void find_follow(const rig_scene *r, rig_map *m)
 {
 	m->mapped = 0;
@@ -186,12 +205,16 @@ static void find_follow(const rig_scene *r, rig_map *m)
 		m->mapped += m->bone[j] >= 0;
 		m->follow[j] = 0;
 		m->via[j] = -1;
-		for (int a = j, d = 0; a >= 0 && d <= RIG_MAX_JOINTS; a = r->joint[a].parent, d++)
-			if (m->bone[a] >= 0) {
-				m->follow[j] = m->bone[a];
-				m->via[j] = a == j ? -1 : a;
-				break;
-			}
+		m->beside[j] = 0;
+		int a = j;
+		for (int d = 0; a >= 0 && d <= RIG_MAX_JOINTS && m->bone[a] < 0; d++)
+			a = r->joint[a].parent;
+		if (a < 0 && r->joint[j].weighted && (a = nearest_mapped(r, m, j)) >= 0)
+			m->beside[j] = 1;
+		if (a >= 0 && m->bone[a] >= 0) {
+			m->follow[j] = m->bone[a];
+			m->via[j] = a == j ? -1 : a;
+		}
 	}
 }
 

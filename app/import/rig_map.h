@@ -21,6 +21,8 @@
 #ifndef RIG_MAP_H
 #define RIG_MAP_H
 
+#include <stdint.h>
+
 #include "fk.h"
 #include "rig_names.h"
 #include "rig_scene.h"
@@ -50,6 +52,7 @@ typedef struct rig_map {
 	int bone[RIG_MAX_JOINTS];       /* the skeleton bone it maps to, or -1 */
 	int follow[RIG_MAX_JOINTS];     /* the bone it moves with */
 	int via[RIG_MAX_JOINTS];        /* the mapped ancestor it follows, -1: itself or the root */
+	uint8_t beside[RIG_MAX_JOINTS]; /* 1: via is no ancestor but the mapped joint nearest it */
 	rig_name name[RIG_MAX_JOINTS];
 	int by_file[RIG_MAX_JOINTS];
 	int mapped;                     /* joints with a bone */

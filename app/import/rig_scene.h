@@ -27,6 +27,7 @@ typedef struct rig_scene {
 	int joint_count;
 	rig_joint joint[RIG_MAX_JOINTS];
 	uint8_t infl_count[SKP_MAX_VERTS];
+	uint8_t held[SKP_MAX_VERTS];    /* 1: of a part with no joint above it, held by the joint nearest it */
 	uint16_t infl_joint[SKP_MAX_VERTS][RIG_MAX_INFLUENCES];
 	float infl_weight[SKP_MAX_VERTS][RIG_MAX_INFLUENCES];
 	int dropped_influences; /* vertices that had more than RIG_MAX_INFLUENCES */
@@ -35,6 +36,7 @@ typedef struct rig_scene {
 	int part_used[RIG_MAX_PARTS];
 	int part_skinned[RIG_MAX_PARTS];
 	int part_joint[RIG_MAX_PARTS];  /* a part without a skin: the joint above it it follows, or -1 */
+	int part_near[RIG_MAX_PARTS];   /* one with no joint above it: the deforming joint nearest it, or -1 */
 	int welded;             /* vertices merged with an identical one */
 	int rest_posed;         /* the skin's bind pose was no pose of its skeleton: the nodes' rest pose taken */
 } rig_scene;

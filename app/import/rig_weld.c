@@ -71,6 +71,7 @@ static void compact(rig_scene *r, int *remap)
 		slot[v] = kept;
 		m->pos[kept] = m->pos[v];
 		r->infl_count[kept] = r->infl_count[v];
+		r->held[kept] = r->held[v];
 		memcpy(r->infl_joint[kept], r->infl_joint[v], sizeof r->infl_joint[v]);
 		memcpy(r->infl_weight[kept], r->infl_weight[v], sizeof r->infl_weight[v]);
 		kept++;

@@ -22,3 +22,12 @@ vec3 vec3_max(vec3 a, vec3 b)
 {
 	return vec3_make(fmaxf(a.x, b.x), fmaxf(a.y, b.y), fmaxf(a.z, b.z));
 }
+
+float vec3_segment_distance(vec3 a, vec3 b, vec3 p)
+{
+	vec3 ab = vec3_sub(b, a);
+	float len2 = vec3_dot(ab, ab);
+	float t = len2 > 0.0f ? vec3_dot(vec3_sub(p, a), ab) / len2 : 0.0f;
+	t = t < 0.0f ? 0.0f : t > 1.0f ? 1.0f : t;
+	return vec3_length(vec3_sub(vec3_madd(a, ab, t), p));
+}

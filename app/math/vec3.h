@@ -28,5 +28,7 @@ vec3 vec3_normalize(vec3 a);
 /* Component by component: the corners of a bounding box. */
 vec3 vec3_min(vec3 a, vec3 b);
 vec3 vec3_max(vec3 a, vec3 b);
+/* How far p lies from the segment a..b. */
+float vec3_segment_distance(vec3 a, vec3 b, vec3 p);
 
 #endif

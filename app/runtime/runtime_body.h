@@ -37,6 +37,10 @@ typedef struct bound_body {
 	uint8_t orphan[SKP_MAX_VERTS]; /* with has_orphans: vertices left to the root for want of a
 					* mapped joint (the importer's, --weights mesh) */
 	int has_orphans;
+	uint8_t held[SKP_MAX_VERTS];   /* with has_held: vertices of a rigid part held by one joint (a
+					* spear beside the armature, by the hand), not judged with the
+					* body's region they lie in */
+	int has_held;
 	bind_rom rom;               /* the gate's range of motion */
 	bind_gate_result gate;      /* and its figures (setup_gate.h) */
 } bound_body;

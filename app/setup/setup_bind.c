@@ -117,6 +117,7 @@ static int load_body(const bind_args *a, const char *asf, const char *obj, bound
 	body->automatic = 0;
 	body->rigged = 0;
 	body->has_orphans = 0;
+	body->has_held = 0;
 	if (motion_load_skel(asf, &body->skel) < 0 || load_pose(a, body) < 0)
 		return -1;
 	if (!obj)

@@ -112,7 +112,8 @@ int setup_gate(const bind_args *a, const char *name, bound_body *body)
 	if (runtime_skin_init(&sc->gate.skin, &body->skel, &body->pose, m, &body->weights, name) < 0)
 		return -1;
 	bind_rom_build(&body->skel, &body->pose, &body->rom);
-	bind_gate_start(w, &body->skel, &body->pose, m, &body->weights, body->has_orphans ? body->orphan : NULL, NULL);
+	bind_gate_start(w, &body->skel, &body->pose, m, &body->weights, body->has_orphans ? body->orphan : NULL,
+			body->has_held ? body->held : NULL, NULL);
 	run_moves(body, w, &sc->gate.skin, &sc->gate.pose);
 	for (int i = 0; i < a->gate_motion_count; i++) {
 		long cap = GATE_FRAMES / a->gate_motion_count;

@@ -1,12 +1,20 @@
-/* Every part in its place (issue 33): a Mixamo-named biped of boxes
- * (tests/data/rigs/props_rig.gltf, made by make_props_rig.py beside it)
- * with three parts that have no skin: a spear under the right hand's node,
+/* Every part in its place (issues 33 and 44): a Mixamo-named biped of
+ * boxes (tests/data/rigs/props_rig.gltf, made by make_props_rig.py beside
+ * it) with parts that have no skin: a spear under the right hand's node,
  * turned 90 degrees and moved by its own node transform, a helmet under
- * the head's, and a crate under no joint. Imported, each sits where its
- * node puts it; bound with the file's weights, spear and helmet go wholly
- * to their joint's bone and the crate is named in a warning; skinned in
- * CMU's walk, the spear keeps its shape and its place in the fist while
- * the hand swings. Skips without ../shared. */
+ * the head's, a crate under no joint on the floor well away; beside the
+ * armature, under no joint, a lance standing by the left hand and a cape
+ * behind the back; a hat skinned to a slot joint hanging from the
+ * armature, not the head; and an unweighted control rig whose "legs" lie
+ * along the floor. Imported, each sits where its node puts it, the lance
+ * held by the left hand and the cape by the spine; bound with the file's
+ * weights (the controls do not make it a quadruped), spear and helmet go
+ * wholly to their joint's bone, the lance to the left hand's, the cape to
+ * the spine's, the hat to the head's (the mapped joint nearest its slot)
+ * and the crate is named in a warning; bound with computed weights, the
+ * lance and the cape keep their one bone and the choice is said; skinned
+ * in CMU's walk, the spear keeps its shape and its place in the fist
+ * while the hand swings. Skips without ../shared. */
 #include <stdarg.h>
 #include <stddef.h>
 #include <setjmp.h>
@@ -42,21 +50,46 @@ static int part_named(const char *name)
 	return -1;
 }
 
-/* The spear's vertices reach far ahead of and behind the body (|z| > 0.5
- * m); the helmet's stand out of the head's box (|x| > 0.1 m above 1.6 m);
- * the hand's box and the finger's beyond the spear's reach in x. */
-static void find_parts(part_verts *spear, part_verts *helmet, part_verts *hand)
+typedef struct props {
+	part_verts spear, helmet, hand, lance, cape, hat;
+} props;
+
+static void add_vert(part_verts *p, int v)
 {
-	spear->n = helmet->n = hand->n = 0;
-	for (int v = 0; v < rig_mesh.vert_count && v < MAX_V; v++) {
+	if (p->n < MAX_V)
+		p->idx[p->n++] = v;
+}
+
+/* Each part's vertices by where they lie: the spear's reach far ahead of
+ * and behind the right of the body (|z| > 0.5 m); the helmet's stand out
+ * of the head's box (|x| > 0.1 m above 1.6 m), the hat's above it within
+ * it; the right hand's box and the finger's beyond the spear's reach in
+ * x; the lance's at the floor and 2 m up beside the left hand; the cape's
+ * behind the back. */
+static void find_parts(props *o)
+{
+	memset(o, 0, sizeof *o);
+	for (int v = 0; v < rig_mesh.vert_count; v++) {
 		vec3 p = rig_mesh.pos[v];
-		if (fabsf(p.z) > 0.5f)
-			spear->idx[spear->n++] = v;
+		if (fabsf(p.x - 0.78f) < 0.011f && (p.y < 0.01f || p.y > 1.99f))
+			add_vert(&o->lance, v);
+		else if (fabsf(p.z) > 0.5f && p.x < 0.0f)
+			add_vert(&o->spear, v);
 		else if (p.y > 1.6f && fabsf(p.x) > 0.1f)
-			helmet->idx[helmet->n++] = v;
+			add_vert(&o->helmet, v);
+		else if (p.y > 1.755f && fabsf(fabsf(p.x) - 0.08f) < 1e-3f)
+			add_vert(&o->hat, v);
 		else if (p.x < -0.8f && fabsf(p.z) < 0.05f)
-			hand->idx[hand->n++] = v;
+			add_vert(&o->hand, v);
+		else if (p.z < -0.11f && p.z > -0.15f)
+			add_vert(&o->cape, v);
 	}
+}
+
+static const char *holder(int part)
+{
+	int j = scene.part_near[part];
+	return j >= 0 ? scene.joint[j].name : "(none)";
 }
 
 static void test_parts_placed_by_their_nodes(void **state)
@@ -66,15 +99,32 @@ static void test_parts_placed_by_their_nodes(void **state)
 	scene.mesh = &rig_mesh;
 	assert_int_equal(rig_import(RIG, NULL, &scene, &err), SKP_OK);
 	int spear = part_named("Spear"), helmet = part_named("Helmet"), crate = part_named("Crate");
+	int lance = part_named("Lance"), cape = part_named("Cape");
 	assert_string_equal(scene.joint[scene.part_joint[spear]].name, "mixamorig:RightHand");
 	assert_string_equal(scene.joint[scene.part_joint[helmet]].name, "mixamorig:Head");
 	assert_int_equal(scene.part_joint[crate], -1);
+	assert_int_equal(scene.part_near[crate], -1);
+	assert_int_equal(scene.part_near[spear], -1);
 	assert_false(scene.part_skinned[spear] || scene.part_skinned[crate]);
-	part_verts s, h, hand;
-	find_parts(&s, &h, &hand);
+	/* beside the armature: held by the joint nearest them, a hand first,
+	 * then the body's middle */
+	assert_int_equal(scene.part_joint[lance], -1);
+	assert_string_equal(holder(lance), "mixamorig:LeftHand");
+	assert_non_null(strstr("mixamorig:Hips mixamorig:Spine mixamorig:Spine1 mixamorig:Spine2 mixamorig:Neck",
+			       holder(cape)));
+	props o;
+	find_parts(&o);
+	part_verts s = o.spear, h = o.helmet;
 	assert_int_equal(s.n, 8);
 	assert_int_equal(h.n, 8);
-	assert_int_equal(hand.n, 8);
+	assert_int_equal(o.hand.n, 8);
+	assert_int_equal(o.lance.n, 8);
+	assert_int_equal(o.cape.n, 8);
+	assert_int_equal(o.hat.n, 8);
+	for (int k = 0; k < o.lance.n; k++)
+		assert_true(scene.held[o.lance.idx[k]]);
+	for (int k = 0; k < s.n; k++)
+		assert_false(scene.held[s.idx[k]]);
 	/* the spear box runs along its node's Y from -0.9 to 0.7; the node turns
 	 * it onto Z and moves it by (-0.05, 0, 0.03) from the hand at (-0.7, 1.4, 0) */
 	for (int k = 0; k < s.n; k++) {
@@ -145,18 +195,39 @@ static void test_props_follow_their_joint(void **state)
 	char *notes = run(args, 0);
 	if (!strstr(notes, "warning: mesh 'Crate' has no skin and no joint above it: it moves with the root"))
 		fail_msg("the crate is not named:\n%s", notes);
+	if (!strstr(notes, "mesh 'Lance' has no skin and no joint above it: it moves with mixamorig:LeftHand, the "
+			   "joint that holds it"))
+		fail_msg("the lance's holder is not said:\n%s", notes);
+	if (!strstr(notes, "HatSlot->mixamorig:Head (the nearest: no mapped joint above it)"))
+		fail_msg("the hat's slot does not follow the head:\n%s", notes);
+	assert_null(strstr(notes, "not a biped"));
 	assert_null(strstr(notes, "mesh 'Spear' has no skin"));
 	assert_null(strstr(notes, "mesh 'Helmet' has no skin"));
+	assert_null(strstr(notes, "weights computed"));
 	free(notes);
 	scene.mesh = &rig_mesh;
 	skp_error err;
 	assert_int_equal(rig_import(RIG, NULL, &scene, &err), SKP_OK);
-	part_verts s, h, hand;
-	find_parts(&s, &h, &hand);
+	props o;
+	find_parts(&o);
+	part_verts s = o.spear, hand = o.hand;
 	for (int k = 0; k < s.n; k++)
 		assert_whole(csv, s.idx[k], "rhand");
-	for (int k = 0; k < h.n; k++)
-		assert_whole(csv, h.idx[k], "head");
+	for (int k = 0; k < o.helmet.n; k++)
+		assert_whole(csv, o.helmet.idx[k], "head");
+	for (int k = 0; k < o.hat.n; k++)
+		assert_whole(csv, o.hat.idx[k], "head");
+	for (int k = 0; k < o.lance.n; k++)
+		assert_whole(csv, o.lance.idx[k], "lhand");
+
+	/* computed weights: the held parts keep their one bone, the choice said */
+	snprintf(args, sizeof args, "bind %s %s -o %s", asf, RIG, csv);
+	notes = run(args, 0);
+	if (!strstr(notes, "weights computed from the skeleton (--weights mesh keeps the file's own)"))
+		fail_msg("computed weights are not said:\n%s", notes);
+	free(notes);
+	for (int k = 0; k < o.lance.n; k++)
+		assert_whole(csv, o.lance.idx[k], "lhand");
 
 	/* two frames of the walk a swing apart: the spear moves with the fist */
 	static vec3 a[MAX_V], b[MAX_V];

@@ -2,7 +2,13 @@
 """Writes props_rig.gltf: a small Mixamo-named biped made of boxes, each
 skinned wholly to its joint, with rigid parts that have no skin: a spear
 under the right hand's node (turned and moved by its own node transform),
-a helmet under the head's, and a crate under no joint at all. Run from
+a helmet under the head's, a crate under no joint at all, well away from
+the body; and beside the armature, under no joint but close to the body,
+a lance standing by the left hand (its foot on the floor by the left
+foot) and a cape behind the back. A hat skinned to a slot joint that
+hangs from the armature, not from the head (as Soldier's HelmetSlot), and
+a control rig beside the bones (Ctrl_ joints weighting nothing, their
+legs reaching forward along the floor, as Paladin's FK controls). Run from
 this folder: python3 make_props_rig.py (the test reads the output)."""
 import base64, json, math, struct
 
@@ -17,6 +23,14 @@ for s, x in (("Left", 1), ("Right", -1)):
           (s + "UpLeg", "Hips", (0.1 * x, 0.95, 0)), (s + "Leg", s + "UpLeg", (0.1 * x, 0.52, 0)),
           (s + "Foot", s + "Leg", (0.1 * x, 0.08, 0)), (s + "ToeBase", s + "Foot", (0.1 * x, 0.02, 0.12)),
           (s + "Toe_End", s + "ToeBase", (0.1 * x, 0.02, 0.2))]
+# unweighted controls, as a rigging add-on makes them: a chain from a
+# master control, two "legs" lying forward along the floor
+J += [("Ctrl_Master", None, (0, 0.0, 0)), ("Ctrl_Hips", "Ctrl_Master", (0, 0.05, 0))]
+for s, x in (("Left", 1), ("Right", -1)):
+    J += [("Ctrl_UpLeg_FK_" + s, "Ctrl_Hips", (0.1 * x, 0.05, 0.1)), ("Ctrl_Leg_FK_" + s, "Ctrl_UpLeg_FK_" + s, (0.1 * x, 0.05, 0.5)),
+          ("Ctrl_Foot_FK_" + s, "Ctrl_Leg_FK_" + s, (0.1 * x, 0.05, 0.9))]
+J += [("HatSlot", None, (0, 1.8, 0))]
+CONTROLS = [j[0] for j in J if j[0].startswith("Ctrl_")]
 name = [j[0] for j in J]
 head = {j[0]: j[2] for j in J}
 parent = {j[0]: j[1] for j in J}
@@ -32,7 +46,7 @@ def box(lo, hi):
 # the body: a box along each bone, from its head to its first child's
 bv, bf, bj = [], [], []
 for i, n in enumerate(name):
-    if not children[n]:
+    if not children[n] or n in CONTROLS:
         continue
     a, b = head[n], head[children[n][0]]
     t = 0.09 if n.startswith(("Hips", "Spine")) else 0.05 if n in ("Neck", "Head") else 0.035
@@ -80,6 +94,16 @@ def rigid(mesh_name, lo, hi):
 spear = rigid("Spear", (-0.012, -0.9, -0.012), (0.012, 0.7, 0.012))   # along its node's Y
 helmet = rigid("Helmet", (-0.11, -0.04, -0.11), (0.11, 0.1, 0.11))
 crate = rigid("Crate", (-0.1, 0, -0.1), (0.1, 0.2, 0.1))
+lance = rigid("Lance", (0.77, 0.0, 0.09), (0.79, 2.0, 0.11))     # standing by the left hand
+cape = rigid("Cape", (-0.15, 0.9, -0.14), (0.15, 1.38, -0.12))  # behind the back
+
+# the hat: skinned wholly to HatSlot
+hv, hf = box((-0.08, 1.76, -0.08), (0.08, 1.86, 0.08))
+hat_j = accessor(add(b"".join(struct.pack("<4H", name.index("HatSlot"), 0, 0, 0) for _ in hv), 34962), 5123, len(hv), "VEC4")
+hat_w = accessor(add(b"".join(struct.pack("<4f", 1, 0, 0, 0) for _ in hv), 34962), 5126, len(hv), "VEC4")
+meshes.append({"name": "Hat", "primitives": [{"attributes": {"POSITION": positions(hv), "JOINTS_0": hat_j,
+                                                              "WEIGHTS_0": hat_w}, "indices": indices(hf)}]})
+hat = len(meshes) - 1
 
 ibm = b""
 for n in name:  # inverse bind matrices: column-major translations by -head
@@ -90,7 +114,7 @@ ibm_acc = accessor(add(ibm), 5126, len(name), "MAT4")
 nodes = []
 for n in name:
     p = head[parent[n]] if parent[n] else (0, 0, 0)
-    nodes.append({"name": "mixamorig:" + n, "translation": [head[n][k] - p[k] for k in range(3)],
+    nodes.append({"name": n if n in CONTROLS or n == "HatSlot" else "mixamorig:" + n, "translation": [head[n][k] - p[k] for k in range(3)],
                   "children": [name.index(c) for c in children[n]]})
 def node(d):
     nodes.append(d)
@@ -101,11 +125,14 @@ nodes[name.index("RightHand")]["children"].append(
     node({"name": "Spear", "mesh": spear, "translation": [-0.05, 0.0, 0.03], "rotation": [s, 0, 0, s]}))
 nodes[name.index("Head")]["children"].append(node({"name": "Helmet", "mesh": helmet, "translation": [0, 0.12, 0]}))
 body = node({"name": "Body", "mesh": 0, "skin": 0})
-crate_node = node({"name": "Crate", "mesh": crate, "translation": [0.45, 0, -0.3]})
-armature = node({"name": "Armature", "children": [0]})
+crate_node = node({"name": "Crate", "mesh": crate, "translation": [0.9, 0, -0.7]})
+lance_node = node({"name": "Lance", "mesh": lance})
+cape_node = node({"name": "Cape", "mesh": cape})
+hat_node = node({"name": "Hat", "mesh": hat, "skin": 0})
+armature = node({"name": "Armature", "children": [0, name.index("Ctrl_Master"), name.index("HatSlot")]})
 gltf = {
     "asset": {"version": "2.0", "generator": "skinplay tests/data/rigs/make_props_rig.py"},
-    "scene": 0, "scenes": [{"nodes": [armature, body, crate_node]}],
+    "scene": 0, "scenes": [{"nodes": [armature, body, crate_node, lance_node, cape_node, hat_node]}],
     "nodes": nodes, "meshes": meshes,
     "skins": [{"joints": list(range(len(name))), "inverseBindMatrices": ibm_acc, "skeleton": 0}],
     "accessors": accessors, "bufferViews": views,
