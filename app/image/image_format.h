@@ -200,7 +200,7 @@
 #endif
 
 #define SKP_IMAGE_MAGIC        "SKPIMAGE"
-#define SKP_IMAGE_VERSION      5
+#define SKP_IMAGE_VERSION      6
 #define SKP_IMAGE_VERSION_MIN  4     /* the oldest version still read */
 #define SKP_IMAGE_HEADER_SIZE  168
 #define SKP_IMAGE_ID_BYTES     16

@@ -193,6 +193,19 @@ static skp_status get_mesh(skp_image *im, mesh *m, skp_error *err)
 	return rc;
 }
 
+/* Version 6's base colour per vertex, when the body has its own. */
+static skp_status get_colours(skp_image *im, mesh *m, skp_error *err)
+{
+	uint8_t coloured = 0;
+	skp_status rc = im->hdr.version >= 6 ? sec_u8(im, &coloured, err) : SKP_OK;
+	if (!rc && coloured > 1)
+		return sec_bad(im, err, "colour flag neither 0 nor 1");
+	m->coloured = coloured;
+	if (!rc && coloured)
+		rc = sec_get(im, m->colour, 3 * (uint32_t)m->vert_count, err);
+	return rc;
+}
+
 skp_status skp_image_load_bind(skp_image *im, const skel *s, mesh *m, skin_weights *w,
 			       float *bind_values, long *bind_number, skp_error *err)
 {
@@ -221,7 +234,7 @@ skp_status skp_image_load_bind(skp_image *im, const skel *s, mesh *m, skin_weigh
 	rc = get_mesh(im, m, err);
 	for (int v = 0; v < m->vert_count && !rc; v++)
 		rc = get_influences(im, s, w, v, err);
-	return rc;
+	return rc ? rc : get_colours(im, m, err);
 }
 
 /* A compressed clip's quantisation section: the codec's header. */

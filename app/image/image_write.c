@@ -290,6 +290,11 @@ skp_status skp_image_write_bind(skp_image_writer *w, const mesh *m, const skin_w
 		rc = put_mesh(w, m, err);
 	for (int v = 0; v < m->vert_count && !rc; v++)
 		rc = put_influences(w, wt, v, err);
+	if (!rc && w->hdr.version >= 6) {
+		rc = image_put_u8(w, m->coloured != 0, err);
+		if (!rc && m->coloured)
+			rc = put(w, m->colour, 3 * (uint32_t)m->vert_count, err);
+	}
 	return rc ? rc : image_sec_end(w, &w->hdr.sec[SKP_SEC_BIND], err);
 }
 

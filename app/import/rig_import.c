@@ -12,6 +12,7 @@
 
 #include "mem_cap.h"
 #include "mesh_normals.h"
+#include "rig_colour.h"
 #include "rig_limits.h"
 #include "rig_names.h"
 #include "rig_rest.h"
@@ -39,6 +40,7 @@ typedef struct import_walk {
 	int rigid_count;
 	rigid_part rigid[RIG_MAX_PARTS];
 	const struct aiNode *part_node[RIG_MAX_PARTS]; /* the node each part is */
+	rig_colour_work colour;
 	vec3 *rest_pos;                 /* the vertices in the nodes' rest pose (rig_rest.h) */
 	vec3 rest_head[RIG_MAX_JOINTS]; /* the joints there */
 	/* each joint's rest pose to its bind pose (bind x rest^-1) */
@@ -127,6 +129,8 @@ static skp_status add_mesh(import_walk *w, const struct aiMesh *am, const struct
 	skp_status rc = place_vertices(w, am, node_m, base);
 	if (rc != SKP_OK)
 		return rc;
+	if (rig_colour_mesh(&w->colour, w->scene, am, m->colour + base))
+		m->coloured = 1;
 	rigid_part *last = w->rigid_count ? &w->rigid[w->rigid_count - 1] : NULL;
 	if (am->mNumBones || part < 0)
 		;
@@ -387,7 +391,7 @@ skp_status rig_import_as(const char *path, const char *hint, const char *group, 
 	mesh *m = out->mesh;
 	memset(out, 0, offsetof(rig_scene, infl_count));
 	out->mesh = m;
-	m->vert_count = m->tri_count = 0;
+	m->vert_count = m->tri_count = m->coloured = 0;
 	uint64_t size;
 	mem_cap cap;
 	if (rig_limits_check(path, &size, err) != SKP_OK)
@@ -410,6 +414,7 @@ skp_status rig_import_as(const char *path, const char *hint, const char *group, 
 	w.group = group;
 	w.out = out;
 	w.err = err;
+	w.colour.model_path = path;
 	struct aiMatrix4x4 id;
 	aiIdentityMatrix4(&id);
 	skp_status rc = walk_node(&w, scene->mRootNode, &id);
@@ -419,7 +424,11 @@ skp_status rig_import_as(const char *path, const char *hint, const char *group, 
 		attach_rigid(&w);
 	}
 	free(w.rest_pos);
+	rig_colour_done(&w.colour);
 	aiReleaseImport(scene);
+	out->texture_problems = w.colour.problems;
+	memcpy(out->texture_problem, w.colour.problem, sizeof out->texture_problem);
+	out->textured = w.colour.textured;
 	if (rc != SKP_OK)
 		return rc;
 	if (group && !w.group_found)

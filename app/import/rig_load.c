@@ -105,6 +105,20 @@ static const char *import_advice(mesh_format fmt)
 	}
 }
 
+/* Where the body's colours come from, and the textures that could not be
+ * read (said once, with how many more). */
+static void say_colours(const char *path, const mesh *m)
+{
+	if (scene.texture_problems)
+		fprintf(stderr, "%s: warning: %s%s\n", path, scene.texture_problem,
+			scene.texture_problems > 1 ? " (and more textures like it)" : "");
+	if (m->coloured)
+		fprintf(cli_note(), "%s: colours from its materials%s (drawn per vertex)\n", path,
+			scene.textured ? " and textures" : "");
+	else
+		fprintf(cli_note(), "%s: no colours of its own: drawn in the skin colour\n", path);
+}
+
 static int import_scene(const bind_args *a, const char *path, bound_body *body)
 {
 	skp_error err;
@@ -132,6 +146,7 @@ static int import_scene(const bind_args *a, const char *path, bound_body *body)
 	if (scene.welded)
 		fprintf(cli_note(), "; %d split vertices welded", scene.welded);
 	fprintf(cli_note(), ")\n");
+	say_colours(path, &body->mesh);
 	for (int p = 0; p < scene.part_count; p++)
 		if (!scene.part_used[p])
 			fprintf(cli_note(), "%s: mesh '%s' left out (--group chooses)\n", path, scene.part[p]);

@@ -38,6 +38,9 @@ typedef struct rig_scene {
 	int part_joint[RIG_MAX_PARTS];  /* a part without a skin: the joint above it it follows, or -1 */
 	int part_near[RIG_MAX_PARTS];   /* one with no joint above it: the deforming joint nearest it, or -1 */
 	int welded;             /* vertices merged with an identical one */
+	int textured;           /* meshes whose base colour texture was sampled (rig_colour.h) */
+	int texture_problems;   /* textures that could not be read: the material's colour used */
+	char texture_problem[320]; /* the first, naming texture and material */
 	int rest_posed;         /* the skin's bind pose was no pose of its skeleton: the nodes' rest pose taken */
 } rig_scene;
 

@@ -70,6 +70,7 @@ static void compact(rig_scene *r, int *remap)
 			continue;
 		slot[v] = kept;
 		m->pos[kept] = m->pos[v];
+		memcpy(m->colour[kept], m->colour[v], sizeof m->colour[v]);
 		r->infl_count[kept] = r->infl_count[v];
 		r->held[kept] = r->held[v];
 		memcpy(r->infl_joint[kept], r->infl_joint[v], sizeof r->infl_joint[v]);

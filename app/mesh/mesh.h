@@ -14,6 +14,10 @@ typedef struct mesh {
 	vec3 pos[SKP_MAX_VERTS];
 	vec3 normal[SKP_MAX_VERTS];    /* unit per-vertex normals */
 	uint32_t tri[SKP_MAX_TRIS][3]; /* counter-clockwise seen from outside */
+	/* 1: colour holds each vertex's base colour (sRGB, from the file's
+	 * materials); 0: drawn in the renderer's skin colour */
+	int coloured;
+	uint8_t colour[SKP_MAX_VERTS][3];
 } mesh;
 
 #endif

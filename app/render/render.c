@@ -156,10 +156,22 @@ skp_status render_init(renderer *r, const gl_api *gl, int width, int height, int
 	gl->GenBuffers(1, &r->vbo_diff);
 	gl->BindBuffer(GL_ARRAY_BUFFER, r->vbo_diff);
 	gl->BufferData(GL_ARRAY_BUFFER, (GLsizeiptr)soa->count * 4, NULL, GL_DYNAMIC_DRAW);
+	gl->GenBuffers(1, &r->vbo_look);
+	r->look_ready = 0;
 	camera_init(&r->cam, body_extent(soa), floor_y, RENDER_CAMERA_AZIMUTH);
 	render_set_units(r, 0.0f);
 	return gl->GetError() == GL_NO_ERROR ? SKP_OK
 					      : skp_fail(err, SKP_ERR_RANGE, 0, "OpenGL error while uploading the body");
+}
+
+void render_set_colours(renderer *r, const uint8_t (*rgb)[3])
+{
+	const gl_api *gl = r->gl;
+	r->look_ready = rgb != NULL;
+	if (!rgb)
+		return;
+	gl->BindBuffer(GL_ARRAY_BUFFER, r->vbo_look);
+	gl->BufferData(GL_ARRAY_BUFFER, (GLsizeiptr)r->vert_count * 3, rgb, GL_STATIC_DRAW);
 }
 
 skp_status render_init_notice(renderer *r, const gl_api *gl, int width, int height, int rotation, skp_error *err)
@@ -196,6 +208,7 @@ void render_shutdown(renderer *r)
 	gl->DeleteBuffers(1, &r->ibo);
 	gl->DeleteBuffers(1, &r->vbo_misc);
 	gl->DeleteBuffers(1, &r->vbo_diff);
+	gl->DeleteBuffers(1, &r->vbo_look);
 	gl->DeleteTextures(1, &r->font_tex);
 	r->gl = NULL;
 }

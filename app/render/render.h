@@ -88,6 +88,8 @@ typedef struct renderer {
 	float mm_per_unit;       /* the difference view's legend (render_set_units) */
 	int size_assumed;        /* the units gave no human size: the body taken as 1.75 m */
 	GLuint vbo_diff;         /* the difference view's colours, RGBA8 per vertex */
+	GLuint vbo_look;         /* the body's own colours, RGB8 per vertex (render_set_colours) */
+	int look_ready;          /* vbo_look holds them: drawn instead of the skin colour */
 	int diff_ready;          /* vbo_diff holds this frame's */
 	uint8_t diff_rgba[4 * SKP_MAX_VERTS];
 	float misc[6 * 1024];    /* grid, shadow and overlay vertices */
@@ -102,6 +104,11 @@ typedef struct renderer {
 skp_status render_init(renderer *r, const gl_api *gl, int width, int height, int rotation,
 		       const skel *s, const skin_soa *soa, const uint32_t (*tri)[3], int tri_count,
 		       float floor_y, skp_error *err);
+
+/* The body's own base colours (sRGB, one per vertex of the bound body,
+ * mesh.colour), drawn in the plain and compare views, lit as the skin
+ * colour is; rgb NULL: the skin colour again. */
+void render_set_colours(renderer *r, const uint8_t (*rgb)[3]);
 
 /* 1 when the skeleton's bone uniforms for algo fit GLES 2.0's guaranteed
  * vertex uniforms, so GPU skinning can be used. */

@@ -40,7 +40,8 @@ static void body_program(renderer *r, shader_kind k, const mat4 *vp, int use_col
 }
 
 /* The vertex colours: the bones' (weights view), the differences'
- * (difference view, once uploaded), else none (the skin's colour). */
+ * (difference view, once uploaded), the body's own (render_set_colours),
+ * else none (the skin's colour). */
 static int bind_colours(renderer *r, const render_frame *f)
 {
 	const gl_api *gl = r->gl;
@@ -48,6 +49,12 @@ static int bind_colours(renderer *r, const render_frame *f)
 		gl->BindBuffer(GL_ARRAY_BUFFER, r->vbo_diff);
 		gl->EnableVertexAttribArray(ATTR_COL);
 		gl->VertexAttribPointer(ATTR_COL, 3, GL_UNSIGNED_BYTE, GL_TRUE, 4, (const void *)0);
+		return 1;
+	}
+	if (f->view != RENDER_VIEW_WEIGHTS && f->view != RENDER_VIEW_DIFFERENCE && r->look_ready) {
+		gl->BindBuffer(GL_ARRAY_BUFFER, r->vbo_look);
+		gl->EnableVertexAttribArray(ATTR_COL);
+		gl->VertexAttribPointer(ATTR_COL, 3, GL_UNSIGNED_BYTE, GL_TRUE, 3, (const void *)0);
 		return 1;
 	}
 	gl->BindBuffer(GL_ARRAY_BUFFER, r->vbo_static);

@@ -120,6 +120,7 @@ static void keep_part(mesh *m, mesh_pick_work *p, int root)
 		to[v] = find_root(p->up, v) == root ? n : -1;
 		if (to[v] >= 0) {
 			m->pos[n] = m->pos[v];
+			memcpy(m->colour[n], m->colour[v], sizeof m->colour[v]);
 			m->normal[n++] = m->normal[v];
 		}
 	}

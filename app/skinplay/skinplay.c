@@ -110,6 +110,7 @@ static int setup(skinplay *p)
 		fprintf(stderr, "skinplay: renderer: %s\n", err.msg);
 		return -1;
 	}
+	render_set_colours(&p->r, m->coloured ? (const uint8_t (*)[3])m->colour : NULL);
 	render_set_yaw(&p->r, p->yaw, 1);
 	p->render_ready = 1;
 	closeup_setup(p);

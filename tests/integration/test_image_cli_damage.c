@@ -168,10 +168,10 @@ static void test_info_refuses_truncated_and_wrong_version(void **state)
 	assert_int_equal(truncate(bad, size - 100), 0);
 	expect_info(bad, 2, "short read (header copy): repairable");
 	copy(image, bad);
-	set_version(bad, 6);
-	expect_info(bad, 2, "image format version 6, this build reads versions 4 to 5");
+	set_version(bad, 7);
+	expect_info(bad, 2, "image format version 7, this build reads versions 4 to 6");
 	copy(image, bad);
-	set_version(bad, 5);
+	set_version(bad, 6);
 	expect_info(bad, 0, "all good");
 	expect_info(test_scratch("missing.skn"), 1, "cannot open");
 }
@@ -208,7 +208,7 @@ static void test_barren_slot_and_bad_runs(void **state)
 	char bad[512];
 	snprintf(bad, sizeof bad, "%s", test_scratch("runs.skn"));
 	copy(small_image(), bad);
-	set_version(bad, 6);
+	set_version(bad, 7);
 	zero_bytes(bad, 2 * 512, 5 * 512);
 	assert_int_equal(test_run("%s info '%s' >'%s' 2>&1", test_tool_path("skintool"), bad, out), 2);
 	static const char *const runs[] = { "blocks 2..4 bad: CRC mismatch", "blocks of 512 bytes (block size found from their CRCs)",

@@ -115,7 +115,7 @@ static void read_header(image *im)
 	assert_true(im->size >= 512);
 	const uint8_t *h = im->data + 24;
 	assert_memory_equal(h, "SKPIMAGE", 8);
-	assert_int_equal(le16(h + 8), 5);
+	assert_int_equal(le16(h + 8), 6);
 	assert_int_equal(le16(h + 10), 168);
 	assert_int_equal(spec_crc(h, 164), le32(h + 164));
 	im->bs = le32(h + 12);
@@ -219,6 +219,10 @@ static void read_bind(const image *im)
 		}
 		assert_int_equal(sum, 65535);
 	}
+	uint8_t coloured = *take(&s, 1);
+	assert_true(coloured <= 1);
+	if (coloured)
+		take(&s, 3 * v);
 	assert_int_equal(s.at, s.len);
 	free(s.buf);
 }

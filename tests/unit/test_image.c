@@ -181,6 +181,34 @@ static void test_round_trip(void **state)
 	assert_true(im.clip[1].max_rot_err > 0 && im.clip[1].max_rot_err < 1e-4f);
 }
 
+/* The body's colours (version 6) come back as written; a body without
+ * any reads back without. */
+static void test_colours_round_trip(void **state)
+{
+	(void)state;
+	static float bind2[SKP_MAX_DOF];
+	skp_error err;
+	long number;
+	load_inputs();
+	m.coloured = 1;
+	for (int v = 0; v < m.vert_count; v++)
+		for (int c = 0; c < 3; c++)
+			m.colour[v][c] = (uint8_t)(37 * v + 91 * c + 5);
+	pack(1, NULL);
+	assert_int_equal(open_image(img_size, &err), SKP_OK);
+	assert_int_equal(im.hdr.version, 6);
+	assert_int_equal(skp_image_load_skel(&im, &s2, &err), SKP_OK);
+	assert_int_equal(skp_image_load_bind(&im, &s2, &m2, &w2, bind2, &number, &err), SKP_OK);
+	assert_int_equal(m2.coloured, 1);
+	assert_memory_equal(m.colour, m2.colour, 3 * (size_t)m.vert_count);
+	m.coloured = 0;
+	pack(1, NULL);
+	assert_int_equal(open_image(img_size, &err), SKP_OK);
+	assert_int_equal(skp_image_load_skel(&im, &s2, &err), SKP_OK);
+	assert_int_equal(skp_image_load_bind(&im, &s2, &m2, &w2, bind2, &number, &err), SKP_OK);
+	assert_int_equal(m2.coloured, 0);
+}
+
 static void test_rest_pose_bind(void **state)
 {
 	(void)state;
@@ -212,7 +240,7 @@ static void patch_header(void (*fn)(uint8_t *p), int fix_header_crc)
 	skp_block_seal(copy, BS);
 }
 
-static void set_version_6(uint8_t *p) { le_put16(p + 8, 6); }
+static void set_version_7(uint8_t *p) { le_put16(p + 8, 7); }
 static void set_sequence(uint8_t *p) { le_put64(p + 20, 777); }
 static void set_many_bones(uint8_t *p) { le_put32(p + 44, SKP_MAX_BONES + 1); }
 static void set_magic(uint8_t *p) { p[0] = 'X'; }
@@ -227,8 +255,8 @@ static void test_refusals(void **state)
 	(void)state;
 	load_inputs();
 	pack(5, NULL);
-	patch_header(set_version_6, 1);
-	expect_refusal("version 6, this build reads versions 4 to 5", SKP_ERR_CORRUPT);
+	patch_header(set_version_7, 1);
+	expect_refusal("version 7, this build reads versions 4 to 6", SKP_ERR_CORRUPT);
 	pack(5, NULL);
 	patch_header(set_sequence, 0);
 	expect_refusal("header CRC mismatch", SKP_ERR_CORRUPT);
@@ -356,6 +384,7 @@ int main(void)
 		cmocka_unit_test(test_sha256_vectors),
 		cmocka_unit_test(test_round_trip),
 		cmocka_unit_test(test_rest_pose_bind),
+		cmocka_unit_test(test_colours_round_trip),
 		cmocka_unit_test(test_refusals),
 		cmocka_unit_test(test_older_versions_refused),
 		cmocka_unit_test(test_writer_errors),

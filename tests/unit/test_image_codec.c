@@ -143,7 +143,7 @@ static void test_stream_is_the_codec_bit_for_bit(void **state)
 	pack(0);
 	open_clip();
 	const skp_image_clip *c = &im.clip[0];
-	assert_int_equal(im.hdr.version, 5);
+	assert_int_equal(im.hdr.version, 6);
 	assert_int_equal(c->coded, 1);
 	assert_int_equal(c->frame_count, FRAMES);
 	assert_int_equal(c->segments, enc.segments);

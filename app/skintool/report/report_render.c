@@ -51,6 +51,7 @@ int report_view_open(report_view *v, const runtime_skin *sk, const mesh *m, floa
 		report_view_close(v);
 		return -1;
 	}
+	render_set_colours(&v->r, m->coloured ? (const uint8_t (*)[3])m->colour : NULL);
 	v->started = 1;
 	v->scene = 0;
 	render_set_units(&v->r, (float)(10.0 * skel_unit_cm(sk->skel)));

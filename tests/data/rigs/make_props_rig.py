@@ -8,7 +8,10 @@ a lance standing by the left hand (its foot on the floor by the left
 foot) and a cape behind the back. A hat skinned to a slot joint that
 hangs from the armature, not from the head (as Soldier's HelmetSlot), and
 a control rig beside the bones (Ctrl_ joints weighting nothing, their
-legs reaching forward along the floor, as Paladin's FK controls). Run from
+legs reaching forward along the floor, as Paladin's FK controls). Colours:
+the body's material a base colour (linear 0.5 0.1 0.1), the helmet's a
+gold one (1 0.6 0.1) whose texture, missing_gold.png, is not there, the
+lance red and blue by vertex colours; the rest without a material. Run from
 this folder: python3 make_props_rig.py (the test reads the output)."""
 import base64, json, math, struct
 
@@ -86,15 +89,26 @@ body_idx = indices(bf)
 jnt = accessor(add(b"".join(struct.pack("<4H", j, 0, 0, 0) for j in bj), 34962), 5123, len(bj), "VEC4")
 wgt = accessor(add(b"".join(struct.pack("<4f", 1, 0, 0, 0) for _ in bj), 34962), 5126, len(bj), "VEC4")
 meshes.append({"name": "Body", "primitives": [{"attributes": {"POSITION": body_pos, "JOINTS_0": jnt, "WEIGHTS_0": wgt},
-                                                "indices": body_idx}]})
-def rigid(mesh_name, lo, hi):
+                                                "indices": body_idx, "material": 0}]})
+materials = [{"name": "Skin", "pbrMetallicRoughness": {"baseColorFactor": [0.5, 0.1, 0.1, 1]}},
+             {"name": "Gold", "pbrMetallicRoughness": {"baseColorFactor": [1.0, 0.6, 0.1, 1], "baseColorTexture": {"index": 0}}}]
+def rigid(mesh_name, lo, hi, extra=None):
     v, f = box(lo, hi)
-    meshes.append({"name": mesh_name, "primitives": [{"attributes": {"POSITION": positions(v)}, "indices": indices(f)}]})
+    prim = {"attributes": {"POSITION": positions(v)}, "indices": indices(f)}
+    if extra:
+        extra(prim, v)
+    meshes.append({"name": mesh_name, "primitives": [prim]})
     return len(meshes) - 1
+def gold(prim, v):  # the helmet: the gold material, its texture missing
+    prim["material"] = 1
+    prim["attributes"]["TEXCOORD_0"] = accessor(add(b"".join(struct.pack("<2f", 0.5, 0.5) for _ in v), 34962), 5126, len(v), "VEC2")
+def red_blue(prim, v):  # the lance: red at the floor, blue at the top
+    prim["attributes"]["COLOR_0"] = accessor(add(b"".join(struct.pack("<4f", *((1, 0, 0, 1) if p[1] < 1 else (0, 0, 1, 1)))
+                                                         for p in v), 34962), 5126, len(v), "VEC4")
 spear = rigid("Spear", (-0.012, -0.9, -0.012), (0.012, 0.7, 0.012))   # along its node's Y
-helmet = rigid("Helmet", (-0.11, -0.04, -0.11), (0.11, 0.1, 0.11))
+helmet = rigid("Helmet", (-0.11, -0.04, -0.11), (0.11, 0.1, 0.11), gold)
 crate = rigid("Crate", (-0.1, 0, -0.1), (0.1, 0.2, 0.1))
-lance = rigid("Lance", (0.77, 0.0, 0.09), (0.79, 2.0, 0.11))     # standing by the left hand
+lance = rigid("Lance", (0.77, 0.0, 0.09), (0.79, 2.0, 0.11), red_blue)  # standing by the left hand
 cape = rigid("Cape", (-0.15, 0.9, -0.14), (0.15, 1.38, -0.12))  # behind the back
 
 # the hat: skinned wholly to HatSlot
@@ -133,7 +147,8 @@ armature = node({"name": "Armature", "children": [0, name.index("Ctrl_Master"), 
 gltf = {
     "asset": {"version": "2.0", "generator": "skinplay tests/data/rigs/make_props_rig.py"},
     "scene": 0, "scenes": [{"nodes": [armature, body, crate_node, lance_node, cape_node, hat_node]}],
-    "nodes": nodes, "meshes": meshes,
+    "nodes": nodes, "meshes": meshes, "materials": materials,
+    "textures": [{"source": 0}], "images": [{"uri": "missing_gold.png"}],
     "skins": [{"joints": list(range(len(name))), "inverseBindMatrices": ibm_acc, "skeleton": 0}],
     "accessors": accessors, "bufferViews": views,
     "buffers": [{"byteLength": len(buf), "uri": "data:application/octet-stream;base64," +

@@ -1,0 +1,195 @@
+#include "rig_colour.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <strings.h>
+#include <unistd.h>
+
+#include <assimp/material.h>
+#include <assimp/texture.h>
+#include <png.h>
+
+/* glTF's colour factors and vertex colours are linear, its textures and
+ * the stored colours sRGB. */
+static float to_linear(float s)
+{
+	return s <= 0.04045f ? s / 12.92f : powf((s + 0.055f) / 1.055f, 2.4f);
+}
+
+static uint8_t to_srgb(float l)
+{
+	l = l < 0.0f ? 0.0f : l > 1.0f ? 1.0f : l;
+	float s = l <= 0.0031308f ? 12.92f * l : 1.055f * powf(l, 1.0f / 2.4f) - 0.055f;
+	return (uint8_t)lrintf(255.0f * s);
+}
+
+static void note(rig_colour_work *w, const char *material, const char *texture, const char *why)
+{
+	if (!w->problems++)
+		snprintf(w->problem, sizeof w->problem, "material '%.50s': texture '%.80s' %.80s: drawn in the material's colour", material,
+			 texture, why);
+}
+
+static void drop_cache(rig_colour_work *w)
+{
+	free(w->rgba);
+	w->rgba = NULL;
+	w->cached[0] = '\0';
+}
+
+/* PNG bytes (or a file, when bytes is NULL) decoded to RGBA8 in the cache;
+ * why says what went wrong. */
+static int decode_png(rig_colour_work *w, const void *bytes, size_t n, const char *file, const char **why)
+{
+	png_image img;
+	memset(&img, 0, sizeof img);
+	img.version = PNG_IMAGE_VERSION;
+	int ok = bytes ? png_image_begin_read_from_memory(&img, bytes, n) : png_image_begin_read_from_file(&img, file);
+	if (!ok) {
+		*why = bytes || access(file, R_OK) == 0 ? "is not a PNG it can read" : "is missing";
+		return 0;
+	}
+	if (img.width > RIG_TEXTURE_MAX_SIDE || img.height > RIG_TEXTURE_MAX_SIDE) {
+		png_image_free(&img);
+		*why = "is larger than 8192 pixels a side";
+		return 0;
+	}
+	img.format = PNG_FORMAT_RGBA;
+	w->rgba = malloc(PNG_IMAGE_SIZE(img));
+	if (!w->rgba || !png_image_finish_read(&img, NULL, w->rgba, 0, NULL)) {
+		png_image_free(&img);
+		drop_cache(w);
+		*why = "is truncated or damaged";
+		return 0;
+	}
+	w->w = (int)img.width;
+	w->h = (int)img.height;
+	return 1;
+}
+
+/* The texture named path (embedded "*N", or a file beside the model) in
+ * the cache; 0, noted, when it cannot be read. */
+static int load_texture(rig_colour_work *w, const struct aiScene *sc, const char *path, const char *material)
+{
+	if (w->rgba && !strcmp(w->cached, path))
+		return 1;
+	drop_cache(w);
+	if (strlen(path) >= sizeof w->cached) {
+		note(w, material, path, "has too long a path");
+		return 0;
+	}
+	const char *why = NULL;
+	int ok = 0;
+	if (path[0] == '*') {
+		unsigned i = (unsigned)strtoul(path + 1, NULL, 10);
+		const struct aiTexture *t = i < sc->mNumTextures ? sc->mTextures[i] : NULL;
+		if (!t)
+			why = "is not in the file";
+		else if (t->mHeight || strncmp(t->achFormatHint, "png", 3))
+			why = "is not PNG (PNG textures are read)";
+		else
+			ok = decode_png(w, t->pcData, t->mWidth, NULL, &why);
+	} else {
+		char file[1024];
+		const char *slash = strrchr(w->model_path, '/');
+		int dir = slash ? (int)(slash - w->model_path + 1) : 0;
+		const char *dot = strrchr(path, '.');
+		if ((size_t)snprintf(file, sizeof file, "%.*s%s", dir, w->model_path, path) >= sizeof file)
+			why = "has too long a path";
+		else if (dot && strcasecmp(dot, ".png"))
+			why = "is not PNG (PNG textures are read)";
+		else
+			ok = decode_png(w, NULL, 0, file, &why);
+	}
+	if (!ok) {
+		note(w, material, path, why);
+		return 0;
+	}
+	memcpy(w->cached, path, strlen(path) + 1);
+	return 1;
+}
+
+/* The cached texture at (u, v), bilinear, repeating; linear RGB. */
+static void sample(const rig_colour_work *w, float u, float v, float rgb[3])
+{
+	float x = (u - floorf(u)) * (float)w->w - 0.5f, y = (v - floorf(v)) * (float)w->h - 0.5f;
+	int x0 = (int)floorf(x), y0 = (int)floorf(y);
+	float fx = x - (float)x0, fy = y - (float)y0;
+	for (int c = 0; c < 3; c++)
+		rgb[c] = 0.0f;
+	for (int k = 0; k < 4; k++) {
+		int xi = ((x0 + (k & 1)) % w->w + w->w) % w->w, yi = ((y0 + (k >> 1)) % w->h + w->h) % w->h;
+		float f = ((k & 1) ? fx : 1.0f - fx) * ((k >> 1) ? fy : 1.0f - fy);
+		const uint8_t *p = w->rgba + 4 * ((size_t)yi * (size_t)w->w + (size_t)xi);
+		for (int c = 0; c < 3; c++)
+			rgb[c] += f * to_linear((float)p[c] / 255.0f);
+	}
+}
+
+/* The material's base colour (glTF's) or diffuse colour, linear; 0 when
+ * it has neither. */
+static int material_colour(const struct aiMaterial *mat, float rgb[3])
+{
+	struct aiColor4D c;
+	if (aiGetMaterialColor(mat, AI_MATKEY_BASE_COLOR, &c) != aiReturn_SUCCESS &&
+	    aiGetMaterialColor(mat, AI_MATKEY_COLOR_DIFFUSE, &c) != aiReturn_SUCCESS) {
+		rgb[0] = rgb[1] = rgb[2] = 1.0f;
+		return 0;
+	}
+	rgb[0] = c.r;
+	rgb[1] = c.g;
+	rgb[2] = c.b;
+	return 1;
+}
+
+static int texture_path(const struct aiMaterial *mat, struct aiString *path)
+{
+	return aiGetMaterialTexture(mat, aiTextureType_BASE_COLOR, 0, path, NULL, NULL, NULL, NULL, NULL, NULL) ==
+		       aiReturn_SUCCESS ||
+	       aiGetMaterialTexture(mat, aiTextureType_DIFFUSE, 0, path, NULL, NULL, NULL, NULL, NULL, NULL) ==
+		       aiReturn_SUCCESS;
+}
+
+int rig_colour_mesh(rig_colour_work *w, const struct aiScene *sc, const struct aiMesh *am, uint8_t (*out)[3])
+{
+	const struct aiMaterial *mat = am->mMaterialIndex < sc->mNumMaterials ? sc->mMaterials[am->mMaterialIndex] : NULL;
+	struct aiString name = { 0 }, path = { 0 };
+	float base[3] = { 1.0f, 1.0f, 1.0f };
+	int own = 0, textured = 0;
+	if (mat) {
+		aiGetMaterialString(mat, AI_MATKEY_NAME, &name);
+		/* the library's stand-in for a mesh without a material is unnamed
+		 * (glTF) or DefaultMaterial */
+		own = material_colour(mat, base) && name.length && strcmp(name.data, AI_DEFAULT_MATERIAL_NAME) != 0;
+		if (texture_path(mat, &path) && am->mTextureCoords[0])
+			textured = load_texture(w, sc, path.data, name.data);
+	}
+	const struct aiColor4D *vc = am->mColors[0];
+	for (unsigned v = 0; v < am->mNumVertices; v++) {
+		float rgb[3] = { base[0], base[1], base[2] }, t[3];
+		if (textured) {
+			/* the library turns glTF's top-left UV origin to OpenGL's bottom-left */
+			sample(w, am->mTextureCoords[0][v].x, 1.0f - am->mTextureCoords[0][v].y, t);
+			for (int c = 0; c < 3; c++)
+				rgb[c] *= t[c];
+		}
+		if (vc) {
+			rgb[0] *= vc[v].r;
+			rgb[1] *= vc[v].g;
+			rgb[2] *= vc[v].b;
+		}
+		for (int c = 0; c < 3; c++)
+			out[v][c] = to_srgb(rgb[c]);
+	}
+	w->textured += textured;
+	own = own || textured || vc;
+	w->coloured += own;
+	return own;
+}
+
+void rig_colour_done(rig_colour_work *w)
+{
+	drop_cache(w);
+}

@@ -1,0 +1,158 @@
+/* Characters keep their colours (issue 44): a rigged file's material base
+ * colours, base colour textures and vertex colours become each vertex's
+ * colour (sRGB), packed into the image and drawn by skinplay.
+ *   - props_rig.gltf (tests/data/rigs/make_props_rig.py): the body's
+ *     material, linear 0.5 0.1 0.1, is sRGB 188 89 89 at every vertex;
+ *     the helmet's gold, whose texture is missing, is 255 203 89 with a
+ *     warning naming texture and material; the lance's vertex colours are
+ *     pure red at the floor and blue at the top; the crate, without a
+ *     material, white.
+ *   - CesiumMan.glb (its PNG texture embedded): vertices white, blue and
+ *     green from the texture; packed and played, the frame shows them.
+ *   - A file without materials keeps the skin colour (the MakeHuman-based
+ *     glb in ../shared, when it is there). */
+#include <stdarg.h>
+#include <stddef.h>
+#include <setjmp.h>
+#include <stdint.h>
+#include <cmocka.h>
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "png_writer.h"
+#include "rig_scene.h"
+#include "test_paths.h"
+#include "test_run.h"
+
+static mesh m;
+static rig_scene scene;
+
+static void import(const char *path)
+{
+	skp_error err;
+	scene.mesh = &m;
+	if (rig_import(path, NULL, &scene, &err) != SKP_OK)
+		fail_msg("%s: %s", path, err.msg);
+}
+
+/* Every vertex where where() holds has colour rgb; returns how many. */
+static int all_coloured(int (*where)(vec3), int r, int g, int b)
+{
+	int n = 0;
+	for (int v = 0; v < m.vert_count; v++) {
+		if (!where(m.pos[v]))
+			continue;
+		const uint8_t *c = m.colour[v];
+		if (c[0] != r || c[1] != g || c[2] != b)
+			fail_msg("vertex %d at %.2f %.2f %.2f: %d %d %d, wanted %d %d %d", v, (double)m.pos[v].x,
+				 (double)m.pos[v].y, (double)m.pos[v].z, c[0], c[1], c[2], r, g, b);
+		n++;
+	}
+	return n;
+}
+
+static int in_hips(vec3 p) { return p.y > 0.92f && p.y < 1.18f && fabsf(p.x) < 0.2f && fabsf(p.z) < 0.1f; }
+static int in_helmet(vec3 p) { return p.y > 1.6f && fabsf(p.x) > 0.1f && fabsf(p.x) < 0.12f; }
+static int lance_foot(vec3 p) { return fabsf(p.x - 0.78f) < 0.011f && p.y < 0.01f; }
+static int lance_top(vec3 p) { return fabsf(p.x - 0.78f) < 0.011f && p.y > 1.99f; }
+static int in_crate(vec3 p) { return p.x > 0.79f && p.z < -0.59f; }
+
+static void test_materials_and_vertex_colours(void **state)
+{
+	(void)state;
+	import("tests/data/rigs/props_rig.gltf");
+	assert_int_equal(m.coloured, 1);
+	assert_true(all_coloured(in_hips, 188, 89, 89) >= 8);
+	assert_int_equal(all_coloured(in_helmet, 255, 203, 89), 8);
+	assert_int_equal(all_coloured(lance_foot, 255, 0, 0), 4);
+	assert_int_equal(all_coloured(lance_top, 0, 0, 255), 4);
+	assert_int_equal(all_coloured(in_crate, 255, 255, 255), 8);
+	assert_int_equal(scene.texture_problems, 1);
+	assert_non_null(strstr(scene.texture_problem, "material 'Gold': texture 'missing_gold.png' is missing"));
+}
+
+/* Shares of the vertices (or pixels) that are blue, green and near white. */
+typedef struct hues {
+	double blue, green, white;
+} hues;
+
+static void count_hue(hues *h, const uint8_t *c, double share)
+{
+	h->blue += share * (c[2] > c[0] + 40 && c[2] > c[1]);
+	h->green += share * (c[1] > c[0] + 30 && c[1] > c[2]);
+	h->white += share * (c[0] > 170 && c[1] > 170 && c[2] > 170);
+}
+
+static void test_texture_sampled(void **state)
+{
+	(void)state;
+	import("tests/data/rigs/CesiumMan.glb");
+	assert_int_equal(m.coloured, 1);
+	assert_int_equal(scene.textured, 1);
+	assert_int_equal(scene.texture_problems, 0);
+	hues h = { 0, 0, 0 };
+	for (int v = 0; v < m.vert_count; v++)
+		count_hue(&h, m.colour[v], 1.0 / m.vert_count);
+	print_message("CesiumMan's vertices: %.1f%% blue, %.1f%% green, %.1f%% white\n", 100 * h.blue, 100 * h.green,
+		      100 * h.white);
+	assert_true(h.blue > 0.02 && h.green > 0.02 && h.white > 0.3);
+}
+
+/* The frame's pixels that are not the background's or the floor's: the
+ * share of each hue among those whose colour is saturated or bright. */
+static hues frame_hues(const char *png)
+{
+	static uint8_t px[480 * 540 * 4];
+	int w, h;
+	skp_error err;
+	if (png_read_rgba(png, px, sizeof px, &w, &h, &err) != 0)
+		fail_msg("%s: %s", png, err.msg);
+	hues s = { 0, 0, 0 };
+	for (long i = 0; i < (long)w * h; i++)
+		count_hue(&s, px + 4 * i, 1.0 / ((double)w * h));
+	return s;
+}
+
+static void test_played_in_colour(void **state)
+{
+	(void)state;
+	if (test_emulator())
+		skip();   /* no aarch64 Mesa under qemu-user (tests/cross_run.sh) */
+	const char *img = test_scratch("cesium.skn"), *out = test_scratch("frames");
+	assert_int_equal(test_run("%s pack -q assets/cmu/02.asf assets/cmu/02_01.amc --mesh tests/data/rigs/CesiumMan.glb "
+				  "--weights mesh -o '%s' >/dev/null 2>&1", test_tool_path("skintool"), img), 0);
+	assert_int_equal(test_run("%s --image '%s' --platform surfaceless --size 480x540 --hud off --frames 1 --out '%s' "
+				  ">/dev/null 2>&1", test_tool_path("skinplay"), img, out), 0);
+	char png[600];
+	snprintf(png, sizeof png, "%s/frame_000001.png", out);
+	hues h = frame_hues(png);
+	print_message("CesiumMan played: %.2f%% of the frame blue, %.2f%% green, %.2f%% white\n", 100 * h.blue,
+		      100 * h.green, 100 * h.white);
+	/* the body covers some 8% of the frame; the floor and sky are grey-blue,
+	 * not saturated: green and white come from the suit alone */
+	assert_true(h.green > 0.002 && h.white > 0.01);
+}
+
+static void test_no_materials_keep_the_skin_colour(void **state)
+{
+	(void)state;
+	const char *glb = test_data_path("mesh/orange_juice_male_base/male_base_mesh.glb");
+	if (!glb)
+		skip();
+	import(glb);
+	assert_int_equal(m.coloured, 0);
+}
+
+int main(void)
+{
+	const struct CMUnitTest tests[] = {
+		cmocka_unit_test(test_materials_and_vertex_colours),
+		cmocka_unit_test(test_texture_sampled),
+		cmocka_unit_test(test_played_in_colour),
+		cmocka_unit_test(test_no_materials_keep_the_skin_colour),
+	};
+	return cmocka_run_group_tests(tests, test_scratch_setup, test_scratch_teardown);
+}
