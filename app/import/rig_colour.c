@@ -39,34 +39,50 @@ static void drop_cache(rig_colour_work *w)
 	w->cached[0] = '\0';
 }
 
-/* PNG bytes (or a file, when bytes is NULL) decoded to RGBA8 in the cache;
+/* A PNG begun (its header read into img) decoded to RGBA8 in the cache;
  * why says what went wrong. */
-static int decode_png(rig_colour_work *w, const void *bytes, size_t n, const char *file, const char **why)
+static int finish_png(rig_colour_work *w, png_image *img, const char **why)
 {
-	png_image img;
-	memset(&img, 0, sizeof img);
-	img.version = PNG_IMAGE_VERSION;
-	int ok = bytes ? png_image_begin_read_from_memory(&img, bytes, n) : png_image_begin_read_from_file(&img, file);
-	if (!ok) {
-		*why = bytes || access(file, R_OK) == 0 ? "is not a PNG it can read" : "is missing";
-		return 0;
-	}
-	if (img.width > RIG_TEXTURE_MAX_SIDE || img.height > RIG_TEXTURE_MAX_SIDE) {
-		png_image_free(&img);
+	if (img->width > RIG_TEXTURE_MAX_SIDE || img->height > RIG_TEXTURE_MAX_SIDE) {
+		png_image_free(img);
 		*why = "is larger than 8192 pixels a side";
 		return 0;
 	}
-	img.format = PNG_FORMAT_RGBA;
-	w->rgba = malloc(PNG_IMAGE_SIZE(img));
-	if (!w->rgba || !png_image_finish_read(&img, NULL, w->rgba, 0, NULL)) {
-		png_image_free(&img);
+	img->format = PNG_FORMAT_RGBA;
+	w->rgba = malloc(PNG_IMAGE_SIZE(*img));
+	if (!w->rgba || !png_image_finish_read(img, NULL, w->rgba, 0, NULL)) {
+		png_image_free(img);
 		drop_cache(w);
 		*why = "is truncated or damaged";
 		return 0;
 	}
-	w->w = (int)img.width;
-	w->h = (int)img.height;
+	w->w = (int)img->width;
+	w->h = (int)img->height;
 	return 1;
+}
+
+static int png_from_memory(rig_colour_work *w, const void *bytes, size_t n, const char **why)
+{
+	png_image img;
+	memset(&img, 0, sizeof img);
+	img.version = PNG_IMAGE_VERSION;
+	if (!png_image_begin_read_from_memory(&img, bytes, n)) {
+		*why = "is not a PNG it can read";
+		return 0;
+	}
+	return finish_png(w, &img, why);
+}
+
+static int png_from_file(rig_colour_work *w, const char *file, const char **why)
+{
+	png_image img;
+	memset(&img, 0, sizeof img);
+	img.version = PNG_IMAGE_VERSION;
+	if (!png_image_begin_read_from_file(&img, file)) {
+		*why = access(file, R_OK) == 0 ? "is not a PNG it can read" : "is missing";
+		return 0;
+	}
+	return finish_png(w, &img, why);
 }
 
 /* The texture named path (embedded "*N", or a file beside the model) in
@@ -90,7 +106,7 @@ static int load_texture(rig_colour_work *w, const struct aiScene *sc, const char
 		else if (t->mHeight || strncmp(t->achFormatHint, "png", 3))
 			why = "is not PNG (PNG textures are read)";
 		else
-			ok = decode_png(w, t->pcData, t->mWidth, NULL, &why);
+			ok = png_from_memory(w, t->pcData, t->mWidth, &why);
 	} else {
 		char file[1024];
 		const char *slash = strrchr(w->model_path, '/');
@@ -101,7 +117,7 @@ static int load_texture(rig_colour_work *w, const struct aiScene *sc, const char
 		else if (dot && strcasecmp(dot, ".png"))
 			why = "is not PNG (PNG textures are read)";
 		else
-			ok = decode_png(w, NULL, 0, file, &why);
+			ok = png_from_file(w, file, &why);
 	}
 	if (!ok) {
 		note(w, material, path, why);
