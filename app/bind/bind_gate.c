@@ -207,6 +207,10 @@ static void measure_edges(bind_gate_work *w, const float *xyz, int move, long fr
 				worst_note(&w->res.stretch, ratio, w->region[a], move, frame, a);
 			if ((len - bind_len) / w->extent > w->res.grow.value)
 				worst_note(&w->res.grow, (len - bind_len) / w->extent, w->region[a], move, frame, a);
+			if (ratio > 2.0f && !(w->torn[t] >> (k + 3) & 1)) {
+				w->torn[t] |= (uint8_t)(1u << (k + 3));
+				w->res.doubled_edges++;
+			}
 			if (ratio > w->lim.stretch_ratio && len - bind_len > w->lim.stretch_extent * w->extent &&
 			    !(w->torn[t] >> k & 1)) {
 				w->torn[t] |= (uint8_t)(1u << k);

@@ -65,6 +65,7 @@ typedef struct bind_gate_result {
 	bind_gate_worst stretch;        /* largest edge length over its bind length */
 	bind_gate_worst grow;           /* largest edge lengthening / extent */
 	int torn_edges;                 /* past both stretch limits */
+	int doubled_edges;              /* ever past twice their bind length */
 	bind_gate_worst drift;          /* largest growth of the distance to the skeleton / extent */
 	bind_gate_worst closer;         /* largest shrinking of it / extent */
 	int drifting;                   /* vertices past the drift limit */
@@ -93,7 +94,7 @@ typedef struct bind_gate_work {
 	bind_gate_result res;
 	uint8_t drifted[SKP_MAX_VERTS];
 	uint8_t inner[SKP_MAX_VERTS];           /* judged with its region (root, rigid) */
-	uint8_t torn[SKP_MAX_TRIS];             /* a bit per edge of the triangle */
+	uint8_t torn[SKP_MAX_TRIS];             /* a bit per edge of the triangle: torn, then doubled */
 	float xyz[3 * SKP_MAX_VERTS], nrm[3 * SKP_MAX_VERTS];   /* for the caller's kernel */
 } bind_gate_work;
 

@@ -396,7 +396,7 @@ int rig_load_mesh(const bind_args *a, const char *path, bound_body *body)
 	}
 	pose_skeleton(a, path, body);
 	if (!a->weights_mesh && !a->weights_path)
-		fprintf(stderr, "%s: weights computed from the skeleton (--weights mesh keeps the file's own)\n", path);
+		fprintf(cli_note(), "%s: weights computed from the skeleton (--weights mesh keeps the file's own)\n", path);
 	int rc = a->weights_mesh ? mesh_weights(a, path, body) : setup_bind_weights(a, 0, path, body);
 	if (rc == 0) {
 		say_loose_parts(path);

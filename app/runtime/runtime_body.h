@@ -33,6 +33,7 @@ typedef struct bound_body {
 	bind_info info;
 	bind_balance_info balance;  /* valid when automatic and balanced */
 	int balanced;
+	int smooth_passes;          /* computed weights smoothed over the surface (bind_smooth.h) */
 	unsigned long long bind_ns; /* time bind_prepare + bind_weights (+ bind_balance) took */
 	uint8_t orphan[SKP_MAX_VERTS]; /* with has_orphans: vertices left to the root for want of a
 					* mapped joint (the importer's, --weights mesh) */

@@ -78,6 +78,11 @@ int setup_bind_auto_weights(const bind_args *a, int generated, const char *obj, 
 	uint64_t t0 = clock_now_ns();
 	bind_prepare(&body->rig, &body->skel, &body->pose, NULL);
 	skp_status rc = bind_weights(&body->rig, m->pos, m->vert_count, &body->weights, &body->info, &err);
+	/* a user's mesh: the generated body is built round its bones, its
+	 * weights smooth by construction (and balanced after) */
+	body->smooth_passes = 0;
+	if (rc == SKP_OK && !generated)
+		body->smooth_passes = bind_smooth(&setup_scratch_area()->smooth, m, &body->weights);
 	body->balanced = rc == SKP_OK && (a->balance < 0 ? generated : a->balance);
 	if (body->balanced)
 		rc = balance_watched(body, work, &err);

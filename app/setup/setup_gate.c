@@ -145,11 +145,15 @@ void setup_gate_report(FILE *to, const bound_body *body)
 	const bind_gate_limits *lim = &bind_gate_default_limits;
 	fprintf(to, "quality gate: %d range-of-motion poses, %ld motion frames, skeleton extent %.4g\n", g->moves,
 		g->frames, (double)g->extent);
-	fprintf(to, "  tears: worst edge %.2f times its bind length (%s), %d edges past %.0fx and %.0f%%: %s\n",
-		(double)g->stretch.value, region_name(body, &g->stretch), g->torn_edges, (double)lim->stretch_ratio,
-		100.0 * (double)lim->stretch_extent, verdict(body, BIND_GATE_TEARS));
-	fprintf(to, "  grow: an edge longer by %.2f%% of the extent at most (%s)\n", 100.0 * (double)g->grow.value,
+	fprintf(to, "  tears: worst edge %.2f times its bind length (%s, ", (double)g->stretch.value,
+		region_name(body, &g->stretch));
+	say_where(to, body, &g->stretch);
+	fprintf(to, "), %d edges ever past 2x, %d past %.0fx and %.0f%%: %s\n", g->doubled_edges, g->torn_edges,
+		(double)lim->stretch_ratio, 100.0 * (double)lim->stretch_extent, verdict(body, BIND_GATE_TEARS));
+	fprintf(to, "  grow: an edge longer by %.2f%% of the extent at most (%s, ", 100.0 * (double)g->grow.value,
 		region_name(body, &g->grow));
+	say_where(to, body, &g->grow);
+	fprintf(to, ")\n");
 	fprintf(to, "  drift: a vertex's distance to the posed skeleton grew by %.2f%% of its extent at most (%s), "
 		"%d vertices past %.0f%%: %s\n", 100.0 * (double)g->drift.value, region_name(body, &g->drift),
 		g->drifting, 100.0 * (double)lim->drift, verdict(body, BIND_GATE_DRIFT));

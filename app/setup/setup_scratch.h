@@ -11,6 +11,7 @@
 #include "bind_balance.h"
 #include "bind_gate.h"
 #include "bind_pose_guess.h"
+#include "bind_smooth.h"
 #include "runtime_skin.h"
 #include "mannequin.h"
 #include "obj.h"
@@ -31,6 +32,7 @@ typedef union setup_scratch {
 	manq_work manq;
 	bind_balance_work balance;
 	bind_guess_work guess;
+	bind_smooth_work smooth;
 	struct {
 		bind_gate_work work;
 		runtime_skin skin;

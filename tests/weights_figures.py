@@ -1,0 +1,87 @@
+#!/usr/bin/env python3
+"""How computed weights deform against the artist's (issue 46), on the
+MakeHuman body (assets/makehuman), CMU 02's skeleton, the hand-made bind
+pose tests/data/makehuman_apose.amc, 24 frames spread over each of the walk
+(02_01) and the kick, skinned with LBS by skintool skin:
+  - the largest lengthening of any triangle edge, in % of the body's height;
+  - the edges ever past twice their bind length, and the largest ratio;
+  - the mean distance of each vertex from where the artist's weights put
+    it, in % of the height.
+Run from the repository after make: python3 tests/weights_figures.py
+[BUILD_DIR] (about a minute and a half; prints one row a clip for the
+computed weights and the artist's)."""
+import math, os, subprocess, sys, tempfile
+
+BUILD = sys.argv[1] if len(sys.argv) > 1 else "build"
+TOOL = os.path.join(BUILD, "skintool")
+ASF = "assets/cmu/02.asf"
+BIND = "tests/data/makehuman_apose.amc"
+BODY = ["assets/makehuman/base.obj", "--rig", "assets/makehuman/default.mhskel", "--bind-pose", BIND]
+CLIPS = ["assets/cmu/02_01.amc", "assets/cmu/kick.amc"]
+work = tempfile.mkdtemp(prefix="skp_weights_")
+
+
+def frames_of(amc, count=24):
+    numbers = [int(l) for l in open(amc) if l.strip().isdigit()]
+    return [numbers[i * (len(numbers) - 1) // (count - 1)] for i in range(count)]
+
+
+def skin(amc, frame, weights, out):
+    subprocess.run([TOOL, "skin", ASF, amc] + BODY + ["--frame=%d" % frame, "--algo=lbs", "-q", "-o", out] + weights,
+                   check=True)
+
+
+def read_obj(path):
+    verts, faces = [], []
+    for line in open(path):
+        if line.startswith("v "):
+            verts.append(tuple(map(float, line.split()[1:4])))
+        elif line.startswith("f "):
+            faces.append([int(x.split("/")[0]) - 1 for x in line.split()[1:]])
+    return verts, faces
+
+
+def posed(tag, weights):
+    out = {}
+    for clip in CLIPS:
+        out[clip] = []
+        for k, n in enumerate(frames_of(clip)):
+            path = os.path.join(work, "%s_%s_%d.obj" % (tag, os.path.basename(clip), k))
+            skin(clip, n, weights, path)
+            out[clip].append(path)
+    return out
+
+
+def main():
+    bind_obj = os.path.join(work, "bind.obj")
+    skin(BIND, 1, ["--weights=mesh"], bind_obj)
+    bind, faces = read_obj(bind_obj)
+    ys = [p[1] for p in bind]
+    height = max(ys) - min(ys)
+    edges = sorted({(min(f[i], f[(i + 1) % len(f)]), max(f[i], f[(i + 1) % len(f)])) for f in faces
+                    for i in range(len(f))})
+    bind_len = [math.dist(bind[a], bind[b]) for a, b in edges]
+    artist = posed("artist", ["--weights=mesh"])
+    for tag, weights in (("computed", []), ("artist", ["--weights=mesh"])):
+        mine = artist if tag == "artist" else posed(tag, weights)
+        for clip in CLIPS:
+            worst, ratio, doubled, dist = 0.0, 0.0, set(), []
+            for k, path in enumerate(mine[clip]):
+                pos, _ = read_obj(path)
+                for i, (a, b) in enumerate(edges):
+                    if bind_len[i] <= 1e-9:
+                        continue
+                    length = math.dist(pos[a], pos[b])
+                    worst = max(worst, (length - bind_len[i]) / height)
+                    ratio = max(ratio, length / bind_len[i])
+                    if length > 2 * bind_len[i]:
+                        doubled.add(i)
+                ref, _ = read_obj(artist[clip][k])
+                dist.append(sum(math.dist(p, q) for p, q in zip(pos, ref)) / len(pos) / height)
+            print("%-8s %-10s lengthening %.2f%% of height, %d edges past 2x, largest ratio %.1fx, "
+                  "mean distance to the artist's %.2f%%" % (tag, os.path.basename(clip), 100 * worst, len(doubled),
+                                                           ratio, 100 * sum(dist) / len(dist)))
+    subprocess.run(["rm", "-rf", work])
+
+
+main()
