@@ -9,14 +9,21 @@
 
 /* Where a figure was worst, for messages: "with lfemur forward 60 degrees"
  * or "at frame 84 of walk.amc". */
-static void say_where(FILE *to, const bound_body *body, const bind_gate_worst *w)
+void setup_gate_where(const bound_body *body, const bind_gate_worst *w, char *out, size_t n)
 {
 	const bind_rom_move *m = w->move >= 0 ? &body->rom.move[w->move] : NULL;
 	if (m)
-		fprintf(to, "with %s %s %d degrees", body->skel.bone[m->bone].name, bind_rom_kind_name(m->kind),
-			m->degrees);
+		snprintf(out, n, "with %s %s %d degrees", body->skel.bone[m->bone].name, bind_rom_kind_name(m->kind),
+			 m->degrees);
 	else
-		fprintf(to, "at frame %ld of the motion", w->frame);
+		snprintf(out, n, "at frame %ld of the motion", w->frame);
+}
+
+static void say_where(FILE *to, const bound_body *body, const bind_gate_worst *w)
+{
+	char where[96];
+	setup_gate_where(body, w, where, sizeof where);
+	fputs(where, to);
 }
 
 static const char *region_name(const bound_body *body, const bind_gate_worst *w)

@@ -20,4 +20,8 @@ int setup_gate(const bind_args *a, const char *name, bound_body *body);
 /* The gate's figures, for bind --report. */
 void setup_gate_report(FILE *to, const bound_body *body);
 
+/* Where a gate figure was worst, as words: "with rhumerus forward 60
+ * degrees" (a range-of-motion pose) or "at frame 273 of the motion". */
+void setup_gate_where(const bound_body *body, const bind_gate_worst *w, char *out, size_t n);
+
 #endif

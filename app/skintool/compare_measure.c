@@ -16,6 +16,7 @@
 #include "motion_file.h"
 #include "overlap.h"
 #include "setup_bind.h"
+#include "setup_gate.h"
 
 #define OVERLAP_GRID 256
 #define OVERLAP_HITS (1 << 22)
@@ -292,6 +293,11 @@ int compare_load_clip(compare_run *c, const compare_args *a)
 	r->skel = &c->body.skel;
 	r->mesh_name = what;
 	r->balanced = c->body.balanced;
+	r->gate = &c->body.gate;
+	setup_gate_where(&c->body, &c->body.gate.stretch, r->gate_where, sizeof r->gate_where);
+	setup_gate_where(&c->body, &c->body.gate.grow, r->grow_where, sizeof r->grow_where);
+	r->gate_region = c->body.gate.stretch.region > 0 ? c->body.skel.bone[c->body.gate.stretch.region].name : "the root";
+	r->grow_region = c->body.gate.grow.region > 0 ? c->body.skel.bone[c->body.gate.grow.region].name : "the root";
 	r->weights = a->bind.weights_mesh ? "the mesh's own (its skin, mapped onto the skeleton)" :
 		     !c->body.automatic ? "read from the weights file" :
 		     c->body.balanced ? "automatic, volume-balanced" : "automatic (the paper's rule alone)";

@@ -355,6 +355,15 @@ static void check_clip(const char *asf, const char *amc, const char *clip)
 	check_verdicts(html, &s, clip);
 	check_joint_share(html, asf, amc, body, clip);
 	check_joint_limits(html, asf, amc, clip);
+	/* whether the skin tears: the gate's worst edge, where, the edges past 2x */
+	const char *tears = strstr(html, "id=\"tears\">Whether the skin tears");
+	float worst = 0.0f;
+	int doubled = -1;
+	assert_non_null(tears);
+	assert_true(sscanf(strstr(tears, "its worst edge reaches "), "its worst edge reaches %f", &worst) == 1);
+	assert_non_null(strstr(tears, "; "));
+	assert_true(sscanf(strstr(tears, "; ") + 2, "%d edges ever pass twice their length", &doubled) == 1);
+	assert_true(worst >= 1.0f && doubled >= 0);
 	free(html);
 	print_message("%-10s %ld frames: compare %.2f s, metrics %.2f s\n", clip, s.rows / 3, t1 - t0, t2 - t1);
 	snprintf(last_report, sizeof last_report, "%s", dir);

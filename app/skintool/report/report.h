@@ -5,6 +5,7 @@
 #ifndef REPORT_H
 #define REPORT_H
 
+#include "bind_gate.h"
 #include "measure.h"
 #include "runtime_skin.h"
 #include "skel.h"
@@ -150,6 +151,11 @@ typedef struct report {
 	const char *other_weights, *other_csv;
 	const report_algo *other_algo;
 	int balanced;               /* weights volume-balanced (bind_balance.h) */
+	/* the skin's longest stretch in the quality gate's poses and the clip
+	 * (bind_gate.h): worst edge ratio, where, lengthening, edges past 2x */
+	const bind_gate_result *gate;
+	char gate_where[96], grow_where[96];
+	const char *gate_region, *grow_region;
 	const skel *skel;
 	int vert_count, tri_count, measured;
 	int region_verts[REGION_COUNT];

@@ -62,6 +62,31 @@ static double loss_pct(const report_algo *a)
 	return a->vol_min.value < 1.0 ? 100.0 * (1.0 - a->vol_min.value) : 0.0;
 }
 
+/* Where a gate figure was worst: the region's bone and the pose or frame. */
+static void where(FILE *f, const char *region, const char *pose)
+{
+	fputs(" (", f);
+	report_html_escape(f, region);
+	fputs(", ", f);
+	report_html_escape(f, pose);
+	fputs(")", f);
+}
+
+/* Whether the skin tears: the bind's quality gate over its poses and the
+ * clip (bind_gate.h). */
+static void tears_paragraph(FILE *f, const report *r)
+{
+	const bind_gate_result *g = r->gate;
+	fprintf(f, "<p class=\"meta\" id=\"tears\">Whether the skin tears (the bind's quality gate, DQBS, over %d "
+		"range-of-motion poses and %ld frames of the clip): its worst edge reaches %.2f times its bind length",
+		g->moves, g->frames, (double)g->stretch.value);
+	where(f, r->gate_region, r->gate_where);
+	fprintf(f, "; %d edges ever pass twice their length; the longest lengthening is %.2f%% of the skeleton's "
+		"extent", g->doubled_edges, 100.0 * (double)g->grow.value);
+	where(f, r->grow_region, r->grow_where);
+	fputs(".</p>\n", f);
+}
+
 static void head(FILE *f, const report *r)
 {
 	fputs("<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
@@ -81,6 +106,8 @@ static void head(FILE *f, const report *r)
 		"fixed-point DQBS and measured in %.2f s; the whole command, binding, renders, charts and this "
 		"page included, took %.2f s. Numbers per frame: <a href=\"metrics.csv\">metrics.csv</a>.</p>\n",
 		r->vert_count, r->tri_count, r->weights, r->frames, r->seconds, r->total_seconds);
+	if (r->gate && r->gate->moves + r->gate->frames > 0)
+		tears_paragraph(f, r);
 }
 
 /* A region's worst loss and largest gain of its own volume, in percent. */
