@@ -20,7 +20,7 @@ static float to_linear(float s)
 
 static uint8_t to_srgb(float l)
 {
-	l = l < 0.0f ? 0.0f : l > 1.0f ? 1.0f : l;
+	l = l > 0.0f ? (l < 1.0f ? l : 1.0f) : 0.0f;   /* NaN from a broken file: black */
 	float s = l <= 0.0031308f ? 12.92f * l : 1.055f * powf(l, 1.0f / 2.4f) - 0.055f;
 	return (uint8_t)lrintf(255.0f * s);
 }
