@@ -57,7 +57,7 @@ static void test_good_bind_passes_with_figures(void **state)
 	test_assert_contains_all(log, (const char *const[]){
 		"quality gate: 24 range-of-motion poses, ",
 		" motion frames, skeleton extent ",
-		"edges past 3x and 30%: ok",
+		"edges ever past 2x, 0 past 3x and 30%: ok",
 		"vertices past 12%: ok",
 		"limit 25%: ok",
 		"limit 0.35: ok",
