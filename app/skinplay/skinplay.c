@@ -244,13 +244,21 @@ static void hud_text(skinplay *p, render_frame *f, double fps, char lines[3][128
 	int at = snprintf(lines[1], 128, "%s  FRAME %ld  %.2f S", p->clip, shown_number(p), shown_time(p));
 	if (rebuilt)
 		snprintf(lines[1] + at, 128 - (size_t)at, "  REBUILT %lu", rebuilt);
-	/* no figure before the first second is measured; the clock: how far
-	 * the pose shown runs from the wall clock (headless: the virtual
-	 * display's time against real time) */
+	/* no figure before the first second is measured. On a screen the
+	 * clock: how far the pose shown runs from the wall clock. Headless
+	 * the virtual display's time is the show's (it runs behind real time
+	 * when frames take longer to draw, which says nothing of the show),
+	 * and the image's number is the one its PNG is named by */
+	const char *paused = p->kiosk.ps.playing ? "" : "  PAUSED";
+	char rate[32] = "- FPS";
 	if (fps > 0)
-		snprintf(lines[2], 128, "%.1f FPS  CLOCK %+.3f S%s", fps, p->drift, p->kiosk.ps.playing ? "" : "  PAUSED");
+		snprintf(rate, sizeof rate, "%.1f FPS", fps);
+	if (p->headless)
+		snprintf(lines[2], 128, "%s  SHOW %.2f S  IMAGE %ld%s", rate, (double)p->now * 1e-9, p->shown + 1, paused);
+	else if (fps > 0)
+		snprintf(lines[2], 128, "%s  CLOCK %+.3f S%s", rate, p->drift, paused);
 	else
-		snprintf(lines[2], 128, "- FPS%s", p->kiosk.ps.playing ? "" : "  PAUSED");
+		snprintf(lines[2], 128, "%s%s", rate, paused);
 	f->hud[0] = lines[0];
 	f->hud[1] = lines[1];
 	f->hud[2] = p->o.hud_fps ? lines[2] : NULL;
