@@ -363,8 +363,9 @@ static int check_biped(const bind_args *a, const char *path, const bound_body *b
 }
 
 /* The vertices of parts held by the joint nearest them (rig_scene.h)
- * for the gate; computed weights would spread a spear over every bone it
- * passes, so they keep the one bone their joint moves with. */
+ * for the gate; computed weights (body->automatic) would spread a spear
+ * over every bone it passes, so they keep the one bone their joint moves
+ * with. */
 static void keep_held(bound_body *body, int computed)
 {
 	body->has_held = 0;
@@ -400,7 +401,7 @@ int rig_load_mesh(const bind_args *a, const char *path, bound_body *body)
 	int rc = a->weights_mesh ? mesh_weights(a, path, body) : setup_bind_weights(a, 0, path, body);
 	if (rc == 0) {
 		say_loose_parts(path);
-		keep_held(body, !a->weights_mesh && !a->weights_path);
+		keep_held(body, body->automatic);
 	}
 	return rc;
 }

@@ -244,21 +244,17 @@ static void hud_text(skinplay *p, render_frame *f, double fps, char lines[3][128
 	int at = snprintf(lines[1], 128, "%s  FRAME %ld  %.2f S", p->clip, shown_number(p), shown_time(p));
 	if (rebuilt)
 		snprintf(lines[1] + at, 128 - (size_t)at, "  REBUILT %lu", rebuilt);
-	/* no figure before the first second is measured. On a screen the
-	 * clock: how far the pose shown runs from the wall clock. Headless
-	 * the virtual display's time is the show's (it runs behind real time
-	 * when frames take longer to draw, which says nothing of the show),
-	 * and the image's number is the one its PNG is named by */
-	const char *paused = p->kiosk.ps.playing ? "" : "  PAUSED";
-	char rate[32] = "- FPS";
+	/* no rate before the first second is measured; on a screen CLOCK,
+	 * how far the pose runs from the wall clock; headless the show's
+	 * time and the image's number, as its PNG is named */
+	char rate[32] = "- FPS", clock[64] = "";
 	if (fps > 0)
 		snprintf(rate, sizeof rate, "%.1f FPS", fps);
 	if (p->headless)
-		snprintf(lines[2], 128, "%s  SHOW %.2f S  IMAGE %ld%s", rate, (double)p->now * 1e-9, p->shown + 1, paused);
+		snprintf(clock, sizeof clock, "  SHOW %.2f S  IMAGE %ld", (double)p->now * 1e-9, p->shown + 1);
 	else if (fps > 0)
-		snprintf(lines[2], 128, "%s  CLOCK %+.3f S%s", rate, p->drift, paused);
-	else
-		snprintf(lines[2], 128, "%s%s", rate, paused);
+		snprintf(clock, sizeof clock, "  CLOCK %+.3f S", p->drift);
+	snprintf(lines[2], 128, "%s%s%s", rate, clock, p->kiosk.ps.playing ? "" : "  PAUSED");
 	f->hud[0] = lines[0];
 	f->hud[1] = lines[1];
 	f->hud[2] = p->o.hud_fps ? lines[2] : NULL;
