@@ -11,7 +11,8 @@
 
 static const char *const state_names[] = {
 	"good", "I/O error", "short read", "CRC mismatch", "block of another image",
-	"block out of place", "frame count differs from the directory's"
+	"block out of place", "frame count differs from the directory's",
+	"content differs from its digest (a block altered, its CRC made again)"
 };
 
 const char *skp_block_state_name(skp_block_state st)
@@ -46,8 +47,7 @@ skp_block_state skp_image_read_raw(const skp_image *im, uint32_t block, uint8_t 
 	return (uint32_t)n < im->hdr.block_size ? SKP_BLOCK_SHORT : SKP_BLOCK_OK;
 }
 
-skp_block_state skp_image_check_block(skp_image *im, uint32_t block, int kind, unsigned item,
-				      uint8_t *buf)
+skp_block_state skp_image_read_framed(skp_image *im, uint32_t block, int kind, unsigned item, uint8_t *buf)
 {
 	skp_block_state st = skp_image_read_raw(im, block, buf);
 	return st != SKP_BLOCK_OK ? st : skp_image_frame_check(im, block, kind, item, buf);

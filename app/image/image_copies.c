@@ -47,7 +47,7 @@ int skp_image_copy_at(const uint8_t *p, uint64_t at, skp_image_header *h)
 static int block_frame_at(const uint8_t *p, uint64_t at)
 {
 	uint32_t index = le_get32(p + 16);
-	if (index == 0 || p[20] < SKP_KIND_HEADER || p[20] > SKP_KIND_FRAMES || p[21] != 0 || at % index)
+	if (index == 0 || p[20] < SKP_KIND_HEADER || p[20] > SKP_KIND_DIGESTS || p[21] != 0 || at % index)
 		return 0;
 	uint64_t bs = at / index;
 	return bs >= SKP_IMAGE_MIN_BLOCK && bs <= SKP_IMAGE_BLOCK_SIZE && bs % 16 == 0;

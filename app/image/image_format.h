@@ -1,4 +1,4 @@
-/* The skinplay flash image (.skn), format version 5: a skeleton, a bound
+/* The skinplay flash image (.skn), format version 7: a skeleton, a bound
  * body and motion clips packed once by `skintool pack` and played from
  * CRC-checked fixed-size blocks with fixed memory (app/image/image_read.h,
  * app/image/image_stream.h), with XOR parity that rebuilds any one bad block
@@ -10,7 +10,10 @@
  * Version 5 adds compressed clips (app/codec/codec_format.h; what pack
  * writes unless told --raw) beside version 4's 16-bit quantised ones, and
  * five fields to each directory entry; a version 4 image still reads (its
- * clips are all quantised).
+ * clips are all quantised). Version 6 adds each vertex's colour to the
+ * bind section. Version 7 gives every data block its own digest, checked
+ * whenever the block is read (DIGESTS below); versions 4 to 6 still read
+ * and play, checked by their CRCs and the whole-image digest.
  *
  * All integers are little-endian; floats are IEEE-754 binary32 stored as
  * their little-endian bit pattern; a "str" is a u8 length then that many
@@ -42,11 +45,28 @@
  *     bind             kind 3
  *     per clip         kind 5 (its quantisation), then kind 6 (its frames)
  *     directory        kind 4
+ *     digests          kind 7 (version 7)
  *     parity           P blocks
  *     directory copy   kind 4, item 1: the directory's payloads again
  *     header copy      kind 1, item 1: the last block of the image
  *
- * The blocks up to the directory are the D data blocks. PARITY: data block
+ * DIGESTS (version 7). The blocks before the digest section, 0 .. H-1
+ * (H: the directory's first block plus its count), each have a leaf: the
+ * first 16 bytes of the SHA-256 of the whole block (frame and CRC), block
+ * 0's leaf 16 zero bytes (the header, checked by its CRC and its copy).
+ * The digest section (kind 7, item 0) is the H leaves in block order as a
+ * byte stream, 254 to a block at B = 4096 ((B - 28) / 16): its blocks,
+ * ceil(16 H / (B - 28)), end the data blocks (D = H + that). Each digest
+ * block's own leaf is taken likewise (its whole B bytes), and the header's
+ * digest field holds the root: the SHA-256 of the digest blocks' leaves
+ * in order. A reader checks the digest blocks against the root when it
+ * opens the image (a digest block that fails is rebuilt from parity, and
+ * kept when the rebuilt one gives the root), then every block it reads
+ * against its leaf: a block whose content changed, even with its CRC made
+ * again, is a bad block, rebuilt from parity or held like any other.
+ *
+ * The blocks up to the directory (version 7: up to the digests) are the D
+ * data blocks. PARITY: data block
  * b belongs to parity group b mod P, and parity block D + g is the XOR of
  * every data block of group g, all B bytes of each (frame, CRC and all; no
  * frame of its own). Any one data block of a group that cannot be read or
@@ -99,7 +119,8 @@
  *              directory)
  *     128  4   header copy block (the last)
  *     132  32  digest: SHA-256 of data blocks 1 .. D-1, whole (frames and
- *              CRCs included), in order
+ *              CRCs included), in order; version 7: the root of the
+ *              blocks' digests (DIGESTS)
  *     164  4   header CRC: CRC-32 of header bytes 0..163
  *
  * SKELETON (kind 2): everything app/motion/skel.h's skel holds, so that it is
@@ -198,13 +219,19 @@
 #ifndef SKP_IMAGE_MAX_CLIPS
 #define SKP_IMAGE_MAX_CLIPS     64
 #endif
+/* Digest blocks (version 7) whose own digests the reader keeps: each
+ * covers (B - 28) / 16 blocks, 254 at B = 4096 (64: images to 66 MB). */
+#ifndef SKP_IMAGE_MAX_DIGEST_BLOCKS
+#define SKP_IMAGE_MAX_DIGEST_BLOCKS 64
+#endif
 
 #define SKP_IMAGE_MAGIC        "SKPIMAGE"
-#define SKP_IMAGE_VERSION      6
+#define SKP_IMAGE_VERSION      7
 #define SKP_IMAGE_VERSION_MIN  4     /* the oldest version still read */
 #define SKP_IMAGE_HEADER_SIZE  168
 #define SKP_IMAGE_ID_BYTES     16
 #define SKP_IMAGE_DIGEST_BYTES 32    /* SHA-256 */
+#define SKP_IMAGE_LEAF_BYTES   16    /* a block's digest: SHA-256's first 16 bytes */
 #define SKP_IMAGE_DEFAULT_GROUP  8    /* data blocks per parity group */
 #define SKP_IMAGE_BLOCK_HDR    24    /* id, index, kind, 0, item */
 #define SKP_IMAGE_BLOCK_CRC    4
@@ -232,7 +259,8 @@ enum skp_image_kind {
 	SKP_KIND_BIND,
 	SKP_KIND_DIRECTORY,
 	SKP_KIND_QUANT,
-	SKP_KIND_FRAMES
+	SKP_KIND_FRAMES,
+	SKP_KIND_DIGESTS         /* version 7: each data block's digest */
 };
 
 enum skp_image_section_id {

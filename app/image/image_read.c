@@ -5,7 +5,9 @@
 
 #include "crc32.h"
 #include "image_copies.h"
+#include "image_digests.h"
 #include "image_error.h"
+#include "image_header_parity.h"
 #include "image_section.h"
 
 static int block_size_ok(uint32_t bs)
@@ -83,6 +85,18 @@ static skp_status check_limits(const skp_image_header *h, skp_error *err)
 	return rc;
 }
 
+/* Version 7: the digest blocks, as many as the leaves need, end the data
+ * blocks. */
+static skp_status check_digest_layout(const skp_image_header *h, skp_error *err)
+{
+	uint32_t first = skp_digest_first(h);
+	if (h->version < 7 || (first < h->data_blocks && skp_digest_blocks(first, h->block_size) == h->data_blocks - first))
+		return SKP_OK;
+	return skp_fail(err, SKP_ERR_CORRUPT, 0, "header: %lu data blocks, but the directory ends at block %lu and "
+			"its %lu blocks' digests need %lu more", (unsigned long)h->data_blocks, (unsigned long)first,
+			(unsigned long)first, (unsigned long)skp_digest_blocks(first, h->block_size));
+}
+
 /* Data, parity, the directory copy, then the header copy, which ends the
  * image; every section among the data blocks. 64-bit sums: a crafted count
  * near 2^32 cannot wrap into range. */
@@ -102,7 +116,7 @@ static skp_status check_layout(const skp_image_header *h, skp_error *err)
 		    (i != SKP_SEC_CLIPS && (s->count * payload < s->bytes || s->first == 0)))
 			return skp_fail(err, SKP_ERR_CORRUPT, 0, "header: section %d out of the image", i + 1);
 	}
-	return SKP_OK;
+	return check_digest_layout(h, err);
 }
 
 /* The storage must hold every data block; what it lacks after them (the
@@ -231,8 +245,13 @@ static skp_status header_from_block0(skp_image *im, int *older, skp_error *err)
 static skp_status header_from_copy(skp_image *im, skp_status rc0)
 {
 	skp_image_header h;
-	if (rc0 == SKP_ERR_RANGE || !skp_image_copy_header(im, &h))
+	if (rc0 == SKP_ERR_RANGE)
 		return rc0;
+	if (!skp_image_copy_header(im, &h)) {
+		if (!skp_image_parity_header(im, &h))
+			return rc0;
+		im->header_from_parity = 1;
+	}
 	im->hdr = h;
 	im->header_from_copy = 1;
 	if (im->on_rebuild)
@@ -287,7 +306,11 @@ skp_status skp_image_open(skp_image *im, const skp_blockdev *dev, skp_error *err
 	im->rebuilt = 0;
 	im->rebuilt_from = "parity";
 	im->header_from_copy = 0;
+	im->header_from_parity = 0;
 	im->missing = 0;
+	im->digests = 0;
+	im->digest_first = 0;
+	im->leaves_at = UINT32_MAX;
 	if (!block_size_ok(dev->block_size))
 		return skp_fail(err, SKP_ERR_RANGE, 0, "storage block size %lu: expected a multiple of 16 from %d to %d",
 				(unsigned long)dev->block_size, SKP_IMAGE_MIN_BLOCK, SKP_IMAGE_BLOCK_SIZE);
@@ -302,6 +325,7 @@ skp_status skp_image_open(skp_image *im, const skp_blockdev *dev, skp_error *err
 	if (!rc) rc = check_limits(&im->hdr, err);
 	if (!rc) rc = check_layout(&im->hdr, err);
 	if (!rc) rc = check_storage(im, err);
+	if (!rc) rc = skp_image_digests_open(im, err);
 	return rc ? rc : load_directory(im, err);
 }
 

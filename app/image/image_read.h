@@ -58,8 +58,17 @@ typedef struct skp_image {
 	const char *rebuilt_from;               /* the last one's source: "parity", "the header",
 	                                         * "the directory copy", "the directory" */
 	int header_from_copy;                   /* block 0 was bad: the copy's header */
+	int header_from_parity;                 /* ... and the copy lost too: block 0 rebuilt
+	                                         * from parity (image_header_parity.h) */
 	uint32_t missing;                       /* blocks at the image's end the storage lacks
 	                                         * (copies, parity): a warning */
+	/* version 7's per-block digests (image_digests.h) */
+	uint32_t digest_first;                  /* H: blocks 0..H-1 have a leaf; 0 none */
+	int digests;                            /* 1: every block read is checked against its leaf */
+	int digests_broken;                     /* the digest blocks do not give the header's root */
+	uint32_t leaves_at;                     /* the digest block held in leaves (UINT32_MAX none) */
+	uint8_t top[SKP_IMAGE_MAX_DIGEST_BLOCKS][SKP_IMAGE_LEAF_BYTES]; /* each digest block's leaf */
+	uint8_t leaves[SKP_IMAGE_BLOCK_SIZE];   /* a digest block, checked against top */
 	/* When set (before open), told of every block rebuilt from parity or
 	 * a copy (block 0 also when the header came from the copy). */
 	void (*on_rebuild)(void *ctx, uint32_t block);

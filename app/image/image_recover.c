@@ -5,8 +5,23 @@
 #include "image_recover.h"
 
 #include "image_copies.h"
+#include "image_digests.h"
 #include "image_parity.h"
 #include "image_read.h"
+
+skp_block_state skp_image_content_check(skp_image *im, uint32_t block, int kind, unsigned item,
+					const uint8_t *buf)
+{
+	skp_block_state st = skp_image_frame_check(im, block, kind, item, buf);
+	return st != SKP_BLOCK_OK ? st : skp_image_leaf_check(im, block, buf);
+}
+
+skp_block_state skp_image_check_block(skp_image *im, uint32_t block, int kind, unsigned item,
+				      uint8_t *buf)
+{
+	skp_block_state st = skp_image_read_framed(im, block, kind, item, buf);
+	return st != SKP_BLOCK_OK ? st : skp_image_leaf_check(im, block, buf);
+}
 
 skp_block_state skp_image_read_block(skp_image *im, uint32_t block, int kind, unsigned item,
 				     uint8_t *buf)
@@ -47,7 +62,7 @@ skp_block_state skp_image_recover(skp_image *im, uint32_t block, int kind, unsig
 	skp_block_state st = block < h->data_blocks ? skp_image_rebuild(im, block, kind, item, buf) : SKP_BLOCK_CRC;
 	long i;
 	im->rebuilt_from = "parity";
-	if (st == SKP_BLOCK_OK)
+	if (st == SKP_BLOCK_OK && (st = skp_image_leaf_check(im, block, buf)) == SKP_BLOCK_OK)
 		return st;
 	if (block == 0 || block == h->copy_block) {
 		(block == 0 ? skp_header_block_frame : skp_header_copy_frame)(buf, h);
@@ -63,5 +78,5 @@ skp_block_state skp_image_recover(skp_image *im, uint32_t block, int kind, unsig
 	} else {
 		return st;
 	}
-	return skp_image_frame_check(im, block, kind, item, buf);
+	return skp_image_content_check(im, block, kind, item, buf);
 }

@@ -1,9 +1,20 @@
-/* Reading a block with its recovery (image_recover.c): from the block's
- * parity group (image_parity.h), else from its copy (image_copies.h). */
+/* The checks a block must pass (its frame, then its digest) and reading a
+ * block with its recovery (image_recover.c): from the block's parity group
+ * (image_parity.h), else from its copy (image_copies.h). */
 #ifndef IMAGE_RECOVER_H
 #define IMAGE_RECOVER_H
 
 #include "image_block.h"
+
+/* Reads block into buf and checks it: its frame (its CRC, the image's id,
+ * its index, and when kind > 0 its kind and item), then its digest
+ * (image_digests.h). No recovery: what the storage holds. */
+skp_block_state skp_image_check_block(skp_image *im, uint32_t block, int kind, unsigned item,
+				      uint8_t *buf);
+
+/* The frame check, then the digest's, of a block already in buf. */
+skp_block_state skp_image_content_check(skp_image *im, uint32_t block, int kind, unsigned item,
+					const uint8_t *buf);
 
 /* Reads block into buf and checks it: its CRC, the image's id, its index,
  * and when kind > 0 its kind and item. A block that fails is recovered when

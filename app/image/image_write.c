@@ -5,6 +5,7 @@
 
 #include "crc32.h"
 #include "image_copies.h"
+#include "image_digests.h"
 #include "image_parity.h"
 #include "image_error.h"
 #include "image_write_internal.h"
@@ -321,6 +322,35 @@ static skp_status put_clip_entry(skp_image_writer *w, const skp_image_clip *c, s
 	return rc ? rc : image_put_f32(w, c->unit_cm, err);
 }
 
+/* Version 7: each block's leaf (block 0's zeros: it is written last),
+ * read back as written, into digest blocks that end the data blocks; the
+ * root, over the digest blocks' own leaves, into the header's digest. */
+static skp_status write_digests(skp_image_writer *w, skp_error *err)
+{
+	uint32_t leaves = w->next_block, per = skp_digest_per_block(w->bs), first = w->next_block;
+	image_sec_begin(w, SKP_KIND_DIGESTS, 0);
+	for (uint32_t b = 1; b < leaves; b++) {
+		if (w->dev->read(w->dev->ctx, b, w->tmp) != (int)w->bs)
+			return image_block_fail(err, SKP_ERR_IO, b, "cannot read it back to take its digest");
+		skp_block_leaf(w->tmp, w->bs, w->block + SKP_IMAGE_BLOCK_HDR + (b % per) * SKP_IMAGE_LEAF_BYTES);
+		if ((b + 1) % per == 0 && image_flush_block(w, err) != SKP_OK)
+			return SKP_ERR_IO;
+	}
+	if (leaves % per && image_flush_block(w, err) != SKP_OK)
+		return SKP_ERR_IO;
+	sha256_ctx root;
+	uint8_t leaf[SKP_IMAGE_LEAF_BYTES];
+	sha256_init(&root);
+	for (uint32_t b = first; b < w->next_block; b++) {
+		if (w->dev->read(w->dev->ctx, b, w->tmp) != (int)w->bs)
+			return image_block_fail(err, SKP_ERR_IO, b, "cannot read it back to take its digest");
+		skp_block_leaf(w->tmp, w->bs, leaf);
+		sha256_update(&root, leaf, sizeof leaf);
+	}
+	sha256_final(&root, w->hdr.digest);
+	return SKP_OK;
+}
+
 skp_status skp_image_write_end(skp_image_writer *w, skp_error *err)
 {
 	if (w->clip)
@@ -335,6 +365,8 @@ skp_status skp_image_write_end(skp_image_writer *w, skp_error *err)
 		rc = put_clip_entry(w, &w->dir[i], err);
 	if (!rc)
 		rc = image_sec_end(w, &h->sec[SKP_SEC_DIRECTORY], err);
+	if (!rc && h->version >= 7)
+		rc = write_digests(w, err);
 	if (rc)
 		return rc;
 	/* data, parity over it (block 0 from memory: it is written last), the
@@ -344,7 +376,8 @@ skp_status skp_image_write_end(skp_image_writer *w, skp_error *err)
 	h->dir_copy = h->data_blocks + h->parity_blocks;
 	h->copy_block = h->dir_copy + h->sec[SKP_SEC_DIRECTORY].count;
 	h->block_count = h->copy_block + 1;
-	sha256_final(&w->digest, h->digest);
+	if (h->version < 7)
+		sha256_final(&w->digest, h->digest);
 	skp_header_block_frame(w->head, h);
 	rc = skp_parity_write(w->dev, h, w->head, w->block, w->tmp, err);
 	if (!rc) rc = skp_image_write_copies(w->dev, h, w->block, err);

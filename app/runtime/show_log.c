@@ -30,7 +30,10 @@ void show_log_rebuild(void *ctx, uint32_t block)
 	r.kind = kind;
 	if (!show_log_once(img, (long)block))
 		return;
-	if (block == 0 && img->im.header_from_copy)
+	if (block == 0 && img->im.header_from_parity)
+		fprintf(stderr, "image: %s: block 0 and the header copy bad: header rebuilt from parity group 0\n",
+			img->path);
+	else if (block == 0 && img->im.header_from_copy)
 		fprintf(stderr, "image: %s: block 0 bad: header read from its copy\n", img->path);
 	else
 		fprintf(stderr, "image: %s: block %lu rebuilt from %s (%s, parity group %lu)\n", img->path,

@@ -69,11 +69,13 @@ static void print_header(const show_image *s)
 	printf("  blocks      %lu of %lu bytes (%llu bytes), CRC-32 each; header CRC %08lx\n",
 	       (unsigned long)h->block_count, (unsigned long)h->block_size,
 	       (unsigned long long)h->block_count * h->block_size, (unsigned long)h->crc);
-	print_hex("  digest      SHA-256 of the data blocks ", h->digest, SKP_IMAGE_DIGEST_BYTES);
+	print_hex(s->im.digest_first ? "  digest      root of the blocks' digests " : "  digest      SHA-256 of the data blocks ",
+		  h->digest, SKP_IMAGE_DIGEST_BYTES);
 	printf("  needs       %lu bones, %lu dofs, %lu vertices, %lu triangles, %lu influences, %lu clips\n",
 	       (unsigned long)h->bones, (unsigned long)h->dofs, (unsigned long)h->verts, (unsigned long)h->tris,
 	       (unsigned long)h->influences, (unsigned long)h->clips);
-	printf("  section     header: block 0%s\n", s->im.header_from_copy ? " (bad: read from its copy)" : "");
+	printf("  section     header: block 0%s\n", s->im.header_from_parity ? " (bad, and its copy: rebuilt from parity)"
+						   : s->im.header_from_copy ? " (bad: read from its copy)" : "");
 	for (int i = 0; i < SKP_SEC_COUNT; i++) {
 		const skp_image_section *sec = &h->sec[i];
 		printf("  section     %s: blocks %lu..%lu", names[i], (unsigned long)sec->first,
@@ -82,6 +84,11 @@ static void print_header(const show_image *s)
 			printf(", %lu bytes", (unsigned long)sec->bytes);
 		printf("\n");
 	}
+	if (s->im.digest_first)
+		printf("  section     block digests: blocks %lu..%lu, a SHA-256 leaf for each of blocks 1..%lu%s\n",
+		       (unsigned long)s->im.digest_first, (unsigned long)h->data_blocks - 1,
+		       (unsigned long)s->im.digest_first - 1,
+		       s->im.digests ? "" : " (NOT the header's root: blocks checked by CRC alone)");
 	print_parity(h);
 }
 
@@ -281,7 +288,9 @@ int cmd_info(int argc, char **argv)
 		printf("verify: %lu blocks: %ld bad, %ld rebuildable one by one, %ld beyond repair; not repairable as a "
 		       "whole (%s): pack the show again\n", (unsigned long)s.im.hdr.block_count, v.bad, v.bad - v.beyond,
 		       v.beyond, v.beyond ? "blocks beyond repair" : "the data would not match the image's digest");
-	printf("digest: %s\n", v.digest > 0 ? "the data blocks match it"
+	printf("digest: %s\n", v.digest > 0 ? (s.im.digest_first ? "every data block matches its own digest, and "
+								    "the digests the root"
+								  : "the data blocks match it")
 				: v.digest < 0 ? "not checked (a data block is beyond repair)"
 				: "MISMATCH: a data block was altered and keeps a good CRC (not this image as packed)");
 	if (s.im.missing)

@@ -29,5 +29,6 @@
 #define SKP_IMAGE_RING_BLOCKS    4
 #define SKP_IMAGE_CACHE_BLOCKS   4   /* blocks rebuilt from parity, kept for the next passes */
 #define SKP_IMAGE_MAX_CLIPS     64
+#define SKP_IMAGE_MAX_DIGEST_BLOCKS 1024 /* each digest block covers 254 blocks: images to 1 GB */
 
 #endif

@@ -20,7 +20,10 @@
 #include <string.h>
 
 #include "crc32.h"
+#include "image_copies.h"
+#include "image_digests.h"
 #include "image_write.h"
+#include "sha256.h"
 #include "storage_file.h"
 #include "test_box.h"
 #include "test_paths.h"
@@ -70,8 +73,27 @@ static void write_image(const char *path, uint64_t sequence)
 	storage_file_close(&sf);
 }
 
+/* A forger who knows version 7 makes block b's digest good again too: its
+ * leaf in the digest block, the root in both headers. */
+static void redigest(uint8_t *d, skp_image_header *h, uint32_t b)
+{
+	uint32_t first = skp_digest_first(h), per = skp_digest_per_block(BS);
+	uint8_t *db = d + (size_t)(first + b / per) * BS, leaf[SKP_IMAGE_LEAF_BYTES];
+	skp_block_leaf(d + (size_t)b * BS, BS, db + SKP_IMAGE_BLOCK_HDR + (b % per) * SKP_IMAGE_LEAF_BYTES);
+	skp_block_seal(db, BS);
+	sha256_ctx c;
+	sha256_init(&c);
+	for (uint32_t k = first; k < h->data_blocks; k++) {
+		skp_block_leaf(d + (size_t)k * BS, BS, leaf);
+		sha256_update(&c, leaf, sizeof leaf);
+	}
+	sha256_final(&c, h->digest);
+	skp_header_block_frame(d, h);
+	skp_header_copy_frame(d + (size_t)h->copy_block * BS, h);
+}
+
 /* The directory entry's frame count, one more, in the directory and its
- * copy, both resealed: a forger's edit. */
+ * copy, both resealed, the digests made good: a forger's edit. */
 static void one_frame_more(const char *path)
 {
 	size_t n;
@@ -86,6 +108,7 @@ static void one_frame_more(const char *path)
 		le_put32(count, le_get32(count) + 1);
 		le_put32(b + BS - 4, crc32_compute(b, BS - 4));
 	}
+	redigest(d, &h, blocks[0]);
 	FILE *f = fopen(path, "wb");
 	assert_non_null(f);
 	assert_int_equal(fwrite(d, 1, n, f), n);

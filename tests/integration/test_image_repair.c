@@ -150,22 +150,25 @@ static void test_every_block_damaged_plays_the_same(void **state)
 	int saved = quiet_stderr();
 	long blocks = (long)(n / BS), differ = 0;
 	for (long b = 0; b < blocks; b++) {
-		for (int how = 0; how < 2; how++) {
+		for (int how = 0; how < 3; how++) {
+			static const char *const hows[] = { "flipped", "zeroed", "forged (its CRC made good)" };
 			memcpy(copy, orig, n);
-			if (how == 0)
-				copy[b * BS + (b * 131) % BS] ^= 0x20;
-			else
+			if (how == 1)
 				memset(copy + b * BS, 0, BS);
+			else
+				copy[b * BS + (b * 131) % BS] ^= 0x20;
+			if (how == 2)
+				le_put32(copy + b * BS + BS - 4, crc32_compute(copy + b * BS, BS - 4));
 			save(bad, copy, n);
 			if (played(bad, &clips) != ref || clips != 1) {
 				differ++;
-				fprintf(stdout, "block %ld %s: played differently\n", b, how ? "zeroed" : "flipped");
+				fprintf(stdout, "block %ld %s: played differently\n", b, hows[how]);
 			}
 		}
 	}
 	loud_stderr(saved);
 	assert_int_equal(differ, 0);
-	print_message("%ld blocks, each flipped and each zeroed: playback identical (%ld runs)\n", blocks, 2 * blocks);
+	print_message("%ld blocks, each flipped, zeroed and forged: playback identical (%ld runs)\n", blocks, 3 * blocks);
 	/* skinplay itself, on a sample: exit 0, the same frames */
 	for (long b = 0; b < blocks; b += blocks / 8) {
 		memcpy(copy, orig, n);
@@ -258,6 +261,13 @@ static void test_beyond_repair_skips_or_holds(void **state)
 	free(d);
 }
 
+/* A forger's edit of block b: a byte changed, the CRC made good again. */
+static void forge(uint8_t *d, long b)
+{
+	d[b * BS + 60] ^= 1;
+	le_put32(d + b * BS + BS - 4, crc32_compute(d + b * BS, BS - 4));
+}
+
 static void test_repair_restores_the_image(void **state)
 {
 	(void)state;
@@ -290,22 +300,39 @@ static void test_repair_restores_the_image(void **state)
 	free(d);
 	d = load(bad, &m);
 	assert_memory_equal(d, r, n);
-	/* info advises repair only where repair would write: not here, nor for
-	 * a block altered with its CRC made good (the digest) */
+	/* info advises repair only where repair would write: not here */
 	const char *said = test_scratch("said.txt");
 	static const char *const beyond[] = { "not repairable as a whole (blocks beyond repair)", NULL };
 	assert_int_equal(test_run("%s info '%s' >'%s' 2>&1", test_tool_path("skintool"), bad, said), 2);
 	test_assert_contains_all(said, beyond);
 	assert_false(test_file_contains(said, "(skintool repair"));
+	/* a block altered with its CRC made good fails its own digest (version
+	 * 7): named, rebuilt from parity like a CRC-bad one beside it */
 	free(d);
 	d = load(image, &n);
-	d[f * BS + 60] ^= 1;
-	le_put32(d + f * BS + BS - 4, crc32_compute(d + f * BS, BS - 4));
+	forge(d, f);
 	d[(f + 1) * BS + 60] ^= 1;
 	save(bad, d, n);
-	static const char *const forged[] = { "the data would not match the image's digest", "digest: MISMATCH", NULL };
+	char named[64];
+	snprintf(named, sizeof named, "block %ld bad: content differs from its digest", f);
+	const char *const forged[] = { named, "(skintool repair", NULL };
 	assert_int_equal(test_run("%s info '%s' >'%s' 2>&1", test_tool_path("skintool"), bad, said), 2);
 	test_assert_contains_all(said, forged);
+	assert_int_equal(test_run("%s repair '%s' >/dev/null 2>&1", test_tool_path("skintool"), bad), 0);
+	free(r);
+	r = load(bad, &m);
+	free(d);
+	d = load(image, &n);
+	assert_memory_equal(r, d, n);
+	/* the digest block forged and its parity lost: the digests no longer
+	 * give the root, which info says, and repair refuses */
+	long digests = data_blocks - 1;
+	forge(d, digests);
+	d[group_parity(digests, p) * BS + 50] ^= 1;
+	save(bad, d, n);
+	static const char *const rootless[] = { "NOT the header's root", "digest: MISMATCH", NULL };
+	assert_int_equal(test_run("%s info '%s' >'%s' 2>&1", test_tool_path("skintool"), bad, said), 2);
+	test_assert_contains_all(said, rootless);
 	assert_false(test_file_contains(said, "(skintool repair"));
 	assert_int_equal(test_run("%s repair '%s' >/dev/null 2>&1", test_tool_path("skintool"), bad), 2);
 	free(d);

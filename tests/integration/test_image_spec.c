@@ -115,7 +115,7 @@ static void read_header(image *im)
 	assert_true(im->size >= 512);
 	const uint8_t *h = im->data + 24;
 	assert_memory_equal(h, "SKPIMAGE", 8);
-	assert_int_equal(le16(h + 8), 6);
+	assert_int_equal(le16(h + 8), 7);
 	assert_int_equal(le16(h + 10), 168);
 	assert_int_equal(spec_crc(h, 164), le32(h + 164));
 	im->bs = le32(h + 12);
@@ -145,6 +145,44 @@ static void read_header(image *im)
 	assert_memory_equal(framed(im, im->copy, 1, 1) + im->bs - 172, h, 168);
 }
 
+static void leaf_of(const uint8_t *b, uint32_t n, uint8_t leaf[16])
+{
+	sha256_ctx ctx;
+	uint8_t sum[32];
+	sha256_init(&ctx);
+	sha256_update(&ctx, b, n);
+	sha256_final(&ctx, sum);
+	memcpy(leaf, sum, 16);
+}
+
+/* Version 7: the digest blocks (kind 7) after the directory end the data
+ * blocks; a leaf for every block before them (block 0's zeros), then the
+ * root over the digest blocks' own leaves in the header's digest field. */
+static void check_block_digests(const image *im)
+{
+	uint32_t h = im->sec[2][0] + im->sec[2][1], per = (im->bs - 28) / 16;
+	uint8_t leaf[16], zero[16] = { 0 };
+	assert_int_equal(im->d - h, (h + per - 1) / per);
+	for (uint32_t b = 0; b < h; b++) {
+		const uint8_t *at = framed(im, h + b / per, 7, 0) + 24 + (b % per) * 16;
+		if (b == 0) {
+			assert_memory_equal(at, zero, 16);
+			continue;
+		}
+		leaf_of(block(im, b), im->bs, leaf);
+		assert_memory_equal(at, leaf, 16);
+	}
+	sha256_ctx ctx;
+	uint8_t root[32];
+	sha256_init(&ctx);
+	for (uint32_t b = h; b < im->d; b++) {
+		leaf_of(block(im, b), im->bs, leaf);
+		sha256_update(&ctx, leaf, 16);
+	}
+	sha256_final(&ctx, root);
+	assert_memory_equal(root, im->data + 24 + 132, 32);
+}
+
 static void check_parity_and_digest(const image *im)
 {
 	uint8_t *acc = malloc(im->bs);
@@ -157,13 +195,7 @@ static void check_parity_and_digest(const image *im)
 		assert_memory_equal(acc, block(im, im->d + g), im->bs);
 	}
 	free(acc);
-	sha256_ctx ctx;
-	uint8_t digest[32];
-	sha256_init(&ctx);
-	for (uint32_t b = 1; b < im->d; b++)
-		sha256_update(&ctx, block(im, b), im->bs);
-	sha256_final(&ctx, digest);
-	assert_memory_equal(digest, im->data + 24 + 132, 32);
+	check_block_digests(im);
 	for (uint32_t i = 0; i < im->sec[2][1]; i++)
 		assert_memory_equal(framed(im, im->sec[2][0] + i, 4, 0) + 24, framed(im, im->dir_copy + i, 4, 1) + 24,
 				    im->bs - 28);

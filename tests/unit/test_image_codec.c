@@ -24,6 +24,7 @@
 #include "encode.h"
 #include "encode_segment.h"
 #include "image_stream.h"
+#include "image_survey.h"
 #include "image_write.h"
 #include "test_box.h"
 
@@ -100,7 +101,7 @@ static void next_id(uint8_t id[SKP_IMAGE_ID_BYTES])
 
 /* The image: the tiny arm's body and the compressed clip; parity: data
  * blocks a group, -1 none. */
-static void pack(int parity)
+static void pack_version(int parity, int version)
 {
 	static skp_mem_blockdev mb;
 	uint8_t id[SKP_IMAGE_ID_BYTES];
@@ -110,12 +111,18 @@ static void pack(int parity)
 	next_id(id);
 	assert_int_equal(skp_image_write_begin(&wr, &dev, 1, id, &s, &err), SKP_OK);
 	wr.parity_group = parity;
+	wr.hdr.version = (uint16_t)version;
 	assert_int_equal(skp_image_write_bind(&wr, &m, &w, NULL, 0, &err), SKP_OK);
 	skp_coded_clip k = { &enc.clip, enc.bytes, (uint32_t)enc.nbytes, enc.offsets, enc.segments, FIRST,
 			     0.01f, 0.1f, 0.01f, 1.0f };
 	assert_int_equal(skp_image_clip_coded(&wr, "coded", 120.0f, &k, &err), SKP_OK);
 	assert_int_equal(skp_image_write_end(&wr, &err), SKP_OK);
 	img_size = mb.size;
+}
+
+static void pack(int parity)
+{
+	pack_version(parity, SKP_IMAGE_VERSION);
 }
 
 static void open_clip(void)
@@ -143,7 +150,7 @@ static void test_stream_is_the_codec_bit_for_bit(void **state)
 	pack(0);
 	open_clip();
 	const skp_image_clip *c = &im.clip[0];
-	assert_int_equal(im.hdr.version, 6);
+	assert_int_equal(im.hdr.version, 7);
 	assert_int_equal(c->coded, 1);
 	assert_int_equal(c->frame_count, FRAMES);
 	assert_int_equal(c->segments, enc.segments);
@@ -327,6 +334,57 @@ static void test_version_4_still_reads(void **state)
 	}
 }
 
+/* Frames played as packed, until the first that is lost or differs. */
+static int frames_as_packed(void)
+{
+	static amc_frame f;
+	skp_error err;
+	int i = 0;
+	skp_clip_stream_seek(&st, 0);
+	for (; i < FRAMES; i++)
+		if (skp_clip_stream_next(&st, &f, &err) != 1 || memcmp(f.value, want[i], sizeof(float) * (size_t)s.dof_count))
+			break;
+	return i;
+}
+
+/* A frames block forged (a byte changed, its CRC made good) in an image
+ * without parity: version 7 holds the frames it carried (the block fails
+ * its digest: lost, never played wrong); version 6 (no block digests,
+ * still read) plays the forgery, and only the whole-image digest says so. */
+static void test_forged_block_held_not_played(void **state)
+{
+	(void)state;
+	static uint8_t buf[BS];
+	skp_image_verdict v;
+	for (int version = 6; version <= 7; version++) {
+		pack_version(-1, version);
+		open_clip();
+		assert_int_equal(im.hdr.version, version);
+		assert_int_equal(im.digests, version == 7);
+		assert_int_equal(frames_as_packed(), FRAMES);
+		skp_image_verify(&im, buf, NULL, NULL, &v);
+		assert_true(v.bad == 0 && v.digest == 1);
+		uint8_t *b = img + (size_t)im.clip[0].frames_first * BS;
+		b[SKP_IMAGE_BLOCK_HDR + SKP_IMAGE_FRAMES_COUNT + 40] ^= 0x10;
+		skp_block_seal(b, BS);
+		open_clip();
+		int played = frames_as_packed();
+		skp_image_verify(&im, buf, NULL, NULL, &v);
+		printf("version %d, first frames block forged: %d of %d frames as packed; verify: %ld bad, digest %d\n",
+		       version, played, FRAMES, v.bad, v.digest);
+		assert_true(played < FRAMES);
+		if (version == 7) {
+			static amc_frame f;
+			skp_error err;
+			skp_clip_stream_seek(&st, 0);
+			assert_int_equal(skp_clip_stream_next(&st, &f, &err), SKP_CLIP_LOST);
+			assert_true(v.bad == 1 && v.beyond == 1 && v.digest == -1);
+		} else {
+			assert_true(v.bad == 0 && v.digest == 0);
+		}
+	}
+}
+
 /* The checksum of the host's decode (x86-64, GCC 12): every board's must
  * equal it. */
 #define CODEC_SYNTH_SUM 0x4c1d14a7u
@@ -374,6 +432,7 @@ int main(void)
 		cmocka_unit_test(test_damaged_block_rebuilt_or_its_segments_lost),
 		cmocka_unit_test(test_forged_stream_refused_or_on_grid),
 		cmocka_unit_test(test_version_4_still_reads),
+		cmocka_unit_test(test_forged_block_held_not_played),
 		cmocka_unit_test(test_decode_bits_are_the_host_s),
 	};
 	return cmocka_run_group_tests(tests, setup, teardown);

@@ -208,7 +208,7 @@ static void test_parity_layout(void **state)
 	pack_with(3, NULL, 0);
 	assert_int_equal(open_image(img_size, &err), SKP_OK);
 	const skp_image_header *h = &im.hdr;
-	assert_int_equal(h->version, 6);
+	assert_int_equal(h->version, 7);
 	assert_int_equal(h->parity_blocks, skp_parity_blocks(h->data_blocks, 0));
 	assert_int_equal(h->block_count, h->copy_block + 1);
 	assert_int_equal(h->dir_copy, h->data_blocks + h->parity_blocks);
@@ -334,7 +334,8 @@ static void test_two_bad_blocks_in_a_group(void **state)
 	assert_int_equal(im.rebuilt, 1);
 }
 
-/* Block 0 gone: the header comes from the copy at the end. */
+/* Block 0 lost: the header from its copy; the copy lost too: block 0
+ * rebuilt from parity; one more block of group 0, or no parity: refused. */
 static void test_header_copy(void **state)
 {
 	(void)state;
@@ -346,7 +347,18 @@ static void test_header_copy(void **state)
 	assert_int_equal(open_image(img_size, &err), SKP_OK);
 	assert_true(im.header_from_copy);
 	assert_int_equal(decoded_hash(), ref);
-	/* both gone: refused, block 0 named */
+	/* both gone (issue 45): block 0 rebuilt from parity group 0, whose
+	 * layout the blocks' own frames give */
+	memset(img + img_size - BS, 0, BS);
+	assert_int_equal(decoded_hash(), ref);
+	assert_true(im.header_from_parity);
+	/* ... and another block of group 0 too: refused, block 0 named */
+	memset(img + (size_t)wr.hdr.parity_blocks * BS, 0, BS);
+	assert_int_equal(open_image(img_size, &err), SKP_ERR_CORRUPT);
+	assert_int_equal(err.block, 0);
+	/* without parity: both gone is refused likewise */
+	pack_with(7, NULL, -1);
+	memset(img, 0xff, BS);
 	memset(img + img_size - BS, 0, BS);
 	assert_int_equal(open_image(img_size, &err), SKP_ERR_CORRUPT);
 	assert_int_equal(err.block, 0);
@@ -412,9 +424,9 @@ static void test_copy_wherever_the_storage_ends(void **state)
 		assert_int_equal(decoded_hash(), ref);
 		assert_int_equal(im.missing, lost);
 	}
-	/* into the data: refused (a partial directory block is short) */
+	/* into the data: refused (a partial last data block, a digest block, is short) */
 	img_size = (size_t)wr.hdr.data_blocks * BS - 1;
-	expect_refusal("clip directory section: short read", SKP_ERR_CORRUPT);
+	expect_refusal("block digests section: short read (image truncated)", SKP_ERR_CORRUPT);
 	img_size = (size_t)(wr.hdr.data_blocks - 1) * BS;
 	expect_refusal("image truncated", SKP_ERR_CORRUPT);
 }
