@@ -17,6 +17,7 @@
 #include "cli_common.h"
 #include "cli_opts.h"
 #include "bench_image_codec.h"
+#include "bench_image_digests.h"
 #include "show_source.h"
 #include "clock.h"
 #include "fk.h"
@@ -214,6 +215,7 @@ int cmd_bench_image(int argc, char **argv)
 	print_parity(&img);
 	if (img.im.hdr.parity_blocks)
 		time_with_rebuild(path, &img, runs, total_ms(&best));
+	bench_block_digests(&img, runs);
 	static skel s;
 	if (skp_image_load_skel(&img.im, &s, &err) != SKP_OK) {
 		cli_error(path, &err);

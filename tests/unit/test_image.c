@@ -65,6 +65,13 @@ static void test_sha256_vectors(void **state)
 		      "248d6a61d20638b8e5c026930c3e6039a33ce45964ff2167f6ecedd419db06c1");
 	assert_sha256("abcdefghbcdefghicdefghijdefghijkefghijklfghijklmghijklmnhijklmnoijklmnopjklmnopqklmnopqrlmnopqrsmnopqrstnopqrstu",
 		      13, "cf5b16a778af8380036ce59e7b0492370b249b11e8f07a51afac45037afee9d1");
+	/* a million 'a' (FIPS 180-2's long vector) in pieces that make whole
+	 * 64-byte blocks hashed where they lie and partial ones buffered */
+	static char million[1000001];
+	memset(million, 'a', 1000000);
+	static const size_t pieces[] = { 64, 1000, 4096, 1000000 };
+	for (size_t i = 0; i < sizeof pieces / sizeof pieces[0]; i++)
+		assert_sha256(million, pieces[i], "cdc76e5c9914fb9281a1c7e284d73e67f1809a48a497200e046d39ccc7112cd0");
 }
 
 /* Version 3 keeps positions to half a 16-bit step of the bounds on each
