@@ -6,6 +6,7 @@
 #include "modes.h"
 #include "skp_format.h"
 #include "text_tokens.h"
+#include "utc_time.h"
 
 #define STR_(x) #x
 #define STR(x) STR_(x)
@@ -32,6 +33,7 @@ void board_config_defaults(board_config *c)
 	c->blend_ms = BOARD_BLEND_MS;
 	c->root = BOARD_ROOT_IN_PLACE;
 	c->loop = BOARD_LOOP_SHOW;
+	c->show_buttons = 1;
 	for (int i = 0; i < CONTROL_BTN_COUNT; i++) {
 		c->button[i].active_low = 1;
 		c->button[i].bias = BOARD_BIAS_PULL_UP;
@@ -313,6 +315,32 @@ static skp_status skin_key(board_config *c, const ini_entry *e, skp_error *err)
 	return skp_fail(err, SKP_ERR_SYNTAX, e->line, "unknown key '%s' in [skin] (threads, split_verts, streams)", e->key);
 }
 
+/* [show]'s keys for synchronised installations: sync, epoch, buttons. */
+static skp_status show_sync_key(board_config *c, const ini_entry *e, skp_error *err)
+{
+	static const char *const sync_words[] = { "off", "clock" }, *const on_off[] = { "off", "on" };
+	int w;
+	if (tok_ieq(e->key, "sync")) {
+		if ((w = pick(e->value, sync_words, 2)) < 0)
+			return bad(err, e, "off or clock");
+		c->sync = w;
+		return SKP_OK;
+	}
+	if (tok_ieq(e->key, "epoch")) {
+		if (utc_time_parse(e->value, &c->epoch_ns) < 0)
+			return bad(err, e, "an ISO 8601 UTC time such as 2026-01-01T00:00:00Z");
+		return SKP_OK;
+	}
+	if (tok_ieq(e->key, "buttons")) {
+		if ((w = pick(e->value, on_off, 2)) < 0)
+			return bad(err, e, "on or off");
+		c->show_buttons = w;
+		return SKP_OK;
+	}
+	return skp_fail(err, SKP_ERR_SYNTAX, e->line,
+			"unknown key '%s' in [show] (speed, blend_ms, root, loop, sync, epoch, buttons)", e->key);
+}
+
 static skp_status show_key(board_config *c, const ini_entry *e, skp_error *err)
 {
 	long v;
@@ -338,7 +366,7 @@ static skp_status show_key(board_config *c, const ini_entry *e, skp_error *err)
 			return bad(err, e, "show or clip");
 		return SKP_OK;
 	}
-	return skp_fail(err, SKP_ERR_SYNTAX, e->line, "unknown key '%s' in [show] (speed, blend_ms, root, loop)", e->key);
+	return show_sync_key(c, e, err);
 }
 
 /* "button.algo" -> CONTROL_BTN_ALGO; -1 when not a button section. */

@@ -26,6 +26,13 @@
  *              travel taken out; travel: kept, the camera follows)
  *              loop = show | clip   (show: an image's clips play in turn,
  *              the show loops; clip: a clip loops until NEXT)
+ *              sync = off | clock   (clock: the show's position is the
+ *              wall clock's, so that devices on synchronised clocks play
+ *              in lock-step; skinplay --sync)
+ *              epoch = 2026-01-01T00:00:00Z   (ISO 8601 UTC: the show's
+ *              start; default the Unix epoch; skinplay --epoch)
+ *              buttons = on | off   (off: PLAY and NEXT do nothing, for a
+ *              synced installation; ALGO and VIEW still switch)
  *
  * A kiosk never stops over its config: a mistake (an unknown section or
  * key, a bad value, a line that is not `key = value`, a UTF-8 byte order
@@ -140,6 +147,9 @@ typedef struct board_config {
 	int blend_ms;            /* [show] blend_ms */
 	int root;                /* board_root */
 	int loop;                /* board_loop */
+	int sync;                /* [show] sync: 1 clock, 0 off */
+	int64_t epoch_ns;        /* [show] epoch, ns since the Unix epoch */
+	int show_buttons;        /* [show] buttons: 0 off (PLAY and NEXT do nothing) */
 	int problem_count;       /* all the mistakes found, also past the list */
 	board_problem problem[BOARD_MAX_PROBLEMS];
 } board_config;

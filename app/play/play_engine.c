@@ -211,3 +211,9 @@ void play_pause(play_engine *e, int paused, uint64_t now)
 {
 	play_clock_pause(&e->clock, paused, now);
 }
+
+void play_rejoin(play_engine *e, double clip_time, uint64_t now)
+{
+	begin_fade(e, &e->local, play_clock_active(&e->clock, now));
+	play_set_clip_time(e, clip_time, now);
+}

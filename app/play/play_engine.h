@@ -81,6 +81,11 @@ skp_status play_sample_at(play_engine *e, double clip_time, skp_error *err);
  * clip (skinplay --start); the next play_update shows it. */
 void play_set_clip_time(play_engine *e, double clip_time, uint64_t now);
 
+/* Moves the clip's clock to clip_time at time now as play_set_clip_time
+ * does, crossfading from the pose shown: a device that was off the show's
+ * clock (a late start, a pause, a stall) joins it without a jump. */
+void play_rejoin(play_engine *e, double clip_time, uint64_t now);
+
 /* Pause (1) or resume (0) at time now: clip and fade stand still. */
 void play_pause(play_engine *e, int paused, uint64_t now);
 

@@ -254,7 +254,8 @@ static void hud_text(skinplay *p, render_frame *f, double fps, char lines[3][128
 		snprintf(clock, sizeof clock, "  SHOW %.2f S  IMAGE %ld", (double)p->now * 1e-9, p->shown + 1);
 	else if (fps > 0)
 		snprintf(clock, sizeof clock, "  CLOCK %+.3f S", p->drift);
-	snprintf(lines[2], 128, "%s%s%s", rate, clock, p->kiosk.ps.playing ? "" : "  PAUSED");
+	snprintf(lines[2], 128, "%s%s%s%s", rate, clock, p->kiosk.ps.playing ? "" : "  PAUSED",
+		 p->o.sync != 1 ? "" : p->sync_unsynced ? "  SYNC: OWN CLOCK" : "  SYNC");
 	f->hud[0] = lines[0];
 	f->hud[1] = lines[1];
 	f->hud[2] = p->o.hud_fps ? lines[2] : NULL;
@@ -356,6 +357,13 @@ static int draw_one(skinplay *p, double fps, render_frame *f)
 static void apply_input(skinplay *p, render_frame *f, unsigned act)
 {
 	const controls_state *s = &p->kiosk.ps;
+	unsigned show_acts = SKINPLAY_ACT_PLAY | SKINPLAY_ACT_RESTART | SKINPLAY_ACT_CLIP;
+	if ((act & show_acts) && !sync_button(p, act)) {
+		/* [show] buttons = off: the clock keeps the show */
+		p->kiosk.ps.playing = 1;
+		p->kiosk.ps.clip = p->show.clip;
+		act &= ~show_acts;
+	}
 	p->o.algo = (skin_algo)s->algo;
 	p->o.view = f->view = (render_view)s->view;
 	p->o.gpu = s->gpu;
@@ -393,6 +401,7 @@ static int play(skinplay *p)
 	int quit = 0, r = 1;
 	/* headless: the clip once, frames held by a pause included, so a
 	 * scripted pause cannot keep a batch run going for ever */
+	sync_begin(p);
 	long budget = p->o.frames >= 0 ? p->o.frames : p->headless ? clips_pass_frames(p) : -1;
 	p->budget = budget;
 	p->eng.cfg.loop = budget < 0 || p->o.frames >= 0 || clips_show_loops(p);
@@ -406,6 +415,7 @@ static int play(skinplay *p)
 		p->now = frame_time(p, shown);
 		if (act)
 			apply_input(p, &f, act);
+		sync_frame(p, shown);
 		uint64_t t0 = clock_now_ns();
 		if (clips_pose(p) < 0) {
 			r = -1;

@@ -75,9 +75,33 @@ typedef struct skinplay {
 	float diff_value[SKP_MAX_VERTS]; /* the difference view's, per vertex */
 	char closeup_title[32], closeup_note[48];
 	char closeup_apart[48];
+	/* --sync=clock (skinplay_sync.c) */
+	int64_t sync_frame0;     /* headless: the display frame, counted from the epoch, of frame 0 */
+	int sync_started;        /* the first frame took the clock's clip and time */
+	int sync_unsynced;       /* the kernel says the wall clock is not synchronised */
+	double sync_last;        /* the clip time set last, at sync_last_now */
+	uint64_t sync_last_now;
+	uint64_t sync_detour_until; /* a local NEXT plays off the clock until then */
+	int sync_detour;         /* a local NEXT was pressed: the detour starts */
+	unsigned long sync_joins;   /* joins of the clock after a start, pause or stall */
+	skp_ratelimit sync_said;
 	int reload;        /* SIGHUP, or a slot changed while waiting: start over (main re-executes) */
 	int no_show;       /* no image slot holds a show that can play */
 } skinplay;
+
+/* --sync=clock: the show's position from the wall clock (app/play/
+ * play_sync.h). sync_begin once before the first frame (says what it
+ * follows, and whether the kernel says the clock is synchronised);
+ * sync_frame each frame before the pose: the clock's clip and time, a
+ * crossfade when the device was off the clock; sync_button: a local PLAY
+ * or NEXT (0: the board's [show] buttons = off keeps the clock). */
+void sync_begin(skinplay *p);
+void sync_frame(skinplay *p, long n);
+int sync_button(skinplay *p, unsigned act);
+
+/* Selects clip c of the image as the show does (the next that can play
+ * when it cannot), crossfading from the pose shown. */
+void clips_select(skinplay *p, int c);
 
 /* Opens the first clip (--clip, --start) and computes its first pose into
  * p->skin.pose; returns the lowest point of the body in it (the floor), or

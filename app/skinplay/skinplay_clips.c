@@ -133,6 +133,11 @@ static void select_clip(skinplay *p, int c)
 	hold_bind_pose(p);
 }
 
+void clips_select(skinplay *p, int c)
+{
+	select_clip(p, c);
+}
+
 /* --start FRAME: the clip's clock set to that frame's time. */
 static int start_at_frame(skinplay *p, const char *what)
 {
@@ -228,6 +233,9 @@ float clips_first(skinplay *p)
 	skp_ratelimit_init(&p->skip_said, SKP_RATELIMIT_HOUR);
 	skp_ratelimit_init(&p->fail_said, SKP_RATELIMIT_HOUR);
 	play_init(&p->eng, &p->body.skel, &cfg);
+	/* synchronised devices hold the root at one place whichever clip each
+	 * started with */
+	p->eng.have_origin = p->o.sync == 1;
 	p->now = 0;
 	if (open_first(p) < 0)
 		return NAN;

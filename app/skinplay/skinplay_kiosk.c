@@ -88,6 +88,10 @@ static void apply_board(const board_config *b, play_opts *o, int argc, char **ar
 		o->root = b->root;
 	if (o->loop < 0)
 		o->loop = b->loop;
+	if (o->sync < 0)
+		o->sync = b->sync;
+	if (!o->epoch_given)
+		o->epoch_ns = b->epoch_ns;
 }
 
 /* What neither the command line nor a board said. */
@@ -101,6 +105,8 @@ static void playback_defaults(play_opts *o)
 		o->root = BOARD_ROOT_IN_PLACE;
 	if (o->loop < 0)
 		o->loop = BOARD_LOOP_SHOW;
+	if (o->sync < 0)
+		o->sync = 0;
 	if (o->yaw_mode < 0)
 		o->yaw_mode = 0;
 }
@@ -116,6 +122,7 @@ int skinplay_kiosk_setup(skinplay_kiosk *k, play_opts *o, int argc, char **argv)
 	if (k->have_board)
 		apply_board(&k->board, o, argc, argv);
 	playback_defaults(o);
+	o->show_buttons = k->board.show_buttons;
 	if (o->hud < 0)
 		o->hud = BOARD_HUD_ENGINEER;
 	if (o->threads < 0)

@@ -7,13 +7,14 @@
 
 #include "board_config.h"
 #include "cli_common.h"
+#include "utc_time.h"
 
 enum {
 	OPT_IMAGE = 1, OPT_CLIP, OPT_ASF, OPT_AMC, OPT_BVH, OPT_MESH, OPT_ALGO, OPT_SKIN, OPT_PLATFORM, OPT_DEVICE,
 	OPT_ROTATION, OPT_SIZE, OPT_FRAMES, OPT_START, OPT_OUT, OPT_EVERY, OPT_SHEET, OPT_VIEW, OPT_FPS,
 	OPT_HUD_FPS, OPT_REPORT_MEMORY, OPT_BOARD, OPT_INPUT, OPT_PRINT_PLATFORM, OPT_HUD, OPT_REPORT_TIMING,
 	OPT_THREADS, OPT_STREAMS, OPT_DISPLAY_RATE, OPT_SPEED, OPT_BLEND, OPT_ROOT, OPT_YAW, OPT_LOOP, OPT_POSE_DIGEST,
-	OPT_BACKGROUND
+	OPT_BACKGROUND, OPT_SYNC, OPT_EPOCH
 };
 
 static const cli_opt play_opts_table[] = {
@@ -61,6 +62,11 @@ static const cli_opt play_opts_table[] = {
 	  "travel: kept, the camera follows (default: the board's [show] root, else in-place)" },
 	{ "loop", 0, "show|clip", OPT_LOOP, "show: an image's clips play in turn and the show loops (headless: the show "
 	  "once); clip: the clip loops until NEXT (default: the board's [show] loop, else show)" },
+	{ "sync", 0, "off|clock", OPT_SYNC, "clock: the show's position is the wall clock's, (now - epoch) modulo the "
+	  "show's length, so that devices on synchronised clocks (chrony, linuxptp) play in lock-step; headless, the "
+	  "virtual display starts at the wall clock's time (default: the board's [show] sync, else off)" },
+	{ "epoch", 0, "TIME", OPT_EPOCH, "with --sync=clock: when the show began, ISO 8601 UTC such as "
+	  "2026-01-01T00:00:00Z (default: the board's [show] epoch, else 1970-01-01T00:00:00Z)" },
 	{ "yaw", 0, "DEG|auto", OPT_YAW, "turn the camera DEG degrees about the vertical from the usual view; auto: to "
 	  "the clip's mean facing (default: the board's [display] yaw, else auto)" },
 	{ "hud", 0, "MODE", OPT_HUD, "visitor, engineer or off (default: the board's [display] hud, else engineer)" },
@@ -248,6 +254,17 @@ static int take(void *ctx, int id, const char *v)
 	case OPT_FPS: return take_rate(o, v);
 	case OPT_DISPLAY_RATE: case OPT_SPEED: case OPT_BLEND: case OPT_ROOT: case OPT_LOOP: case OPT_YAW:
 		return take_timing(o, id, v);
+	case OPT_SYNC:
+		if (strcmp(v, "off") && strcmp(v, "clock"))
+			return fprintf(stderr, PROG ": --sync expects off or clock, got '%s'\n", cli_shown(v)), -1;
+		o->sync = !strcmp(v, "clock");
+		return 0;
+	case OPT_EPOCH:
+		if (utc_time_parse(v, &o->epoch_ns) < 0)
+			return fprintf(stderr, PROG ": --epoch expects an ISO 8601 UTC time such as 2026-01-01T00:00:00Z, "
+				       "got '%s'\n", cli_shown(v)), -1;
+		o->epoch_given = 1;
+		return 0;
 	case OPT_REPORT_MEMORY: o->report_memory = 1; return 0;
 	case OPT_REPORT_TIMING: o->report_timing = 1; return 0;
 	case OPT_POSE_DIGEST: o->pose_digest = 1; return 0;
@@ -320,6 +337,7 @@ int play_parse(play_opts *o, int argc, char **argv)
 	o->blend_ms = -1;
 	o->root = -1;
 	o->loop = -1;
+	o->sync = -1;
 	o->yaw_mode = -1;
 	int rc = cli_parse(&play_command, o, argc, argv, 1);
 	if (rc != 0)

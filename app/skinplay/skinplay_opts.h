@@ -43,6 +43,10 @@ typedef struct play_opts {
 	int blend_ms;            /* crossfade at loops and clip changes; -1: the board's */
 	int root;                /* board_root; -1: the board's (else in place) */
 	int loop;                /* board_loop; -1: the board's (else show) */
+	int sync;                /* 1: the show follows the wall clock; 0 off; -1 the board's (else off) */
+	int64_t epoch_ns;        /* --sync=clock: the show's start, ns since the Unix epoch */
+	int epoch_given;         /* --epoch given: it wins over the board's */
+	int show_buttons;        /* the board's [show] buttons: 0, PLAY and NEXT do nothing */
 	int yaw_mode;            /* -1: the board's (else auto), 0 auto, 1 yaw_deg */
 	float yaw_deg;
 } play_opts;

@@ -160,6 +160,12 @@ static void test_show_section_and_yaw(void **state)
 	assert_int_equal(cfg.loop, BOARD_LOOP_CLIP);
 	assert_int_equal(cfg.yaw_mode, 1);
 	assert_true(cfg.yaw_deg == -90.0f);
+	assert_int_equal(cfg.sync, 0);
+	assert_int_equal(cfg.show_buttons, 1);
+	assert_int_equal(parse("[show]\nsync = clock\nepoch = 2026-01-01T00:00:10.5Z\nbuttons = off\n", &err), SKP_OK);
+	assert_int_equal(cfg.sync, 1);
+	assert_true(cfg.epoch_ns == 1767225610500000000LL);
+	assert_int_equal(cfg.show_buttons, 0);
 	assert_int_equal(parse("[display]\nyaw = AUTO\n", &err), SKP_OK);
 	assert_int_equal(cfg.yaw_mode, 0);
 	parse_file("board/rpi4/board.ini");
@@ -233,7 +239,11 @@ static void test_mistakes_name_line_and_key(void **state)
 		{ "[show]\nblend_ms = 20000\n", 2, "key 'blend_ms' in [show]: expected a crossfade of 0..10000 ms" },
 		{ "[show]\nroot = walking\n", 2, "key 'root' in [show]: expected in-place or travel, found 'walking'" },
 		{ "[show]\nloop = yes\n", 2, "key 'loop' in [show]: expected show or clip, found 'yes'" },
-		{ "[show]\nshuffle = on\n", 2, "unknown key 'shuffle' in [show] (speed, blend_ms, root, loop)" },
+		{ "[show]\nshuffle = on\n", 2, "unknown key 'shuffle' in [show] (speed, blend_ms, root, loop, sync, epoch, buttons)" },
+		{ "[show]\nsync = ntp\n", 2, "key 'sync' in [show]: expected off or clock, found 'ntp'" },
+		{ "[show]\nepoch = 2026-01-01 00:00\n", 2,
+		  "key 'epoch' in [show]: expected an ISO 8601 UTC time such as 2026-01-01T00:00:00Z" },
+		{ "[show]\nbuttons = maybe\n", 2, "key 'buttons' in [show]: expected on or off, found 'maybe'" },
 		{ "[display]\nyaw = north\n", 2, "key 'yaw' in [display]: expected auto or degrees" },
 		{ "[display]\n\nalgo = fast\n", 3,
 		  "key 'algo' in [display]: expected lbs, dqbs, dqbs-fixed or compare, found 'fast'" },
