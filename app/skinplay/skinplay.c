@@ -357,13 +357,7 @@ static int draw_one(skinplay *p, double fps, render_frame *f)
 static void apply_input(skinplay *p, render_frame *f, unsigned act)
 {
 	const controls_state *s = &p->kiosk.ps;
-	unsigned show_acts = SKINPLAY_ACT_PLAY | SKINPLAY_ACT_RESTART | SKINPLAY_ACT_CLIP;
-	if ((act & show_acts) && !sync_button(p, act)) {
-		/* [show] buttons = off: the clock keeps the show */
-		p->kiosk.ps.playing = 1;
-		p->kiosk.ps.clip = p->show.clip;
-		act &= ~show_acts;
-	}
+	act = sync_button(p, act);
 	p->o.algo = (skin_algo)s->algo;
 	p->o.view = f->view = (render_view)s->view;
 	p->o.gpu = s->gpu;
@@ -377,16 +371,6 @@ static void apply_input(skinplay *p, render_frame *f, unsigned act)
 	}
 	if (act & (SKINPLAY_ACT_RESTART | SKINPLAY_ACT_CLIP))
 		clips_restart(p, act & SKINPLAY_ACT_CLIP ? s->clip : -1);
-}
-
-/* Frame n's time: headless, n / display rate exactly (reproducible); on a
- * screen, the monotonic clock since the first frame. */
-static uint64_t frame_time(skinplay *p, long n)
-{
-	uint64_t wall = clock_now_ns();
-	if (n == 0)
-		p->wall0 = wall;
-	return p->headless ? play_display_time(n, p->o.display_rate) : wall - p->wall0;
 }
 
 static int play(skinplay *p)
@@ -412,7 +396,7 @@ static int play(skinplay *p)
 			p->reload = !(act & SKINPLAY_ACT_QUIT);
 			break;
 		}
-		p->now = frame_time(p, shown);
+		p->now = skinplay_frame_time(p, shown);
 		if (act)
 			apply_input(p, &f, act);
 		sync_frame(p, shown);

@@ -93,11 +93,16 @@ typedef struct skinplay {
  * play_sync.h). sync_begin once before the first frame (says what it
  * follows, and whether the kernel says the clock is synchronised);
  * sync_frame each frame before the pose: the clock's clip and time, a
- * crossfade when the device was off the clock; sync_button: a local PLAY
- * or NEXT (0: the board's [show] buttons = off keeps the clock). */
+ * crossfade when the device was off the clock; sync_button: the button
+ * actions left to do (PLAY and NEXT taken out when the board's [show]
+ * buttons = off keeps the clock; else a NEXT is a local detour). */
 void sync_begin(skinplay *p);
 void sync_frame(skinplay *p, long n);
-int sync_button(skinplay *p, unsigned act);
+unsigned sync_button(skinplay *p, unsigned act);
+
+/* Frame n's time: headless, n / display rate exactly (reproducible); on a
+ * screen, the monotonic clock since the first frame. */
+uint64_t skinplay_frame_time(skinplay *p, long n);
 
 /* Selects clip c of the image as the show does (the next that can play
  * when it cannot), crossfading from the pose shown. */

@@ -1,4 +1,6 @@
-/* skinplay's show on the wall clock (--sync=clock, board.ini [show] sync):
+/* The frame's clocks: its time on the monotonic clock (or the virtual
+ * display's), and the show on the wall clock (--sync=clock, board.ini
+ * [show] sync):
  * each frame the clock says which clip and how far into it
  * (app/play/play_sync.h); the engine is set there, so every device
  * playing the same image on a synchronised clock shows the same pose at
@@ -133,12 +135,25 @@ void sync_frame(skinplay *p, long n)
 	p->sync_started = 1;
 }
 
-int sync_button(skinplay *p, unsigned act)
+unsigned sync_button(skinplay *p, unsigned act)
 {
-	if (p->o.sync != 1)
-		return 1;
-	if (!p->o.show_buttons)
-		return 0;
+	const unsigned show_acts = SKINPLAY_ACT_PLAY | SKINPLAY_ACT_RESTART | SKINPLAY_ACT_CLIP;
+	if (p->o.sync != 1 || !(act & show_acts))
+		return act;
+	if (!p->o.show_buttons) {
+		/* [show] buttons = off: the clock keeps the show */
+		p->kiosk.ps.playing = 1;
+		p->kiosk.ps.clip = p->show.clip;
+		return act & ~show_acts;
+	}
 	p->sync_detour = (act & (SKINPLAY_ACT_RESTART | SKINPLAY_ACT_CLIP)) != 0;
-	return 1;
+	return act;
+}
+
+uint64_t skinplay_frame_time(skinplay *p, long n)
+{
+	uint64_t mono = clock_now_ns();
+	if (n == 0)
+		p->wall0 = mono;
+	return p->headless ? play_display_time(n, p->o.display_rate) : mono - p->wall0;
 }
