@@ -143,7 +143,7 @@ test: deps
 	hs=$$(sed -n 's/^emb: sampler checksum //p' $(OUT)/emb_host.log); \
 	ts=$$(sed -n 's/^emb: sampler checksum //p' $(OUT)/emb_target.log); \
 	if [ "$$hs" != "$$ts" ]; then echo "emb: FAILED: $(BOARD) sampler checksum '$$ts' != host '$$hs'"; fail=1; \
-	elif [ -n "$$hs" ]; then echo "emb: $(BOARD) sampler checksum $$ts equals the host's (app/play: poses by time)"; fi; \
+	elif [ -n "$$hs" ]; then echo "emb: $(BOARD) sampler checksum $$ts equals the host's (app/play: poses by time, and on a wall clock)"; fi; \
 	hc=$$(sed -n 's/^emb: codec checksum //p' $(OUT)/emb_host.log); \
 	tc=$$(sed -n 's/^emb: codec checksum //p' $(OUT)/emb_target.log); \
 	if [ "$$hc" != "$$tc" ]; then echo "emb: FAILED: $(BOARD) codec checksum '$$tc' != host '$$hc'"; fail=1; \

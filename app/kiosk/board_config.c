@@ -1,4 +1,5 @@
 #include "board_config.h"
+#include "board_keys.h"
 
 #include <string.h>
 
@@ -6,13 +7,14 @@
 #include "modes.h"
 #include "skp_format.h"
 #include "text_tokens.h"
-#include "utc_time.h"
 
 #define STR_(x) #x
 #define STR(x) STR_(x)
 #define DISPLAY_MAX_TEXT STR(SKP_DISPLAY_MAX_W) "x" STR(SKP_DISPLAY_MAX_H)
 
-typedef enum { SEC_NONE, SEC_DISPLAY, SEC_INPUT, SEC_BUTTON, SEC_STORAGE, SEC_LIMITS, SEC_SKIN, SEC_SHOW } section_kind;
+typedef enum {
+	SEC_NONE, SEC_DISPLAY, SEC_INPUT, SEC_BUTTON, SEC_STORAGE, SEC_LIMITS, SEC_SKIN, SEC_SHOW, SEC_WALL, SEC_CAMERA
+} section_kind;
 
 /* Per-button timing given in the file; -1 inherits [input]'s. */
 typedef struct pending {
@@ -34,6 +36,8 @@ void board_config_defaults(board_config *c)
 	c->root = BOARD_ROOT_IN_PLACE;
 	c->loop = BOARD_LOOP_SHOW;
 	c->show_buttons = 1;
+	c->cam_pitch_deg = CAMERA_PITCH_DEFAULT_DEG;
+	c->cam_distance = 1.0f;
 	for (int i = 0; i < CONTROL_BTN_COUNT; i++) {
 		c->button[i].active_low = 1;
 		c->button[i].bias = BOARD_BIAS_PULL_UP;
@@ -42,7 +46,7 @@ void board_config_defaults(board_config *c)
 	}
 }
 
-static skp_status bad(skp_error *err, const ini_entry *e, const char *expected)
+skp_status board_bad(skp_error *err, const ini_entry *e, const char *expected)
 {
 	return skp_fail(err, SKP_ERR_SYNTAX, e->line, "key '%s' in [%s]: expected %s, found '%s'", e->key,
 			e->section, expected, e->value);
@@ -62,11 +66,11 @@ static skp_status get_long(const ini_entry *e, long lo, long hi, long *out, cons
 			   skp_error *err)
 {
 	if (tok_parse_long(e->value, out) != 0 || *out < lo || *out > hi)
-		return bad(err, e, expected);
+		return board_bad(err, e, expected);
 	return SKP_OK;
 }
 
-static int pick(const char *v, const char *const *names, int n)
+int board_pick(const char *v, const char *const *names, int n)
 {
 	for (int i = 0; i < n; i++)
 		if (tok_ieq(v, names[i]))
@@ -81,12 +85,12 @@ static skp_status parse_size(board_config *c, const ini_entry *e, skp_error *err
 	const char *x = strchr(e->value, 'x');
 	size_t n = x ? (size_t)(x - e->value) : 0;
 	if (!x || n == 0 || n >= sizeof buf)
-		return bad(err, e, "WxH");
+		return board_bad(err, e, "WxH");
 	memcpy(buf, e->value, n);
 	buf[n] = '\0';
 	if (tok_parse_long(buf, &w) != 0 || tok_parse_long(x + 1, &h) != 0 || w < 16 || h < 16 ||
 	    w > SKP_DISPLAY_MAX_W || h > SKP_DISPLAY_MAX_H)
-		return bad(err, e, "WxH between 16x16 and the board's " DISPLAY_MAX_TEXT);
+		return board_bad(err, e, "WxH between 16x16 and the board's " DISPLAY_MAX_TEXT);
 	c->width = (int)w;
 	c->height = (int)h;
 	return SKP_OK;
@@ -97,14 +101,14 @@ const char *const board_root_names[BOARD_ROOT_MODES] = { "in-place", "travel" };
 
 int board_root_parse(const char *word)
 {
-	return word ? pick(word, board_root_names, BOARD_ROOT_MODES) : -1;
+	return word ? board_pick(word, board_root_names, BOARD_ROOT_MODES) : -1;
 }
 
 const char *const board_loop_names[BOARD_LOOP_MODES] = { "show", "clip" };
 
 int board_loop_parse(const char *word)
 {
-	return word ? pick(word, board_loop_names, BOARD_LOOP_MODES) : -1;
+	return word ? board_pick(word, board_loop_names, BOARD_LOOP_MODES) : -1;
 }
 
 int board_speed_parse(const char *word, double *out)
@@ -126,7 +130,7 @@ const char *const board_hud_names[BOARD_HUD_MODES] = { "off", "engineer", "visit
 
 int board_hud_parse(const char *word)
 {
-	return word ? pick(word, board_hud_names, BOARD_HUD_MODES) : -1;
+	return word ? board_pick(word, board_hud_names, BOARD_HUD_MODES) : -1;
 }
 
 int board_threads_parse(const char *word)
@@ -139,7 +143,7 @@ int board_threads_parse(const char *word)
 
 int board_streams_parse(const char *word)
 {
-	return word ? pick(word, board_streams_names, BOARD_STREAMS_KINDS) : -1;
+	return word ? board_pick(word, board_streams_names, BOARD_STREAMS_KINDS) : -1;
 }
 
 /* The index of v (any case) among a modes.h list, or -1. */
@@ -164,7 +168,7 @@ static skp_status mode_key(int *out, const ini_entry *e, const char *(*name)(int
 	for (int i = 0; i < n; i++)
 		len += skp_format(names + len, sizeof names - len, "%s%s", i == 0 ? "" : i < n - 1 ? ", " : " or ",
 				  name(i));
-	return bad(err, e, names);
+	return board_bad(err, e, names);
 }
 
 static skp_status display_key(board_config *c, const ini_entry *e, skp_error *err)
@@ -172,8 +176,8 @@ static skp_status display_key(board_config *c, const ini_entry *e, skp_error *er
 	static const char *const plats[] = { "auto", "surfaceless", "osmesa", "kms", "x11" };
 	long v;
 	if (tok_ieq(e->key, "platform")) {
-		if (pick(e->value, plats, 5) < 0)
-			return bad(err, e, "auto, surfaceless, osmesa, kms or x11");
+		if (board_pick(e->value, plats, 5) < 0)
+			return board_bad(err, e, "auto, surfaceless, osmesa, kms or x11");
 		return copy_str(c->platform, sizeof c->platform, e, err);
 	}
 	if (tok_ieq(e->key, "device"))
@@ -184,18 +188,18 @@ static skp_status display_key(board_config *c, const ini_entry *e, skp_error *er
 		if (get_long(e, 0, 270, &v, "0, 90, 180 or 270", err) != SKP_OK)
 			return err->code;
 		if (v % 90)
-			return bad(err, e, "0, 90, 180 or 270");
+			return board_bad(err, e, "0, 90, 180 or 270");
 		c->rotation = (int)v;
 		return SKP_OK;
 	}
 	if (tok_ieq(e->key, "hud")) {
 		if ((c->hud = board_hud_parse(e->value)) < 0)
-			return bad(err, e, "visitor, engineer or off");
+			return board_bad(err, e, "visitor, engineer or off");
 		return SKP_OK;
 	}
 	if (tok_ieq(e->key, "yaw")) {
 		if ((c->yaw_mode = board_yaw_parse(e->value, &c->yaw_deg)) < 0)
-			return bad(err, e, "auto or degrees from -360 to 360");
+			return board_bad(err, e, "auto or degrees from -360 to 360");
 		return SKP_OK;
 	}
 	if (tok_ieq(e->key, "algo"))
@@ -223,7 +227,7 @@ static skp_status input_key(board_config *c, pending *p, const ini_entry *e, skp
 	if (tok_ieq(e->key, "backend")) {
 		if (strcmp(e->value, "gpio") && strcmp(e->value, "keyboard") && strcmp(e->value, "none") &&
 		    strncmp(e->value, "script:", 7))
-			return bad(err, e, "gpio, keyboard, none or script:FILE");
+			return board_bad(err, e, "gpio, keyboard, none or script:FILE");
 		return copy_str(c->input, sizeof c->input, e, err);
 	}
 	if (tok_ieq(e->key, "chip"))
@@ -249,14 +253,14 @@ static skp_status button_key(board_config *c, pending *p, int b, const ini_entry
 		return SKP_OK;
 	}
 	if (tok_ieq(e->key, "active")) {
-		if ((k = pick(e->value, levels, 2)) < 0)
-			return bad(err, e, "high or low");
+		if ((k = board_pick(e->value, levels, 2)) < 0)
+			return board_bad(err, e, "high or low");
 		btn->active_low = k;
 		return SKP_OK;
 	}
 	if (tok_ieq(e->key, "bias")) {
-		if ((k = pick(e->value, biases, 4)) < 0)
-			return bad(err, e, "as-is, disable, pull-up or pull-down");
+		if ((k = board_pick(e->value, biases, 4)) < 0)
+			return board_bad(err, e, "as-is, disable, pull-up or pull-down");
 		btn->bias = k;
 		return SKP_OK;
 	}
@@ -294,12 +298,12 @@ static skp_status skin_key(board_config *c, const ini_entry *e, skp_error *err)
 	long v;
 	if (tok_ieq(e->key, "threads")) {
 		if ((c->threads = board_threads_parse(e->value)) < 0)
-			return bad(err, e, "auto or a thread count of 1.." STR(BOARD_MAX_THREADS));
+			return board_bad(err, e, "auto or a thread count of 1.." STR(BOARD_MAX_THREADS));
 		return SKP_OK;
 	}
 	if (tok_ieq(e->key, "streams")) {
 		if ((c->streams = board_streams_parse(e->value)) < 0)
-			return bad(err, e, "float or compact");
+			return board_bad(err, e, "float or compact");
 		return SKP_OK;
 	}
 	if (tok_ieq(e->key, "split_verts")) {
@@ -315,38 +319,12 @@ static skp_status skin_key(board_config *c, const ini_entry *e, skp_error *err)
 	return skp_fail(err, SKP_ERR_SYNTAX, e->line, "unknown key '%s' in [skin] (threads, split_verts, streams)", e->key);
 }
 
-/* [show]'s keys for synchronised installations: sync, epoch, buttons. */
-static skp_status show_sync_key(board_config *c, const ini_entry *e, skp_error *err)
-{
-	static const char *const sync_words[] = { "off", "clock" }, *const on_off[] = { "off", "on" };
-	int w;
-	if (tok_ieq(e->key, "sync")) {
-		if ((w = pick(e->value, sync_words, 2)) < 0)
-			return bad(err, e, "off or clock");
-		c->sync = w;
-		return SKP_OK;
-	}
-	if (tok_ieq(e->key, "epoch")) {
-		if (utc_time_parse(e->value, &c->epoch_ns) < 0)
-			return bad(err, e, "an ISO 8601 UTC time such as 2026-01-01T00:00:00Z");
-		return SKP_OK;
-	}
-	if (tok_ieq(e->key, "buttons")) {
-		if ((w = pick(e->value, on_off, 2)) < 0)
-			return bad(err, e, "on or off");
-		c->show_buttons = w;
-		return SKP_OK;
-	}
-	return skp_fail(err, SKP_ERR_SYNTAX, e->line,
-			"unknown key '%s' in [show] (speed, blend_ms, root, loop, sync, epoch, buttons)", e->key);
-}
-
 static skp_status show_key(board_config *c, const ini_entry *e, skp_error *err)
 {
 	long v;
 	if (tok_ieq(e->key, "speed")) {
 		if (board_speed_parse(e->value, &c->speed) < 0)
-			return bad(err, e, "a speed from 0.1 to 4 (1: as captured)");
+			return board_bad(err, e, "a speed from 0.1 to 4 (1: as captured)");
 		return SKP_OK;
 	}
 	if (tok_ieq(e->key, "blend_ms")) {
@@ -358,15 +336,15 @@ static skp_status show_key(board_config *c, const ini_entry *e, skp_error *err)
 	}
 	if (tok_ieq(e->key, "root")) {
 		if ((c->root = board_root_parse(e->value)) < 0)
-			return bad(err, e, "in-place or travel");
+			return board_bad(err, e, "in-place or travel");
 		return SKP_OK;
 	}
 	if (tok_ieq(e->key, "loop")) {
 		if ((c->loop = board_loop_parse(e->value)) < 0)
-			return bad(err, e, "show or clip");
+			return board_bad(err, e, "show or clip");
 		return SKP_OK;
 	}
-	return show_sync_key(c, e, err);
+	return board_show_sync_key(c, e, err);
 }
 
 /* "button.algo" -> CONTROL_BTN_ALGO; -1 when not a button section. */
@@ -379,13 +357,14 @@ static int button_section(const char *s)
 
 static skp_status section_of(const ini_entry *e, section_kind *k, int *b, skp_error *err)
 {
-	static const char *const names[] = { "", "display", "input", "button", "storage", "limits", "skin", "show" };
+	static const char *const names[] = { "", "display", "input", "button", "storage", "limits", "skin", "show",
+					     "wall", "camera" };
 	*b = button_section(e->section);
 	if (*b >= 0) {
 		*k = SEC_BUTTON;
 		return SKP_OK;
 	}
-	for (int i = 1; i < 8; i++)
+	for (int i = 1; i < 10; i++)
 		if (i != SEC_BUTTON && tok_ieq(e->section, names[i])) {
 			*k = (section_kind)i;
 			return SKP_OK;
@@ -393,7 +372,8 @@ static skp_status section_of(const ini_entry *e, section_kind *k, int *b, skp_er
 	if (!*e->section)
 		return skp_fail(err, SKP_ERR_SYNTAX, e->line, "key '%s' before any [section]", e->key);
 	return skp_fail(err, SKP_ERR_SYNTAX, e->line,
-			"key '%s' in unknown section [%s] (display, input, button.algo|play|next|view, storage, limits, skin, show)",
+			"key '%s' in unknown section [%s] (display, input, button.algo|play|next|view, storage, limits, skin, show, "
+			"wall, camera)",
 			e->key, e->section);
 }
 
@@ -433,6 +413,8 @@ static skp_status apply_key(board_config *c, pending *p, const ini_entry *e, skp
 	case SEC_STORAGE: return storage_key(c, e, err);
 	case SEC_SKIN: return skin_key(c, e, err);
 	case SEC_SHOW: return show_key(c, e, err);
+	case SEC_WALL: return board_wall_key(c, e, err);
+	case SEC_CAMERA: return board_camera_key(c, e, err);
 	default: return limits_key(c, e, err);
 	}
 }

@@ -33,6 +33,17 @@
  *              start; default the Unix epoch; skinplay --epoch)
  *              buttons = on | off   (off: PLAY and NEXT do nothing, for a
  *              synced installation; ALGO and VIEW still switch)
+ *   [wall]     columns = 3, rows = 1   (a video wall of screens, each
+ *              drawing its tile of one picture; skinplay --wall)
+ *              column = 0, row = 0   (this screen's, from the top left)
+ *              bezel = 0   (pixels of the picture behind two neighbouring
+ *              screens' frames; skinplay --bezel)
+ *   [camera]   yaw = auto | DEG   (as [display] yaw)
+ *              pitch = 6.3   (degrees from above; -30..80)
+ *              distance = 1   (times the distance that frames the body; 0.2..10)
+ *              target = 0, 0, 0   (the point looked at, from the body's
+ *              centre: x, y (up), z of the skeleton's space, in body
+ *              heights; -5..5 each)
  *
  * A kiosk never stops over its config: a mistake (an unknown section or
  * key, a bad value, a line that is not `key = value`, a UTF-8 byte order
@@ -150,10 +161,18 @@ typedef struct board_config {
 	int sync;                /* [show] sync: 1 clock, 0 off */
 	int64_t epoch_ns;        /* [show] epoch, ns since the Unix epoch */
 	int show_buttons;        /* [show] buttons: 0 off (PLAY and NEXT do nothing) */
+	int wall_columns, wall_rows; /* [wall]: screens across and down; 0: no wall */
+	int wall_column, wall_row;   /* this screen's, from 0 at the top left */
+	int wall_bezel;          /* [wall] bezel: pixels behind two screens' frames */
+	float cam_pitch_deg;     /* [camera] pitch: degrees from above */
+	float cam_distance;      /* [camera] distance: times the framing one */
+	float cam_aim[3];        /* [camera] target: the point looked at from the body's centre, in body heights */
 	int problem_count;       /* all the mistakes found, also past the list */
 	board_problem problem[BOARD_MAX_PROBLEMS];
 } board_config;
 
+#define CAMERA_PITCH_DEFAULT_DEG 6.3f /* app/render/camera.h's CAMERA_PITCH */
+#define BOARD_WALL_MAX 16        /* screens across or down */
 #define BOARD_DEBOUNCE_MS 30
 #define BOARD_LONG_PRESS_MS 800
 #define BOARD_MAX_THREADS 16

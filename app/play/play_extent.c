@@ -60,7 +60,9 @@ float play_pose_facing(const skel *s, const skel_pose *p, float *sin_sum, float 
 static void grow_bounds(const skel *s, const skel_pose *p, vec3 root0, play_extent *out)
 {
 	/* in place: every frame's root over the first frame's */
-	vec3 shift = vec3_make(root0.x - p->tip[0].x, 0.0f, root0.z - p->tip[0].z);
+	vec3 shift = vec3_make(root0.x - p->tip[0].x, 0.0f, root0.z - p->tip[0].z), way = vec3_scale(shift, -1.0f);
+	out->travel_lo = vec3_min(out->travel_lo, way);
+	out->travel_hi = vec3_max(out->travel_hi, way);
 	for (int b = 0; b < s->count; b++) {
 		vec3 q = vec3_add(p->tip[b], shift);
 		out->lo = vec3_min(out->lo, q);
@@ -80,6 +82,7 @@ skp_status play_extent_clip(const skel *s, const play_source *src, int stride, a
 	out->lo = vec3_make(INFINITY, INFINITY, INFINITY);
 	out->hi = vec3_make(-INFINITY, -INFINITY, -INFINITY);
 	out->first_root = root0;
+	out->travel_lo = out->travel_hi = root0;
 	int r = 0;
 	while (st == SKP_OK && (r = src->next(src->ctx, frame, err)) > 0) {
 		if (out->frames++ % (stride > 0 ? stride : 1))

@@ -18,6 +18,9 @@ typedef struct play_extent {
 	                          * horizontal travel taken out */
 	vec3 first_root;         /* the first frame's root: every frame's
 	                          * root is moved over it for lo, hi */
+	vec3 travel_lo, travel_hi; /* the root's way over the ground from the
+	                          * first frame's, x and z (y 0): a wall's
+	                          * camera frames lo, hi moved along all of it */
 } play_extent;
 
 /* Reads src from its first frame to its last (FK every `stride`-th frame,

@@ -9,11 +9,12 @@ void camera_init(follow_camera *c, float skel_height, float floor_y, float azimu
 	c->floor_y = floor_y;
 	c->azimuth = c->azimuth_goal = azimuth;
 	c->target = vec3_make(0, floor_y + 0.5f * c->height, 0);
-
+	c->pitch = CAMERA_PITCH;
+	c->distance = 1.0f;
+	c->aim = vec3_make(0, 0, 0);
 }
 
 #define CAMERA_FOVY 0.6f     /* radians, vertical */
-#define CAMERA_PITCH 0.11f   /* a framed box is seen this far from above */
 #define CAMERA_MARGIN 0.04f  /* of the space it may take, left clear round a framed box */
 
 float camera_ease(float dt)
@@ -97,8 +98,7 @@ mat4 camera_frame_box(const follow_camera *c, vec3 lo, vec3 hi, float aspect, fl
 {
 	vec3 centre = vec3_scale(vec3_add(lo, hi), 0.5f);
 	float radius = 0.5f * vec3_length(vec3_sub(hi, lo)) + 1e-6f, room = ndc_top - ndc_bottom, ext[4];
-	vec3 dir = vec3_make(sinf(c->azimuth) * cosf(CAMERA_PITCH), sinf(CAMERA_PITCH),
-			     cosf(c->azimuth) * cosf(CAMERA_PITCH));
+	vec3 dir = vec3_make(sinf(c->azimuth) * cosf(c->pitch), sinf(c->pitch), cosf(c->azimuth) * cosf(c->pitch));
 	/* the nearest distance at which the box fits: every corner in front
 	 * from just outside its sphere, the projection shrinking as it goes */
 	float close = 1.05f * radius, d = 4.0f * radius;
@@ -115,10 +115,17 @@ mat4 camera_frame_box(const follow_camera *c, vec3 lo, vec3 hi, float aspect, fl
 		else
 			close = mid;
 	}
+	/* the device's own view: nearer or farther, aimed off the centre (then
+	 * not re-centred: the aim is the point the integrator asked for) */
+	int own = c->distance != 1.0f || c->aim.x != 0.0f || c->aim.y != 0.0f || c->aim.z != 0.0f;
+	d *= c->distance;
+	centre = vec3_madd(centre, c->aim, c->height);
 	box_view v = view_from(centre, dir, d);
 	box_extent(&v, lo, hi, aspect, ext);
+	if (own)
+		ext[0] = ext[2] = -1.0f, ext[1] = ext[3] = 1.0f;
 	mat4 view = mat4_look_at(v.eye, centre, vec3_make(0, 1, 0));
-	mat4 proj = mat4_perspective(CAMERA_FOVY, aspect, 0.02f * d, d + 20.0f * c->height);
+	mat4 proj = mat4_perspective(CAMERA_FOVY, aspect, 0.02f * d, d + 20.0f * c->height + radius);
 	/* centred: across the width, and between the rows kept for the box */
 	mat4 shift = mat4_identity();
 	shift.m[12] = -0.5f * (ext[0] + ext[1]);

@@ -13,7 +13,13 @@ typedef struct follow_camera {
 	float floor_y;     /* the ground under the body */
 	float azimuth;     /* radians around Y, 0 = in front (+Z) */
 	float azimuth_goal; /* where camera_follow turns it */
+	/* the device's own view (board.ini [camera]; render_set_view) */
+	float pitch;       /* radians from above a framed box is seen (default CAMERA_PITCH) */
+	float distance;    /* times the distance that frames the box (1) */
+	vec3 aim;          /* the point looked at, from the box's centre, in body heights */
 } follow_camera;
+
+#define CAMERA_PITCH 0.11f   /* a framed box is seen this far from above (radians) */
 
 void camera_init(follow_camera *c, float skel_height, float floor_y, float azimuth);
 

@@ -65,7 +65,27 @@ typedef struct render_frame {
 	/* the character alone on a see-through background: no floor, grid,
 	 * shadow, close-up, labels or HUD (headless frames for compositing) */
 	int transparent;
+	/* a wall (render_set_wall): where the root is at the clip's start, x
+	 * and z; the camera stays on it, so a figure travelling crosses from
+	 * screen to screen */
+	vec3 anchor;
 } render_frame;
+
+/* A video wall (render_wall.c): columns x rows screens, this device the
+ * one at column, row (0-based, from the top left); bezel: the picture
+ * hidden behind two neighbouring screens' frames, in pixels of a screen.
+ * columns 0: no wall. */
+typedef struct render_wall {
+	int columns, rows, column, row, bezel;
+} render_wall;
+
+/* The device's own camera (board.ini [camera]): pitch in radians from
+ * above, distance times the framing one, aim the point looked at from the
+ * body's centre in body heights. */
+typedef struct render_view_cam {
+	float pitch, distance;
+	vec3 aim;
+} render_view_cam;
 
 typedef struct renderer {
 	const gl_api *gl;
@@ -84,6 +104,7 @@ typedef struct renderer {
 	vec3 goal_lo, goal_hi;   /* and the one asked for: x, z from the root */
 	uint8_t bone_used[SKP_MAX_BONES]; /* bones with skin: the weights legend */
 	mat4 screen;             /* rotation for screens mounted sideways */
+	render_wall wall;        /* this screen's tile of a wall (render_set_wall) */
 	closeup_camera inset;    /* the close-up's camera */
 	float mm_per_unit;       /* the difference view's legend (render_set_units) */
 	int size_assumed;        /* the units gave no human size: the body taken as 1.75 m */
@@ -156,5 +177,20 @@ void render_diff_colours(const float *diff, int n, float mm_per_unit, int is_sig
  * body facing +z seen from the front, RENDER_CAMERA_AZIMUTH to its left):
  * smoothly over the next frames, or at once. */
 void render_set_yaw(renderer *r, float yaw, int immediate);
+
+/* The device's own camera, instead of the usual pitch, distance and aim. */
+void render_set_view(renderer *r, const render_view_cam *v);
+
+/* Makes this screen draw its tile of the wall w (columns 0: the whole
+ * picture again): the camera frames the body for the whole wall's shape,
+ * and the tiles of all its screens side by side equal one render at the
+ * wall's size. No labels' bands in a wall: the picture runs on across. */
+void render_set_wall(renderer *r, const render_wall *w);
+
+/* The wall's size in screens (bezels included) across and up, and the
+ * projection that makes this screen's tile of it fill the screen
+ * (multiplied after the whole wall's). */
+void render_wall_span(const render_wall *w, int width, int height, float *sx, float *sy);
+mat4 render_wall_tile(const render_wall *w, int width, int height);
 
 #endif

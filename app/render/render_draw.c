@@ -282,17 +282,28 @@ static void ease_extent(renderer *r, float dt)
  * and stretched to where the root is now (travelling, the camera lags it),
  * between the bands (the top one where the panel meets the screen's top);
  * without one, the camera following the body. */
-static mat4 panel_camera(const renderer *r, const layout *l, render_rect area, int lh, vec3 root)
+static mat4 panel_camera(const renderer *r, const layout *l, render_rect area, int lh, vec3 root, vec3 anchor)
 {
-	float aspect = (float)area.w / (float)area.h;
-	if (!r->framed)
-		return camera_matrix(&r->cam, aspect);
+	float aspect = (float)area.w / (float)area.h, sx = 1.0f, sy = 1.0f;
+	int wall = r->wall.columns > 0;
+	if (wall) /* framed for the whole wall's shape, then this screen's tile */
+		render_wall_span(&r->wall, area.w, area.h, &sx, &sy);
+	mat4 tile = wall ? render_wall_tile(&r->wall, area.w, area.h) : mat4_identity(), m;
+	if (!r->framed) {
+		m = camera_matrix(&r->cam, aspect * sx / sy);
+		return mat4_mul(&tile, &m);
+	}
 	vec3 at = vec3_make(r->cam.target.x, 0.0f, r->cam.target.z), now = vec3_make(root.x, 0.0f, root.z);
+	if (wall)
+		at = now = vec3_make(anchor.x, 0.0f, anchor.z);
 	vec3 lo = vec3_min(vec3_add(r->ext_lo, at), vec3_add(r->ext_lo, now));
 	vec3 hi = vec3_max(vec3_add(r->ext_hi, at), vec3_add(r->ext_hi, now));
 	int top = area.y + area.h == lh ? l->top : 0;
 	float bottom = -1.0f + 2.0f * (float)l->foot / (float)area.h, ceiling = 1.0f - 2.0f * (float)top / (float)area.h;
-	return camera_frame_box(&r->cam, lo, hi, aspect, bottom, ceiling);
+	if (wall)
+		bottom = -1.0f, ceiling = 1.0f;
+	m = camera_frame_box(&r->cam, lo, hi, aspect * sx / sy, bottom, ceiling);
+	return mat4_mul(&tile, &m);
 }
 
 /* The body (beside its close-up, in the compare view), its overlays, its
@@ -306,7 +317,7 @@ static void draw_panel(renderer *r, const render_frame *f, const layout *l, int 
 	if (!closeup)
 		body = area;
 	render_set_viewport(r, body);
-	mat4 cam = panel_camera(r, l, body, lh, f->pose->tip[0]);
+	mat4 cam = panel_camera(r, l, body, lh, f->pose->tip[0], f->anchor);
 	mat4 vp = mat4_mul(&r->screen, &cam);
 	if (!f->transparent)
 		render_grid_and_shadow(r, &vp, f->pose->tip[0]);

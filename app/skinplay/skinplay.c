@@ -112,6 +112,8 @@ static int setup(skinplay *p)
 	}
 	render_set_colours(&p->r, m->coloured ? (const uint8_t (*)[3])m->colour : NULL);
 	render_set_yaw(&p->r, p->yaw, 1);
+	render_set_view(&p->r, &p->o.view_cam);
+	render_set_wall(&p->r, &p->o.wall);
 	p->render_ready = 1;
 	closeup_setup(p);
 	clips_frame(p, 1);
@@ -168,6 +170,8 @@ static void skin_panels(skinplay *p, render_frame *f)
 	}
 	log_measured_threads(p);
 	f->pose = &p->skin.pose;
+	/* the wall's camera stays where the clip starts */
+	f->anchor = p->o.root == BOARD_ROOT_IN_PLACE ? p->eng.origin : vec3_add(p->eng.first_root, p->eng.travel);
 	f->bones = &p->skin.bones;
 	uint64_t t4 = clock_now_ns();
 	closeup_frame(p, f);

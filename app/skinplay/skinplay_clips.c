@@ -49,7 +49,13 @@ void clips_frame(skinplay *p, int immediate)
 	if (!p->render_ready || s->frames <= 0 || !(s->hi.y >= s->lo.y))
 		return;
 	vec3 pad = vec3_make(p->flesh, p->flesh, p->flesh), root = vec3_make(s->first_root.x, 0.0f, s->first_root.z);
-	render_set_extent(&p->r, vec3_sub(vec3_sub(s->lo, root), pad), vec3_add(vec3_sub(s->hi, root), pad), immediate);
+	vec3 lo = vec3_sub(vec3_sub(s->lo, root), pad), hi = vec3_add(vec3_sub(s->hi, root), pad);
+	if (p->o.wall.columns > 0 && p->o.root == BOARD_ROOT_TRAVEL) {
+		/* a wall's camera stays put: it frames the whole way travelled */
+		lo = vec3_add(lo, s->travel_lo);
+		hi = vec3_add(hi, s->travel_hi);
+	}
+	render_set_extent(&p->r, lo, hi, immediate);
 }
 
 /* No clip can play: the bind pose, for ever (until SIGTERM). */

@@ -1,5 +1,6 @@
 #include "skinplay_kiosk.h"
 
+#include <math.h>
 #include <poll.h>
 #include <stdio.h>
 #include <string.h>
@@ -111,6 +112,25 @@ static void playback_defaults(play_opts *o)
 		o->yaw_mode = 0;
 }
 
+/* The screen's part in an installation: its tile of a wall (--wall wins
+ * over [wall]; a column or row outside the wall is said, and the whole
+ * picture shown), its own camera ([camera]). */
+static void screen_part(play_opts *o, const board_config *b)
+{
+	if (!o->wall_given && b->wall_columns > 0) {
+		render_wall w = { b->wall_columns, b->wall_rows > 0 ? b->wall_rows : 1, b->wall_column, b->wall_row, 0 };
+		if (w.column < w.columns && w.row < w.rows)
+			o->wall = w;
+		else
+			fprintf(stderr, "skinplay: board.ini [wall]: column %d, row %d is not on a wall of %d x %d screens "
+				"(from 0): the whole picture shown\n", w.column, w.row, w.columns, w.rows);
+	}
+	o->wall.bezel = o->bezel >= 0 ? o->bezel : b->wall_bezel;
+	o->view_cam.pitch = b->cam_pitch_deg * (float)(M_PI / 180.0);
+	o->view_cam.distance = b->cam_distance;
+	o->view_cam.aim = vec3_make(b->cam_aim[0], b->cam_aim[1], b->cam_aim[2]);
+}
+
 int skinplay_kiosk_setup(skinplay_kiosk *k, play_opts *o, int argc, char **argv)
 {
 	memset(k, 0, sizeof *k);
@@ -123,6 +143,7 @@ int skinplay_kiosk_setup(skinplay_kiosk *k, play_opts *o, int argc, char **argv)
 		apply_board(&k->board, o, argc, argv);
 	playback_defaults(o);
 	o->show_buttons = k->board.show_buttons;
+	screen_part(o, &k->board);
 	if (o->hud < 0)
 		o->hud = BOARD_HUD_ENGINEER;
 	if (o->threads < 0)

@@ -14,7 +14,7 @@ enum {
 	OPT_ROTATION, OPT_SIZE, OPT_FRAMES, OPT_START, OPT_OUT, OPT_EVERY, OPT_SHEET, OPT_VIEW, OPT_FPS,
 	OPT_HUD_FPS, OPT_REPORT_MEMORY, OPT_BOARD, OPT_INPUT, OPT_PRINT_PLATFORM, OPT_HUD, OPT_REPORT_TIMING,
 	OPT_THREADS, OPT_STREAMS, OPT_DISPLAY_RATE, OPT_SPEED, OPT_BLEND, OPT_ROOT, OPT_YAW, OPT_LOOP, OPT_POSE_DIGEST,
-	OPT_BACKGROUND, OPT_SYNC, OPT_EPOCH
+	OPT_BACKGROUND, OPT_SYNC, OPT_EPOCH, OPT_WALL, OPT_BEZEL
 };
 
 static const cli_opt play_opts_table[] = {
@@ -67,6 +67,11 @@ static const cli_opt play_opts_table[] = {
 	  "virtual display starts at the wall clock's time (default: the board's [show] sync, else off)" },
 	{ "epoch", 0, "TIME", OPT_EPOCH, "with --sync=clock: when the show began, ISO 8601 UTC such as "
 	  "2026-01-01T00:00:00Z (default: the board's [show] epoch, else 1970-01-01T00:00:00Z)" },
+	{ "wall", 0, "CxR+X+Y", OPT_WALL, "a video wall of C screens across and R down, this one at column X and row Y "
+	  "from 0 at the top left (3x1+2+0: the right one of three): it draws its tile of one picture the size of the "
+	  "wall (default: the board's [wall], else none)" },
+	{ "bezel", 0, "PX", OPT_BEZEL, "with --wall: the picture hidden behind two neighbouring screens' frames, in "
+	  "pixels (default: the board's [wall] bezel, else 0)" },
 	{ "yaw", 0, "DEG|auto", OPT_YAW, "turn the camera DEG degrees about the vertical from the usual view; auto: to "
 	  "the clip's mean facing (default: the board's [display] yaw, else auto)" },
 	{ "hud", 0, "MODE", OPT_HUD, "visitor, engineer or off (default: the board's [display] hud, else engineer)" },
@@ -140,6 +145,19 @@ static int take_rate(play_opts *o, const char *v)
 	o->fps = strtod(v, &end);
 	if (*end || !(o->fps >= 1.0 && o->fps <= 10000.0))
 		return fprintf(stderr, PROG ": --fps expects a rate from 1 to 10000 Hz, got '%s'\n", v), -1;
+	return 0;
+}
+
+/* --wall=CxR+X+Y: C screens across, R down, this one at X, Y. */
+static int take_wall(play_opts *o, const char *v)
+{
+	int c, r, x, y, used = 0;
+	if (sscanf(v, "%dx%d+%d+%d%n", &c, &r, &x, &y, &used) != 4 || v[used] || c < 1 || c > BOARD_WALL_MAX || r < 1 ||
+	    r > BOARD_WALL_MAX || x < 0 || x >= c || y < 0 || y >= r)
+		return fprintf(stderr, PROG ": --wall expects COLUMNSxROWS+COLUMN+ROW (1 to %d screens each way, this "
+			       "screen's column and row from 0), such as 3x1+2+0; got '%s'\n", BOARD_WALL_MAX, cli_shown(v)), -1;
+	o->wall = (render_wall){ c, r, x, y, 0 };
+	o->wall_given = 1;
 	return 0;
 }
 
@@ -265,6 +283,12 @@ static int take(void *ctx, int id, const char *v)
 				       "got '%s'\n", cli_shown(v)), -1;
 		o->epoch_given = 1;
 		return 0;
+	case OPT_WALL: return take_wall(o, v);
+	case OPT_BEZEL:
+		if (cli_parse_long("--bezel", v, &n) < 0 || n < 0 || n > 2000)
+			return fprintf(stderr, PROG ": --bezel expects 0 to 2000 pixels, got '%s'\n", cli_shown(v)), -1;
+		o->bezel = (int)n;
+		return 0;
 	case OPT_REPORT_MEMORY: o->report_memory = 1; return 0;
 	case OPT_REPORT_TIMING: o->report_timing = 1; return 0;
 	case OPT_POSE_DIGEST: o->pose_digest = 1; return 0;
@@ -338,6 +362,7 @@ int play_parse(play_opts *o, int argc, char **argv)
 	o->root = -1;
 	o->loop = -1;
 	o->sync = -1;
+	o->bezel = -1;
 	o->yaw_mode = -1;
 	int rc = cli_parse(&play_command, o, argc, argv, 1);
 	if (rc != 0)

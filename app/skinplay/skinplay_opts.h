@@ -47,6 +47,10 @@ typedef struct play_opts {
 	int64_t epoch_ns;        /* --sync=clock: the show's start, ns since the Unix epoch */
 	int epoch_given;         /* --epoch given: it wins over the board's */
 	int show_buttons;        /* the board's [show] buttons: 0, PLAY and NEXT do nothing */
+	render_wall wall;        /* --wall, else the board's [wall]: this screen's tile (columns 0: none) */
+	int wall_given;
+	int bezel;               /* --bezel; -1: the board's (else 0) */
+	render_view_cam view_cam; /* the board's [camera] */
 	int yaw_mode;            /* -1: the board's (else auto), 0 auto, 1 yaw_deg */
 	float yaw_deg;
 } play_opts;

@@ -46,6 +46,7 @@
 #include "bind.h"
 #include "fk.h"
 #include "play_engine.h"
+#include "play_sync.h"
 #include "skp_reader.h"
 #include "text_lines.h"
 #endif
@@ -249,6 +250,39 @@ static void hash_pose(fnv *f, const play_engine *e)
 	emb_fnv_i32(f, (int32_t)e->number);
 }
 
+/* A show of the clip and a clip of 0.7 s on the wall clock
+ * (app/play/play_sync.h) from 2026-01-01 plus a day: 3 s of 60 Hz frames,
+ * each the clock's clip and time set on the engine as skinplay
+ * --sync=clock does; the positions are hashed with the poses. */
+static int synced_poses(fnv *f, long *samples)
+{
+	static const uint64_t len[2] = { EMB_FRAMES * 100000000ull, 700000000ull };
+	const int64_t epoch = 1767225600LL * 1000000000LL, wall0 = epoch + 86400LL * 1000000000LL + 123456789LL;
+	play_config cfg = { 1.0, 300, PLAY_ROOT_IN_PLACE, 1 };
+	play_source src = { NULL, clip_next, clip_seek, EMB_FRAMES, 10.0, 0 };
+	skp_error err;
+	play_init(&eng, &sk, &cfg);
+	if (play_start(&eng, &src, 0, &err) != SKP_OK)
+		return fail("sync", &err);
+	for (uint32_t n = 0; n < 180; n++) {
+		uint64_t now = (uint64_t)n * 1000000000ull / 60;
+		play_sync_at at;
+		if (play_sync_locate(wall0 + (int64_t)now, epoch, len, 2, &at) != 0) {
+			say("emb: sync: the show has no length");
+			return 1;
+		}
+		emb_fnv_i32(f, at.clip);
+		emb_fnv_i32(f, (int32_t)(at.into_ns / 1000));
+		if (at.clip == 0)
+			play_set_clip_time(&eng, (double)at.into_ns * 1e-9, now);
+		if (play_update(&eng, now, &err) != SKP_OK)
+			return fail("sync", &err);
+		hash_pose(f, &eng);
+		(*samples)++;
+	}
+	return 0;
+}
+
 /* The clip (EMB_FRAMES frames at 10 Hz) over 3 s of display frames at
  * each rate, then at times a fixed generator jitters (5..45 ms apart). */
 static int sampler_checksum(uint32_t *sum)
@@ -274,10 +308,12 @@ static int sampler_checksum(uint32_t *sum)
 			samples++;
 		}
 	}
+	if (synced_poses(&f, &samples) != 0)
+		return 1;
 	char line[120], hex[11];
 	*sum = f.h;
 	hex32(hex, f.h);
-	skp_format(line, sizeof line, "emb: sampler: %ld poses at 24, 60, 144 Hz and jittered", samples);
+	skp_format(line, sizeof line, "emb: sampler: %ld poses at 24, 60, 144 Hz, jittered and on a wall clock", samples);
 	say(line);
 	emb_puts("emb: sampler checksum ");
 	say(hex);

@@ -1,8 +1,9 @@
 /* Many screens, one performance (skinplay --sync=clock): instances started
  * at different wall times (faketime sets each one's clock) render the same
  * picture at the same wall time, pixel for pixel; one paused for two
- * seconds joins the clock again within a second, crossfading; a bad
- * --epoch is refused. Headless on the default show, HUD off. Skipped
+ * seconds joins the clock again within a second, crossfading; three
+ * screens of a wall (--wall) stitched equal one render at the wall's size,
+ * with bezels too; a bad --epoch, --sync or --wall is refused. Headless on the default show, HUD off. Skipped
  * without faketime (apt-get install faketime). */
 #include <stdarg.h>
 #include <stddef.h>
@@ -14,6 +15,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "png_writer.h"
 #include "test_paths.h"
 #include "test_run.h"
 
@@ -128,6 +130,122 @@ static void test_paused_instance_rejoins(void **state)
 	free(log);
 }
 
+#define TILE_W 160
+#define TILE_H 90
+#define BEZEL 12
+
+/* One picture at 12:00:20 on the clock, travelling (the figure's own way):
+ * the whole wall's width, or tile --wall=3x1+X+0, into name/. */
+static void wall_frame(const char *name, int tile, int bezel)
+{
+	char wall[64] = "", size[32];
+	int whole_w = 3 * TILE_W + 2 * bezel;
+	snprintf(size, sizeof size, "%dx%d", tile < 0 ? whole_w : TILE_W, TILE_H);
+	/* the whole: a wall of one screen its size (the same camera: on the
+	 * clip's start, the picture running on across without bands) */
+	if (tile >= 0)
+		snprintf(wall, sizeof wall, "--wall=3x1+%d+0 --bezel=%d", tile, bezel);
+	else
+		snprintf(wall, sizeof wall, "--wall=1x1+0+0");
+	assert_int_equal(test_run("FAKETIME_DONT_FAKE_MONOTONIC=1 faketime -f '2026-01-01 12:00:20' %s --image %s "
+				  "--platform surfaceless --sync=clock --root=travel --size %s --hud=off --algo=dqbs "
+				  "--frames 1 --out '%s' %s 2>/dev/null",
+				  test_tool_path("skinplay"), test_tool_path("assets/demo.skn"), size, test_scratch(name), wall),
+			 0);
+}
+
+static uint8_t whole_px[4 * (3 * TILE_W + 2 * BEZEL) * TILE_H], tile_px[4 * TILE_W * TILE_H];
+
+static int read_frame(const char *name, uint8_t *px, int cap, int *w, int *h)
+{
+	char path[600];
+	skp_error err;
+	snprintf(path, sizeof path, "%s/frame_000001.png", test_scratch(name));
+	return png_read_rgba(path, px, cap, w, h, &err);
+}
+
+/* Tiles stitched (a bezel's columns skipped between them) against the
+ * whole: pixels that differ by more than 24 in a channel. */
+static int stitched_differ(int bezel, int *body)
+{
+	int ww, wh, tw, th, differ = 0;
+	*body = 0;
+	assert_int_equal(read_frame("whole", whole_px, (int)sizeof whole_px, &ww, &wh), 0);
+	assert_int_equal(ww, 3 * TILE_W + 2 * bezel);
+	for (int t = 0; t < 3; t++) {
+		char name[16];
+		snprintf(name, sizeof name, "tile%d", t);
+		assert_int_equal(read_frame(name, tile_px, (int)sizeof tile_px, &tw, &th), 0);
+		assert_true(tw == TILE_W && th == TILE_H && wh == TILE_H);
+		for (int y = 0; y < TILE_H; y++)
+			for (int x = 0; x < TILE_W; x++) {
+				const uint8_t *a = tile_px + 4 * (y * TILE_W + x);
+				const uint8_t *b = whole_px + 4 * (y * ww + t * (TILE_W + bezel) + x);
+				int m = 0;
+				for (int c = 0; c < 3; c++)
+					m = abs(a[c] - b[c]) > m ? abs(a[c] - b[c]) : m;
+				differ += m > 24;
+				*body += a[0] > 120 && a[0] > a[2] + 20; /* the skin's warm pixels */
+			}
+	}
+	return differ;
+}
+
+static void test_wall_tiles_equal_whole(void **state)
+{
+	(void)state;
+	if (!have_faketime())
+		skip();
+	for (int bezel = 0; bezel <= BEZEL; bezel += BEZEL) {
+		wall_frame("whole", -1, bezel);
+		for (int t = 0; t < 3; t++) {
+			char name[16];
+			snprintf(name, sizeof name, "tile%d", t);
+			wall_frame(name, t, bezel);
+		}
+		int body, differ = stitched_differ(bezel, &body);
+		print_message("3x1 wall, bezel %d px: %d of %d pixels of the stitched tiles differ from the whole by more "
+			      "than 24 (%d pixels of skin)\n", bezel, differ, 3 * TILE_W * TILE_H, body);
+		assert_true(body > 100);
+		assert_true(differ <= 3 * TILE_W * TILE_H / 1000);
+	}
+}
+
+/* Skin pixels of one picture with the board's [camera] (text, or none). */
+static int skin_with_camera(const char *name, const char *camera)
+{
+	char extra[600] = "";
+	int w, h, skin = 0;
+	if (camera) {
+		const char *board = test_scratch("camera.ini");
+		test_write_text(board, camera);
+		snprintf(extra, sizeof extra, "--board '%s'", board);
+	}
+	assert_int_equal(test_run("%s --image %s --platform surfaceless --size %dx%d --hud=off --algo=dqbs --frames 1 "
+				  "--out '%s' %s 2>/dev/null", test_tool_path("skinplay"), test_tool_path("assets/demo.skn"),
+				  TILE_W, TILE_H, test_scratch(name), extra),
+			 0);
+	assert_int_equal(read_frame(name, tile_px, (int)sizeof tile_px, &w, &h), 0);
+	for (int i = 0; i < w * h; i++)
+		skin += tile_px[4 * i] > 120 && tile_px[4 * i] > tile_px[4 * i + 2] + 20;
+	return skin;
+}
+
+/* Each screen its view: the board's [camera] moves this one's camera
+ * (twice as far: about a quarter of the skin; from above: another picture). */
+static void test_camera_of_the_board(void **state)
+{
+	(void)state;
+	int usual = skin_with_camera("usual", NULL), far = skin_with_camera("far", "[camera]\ndistance = 2\n");
+	int above = skin_with_camera("above", "[camera]\npitch = 60\ntarget = 0, -0.2, 0\n");
+	print_message("skin pixels: usual %d, [camera] distance 2: %d, pitch 60: %d\n", usual, far, above);
+	assert_true(usual > 400);
+	assert_true(far > usual / 8 && far < usual / 2);
+	assert_true(above > 100);
+	assert_false(test_run("cmp -s '%s/frame_000001.png' '%s/frame_000001.png'", test_scratch("usual"),
+			      test_scratch("above")) == 0);
+}
+
 static void test_bad_epoch_refused(void **state)
 {
 	(void)state;
@@ -143,6 +261,11 @@ static void test_bad_epoch_refused(void **state)
 			 1);
 	static const char *const sync[] = { "--sync expects off or clock", NULL };
 	test_assert_contains_all(log, sync);
+	assert_int_equal(test_run("%s --image %s --platform none --wall=3x1+3+0 2>'%s'", test_tool_path("skinplay"),
+				  test_tool_path("assets/demo.skn"), log),
+			 1);
+	static const char *const wall[] = { "--wall expects COLUMNSxROWS+COLUMN+ROW", "'3x1+3+0'", NULL };
+	test_assert_contains_all(log, wall);
 }
 
 int main(void)
@@ -150,6 +273,8 @@ int main(void)
 	const struct CMUnitTest tests[] = {
 		cmocka_unit_test(test_instances_in_lock_step),
 		cmocka_unit_test(test_paused_instance_rejoins),
+		cmocka_unit_test(test_wall_tiles_equal_whole),
+		cmocka_unit_test(test_camera_of_the_board),
 		cmocka_unit_test(test_bad_epoch_refused),
 	};
 	return cmocka_run_group_tests(tests, test_scratch_setup, test_scratch_teardown);
