@@ -46,11 +46,6 @@ void board_config_defaults(board_config *c)
 	}
 }
 
-skp_status board_bad(skp_error *err, const ini_entry *e, const char *expected)
-{
-	return skp_fail(err, SKP_ERR_SYNTAX, e->line, "key '%s' in [%s]: expected %s, found '%s'", e->key,
-			e->section, expected, e->value);
-}
 
 static skp_status copy_str(char *dst, size_t cap, const ini_entry *e, skp_error *err)
 {
@@ -70,13 +65,6 @@ static skp_status get_long(const ini_entry *e, long lo, long hi, long *out, cons
 	return SKP_OK;
 }
 
-int board_pick(const char *v, const char *const *names, int n)
-{
-	for (int i = 0; i < n; i++)
-		if (tok_ieq(v, names[i]))
-			return i;
-	return -1;
-}
 
 static skp_status parse_size(board_config *c, const ini_entry *e, skp_error *err)
 {
@@ -116,16 +104,6 @@ int board_speed_parse(const char *word, double *out)
 	return word && tok_parse_double(word, out) == 0 && *out >= BOARD_SPEED_MIN && *out <= BOARD_SPEED_MAX ? 0 : -1;
 }
 
-int board_yaw_parse(const char *word, float *deg)
-{
-	double v;
-	if (word && tok_ieq(word, "auto"))
-		return 0;
-	if (!word || tok_parse_double(word, &v) != 0 || !(v >= -360.0 && v <= 360.0))
-		return -1;
-	*deg = (float)v;
-	return 1;
-}
 const char *const board_hud_names[BOARD_HUD_MODES] = { "off", "engineer", "visitor" };
 
 int board_hud_parse(const char *word)

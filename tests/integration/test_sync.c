@@ -11,13 +11,17 @@
 #include <stdint.h>
 #include <cmocka.h>
 
+#include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
 #include "png_writer.h"
 #include "test_paths.h"
 #include "test_run.h"
+#include "test_xvfb.h"
 
 #define RATE 60
 #define FRAMES 420
@@ -211,6 +215,69 @@ static void test_wall_tiles_equal_whole(void **state)
 	}
 }
 
+/* Waits up to seconds for text in the file at path; 1 when it came. */
+static int wait_for_text(const char *path, const char *text, double seconds)
+{
+	for (int i = 0; i < (int)(seconds * 10); i++) {
+		char *got = test_read_file(path, NULL);
+		int found = got && strstr(got, text);
+		free(got);
+		if (found)
+			return 1;
+		usleep(100000);
+	}
+	return 0;
+}
+
+/* A window on the wall clock (x11 under Xvfb) stopped for two seconds
+ * (SIGSTOP, SIGCONT: a stall) joins the show's clock again, crossfading,
+ * and says how far behind it was. */
+static void test_stopped_window_rejoins(void **state)
+{
+	(void)state;
+	char name[32], display[64], shown[64];
+	pid_t x = test_xvfb_start("320x240x24", name, sizeof name);
+	if (!x) {
+		print_message("Xvfb not installed or did not start (apt-get install xvfb)\n");
+		skip();
+	}
+	const char *log = test_scratch("window.log");
+	snprintf(display, sizeof display, "DISPLAY=%s", name);
+	snprintf(shown, sizeof shown, "%s", log);
+	pid_t pid = fork();
+	if (pid == 0) {
+		FILE *err = freopen(shown, "w", stderr);
+		(void)err;
+		putenv(display);
+		execl(test_tool_path("skinplay"), "skinplay", "--image", test_tool_path("assets/demo.skn"), "--platform",
+		      "x11", "--size", "160x90", "--sync=clock", "--algo=dqbs", "--input", "none", (char *)NULL);
+		_exit(127);
+	}
+	int started = wait_for_text(log, "sync: the show follows the wall clock", 60.0);
+	sleep(1);
+	kill(pid, SIGSTOP);
+	sleep(2);
+	kill(pid, SIGCONT);
+	int joined = wait_for_text(log, "behind the show's clock (after a pause, a stop or a stall): joined it", 10.0);
+	kill(pid, SIGTERM);
+	int status;
+	waitpid(pid, &status, 0);
+	test_xvfb_stop(x);
+	char *text = test_read_file(log, NULL);
+	assert_non_null(text);
+	const char *at = strstr(text, "behind the show's clock");
+	double behind = 0;
+	while (at && at > text && at[-1] != ':' && at[-1] != '\n')
+		at--;
+	if (at)
+		sscanf(at, " %lf", &behind);
+	print_message("stopped 2 s: %s; %.2f s behind when it went on\n", joined ? "joined the clock" : "NOT joined", behind);
+	if (!started || !joined || !(behind > 1.5 && behind < 4.0))
+		fail_msg("log:\n%s", text);
+	free(text);
+	assert_true(WIFEXITED(status) && WEXITSTATUS(status) == 0);
+}
+
 /* Skin pixels of one picture with the board's [camera] (text, or none). */
 static int skin_with_camera(const char *name, const char *camera)
 {
@@ -274,6 +341,7 @@ int main(void)
 		cmocka_unit_test(test_instances_in_lock_step),
 		cmocka_unit_test(test_paused_instance_rejoins),
 		cmocka_unit_test(test_wall_tiles_equal_whole),
+		cmocka_unit_test(test_stopped_window_rejoins),
 		cmocka_unit_test(test_camera_of_the_board),
 		cmocka_unit_test(test_bad_epoch_refused),
 	};
