@@ -5,6 +5,7 @@
 
 #include "runtime_body.h"
 #include "setup_bind.h"
+#include "setup_gate.h"
 #include "setup_mesh_format.h"
 #include "setup_mesh_io.h"
 #include "setup_mesh_place.h"
@@ -404,4 +405,13 @@ int rig_load_mesh(const bind_args *a, const char *path, bound_body *body)
 		keep_held(body, body->automatic);
 	}
 	return rc;
+}
+
+int rig_bind_load(const bind_args *a, const char *asf, const char *obj, bound_body *body)
+{
+	if (!setup_bind_rigged(a, obj))
+		return setup_bind_load(a, asf, obj, body);
+	if (setup_bind_begin(a, asf, body) < 0 || rig_load_mesh(a, obj, body) < 0)
+		return -1;
+	return setup_gate(a, obj, body);
 }

@@ -1,4 +1,4 @@
-/* skintool's mesh importer (setup_bind_set_importer): a rigged glTF, FBX or
+/* skintool's mesh importer: a rigged glTF, FBX or
  * COLLADA body onto an ASF or BVH skeleton, each decision said on stderr:
  *   1. read it (rig_scene.h), the parts used named;
  *   2. map its joints (rig_map.h, --joint-map FILE), the unmapped listed;
@@ -18,5 +18,12 @@
 
 /* Returns 0, or -1 after reporting the error. */
 int rig_load_mesh(const bind_args *a, const char *path, bound_body *body);
+
+/* skintool's binding: setup_bind_load (app/setup) for an OBJ and the
+ * generated body; a rigged mesh (glTF, FBX, COLLADA, an OBJ with --rig)
+ * through rig_load_mesh between setup's first step and its quality gate.
+ * The importer calls setup, never the other way. Returns 0, or -1 after
+ * reporting the error. */
+int rig_bind_load(const bind_args *a, const char *asf, const char *obj, bound_body *body);
 
 #endif

@@ -36,13 +36,6 @@ static int load_pose(const bind_args *a, bound_body *body)
 	return 0;
 }
 
-static setup_mesh_importer mesh_importer;
-
-void setup_bind_set_importer(setup_mesh_importer importer)
-{
-	mesh_importer = importer;
-}
-
 int setup_bind_is_interchange(const char *path)
 {
 	return setup_mesh_is_interchange(path);
@@ -116,20 +109,28 @@ static int generate_body(const bind_args *a, const char *asf, bound_body *body)
 }
 
 
-static int load_body(const bind_args *a, const char *asf, const char *obj, bound_body *body)
+int setup_bind_begin(const bind_args *a, const char *asf, bound_body *body)
 {
 	body->fitted = 0;
 	body->automatic = 0;
 	body->rigged = 0;
 	body->has_orphans = 0;
 	body->has_held = 0;
-	if (motion_load_skel(asf, &body->skel) < 0 || load_pose(a, body) < 0)
+	return motion_load_skel(asf, &body->skel) < 0 || load_pose(a, body) < 0 ? -1 : 0;
+}
+
+int setup_bind_rigged(const bind_args *a, const char *obj)
+{
+	return obj && strcmp(obj, BIND_MESH_GENERATED) && (setup_bind_is_interchange(obj) || a->rig);
+}
+
+static int load_body(const bind_args *a, const char *asf, const char *obj, bound_body *body)
+{
+	if (setup_bind_begin(a, asf, body) < 0)
 		return -1;
 	if (!obj)
 		return generate_body(a, asf, body) < 0 ? -1 : setup_bind_auto_weights(a, 1, asf, body);
-	if (setup_bind_is_interchange(obj) || a->rig) {
-		if (mesh_importer)
-			return mesh_importer(a, obj, body);
+	if (setup_bind_rigged(a, obj)) {
 		fprintf(stderr, "%s: this program reads OBJ meshes and packed images: pack the rigged mesh into an "
 			"image first (skintool pack SKELETON MOTION --mesh %s%s%s -o SHOW.skn), then play that\n", obj,
 			obj, a->rig ? " --rig " : "", a->rig ? a->rig : "");

@@ -18,15 +18,14 @@
 #define BIND_MESH_GENERATED "generated"
 int setup_bind_load(const bind_args *a, const char *asf, const char *obj, bound_body *body);
 
-/* Meshes other than OBJ (glTF, FBX, COLLADA), and an OBJ with --rig, go
- * to this loader, which
- * skintool sets (its importer links the asset library; skinplay reads OBJ
- * and packed images only). It fills body->mesh, the bind pose and the
- * weights (setup_bind_auto_weights for computed ones) as setup_bind_load
- * does for an OBJ; body->skel and the requested pose are loaded before.
- * Returns 0, or -1 after reporting the error. */
-typedef int (*setup_mesh_importer)(const bind_args *a, const char *path, bound_body *body);
-void setup_bind_set_importer(setup_mesh_importer importer);
+/* The steps setup_bind_load takes that a rigged mesh's importer (skintool's
+ * app/import: rig_bind_load) takes too, around its own: the skeleton and
+ * the pose asked for (0, or -1 after reporting), and 1 when obj is a mesh
+ * for the importer (glTF, FBX, COLLADA, or an OBJ with --rig): this
+ * program (skinplay) refuses it, saying to pack it with skintool. The
+ * quality gate after is setup_gate.h's. */
+int setup_bind_begin(const bind_args *a, const char *asf, bound_body *body);
+int setup_bind_rigged(const bind_args *a, const char *obj);
 
 /* 1 when path names a mesh the importer reads rather than an OBJ. */
 int setup_bind_is_interchange(const char *path);

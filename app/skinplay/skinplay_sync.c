@@ -92,6 +92,21 @@ static void take_clip(skinplay *p, int clip)
 	}
 }
 
+/* Once an hour at most: how far off the clock the device was. */
+static void say_join(skinplay *p, int stood, double still_s, double off_s)
+{
+	unsigned long held;
+	p->sync_joins++;
+	if (!skp_ratelimit_take(&p->sync_said, p->now, &held))
+		return;
+	if (stood)
+		fprintf(stderr, "sync: %.2f s without a frame (a stop or a stall): joined the show's clock, crossfading "
+			"over %d ms\n", still_s, p->o.blend_ms);
+	else
+		fprintf(stderr, "sync: %.2f s %s the show's clock (after a pause): joined it, crossfading over %d ms\n",
+			fabs(off_s), off_s < 0 ? "behind" : "ahead of", p->o.blend_ms);
+}
+
 void sync_frame(skinplay *p, long n)
 {
 	uint64_t len[SKP_IMAGE_MAX_CLIPS];
@@ -118,17 +133,14 @@ void sync_frame(skinplay *p, long n)
 	/* the clip time the picture has moved on to; a picture that stood
 	 * still (a stop, a stall) is off the clock however far the clock went */
 	double dt = (double)(p->now - p->sync_last_now) * 1e-9, expect = p->sync_last + dt * p->o.speed;
-	if (p->sync_started && !changed && (dt > SYNC_TOLERANCE_S || play_sync_off(expect, target, SYNC_TOLERANCE_S))) {
-		unsigned long held;
+	int stood = p->sync_started && dt > SYNC_TOLERANCE_S;
+	int off = p->sync_started && !changed && (stood || play_sync_off(expect, target, SYNC_TOLERANCE_S));
+	if (off)
 		play_rejoin(&p->eng, target, p->now);
-		p->sync_joins++;
-		if (skp_ratelimit_take(&p->sync_said, p->now, &held))
-			fprintf(stderr, "sync: %.2f s %s the show's clock (after a pause, a stop or a stall): joined it, "
-				"crossfading over %d ms\n", fabs(p->sync_last - target), p->sync_last < target ? "behind" : "ahead of",
-				p->o.blend_ms);
-	} else {
-		play_set_clip_time(&p->eng, target, p->now);
-	}
+	else
+		play_set_clip_time(&p->eng, target, p->now); /* a clip changed: select_clip crossfades */
+	if (stood || off)
+		say_join(p, stood, dt, p->sync_last - target);
 	p->eng.travel = vec3_make(0.0f, 0.0f, 0.0f); /* travelling: the clip's own way, the same on every device */
 	p->sync_last = target;
 	p->sync_last_now = p->now;

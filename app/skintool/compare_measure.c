@@ -15,6 +15,7 @@
 #include "compare.h"
 #include "motion_file.h"
 #include "overlap.h"
+#include "rig_load.h"
 #include "setup_bind.h"
 #include "setup_gate.h"
 
@@ -286,7 +287,7 @@ int compare_load_clip(compare_run *c, const compare_args *a)
 {
 	report *r = &c->rep;
 	const char *what = a->mesh ? a->mesh : GENERATED_BODY;
-	if (setup_bind_load(&a->bind, a->asf, a->mesh, &c->body) < 0 ||
+	if (rig_bind_load(&a->bind, a->asf, a->mesh, &c->body) < 0 ||
 	    runtime_skin_init(&c->sk, &c->body.skel, &c->body.pose, &c->body.mesh, &c->body.weights, what) < 0 ||
 	    measure_init(&c->meas, &c->body.mesh, &c->body.pose, c->body.skel.count, what) < 0)
 		return -1;

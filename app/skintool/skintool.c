@@ -5,8 +5,6 @@
 #include "cli_opts.h"
 #include "cli_quiet.h"
 #include "cli_version.h"
-#include "rig_load.h"
-#include "setup_bind.h"
 #include "skintool_cmds.h"
 
 typedef struct command {
@@ -68,7 +66,6 @@ int main(int argc, char **argv)
 		usage(argc < 2 ? stderr : stdout);
 		return argc < 2 ? 1 : 0;
 	}
-	setup_bind_set_importer(rig_load_mesh);
 	for (size_t i = 0; i < sizeof commands / sizeof commands[0]; i++)
 		if (strcmp(argv[1], commands[i].name) == 0)
 			return commands[i].run(argc - 2, argv + 2);

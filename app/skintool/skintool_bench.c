@@ -14,6 +14,7 @@
 #include "motion_file.h"
 #include "runtime_body.h"
 #include "runtime_skin.h"
+#include "rig_load.h"
 #include "setup_bind.h"
 #include "skin.h"
 #include "skin_compact.h"
@@ -171,7 +172,7 @@ static int load_body(bench *b, const tool_common *c, const char **pose_name)
 	static bound_body body;
 	static runtime_skin sk;
 	static amc_frame f;
-	if (setup_bind_load(&c->bind, c->asf, c->mesh, &body) < 0 ||
+	if (rig_bind_load(&c->bind, c->asf, c->mesh, &body) < 0 ||
 	    (c->amc && motion_read_frame(c->amc, &body.skel, -1, &f) < 0) ||
 	    runtime_skin_init(&sk, &body.skel, &body.pose, &body.mesh, &body.weights,
 			  c->mesh ? c->mesh : "generated body") < 0)

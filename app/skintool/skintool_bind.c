@@ -11,6 +11,7 @@
 #include "cli_bind_args.h"
 #include "cli_common.h"
 #include "runtime_body.h"
+#include "rig_load.h"
 #include "setup_bind.h"
 #include "setup_weights.h"
 #include "skintool_cmds.h"
@@ -170,7 +171,7 @@ int cmd_bind(int argc, char **argv)
 	b.c.bind.gate_motion = b.motion;
 	b.c.bind.gate_motion_count = b.motion_count;
 	b.c.bind.gate_report = b.want_report;
-	if (setup_bind_load(&b.c.bind, b.c.asf, b.c.mesh, &body) < 0)
+	if (rig_bind_load(&b.c.bind, b.c.asf, b.c.mesh, &body) < 0)
 		return 1;
 	if (setup_write_weights(b.c.out, &body.skel, &body.weights) < 0)
 		return 1;

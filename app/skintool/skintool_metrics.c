@@ -20,6 +20,7 @@
 #include "runtime_skin.h"
 #include "metrics.h"
 #include "scene.h"
+#include "rig_load.h"
 #include "setup_bind.h"
 #include "skintool_cmds.h"
 #include "tool_args.h"
@@ -191,7 +192,7 @@ static int run_clip(metrics_run *r, metrics_args *a)
 	static amc_frame f;
 	a->c.bind.gate_motion = &a->c.amc;
 	a->c.bind.gate_motion_count = 1;
-	if (setup_bind_load(&a->c.bind, a->c.asf, a->c.mesh, &body) < 0 ||
+	if (rig_bind_load(&a->c.bind, a->c.asf, a->c.mesh, &body) < 0 ||
 	    start(r, &body.skel, &body.pose, &body.mesh, &body.weights, a->c.mesh) < 0 ||
 	    motion_file_open(&mo, a->c.amc, &body.skel) < 0)
 		return -1;

@@ -24,6 +24,7 @@
 #include "cli_progress.h"
 #include "cli_quiet.h"
 #include "motion_file.h"
+#include "rig_load.h"
 #include "setup_bind.h"
 #include "show_source.h"
 #include "tool_clip.h"
@@ -401,7 +402,7 @@ int cmd_pack(int argc, char **argv)
 		return rc < 0;
 	p.bind.gate_motion = p.amc;
 	p.bind.gate_motion_count = p.amc_count;
-	if (setup_bind_load(&p.bind, p.asf, p.mesh, &body) < 0 ||
+	if (rig_bind_load(&p.bind, p.asf, p.mesh, &body) < 0 ||
 	    cli_image_out_open(&out, p.out, (uint32_t)p.block_size) < 0)
 		return 1;
 	if (write_image(&p, &body, &out.sf) < 0) {

@@ -9,6 +9,7 @@
 #include "cli_common.h"
 #include "motion_file.h"
 #include "runtime_body.h"
+#include "rig_load.h"
 #include "setup_bind.h"
 #include "setup_mesh_io.h"
 #include "runtime_skin.h"
@@ -95,7 +96,7 @@ int cmd_skin(int argc, char **argv)
 		return rc < 0;
 	a.c.bind.gate_motion = &a.c.amc;
 	a.c.bind.gate_motion_count = 1;
-	if (setup_bind_load(&a.c.bind, a.c.asf, a.c.mesh, &body) < 0)
+	if (rig_bind_load(&a.c.bind, a.c.asf, a.c.mesh, &body) < 0)
 		return 1;
 	if (motion_read_frame(a.c.amc, &body.skel, a.frame, &f) < 0)
 		return 1;
