@@ -190,7 +190,7 @@ static const char *const visitor_name[SKIN_ALGO_COUNT] = {
 
 static const char *button_legend(const skinplay *p)
 {
-	const skinplay_kiosk *k = &p->kiosk;
+	const kiosk_shell *k = &p->kiosk;
 	if (p->disp && p->disp->key)
 		return "KEYS: 1 METHOD  2 PAUSE  3 NEXT CLIP  4 VIEW  D DIFFERENCE  Q QUIT";
 	if (!strcmp(k->in->name, "keyboard"))
@@ -357,7 +357,7 @@ static int draw_one(skinplay *p, double fps, render_frame *f)
 	return 0;
 }
 
-/* The buttons' state machine (skinplay_kiosk.h) drives what is shown. */
+/* The buttons' state machine (kiosk_shell.h) drives what is shown. */
 static void apply_input(skinplay *p, render_frame *f, unsigned act)
 {
 	const controls_state *s = &p->kiosk.ps;
@@ -365,16 +365,16 @@ static void apply_input(skinplay *p, render_frame *f, unsigned act)
 	p->o.algo = (skin_algo)s->algo;
 	p->o.view = f->view = (render_view)s->view;
 	p->o.gpu = s->gpu;
-	if (act & (SKINPLAY_ACT_ALGO | SKINPLAY_ACT_GPU))
+	if (act & (KIOSK_ACT_ALGO | KIOSK_ACT_GPU))
 		choose_paths(p);
-	if (act & SKINPLAY_ACT_PLAY) {
+	if (act & KIOSK_ACT_PLAY) {
 		/* headless, at the scripted time itself (script time is display
 		 * time): a run pauses on the same pose however it is rendered */
 		uint64_t at = p->kiosk.play_ms * 1000000u;
 		play_pause(&p->eng, !s->playing, p->headless && at < p->now ? at : p->now);
 	}
-	if (act & (SKINPLAY_ACT_RESTART | SKINPLAY_ACT_CLIP))
-		clips_restart(p, act & SKINPLAY_ACT_CLIP ? s->clip : -1);
+	if (act & (KIOSK_ACT_RESTART | KIOSK_ACT_CLIP))
+		clips_restart(p, act & KIOSK_ACT_CLIP ? s->clip : -1);
 }
 
 static int play(skinplay *p)
@@ -395,9 +395,9 @@ static int play(skinplay *p)
 	p->eng.cfg.loop = budget < 0 || p->o.frames >= 0 || clips_show_loops(p);
 	uint64_t prev = 0;
 	while (!quit && (budget < 0 || shown < budget)) {
-		unsigned act = skinplay_kiosk_frame(&p->kiosk, shown) | slots_news(p);
-		if (act & (SKINPLAY_ACT_QUIT | SKINPLAY_ACT_RELOAD)) {
-			p->reload = !(act & SKINPLAY_ACT_QUIT);
+		unsigned act = kiosk_shell_frame(&p->kiosk, shown) | slots_news(p);
+		if (act & (KIOSK_ACT_QUIT | KIOSK_ACT_RELOAD)) {
+			p->reload = !(act & KIOSK_ACT_QUIT);
 			break;
 		}
 		p->now = skinplay_frame_time(p, shown);
@@ -426,7 +426,7 @@ static int play(skinplay *p)
 		if (p->disp && p->disp->handle_events)
 			p->disp->handle_events(&quit);
 		for (int key; p->disp && p->disp->key && (key = p->disp->key()) != 0;)
-			apply_input(p, &f, skinplay_kiosk_key(&p->kiosk, key, shown));
+			apply_input(p, &f, kiosk_shell_key(&p->kiosk, key, shown));
 		uint64_t now = clock_now_ns();
 		if (now - p->stages.window_ns >= 1000000000u) {
 			fps = stage_window_fps(&p->stages, now);
@@ -462,7 +462,7 @@ int main(int argc, char **argv)
 		puts(display_auto()->name);
 		return 0;
 	}
-	if (skinplay_kiosk_setup(&p.kiosk, &p.o, argc, argv) < 0)
+	if (skinplay_board_setup(&p.kiosk, &p.o, argc, argv) < 0)
 		return 1;
 	if (setup(&p) != 0)
 		rc = p.no_show ? wait_for_show(&p) : 1;
@@ -475,7 +475,7 @@ int main(int argc, char **argv)
 		rc = 2;
 	if (p.reload && rc == 0)
 		signals_hold();
-	skinplay_kiosk_shutdown(&p.kiosk);
+	kiosk_shell_shutdown(&p.kiosk);
 	clip_file_close(&p.text);
 	show_close(&p.show);
 	if (p.o.report_memory)

@@ -14,7 +14,7 @@
 #include "display.h"
 #include "play_engine.h"
 #include "play_extent.h"
-#include "skinplay_kiosk.h"
+#include "skinplay_board.h"
 #include "skel_joints.h"
 #include "skin_diff.h"
 #include "skp_ratelimit.h"
@@ -68,7 +68,7 @@ typedef struct skinplay {
 	uint8_t rgba[SKP_DISPLAY_MAX_W * SKP_DISPLAY_MAX_H * 4]; /* one frame read back for --out */
 	char clip[64];
 	sheet contact;
-	skinplay_kiosk kiosk;       /* --board, --input, signals, systemd */
+	kiosk_shell kiosk;       /* --board, --input, signals, systemd */
 	skin_diff diff;          /* where the panels part, where the skin left its bone */
 	skel_joints joints;      /* the joints' names */
 	closeup_pick pick;       /* the compare view's close-up */
@@ -145,7 +145,7 @@ int open_display(skinplay *p);
  * no display at all, it is an error. Returns the exit status. */
 int wait_for_show(skinplay *p);
 
-/* While the show plays: SKINPLAY_ACT_RELOAD when a slot changed and now
+/* While the show plays: KIOSK_ACT_RELOAD when a slot changed and now
  * holds a whole image (said, and RELOADING=1 to systemd), else 0. Not in a
  * run writing frames. */
 unsigned slots_news(skinplay *p);

@@ -392,7 +392,7 @@ int play_parse(play_opts *o, int argc, char **argv)
 			"give it without --asf, --amc, --bvh, --mesh and the bind options\n");
 		return -1;
 	}
-	/* with --board the show may come from its [storage] slots (skinplay_kiosk.c) */
+	/* with --board the show may come from its [storage] slots (skinplay_board.c) */
 	if (!o->image_count && !o->board && (!o->asf || !o->amc)) {
 		return cli_missing(PROG, "--image, or --asf and --amc, or --bvh");
 	}

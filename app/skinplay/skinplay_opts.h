@@ -14,7 +14,7 @@ typedef struct play_opts {
 	int report_memory;       /* --report-memory: VmHWM/VmRSS at the end */
 	int report_timing;       /* --report-timing: per stage mean and worst at the end */
 	int pose_digest;         /* --pose-digest: a digest of every pose shown, at the end */
-	const char *input;       /* --input gpio|keyboard|script:FILE|none (skinplay_kiosk.h) */
+	const char *input;       /* --input gpio|keyboard|script:FILE|none (app/runtime/kiosk_shell.h) */
 	const char *board;       /* --board board/NAME/board.ini */
 	bind_args bind;
 	skin_algo algo;

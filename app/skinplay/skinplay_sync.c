@@ -149,7 +149,7 @@ void sync_frame(skinplay *p, long n)
 
 unsigned sync_button(skinplay *p, unsigned act)
 {
-	const unsigned show_acts = SKINPLAY_ACT_PLAY | SKINPLAY_ACT_RESTART | SKINPLAY_ACT_CLIP;
+	const unsigned show_acts = KIOSK_ACT_PLAY | KIOSK_ACT_RESTART | KIOSK_ACT_CLIP;
 	if (p->o.sync != 1 || !(act & show_acts))
 		return act;
 	if (!p->o.show_buttons) {
@@ -158,7 +158,7 @@ unsigned sync_button(skinplay *p, unsigned act)
 		p->kiosk.ps.clip = p->show.clip;
 		return act & ~show_acts;
 	}
-	p->sync_detour = (act & (SKINPLAY_ACT_RESTART | SKINPLAY_ACT_CLIP)) != 0;
+	p->sync_detour = (act & (KIOSK_ACT_RESTART | KIOSK_ACT_CLIP)) != 0;
 	return act;
 }
 

@@ -47,9 +47,9 @@ static int wait_loop(skinplay *p, show_watch *w)
 	const char *lines[5];
 	int n = notice_lines(&p->o, slots, lines), quit = 0;
 	for (long frame = 0; !quit; frame++) {
-		unsigned act = skinplay_kiosk_frame(&p->kiosk, frame);
-		if (act & (SKINPLAY_ACT_QUIT | SKINPLAY_ACT_RELOAD)) {
-			p->reload = !(act & SKINPLAY_ACT_QUIT);
+		unsigned act = kiosk_shell_frame(&p->kiosk, frame);
+		if (act & (KIOSK_ACT_QUIT | KIOSK_ACT_RELOAD)) {
+			p->reload = !(act & KIOSK_ACT_QUIT);
 			return 0;
 		}
 		uint64_t now = clock_now_ns();
@@ -95,5 +95,5 @@ unsigned slots_news(skinplay *p)
 		return 0;
 	fprintf(cli_note(), "image: a slot changed and holds a whole image -> reopen the show\n");
 	sdnotify_send(&p->kiosk.sd, "RELOADING=1");
-	return SKINPLAY_ACT_RELOAD;
+	return KIOSK_ACT_RELOAD;
 }

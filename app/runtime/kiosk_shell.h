@@ -1,0 +1,88 @@
+/* The kiosk's shell on Linux, beside its core (app/kiosk: the board's
+ * keys, the buttons' state machine, debounce): the board file read and its
+ * problems said, the buttons (an input backend: gpio, keyboard, script)
+ * driving the state machine, signals (SIGTERM and SIGINT quit, SIGHUP
+ * reloads), systemd's readiness and watchdog, and the frame-rate cap. A
+ * program calls these and applies the KIOSK_ACT_* bits to what it shows
+ * (skinplay: app/skinplay/skinplay_board.c merges the board into its
+ * options). */
+#ifndef KIOSK_SHELL_H
+#define KIOSK_SHELL_H
+
+#include <stdint.h>
+
+#include "board_config.h"
+#include "controls.h"
+#include "input.h"
+#include "sd_notify.h"
+
+/* kiosk_shell_frame's result bits. */
+enum {
+	KIOSK_ACT_ALGO = 1 << 0,      /* ps.algo changed */
+	KIOSK_ACT_VIEW = 1 << 1,      /* ps.view changed */
+	KIOSK_ACT_GPU = 1 << 2,       /* ps.gpu changed */
+	KIOSK_ACT_PLAY = 1 << 3,      /* ps.playing changed */
+	KIOSK_ACT_RESTART = 1 << 4,   /* start the clip again */
+	KIOSK_ACT_CLIP = 1 << 5,      /* open clip ps.clip from its start */
+	KIOSK_ACT_RELOAD = 1 << 6,    /* SIGHUP: re-open the show (image slots) */
+	KIOSK_ACT_QUIT = 1 << 7       /* SIGTERM / SIGINT */
+};
+
+typedef struct kiosk_shell {
+	const char *prog;        /* the program's name, for its messages */
+	board_config board;
+	int have_board;
+	const char *input_spec;
+	const input_backend *in;
+	int in_started;
+	controls_state ps;
+	sdnotify sd;
+	int sig_fd;
+	int headless;
+	double fps;              /* headless display rate: frame n at n * 1000 / fps ms */
+	uint64_t t0_ns, last_ns;
+	uint64_t play_ms;        /* when PLAY last paused or resumed (the input's clock) */
+	char board_note[128];    /* the board file's first problem, for the engineer HUD; "" none */
+} kiosk_shell;
+
+/* What the shell starts with: the controls' first state, the frame clock. */
+typedef struct kiosk_start {
+	int algo, view, gpu;
+	int headless;
+	double display_rate;     /* headless: frame n at n / display_rate s */
+	int clip_count;          /* clips NEXT cycles through */
+} kiosk_start;
+
+/* Clears k and sets the board's defaults; prog names the program. */
+void kiosk_shell_init(kiosk_shell *k, const char *prog);
+
+/* Reads the board file: a kiosk goes on with the defaults over any
+ * problem in it, even a file it cannot open; each is said once and the
+ * first kept in board_note. k->have_board when it was read. */
+void kiosk_shell_load_board(kiosk_shell *k, const char *path);
+
+/* Picks the input (input, else the board's, else none) and installs the
+ * signal handlers, before the display and the worker threads start. 0, or
+ * -1 after reporting. */
+int kiosk_shell_prepare(kiosk_shell *k, const char *input);
+
+/* When the program is ready to show frames: starts the input on the
+ * frame clock, sends READY=1. 0, or -1 after reporting (headless only: on
+ * a screen a failing input leaves the show without buttons). */
+int kiosk_shell_start(kiosk_shell *k, const kiosk_start *s);
+
+/* Before frame n (0-based) is drawn: polls the input and the signals,
+ * runs the state machine (printing its "input: BUTTON -> action" lines),
+ * feeds the watchdog, caps the frame rate. Returns KIOSK_ACT_* bits; the
+ * new state is k->ps. */
+unsigned kiosk_shell_frame(kiosk_shell *k, long n);
+
+/* A key pressed in the window (display_backend.key): 1-4 as the buttons
+ * ALGO, PLAY, NEXT and VIEW (v too), d the difference view and back.
+ * Returns KIOSK_ACT_* bits like kiosk_shell_frame. */
+unsigned kiosk_shell_key(kiosk_shell *k, int key, long n);
+
+/* Releases the input (terminal restored), signals; sends STOPPING=1. */
+void kiosk_shell_shutdown(kiosk_shell *k);
+
+#endif
