@@ -3,7 +3,7 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "cli_common.h"
+#include "cli_args.h"
 #include "text_tokens.h"
 
 void bind_args_init(bind_args *a)

@@ -4,7 +4,7 @@
 #include <string.h>
 #include <sys/stat.h>
 
-#include "cli_common.h"
+#include "cli_error.h"
 #include "cli_program.h"
 #include "storage_file.h"
 

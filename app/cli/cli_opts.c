@@ -3,7 +3,7 @@
 #include <getopt.h>
 #include <string.h>
 
-#include "cli_common.h"
+#include "cli_error.h"
 #include "cli_inputs.h"
 #include "cli_program.h"
 #include "cli_quiet.h"

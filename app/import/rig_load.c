@@ -9,7 +9,7 @@
 #include "setup_mesh_format.h"
 #include "setup_mesh_io.h"
 #include "setup_mesh_place.h"
-#include "cli_common.h"
+#include "cli_error.h"
 #include "cli_inputs.h"
 #include "cli_quiet.h"
 #include "clock.h"

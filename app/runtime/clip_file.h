@@ -6,7 +6,6 @@
 #ifndef CLIP_FILE_H
 #define CLIP_FILE_H
 
-#include "cli_common.h"
 #include "motion_file.h"
 #include "play_source.h"
 

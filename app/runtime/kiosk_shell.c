@@ -5,7 +5,7 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "cli_common.h"
+#include "cli_error.h"
 #include "cli_quiet.h"
 #include "clock.h"
 #include "file_reader.h"

@@ -5,7 +5,7 @@
 
 #include "asf.h"
 #include "bvh.h"
-#include "cli_common.h"
+#include "cli_error.h"
 #include "text_tokens.h"
 
 static int open_lines(const char *path, file_reader *fr, text_lines *tl)
@@ -160,8 +160,7 @@ int motion_read_frame(const char *path, const skel *s, long number, amc_frame *f
 	return 0;
 }
 
-
-void cli_bvh_slots(const char **skeleton, const char **motion, const char **next)
+void motion_bvh_slots(const char **skeleton, const char **motion, const char **next)
 {
 	if (!*skeleton || !bvh_is_path(*skeleton) || (*motion && bvh_is_path(*motion)))
 		return;

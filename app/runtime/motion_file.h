@@ -45,4 +45,11 @@ long motion_file_count(const char *path, const skel *s);
  * the frames the file has when number is not one of them). */
 int motion_read_frame(const char *path, const skel *s, long number, amc_frame *f);
 
+/* A BVH carries its skeleton: "MOTION.bvh" stands for "SKELETON.asf
+ * MOTION.amc". Given the positional slots as a command filled them, in
+ * order (skeleton, motion, and the slot after the motion or NULL), puts
+ * the BVH in both the skeleton's and the motion's place and moves what the
+ * user gave next into the slot after. */
+void motion_bvh_slots(const char **skeleton, const char **motion, const char **next);
+
 #endif

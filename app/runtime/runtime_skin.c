@@ -3,7 +3,7 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "cli_common.h"
+#include "cli_error.h"
 #include "clock.h"
 
 static _Alignas(SKIN_ALIGN) unsigned char block[SKIN_SOA_BYTES(SKP_MAX_VERTS)];

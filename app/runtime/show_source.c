@@ -4,7 +4,7 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "cli_common.h"
+#include "cli_error.h"
 #include "cli_quiet.h"
 #include "play_policy.h"
 

@@ -4,7 +4,7 @@
 #include <string.h>
 #include <sys/stat.h>
 
-#include "cli_common.h"
+#include "cli_error.h"
 
 static show_slot_state slot_now(const char *path)
 {

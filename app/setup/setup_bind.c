@@ -3,7 +3,6 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "cli_common.h"
 #include "cli_progress.h"
 #include "clock.h"
 #include "mannequin.h"

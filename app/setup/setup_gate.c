@@ -2,7 +2,6 @@
 
 #include <string.h>
 
-#include "cli_common.h"
 #include "motion_file.h"
 #include "runtime_body.h"
 #include "setup_scratch.h"

@@ -3,7 +3,7 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "cli_common.h"
+#include "cli_error.h"
 #include "setup_scratch.h"
 #include "cli_text_out.h"
 #include "file_reader.h"

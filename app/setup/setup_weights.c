@@ -4,7 +4,7 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "cli_common.h"
+#include "cli_error.h"
 #include "cli_text_out.h"
 #include "file_reader.h"
 #include "weights_csv.h"

@@ -7,7 +7,6 @@
 #define SKINPLAY_H
 
 #include "clip_file.h"
-#include "cli_common.h"
 #include "show_source.h"
 #include "show_watch.h"
 #include "runtime_skin.h"

@@ -7,6 +7,7 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "cli_error.h"
 #include "cli_quiet.h"
 #include "skinplay.h"
 

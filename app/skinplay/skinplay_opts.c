@@ -6,7 +6,8 @@
 #include <strings.h>
 
 #include "board_config.h"
-#include "cli_common.h"
+#include "cli_args.h"
+#include "cli_error.h"
 #include "utc_time.h"
 
 enum {

@@ -8,6 +8,7 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "cli_error.h"
 #include "cli_quiet.h"
 #include "clock.h"
 #include "show_watch.h"

@@ -7,7 +7,6 @@
 #include <string.h>
 #include <unistd.h>
 
-#include "cli_common.h"
 #include "clock.h"
 #include "codec_decode.h"
 #include "encode_error.h"

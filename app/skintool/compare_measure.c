@@ -7,7 +7,7 @@
 #include <string.h>
 #include <unistd.h>
 
-#include "cli_common.h"
+#include "cli_error.h"
 #include "cli_inputs.h"
 #include "clock.h"
 #include "cli_progress.h"

@@ -7,7 +7,6 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "cli_common.h"
 #include "compare.h"
 #include "motion_file.h"
 #include "report_chart.h"

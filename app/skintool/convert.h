@@ -8,7 +8,6 @@
 
 #include <stdio.h>
 
-#include "cli_common.h"
 #include "motion_file.h"
 #include "skel.h"
 

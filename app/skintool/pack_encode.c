@@ -3,7 +3,7 @@
 #include <math.h>
 #include <stdio.h>
 
-#include "cli_common.h"
+#include "cli_error.h"
 #include "cli_progress.h"
 #include "cli_quiet.h"
 #include "codec_decode.h"

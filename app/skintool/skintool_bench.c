@@ -8,7 +8,7 @@
 
 #include "bench_closeup.h"
 #include "clock.h"
-#include "cli_common.h"
+#include "cli_args.h"
 #include "cli_opts.h"
 #include "cli_progress.h"
 #include "motion_file.h"
@@ -355,7 +355,7 @@ static int parse(int argc, char **argv, bench_args *a)
 	int rc = cli_parse(&bench_command, a, argc, argv, 0);
 	if (rc != 0)
 		return rc;
-	cli_bvh_slots(&a->c.asf, &a->c.amc, &a->c.mesh);
+	motion_bvh_slots(&a->c.asf, &a->c.amc, &a->c.mesh);
 	if (!a->c.asf && (a->c.mesh || a->c.amc))
 		return -tool_missing(&a->c, "SKELETON with MESH or --motion");
 	if (a->c.asf && (a->verts_given || a->ozz)) {

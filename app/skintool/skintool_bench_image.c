@@ -14,7 +14,8 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
-#include "cli_common.h"
+#include "cli_args.h"
+#include "cli_error.h"
 #include "cli_opts.h"
 #include "bench_image_codec.h"
 #include "bench_image_digests.h"

@@ -9,7 +9,8 @@
 #include <sys/stat.h>
 
 #include "bvh.h"
-#include "cli_common.h"
+#include "cli_args.h"
+#include "cli_error.h"
 #include "cli_opts.h"
 #include "clock.h"
 #include "motion_file.h"

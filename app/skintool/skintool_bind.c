@@ -9,7 +9,6 @@
 #include <string.h>
 
 #include "cli_bind_args.h"
-#include "cli_common.h"
 #include "runtime_body.h"
 #include "rig_load.h"
 #include "setup_bind.h"

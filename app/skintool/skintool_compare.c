@@ -15,7 +15,9 @@
 #include <string.h>
 #include <sys/stat.h>
 
-#include "cli_common.h"
+#include "cli_args.h"
+#include "cli_error.h"
+#include "motion_file.h"
 #include "cli_progress.h"
 #include "cli_quiet.h"
 #include "clock.h"
@@ -85,7 +87,7 @@ static int parse_args(compare_args *a, int argc, char **argv)
 	int rc = cli_parse(&compare_command, a, argc, argv, 0);
 	if (rc != 0)
 		return rc;
-	cli_bvh_slots(&a->asf, &a->amc, NULL);
+	motion_bvh_slots(&a->asf, &a->amc, NULL);
 	if (!a->asf || !a->amc || !a->out) {
 		return cli_missing(compare_command.prog, "SKELETON MOTION and -o DIR");
 	}

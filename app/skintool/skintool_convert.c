@@ -6,6 +6,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "cli_args.h"
 #include "cli_text_out.h"
 #include "cli_opts.h"
 #include "cli_quiet.h"
@@ -92,7 +93,7 @@ static int parse(convert_args *a, int argc, char **argv)
 	int rc = cli_parse(&convert_command, &c, argc, argv, 0);
 	if (rc != 0)
 		return rc;
-	cli_bvh_slots(&a->skel_path, &a->motion_path, &c.next);
+	motion_bvh_slots(&a->skel_path, &a->motion_path, &c.next);
 	if (!a->skel_path || !a->motion_path || !a->out || c.next) {
 		return cli_missing(convert_command.prog, "SKELETON.asf MOTION.amc or IN.bvh, and -o OUT");
 	}

@@ -10,7 +10,8 @@
 #include <sys/stat.h>
 
 #include "clip_file.h"
-#include "cli_common.h"
+#include "cli_args.h"
+#include "cli_error.h"
 #include "cli_opts.h"
 #include "motion_file.h"
 #include "show_source.h"
@@ -305,7 +306,7 @@ int cmd_fk(int argc, char **argv)
 		return 1;
 	}
 	const char *asf = args.asf, *amc = args.amc;
-	cli_bvh_slots(&asf, &amc, NULL);
+	motion_bvh_slots(&asf, &amc, NULL);
 	if (!asf || !amc)
 		return -cli_missing(fk_command.prog, "SKELETON.asf MOTION.amc, MOTION.bvh or SHOW.skn");
 	if (motion_load_skel(asf, &s) < 0)

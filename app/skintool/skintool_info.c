@@ -10,7 +10,7 @@
 #include <string.h>
 #include <time.h>
 
-#include "cli_common.h"
+#include "cli_error.h"
 #include "show_source.h"
 #include "skintool_cmds.h"
 #include "tool_args.h"

@@ -3,7 +3,8 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "cli_common.h"
+#include "cli_args.h"
+#include "cli_error.h"
 #include "motion_file.h"
 #include "setup_mesh_io.h"
 #include "cli_opts.h"

@@ -12,7 +12,7 @@
 
 #include "clock.h"
 #include "cli_bind_args.h"
-#include "cli_common.h"
+#include "cli_error.h"
 #include "cli_progress.h"
 #include "measure.h"
 #include "motion_file.h"
@@ -126,7 +126,7 @@ static const cli_command metrics_command = {
 
 static int check_args(metrics_args *a)
 {
-	cli_bvh_slots(&a->c.asf, &a->c.amc, &a->c.mesh);
+	motion_bvh_slots(&a->c.asf, &a->c.amc, &a->c.mesh);
 	int clip = a->c.asf || a->c.amc || a->c.mesh;
 	if (a->scene >= 0 && (clip || !a->have_angle)) {
 		fprintf(stderr, "skintool metrics: --scene takes --angle DEG and no files\n");

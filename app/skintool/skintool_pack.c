@@ -19,7 +19,8 @@
 #include <unistd.h>
 
 #include "cli_bind_args.h"
-#include "cli_common.h"
+#include "cli_args.h"
+#include "cli_error.h"
 #include "cli_image_out.h"
 #include "cli_progress.h"
 #include "cli_quiet.h"

@@ -12,7 +12,7 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "cli_common.h"
+#include "cli_error.h"
 #include "cli_image_out.h"
 #include "cli_quiet.h"
 #include "show_source.h"

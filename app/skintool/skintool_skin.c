@@ -6,7 +6,7 @@
 #include <string.h>
 
 #include "cli_bind_args.h"
-#include "cli_common.h"
+#include "cli_args.h"
 #include "motion_file.h"
 #include "runtime_body.h"
 #include "rig_load.h"
@@ -68,7 +68,7 @@ static int parse_args(skin_args *a, int argc, char **argv)
 	int rc = cli_parse(&skin_command, a, argc, argv, 0);
 	if (rc != 0)
 		return rc;
-	cli_bvh_slots(&a->c.asf, &a->c.amc, &a->c.mesh);
+	motion_bvh_slots(&a->c.asf, &a->c.amc, &a->c.mesh);
 	if (!a->c.asf || !a->c.amc || !a->c.mesh || !a->c.out || !a->have_frame || a->algo < 0)
 		return -tool_missing(&a->c, "SKELETON MOTION MESH, --frame, --algo and -o OUT.obj");
 	return 0;

@@ -2,7 +2,7 @@
 
 #include <string.h>
 
-#include "cli_common.h"
+#include "cli_args.h"
 
 const cli_opt tool_opt_skeleton[] = {
 	{ "skeleton", 0, "S.asf", TOOL_OPT_SKELETON, "the skeleton, ASF or BVH (or the first file named)" },

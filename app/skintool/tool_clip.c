@@ -5,7 +5,6 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "cli_common.h"
 #include "motion_file.h"
 
 static int grow(tool_clip *c, long *cap)

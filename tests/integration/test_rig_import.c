@@ -19,7 +19,6 @@
 #include <string.h>
 #include <unistd.h>
 
-#include "cli_common.h"
 #include "motion_file.h"
 #include "rig_map.h"
 #include "test_paths.h"

@@ -10,7 +10,6 @@
 
 #include "test_codec_clip.h"
 
-#include "cli_common.h"
 #include "codec_decode.h"
 #include "encode_error.h"
 #include "motion_file.h"

@@ -1,11 +1,9 @@
-#include "cli_common.h"
+#include "cli_error.h"
 
 #include <stdio.h>
 #include <string.h>
 
-#include "cli_program.h"
 #include "skp_format.h"
-#include "text_tokens.h"
 
 const char *cli_shown(const char *text)
 {
@@ -27,28 +25,8 @@ void cli_error(const char *path, const skp_error *err)
 		fprintf(stderr, "%s: %s\n", path, err->msg);
 }
 
-int cli_take_positional(const char *cmd, const char **const *slots, int n, const char *arg)
-{
-	for (int k = 0; k < n; k++)
-		if (!*slots[k]) {
-			*slots[k] = arg;
-			return 0;
-		}
-	fprintf(stderr, "%s: unexpected argument '%s'\n", cmd, cli_shown(arg));
-	return -1;
-}
-
 const char *cli_basename(const char *path)
 {
 	const char *s = strrchr(path, '/');
 	return s ? s + 1 : path;
-}
-
-int cli_parse_long(const char *opt, const char *text, long *out)
-{
-	if (!text || tok_parse_long(text, out) != 0) {
-		fprintf(stderr, "%s: %s expects an integer, got '%s'\n", cli_program(), opt, text ? text : "");
-		return -1;
-	}
-	return 0;
 }
