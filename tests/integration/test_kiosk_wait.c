@@ -74,20 +74,6 @@ static char *slurp(const char *path)
 	return test_read_file(path, &n);
 }
 
-/* Polls the log for text for up to seconds; 1 when it came. */
-static int wait_for_log(const char *path, const char *text, double seconds)
-{
-	for (int i = 0; i < (int)(seconds * 10); i++) {
-		char *t = slurp(path);
-		int found = t && strstr(t, text);
-		free(t);
-		if (found)
-			return 1;
-		usleep(100000);
-	}
-	return 0;
-}
-
 static void test_kiosk_waits_for_a_show(void **state)
 {
 	(void)state;
@@ -113,12 +99,12 @@ static void test_kiosk_waits_for_a_show(void **state)
 		      "--input", "none", (char *)NULL);
 		_exit(127);
 	}
-	int waiting = wait_for_log(log, "waiting for one", 30);
+	int waiting = test_wait_for_text(log, "waiting for one", 30);
 	sleep(2);
 	int alive = waitpid(pid, NULL, WNOHANG) == 0;
 	/* a good show copied in (a temporary name, then renamed, as an update does) */
 	assert_int_equal(test_run("cp '%s' '%s.tmp' && mv '%s.tmp' '%s'", good, slot, slot, slot), 0);
-	int started = wait_for_log(log, "image: playing", 30) && wait_for_log(log, "frame ", 30);
+	int started = test_wait_for_text(log, "image: playing", 30) && test_wait_for_text(log, "frame ", 30);
 	kill(pid, SIGTERM);
 	int status;
 	waitpid(pid, &status, 0);

@@ -215,20 +215,6 @@ static void test_wall_tiles_equal_whole(void **state)
 	}
 }
 
-/* Waits up to seconds for text in the file at path; 1 when it came. */
-static int wait_for_text(const char *path, const char *text, double seconds)
-{
-	for (int i = 0; i < (int)(seconds * 10); i++) {
-		char *got = test_read_file(path, NULL);
-		int found = got && strstr(got, text);
-		free(got);
-		if (found)
-			return 1;
-		usleep(100000);
-	}
-	return 0;
-}
-
 /* A window on the wall clock (x11 under Xvfb) stopped for two seconds
  * (SIGSTOP, SIGCONT: a stall) joins the show's clock again, crossfading,
  * and says how far behind it was. */
@@ -253,12 +239,12 @@ static void test_stopped_window_rejoins(void **state)
 		      "x11", "--size", "160x90", "--sync=clock", "--algo=dqbs", "--input", "none", (char *)NULL);
 		_exit(127);
 	}
-	int started = wait_for_text(log, "sync: the show follows the wall clock", 60.0);
+	int started = test_wait_for_text(log, "sync: the show follows the wall clock", 60.0);
 	sleep(1);
 	kill(pid, SIGSTOP);
 	sleep(2);
 	kill(pid, SIGCONT);
-	int joined = wait_for_text(log, "without a frame (a stop or a stall): joined the show's clock", 10.0);
+	int joined = test_wait_for_text(log, "without a frame (a stop or a stall): joined the show's clock", 10.0);
 	kill(pid, SIGTERM);
 	int status;
 	waitpid(pid, &status, 0);

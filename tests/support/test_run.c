@@ -26,6 +26,17 @@ void test_assert_contains_all(const char *path, const char *const *texts)
 			fail_msg("%s: no '%s' in it", path, *texts);
 }
 
+int test_wait_for_text(const char *path, const char *text, double seconds)
+{
+	for (int i = 0; i < (int)(seconds * 10); i++) {
+		int found = test_file_contains(path, text);
+		if (found)
+			return 1;
+		usleep(100000);
+	}
+	return 0;
+}
+
 void test_write_text(const char *path, const char *text)
 {
 	FILE *f = fopen(path, "w");

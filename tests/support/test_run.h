@@ -13,6 +13,10 @@ const char *test_scratch_dir(void);
 /* "<scratch>/<name>" in one of 64 rotating static buffers */
 const char *test_scratch(const char *name);
 
+/* Polls the file at path for text for up to seconds (a log a program
+ * writes as it runs); 1 when it came. */
+int test_wait_for_text(const char *path, const char *text, double seconds);
+
 /* Writes text to path (the test fails when it cannot). */
 void test_write_text(const char *path, const char *text);
 
