@@ -8,6 +8,7 @@
 #include "cli_error.h"
 #include "cli_quiet.h"
 #include "clock.h"
+#include "display.h"
 #include "file_reader.h"
 #include "render.h"
 #include "signals.h"
@@ -198,15 +199,40 @@ static unsigned tap(kiosk_shell *k, int button, uint64_t t)
 	return act;
 }
 
+/* Keys for time: an arrow, [ ], + -. 0 when key is none of them. */
+static unsigned time_key(kiosk_shell *k, int key)
+{
+	switch (key) {
+	case DISPLAY_KEY_LEFT: case DISPLAY_KEY_RIGHT:
+		k->step = key == DISPLAY_KEY_LEFT ? -1 : 1;
+		return KIOSK_ACT_STEP;
+	case '[': case ']':
+		k->seek = key == '[' ? -1 : 1;
+		return KIOSK_ACT_SEEK;
+	case '+': case '=': case '-': case '_':
+		k->speed_step = key == '+' || key == '=' ? 1 : -1;
+		return KIOSK_ACT_SPEED;
+	default:
+		return 0;
+	}
+}
+
 unsigned kiosk_shell_key(kiosk_shell *k, int key, long n)
 {
-	static const char buttons[] = "1234";
-	const char *b = key > 0 ? strchr(buttons, key) : NULL;
-	if (b)
-		return tap(k, (int)(b - buttons), now_ms(k, n));
-	if (key == 'v')
-		return tap(k, CONTROL_BTN_VIEW, now_ms(k, n));
-	if (key != 'd')
+	static const char buttons[] = { ' ', 'n', 'v' };
+	static const int taps[] = { CONTROL_BTN_PLAY, CONTROL_BTN_NEXT, CONTROL_BTN_VIEW };
+	unsigned act = time_key(k, key);
+	if (act)
+		return act;
+	if (key >= '1' && key <= '4') {
+		k->ps.algo = key - '1';
+		fprintf(cli_note(), "input: key %c -> %s\n", key, skin_algo_name(k->ps.algo));
+		return KIOSK_ACT_ALGO;
+	}
+	for (int i = 0; i < 3; i++)
+		if (key == buttons[i] || key == (buttons[i] & ~0x20))
+			return tap(k, taps[i], now_ms(k, n));
+	if (key != 'd' && key != 'D')
 		return 0;
 	k->ps.view = k->ps.view == RENDER_VIEW_DIFFERENCE ? RENDER_VIEW_BODY : RENDER_VIEW_DIFFERENCE;
 	fprintf(cli_note(), "input: key d -> %s\n", render_view_name(k->ps.view));

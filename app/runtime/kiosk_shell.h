@@ -25,7 +25,10 @@ enum {
 	KIOSK_ACT_RESTART = 1 << 4,   /* start the clip again */
 	KIOSK_ACT_CLIP = 1 << 5,      /* open clip ps.clip from its start */
 	KIOSK_ACT_RELOAD = 1 << 6,    /* SIGHUP: re-open the show (image slots) */
-	KIOSK_ACT_QUIT = 1 << 7       /* SIGTERM / SIGINT */
+	KIOSK_ACT_QUIT = 1 << 7,      /* SIGTERM / SIGINT */
+	KIOSK_ACT_STEP = 1 << 8,      /* a window's arrow: one captured frame (k->step) while paused */
+	KIOSK_ACT_SEEK = 1 << 9,      /* [ or ]: k->seek seconds */
+	KIOSK_ACT_SPEED = 1 << 10     /* + or -: k->speed_step speeds faster or slower */
 };
 
 typedef struct kiosk_shell {
@@ -43,6 +46,7 @@ typedef struct kiosk_shell {
 	uint64_t t0_ns, last_ns;
 	uint64_t play_ms;        /* when PLAY last paused or resumed (the input's clock) */
 	char board_note[128];    /* the board file's first problem, for the engineer HUD; "" none */
+	int step, seek, speed_step; /* the last STEP, SEEK, SPEED key's: -1 back or slower, 1 on or faster */
 } kiosk_shell;
 
 /* What the shell starts with: the controls' first state, the frame clock. */
@@ -77,9 +81,13 @@ int kiosk_shell_start(kiosk_shell *k, const kiosk_start *s);
  * new state is k->ps. */
 unsigned kiosk_shell_frame(kiosk_shell *k, long n);
 
-/* A key pressed in the window (display_backend.key): 1-4 as the buttons
- * ALGO, PLAY, NEXT and VIEW (v too), d the difference view and back.
- * Returns KIOSK_ACT_* bits like kiosk_shell_frame. */
+/* A key pressed in the window (display_backend.key; q and Escape quit
+ * there): 1-4 pick the method (LBS, DQBS, DQBS fixed-point, LBS beside
+ * DQBS), v the view (VIEW), d the difference view and back, space pauses
+ * (PLAY), n the next clip (NEXT), the left and right arrows step one
+ * captured frame while paused, [ and ] seek a second, + and - (= and _)
+ * the speed. Returns KIOSK_ACT_* bits like kiosk_shell_frame. */
+#define KIOSK_KEYS_LEGEND "KEYS: 1-4 METHOD  V VIEW  SPACE PAUSE  N NEXT  ARROWS STEP  [ ] SEEK  + - SPEED  Q QUIT"
 unsigned kiosk_shell_key(kiosk_shell *k, int key, long n);
 
 /* Releases the input (terminal restored), signals; sends STOPPING=1. */

@@ -188,18 +188,6 @@ static const char *const visitor_name[SKIN_ALGO_COUNT] = {
 	"LINEAR BLEND", "DUAL QUATERNION", "DUAL QUATERNION (FIXED)",
 };
 
-static const char *button_legend(const skinplay *p)
-{
-	const kiosk_shell *k = &p->kiosk;
-	if (p->disp && p->disp->key)
-		return "KEYS: 1 METHOD  2 PAUSE  3 NEXT CLIP  4 VIEW  D DIFFERENCE  Q QUIT";
-	if (!strcmp(k->in->name, "keyboard"))
-		return "KEYS: 1 METHOD   2 PAUSE   3 NEXT CLIP   4 VIEW";
-	if (!strcmp(k->in->name, "gpio"))
-		return "BUTTONS: ALGO CHANGES THE METHOD   PLAY PAUSES   NEXT CLIP   VIEW";
-	return NULL;
-}
-
 static void visitor_hud(skinplay *p, render_frame *f)
 {
 	f->visitor = 1;
@@ -207,7 +195,7 @@ static void visitor_hud(skinplay *p, render_frame *f)
 		f->panel[i].label = visitor_name[p->algo[i]];
 		f->caption[i] = visitor_caption[p->algo[i]];
 	}
-	f->hud[0] = button_legend(p);
+	f->hud[0] = keys_legend(p, 0);
 	f->badge = p->kiosk.ps.playing ? NULL : "PAUSED";
 }
 
@@ -239,6 +227,8 @@ static void hud_text(skinplay *p, render_frame *f, double fps, char lines[3][128
 	/* the engineer sees what the board file got wrong while no notice shows */
 	if (!f->hud[3] && p->kiosk.board_note[0])
 		f->hud[3] = p->kiosk.board_note;
+	if (!f->hud[3])
+		f->hud[3] = keys_legend(p, 1);
 	const char *where = p->gpu[0] ? "GPU" : "CPU";
 	if (p->panel_count > 1)
 		snprintf(lines[0], 128, "COMPARE LBS | DQBS  %s  %s", where, render_view_name(p->o.view));
@@ -375,6 +365,7 @@ static void apply_input(skinplay *p, render_frame *f, unsigned act)
 	}
 	if (act & (KIOSK_ACT_RESTART | KIOSK_ACT_CLIP))
 		clips_restart(p, act & KIOSK_ACT_CLIP ? s->clip : -1);
+	keys_time(p, act);
 }
 
 static int play(skinplay *p)

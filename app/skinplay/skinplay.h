@@ -103,6 +103,12 @@ unsigned sync_button(skinplay *p, unsigned act);
  * screen, the monotonic clock since the first frame. */
 uint64_t skinplay_frame_time(skinplay *p, long n);
 
+/* A window's time keys (skinplay_keys.c): KIOSK_ACT_STEP, _SEEK, _SPEED
+ * applied to the engine; and the keys' legend for the visitor's HUD (0)
+ * or the engineer's (1, a window's first seconds), NULL for none. */
+void keys_time(skinplay *p, unsigned act);
+const char *keys_legend(const skinplay *p, int engineer);
+
 /* Selects clip c of the image as the show does (the next that can play
  * when it cannot), crossfading from the pose shown. */
 void clips_select(skinplay *p, int c);

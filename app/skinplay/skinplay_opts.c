@@ -329,8 +329,12 @@ static const cli_command play_command = {
 		"the moment, held at least 2 s, named (LEFT WRIST), with how the joint turned and how far apart the two\n"
 		"put its skin in millimetres.\n"
 		"\n"
-		"Keys in a window (x11): 1 ALGO (the method), 2 PLAY (pause), 3 NEXT (clip), 4 or v VIEW, d the\n"
-		"difference view and back, q or Escape quit. On a terminal (--input keyboard): 1-4 or the arrows.\n",
+		"Keys in a window (x11; the legend shows for its first 10 s): 1 LBS, 2 DQBS, 3 fixed-point DQBS, 4 LBS\n"
+		"beside DQBS; v the next view, d the difference view and back; space pauses and plays; the left and\n"
+		"right arrows step one captured frame while paused; [ and ] seek a second back and on; + and - double\n"
+		"and halve the speed (1/8 to 4); n the next clip; q or Escape quit. A --sync=clock show keeps its clock\n"
+		"(space and n then act as the buttons do). On a terminal (--input keyboard) 1-4 or the arrows are the\n"
+		"four buttons: ALGO, PLAY, NEXT, VIEW.\n",
 	.exit2 = "headless, no clip of the show could play (the bind pose was rendered)",
 	.examples = (const cli_example[]){
 		{ "The packaged demo on the screen",

@@ -25,6 +25,10 @@ typedef struct display_info {
 	const char *gl_renderer; /* GL_RENDERER string */
 } display_info;
 
+/* display_backend.key's codes for keys that are not characters. */
+#define DISPLAY_KEY_LEFT 0x100
+#define DISPLAY_KEY_RIGHT 0x101
+
 typedef struct display_backend {
 	const char *name;
 	/* NULL, or 1 when the backend can start here (kms: a /dev/dri/card*
@@ -43,8 +47,8 @@ typedef struct display_backend {
 	 * on a close request. */
 	int (*handle_events)(int *quit);
 	/* NULL, or the next key pressed in the window since (a printable
-	 * character, 0 when none is waiting): keys the frame loop maps to the
-	 * buttons and views. */
+	 * character, DISPLAY_KEY_LEFT or _RIGHT, 0 when none is waiting): keys
+	 * the frame loop maps to methods, views and time. */
 	int (*key)(void);
 	/* Releases everything init took (kms: restores the saved CRTC). */
 	void (*shutdown)(void);

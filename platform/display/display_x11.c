@@ -1,8 +1,9 @@
 /* A fixed-size Xlib window with an EGL window surface (EGL platform X11).
  * q, Escape or the window manager's close button quit; other keys pressed
- * in the window are handed to skinplay (display_backend.key: 1-4 the
- * buttons, v VIEW, d the difference view), besides the input backends'
- * buttons (keyboard: the terminal that started it). */
+ * in the window are handed to skinplay (display_backend.key: the method,
+ * view and time keys of app/runtime/kiosk_shell.h, the arrows as
+ * DISPLAY_KEY_*), besides the input backends' buttons (keyboard: the
+ * terminal that started it). */
 #include "display.h"
 
 #include <string.h>
@@ -20,7 +21,7 @@ static struct {
 	Colormap cmap;
 	Atom wm_delete;
 	display_egl egl;
-	char keys[16];          /* keys pressed in the window, not yet taken */
+	int keys[16];           /* keys pressed in the window, not yet taken */
 	int key_count;
 } s;
 
@@ -129,19 +130,29 @@ static int x11_present(skp_error *err)
 static void handle_key(XKeyEvent *ev, int *quit)
 {
 	KeySym sym = XLookupKeysym(ev, 0);
+	int key = sym >= 0x20 && sym < 0x7f ? (int)sym : 0;
+	if (sym == XK_Left || sym == XK_KP_Left)
+		key = DISPLAY_KEY_LEFT;
+	else if (sym == XK_Right || sym == XK_KP_Right)
+		key = DISPLAY_KEY_RIGHT;
+	else if (sym == XK_KP_Add)
+		key = '+';
+	else if (sym == XK_KP_Subtract)
+		key = '-';
 	if (sym == XK_q || sym == XK_Escape)
 		*quit = 1;
-	else if (sym >= 0x20 && sym < 0x7f && s.key_count < (int)sizeof s.keys)
-		s.keys[s.key_count++] = (char)sym;
+	else if (key && s.key_count < (int)(sizeof s.keys / sizeof s.keys[0]))
+		s.keys[s.key_count++] = key;
 }
 
-/* The oldest key pressed in the window (a printable character), 0 none. */
+/* The oldest key pressed in the window (a printable character, an
+ * arrow's DISPLAY_KEY_*), 0 none. */
 static int x11_key(void)
 {
 	if (s.key_count == 0)
 		return 0;
-	int k = (unsigned char)s.keys[0];
-	memmove(s.keys, s.keys + 1, (size_t)--s.key_count);
+	int k = s.keys[0];
+	memmove(s.keys, s.keys + 1, sizeof s.keys[0] * (size_t)--s.key_count);
 	return k;
 }
 

@@ -181,8 +181,10 @@ static void test_camera_faces_the_clip(void **state)
 	assert_int_equal(logged_yaw(args), -45);
 }
 
-/* Keys pressed in the window, as a user would (xdotool under Xvfb): d
- * turns the difference view on and off, 1 changes the method. */
+/* Keys pressed in the window, as a user would (xdotool under Xvfb), each
+ * doing what the legend says: 2 picks DQBS, d the difference view and
+ * back, v the next view, space pauses, the right arrow steps a frame, ]
+ * seeks a second, + doubles the speed, n the next clip, q quits (exit 0). */
 static void test_window_keys(void **state)
 {
 	(void)state;
@@ -199,15 +201,22 @@ static void test_window_keys(void **state)
 	 * sanitizer build under a parallel test run starts slowly) */
 	int rc = test_run("export DISPLAY=%s; log='%s'; "
 			  "seen() { for i in $(seq 300); do grep -q \"$1\" \"$log\" && return 0; sleep 0.1; done; return 1; }; "
-			  "%s --asf assets/cmu/02.asf --amc assets/cmu/02_01.amc --platform x11 --size 320x240 --input none "
-			  "--algo compare 2>\"$log\" & pid=$!; seen '^display: x11' && sleep 0.5 && xdotool mousemove 160 120 && "
-			  "xdotool key d && seen 'key d -> difference' && xdotool key d && seen 'key d -> body' && "
-			  "xdotool key 1 && seen 'ALGO -> '; kill -TERM $pid; wait $pid",
-			  name, log, test_tool_path("skinplay"));
+			  "%s --image %s --platform x11 --size 320x240 --input none --algo compare --loop clip "
+			  "2>\"$log\" & pid=$!; seen '^display: x11' && sleep 0.5 && xdotool mousemove 160 120 && "
+			  "xdotool key 2 && seen 'key 2 -> dqbs' && xdotool key d && seen 'key d -> difference' && "
+			  "xdotool key d && seen 'key d -> body' && xdotool key v && seen 'VIEW -> ' && "
+			  "xdotool key space && seen 'PLAY -> pause' && xdotool key Right && seen 'key right -> frame' && "
+			  "xdotool key bracketright && seen 'key ] -> ' && xdotool key plus && seen 'speed 2' && "
+			  "xdotool key n && seen 'NEXT -> ' && xdotool key q; wait $pid",
+			  name, log, test_tool_path("skinplay"), test_tool_path("assets/demo.skn"));
 	test_xvfb_stop(x);
-	assert_int_equal(rc, 0);
-	static const char *const want[] = { "input: key d -> difference", "input: key d -> body", "input: ALGO -> ",
-					    NULL };
+	if (rc != 0) {
+		char *text = test_read_file(log, NULL);
+		fail_msg("exit %d; log:\n%s", rc, text ? text : "");
+	}
+	static const char *const want[] = { "input: key 2 -> dqbs", "input: key d -> difference", "input: key d -> body",
+					    "input: VIEW -> ", "input: PLAY -> pause", "input: key right -> frame",
+					    "input: key ] -> ", "input: key + -> speed 2", "input: NEXT -> ", NULL };
 	test_assert_contains_all(log, want);
 }
 
