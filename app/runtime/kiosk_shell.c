@@ -199,7 +199,8 @@ static unsigned tap(kiosk_shell *k, int button, uint64_t t)
 	return act;
 }
 
-/* Keys for time: an arrow, [ ], + -. 0 when key is none of them. */
+/* Keys for time and the camera: an arrow, [ ], + -, f, r. 0 when key is
+ * none of them. */
 static unsigned time_key(kiosk_shell *k, int key)
 {
 	switch (key) {
@@ -212,6 +213,9 @@ static unsigned time_key(kiosk_shell *k, int key)
 	case '+': case '=': case '-': case '_':
 		k->speed_step = key == '+' || key == '=' ? 1 : -1;
 		return KIOSK_ACT_SPEED;
+	case 'f': case 'F': case 'r': case 'R':
+		k->camera = key == 'f' || key == 'F' ? 1 : 2;
+		return KIOSK_ACT_CAMERA;
 	default:
 		return 0;
 	}

@@ -28,7 +28,8 @@ enum {
 	KIOSK_ACT_QUIT = 1 << 7,      /* SIGTERM / SIGINT */
 	KIOSK_ACT_STEP = 1 << 8,      /* a window's arrow: one captured frame (k->step) while paused */
 	KIOSK_ACT_SEEK = 1 << 9,      /* [ or ]: k->seek seconds */
-	KIOSK_ACT_SPEED = 1 << 10     /* + or -: k->speed_step speeds faster or slower */
+	KIOSK_ACT_SPEED = 1 << 10,    /* + or -: k->speed_step speeds faster or slower */
+	KIOSK_ACT_CAMERA = 1 << 11    /* f frames the body again, r resets the camera (k->camera 1, 2) */
 };
 
 typedef struct kiosk_shell {
@@ -47,6 +48,7 @@ typedef struct kiosk_shell {
 	uint64_t play_ms;        /* when PLAY last paused or resumed (the input's clock) */
 	char board_note[128];    /* the board file's first problem, for the engineer HUD; "" none */
 	int step, seek, speed_step; /* the last STEP, SEEK, SPEED key's: -1 back or slower, 1 on or faster */
+	int camera;              /* the last CAMERA key's: 1 frame the body, 2 reset */
 } kiosk_shell;
 
 /* What the shell starts with: the controls' first state, the frame clock. */
@@ -86,8 +88,11 @@ unsigned kiosk_shell_frame(kiosk_shell *k, long n);
  * DQBS), v the view (VIEW), d the difference view and back, space pauses
  * (PLAY), n the next clip (NEXT), the left and right arrows step one
  * captured frame while paused, [ and ] seek a second, + and - (= and _)
- * the speed. Returns KIOSK_ACT_* bits like kiosk_shell_frame. */
+ * the speed, f frames the body again and r resets the camera (drags and
+ * the wheel move it: display_backend.pointer). Returns KIOSK_ACT_* bits
+ * like kiosk_shell_frame. */
 #define KIOSK_KEYS_LEGEND "KEYS: 1-4 METHOD  V VIEW  SPACE PAUSE  N NEXT  ARROWS STEP  [ ] SEEK  + - SPEED  Q QUIT"
+#define KIOSK_MOUSE_LEGEND "DRAG TURNS  RIGHT-DRAG MOVES  WHEEL ZOOMS  F FRAMES  R RESETS"
 unsigned kiosk_shell_key(kiosk_shell *k, int key, long n);
 
 /* Releases the input (terminal restored), signals; sends STOPPING=1. */

@@ -113,6 +113,7 @@ static int setup(skinplay *p)
 	render_set_colours(&p->r, m->coloured ? (const uint8_t (*)[3])m->colour : NULL);
 	render_set_yaw(&p->r, p->yaw, 1);
 	render_set_view(&p->r, &p->o.view_cam);
+	p->view_home = p->o.view_cam;
 	render_set_wall(&p->r, &p->o.wall);
 	p->render_ready = 1;
 	closeup_setup(p);
@@ -366,6 +367,7 @@ static void apply_input(skinplay *p, render_frame *f, unsigned act)
 	if (act & (KIOSK_ACT_RESTART | KIOSK_ACT_CLIP))
 		clips_restart(p, act & KIOSK_ACT_CLIP ? s->clip : -1);
 	keys_time(p, act);
+	camera_key(p, act);
 }
 
 static int play(skinplay *p)
@@ -418,6 +420,7 @@ static int play(skinplay *p)
 			p->disp->handle_events(&quit);
 		for (int key; p->disp && p->disp->key && (key = p->disp->key()) != 0;)
 			apply_input(p, &f, kiosk_shell_key(&p->kiosk, key, shown));
+		camera_pointer(p);
 		uint64_t now = clock_now_ns();
 		if (now - p->stages.window_ns >= 1000000000u) {
 			fps = stage_window_fps(&p->stages, now);

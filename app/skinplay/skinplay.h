@@ -84,6 +84,8 @@ typedef struct skinplay {
 	int sync_detour;         /* a local NEXT was pressed: the detour starts */
 	unsigned long sync_joins;   /* joins of the clock after a start, pause or stall */
 	skp_ratelimit sync_said;
+	float cam_yaw;           /* the engineer's turn of the camera, added to the clip's yaw */
+	render_view_cam view_home; /* the camera as it began (the board's): r goes back to it */
 	int reload;        /* SIGHUP, or a slot changed while waiting: start over (main re-executes) */
 	int no_show;       /* no image slot holds a show that can play */
 } skinplay;
@@ -107,6 +109,11 @@ uint64_t skinplay_frame_time(skinplay *p, long n);
  * applied to the engine; and the keys' legend for the visitor's HUD (0)
  * or the engineer's (1, a window's first seconds), NULL for none. */
 void keys_time(skinplay *p, unsigned act);
+
+/* The engineer's camera in a window (skinplay_camera.c): the pointer's
+ * drags and wheel each frame, and the f and r keys (KIOSK_ACT_CAMERA). */
+void camera_pointer(skinplay *p);
+void camera_key(skinplay *p, unsigned act);
 const char *keys_legend(const skinplay *p, int engineer);
 
 /* Selects clip c of the image as the show does (the next that can play

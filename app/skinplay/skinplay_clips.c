@@ -88,7 +88,7 @@ static void face_clip(skinplay *p)
 		(double)p->src.frames / p->src.rate, round(yaw / (M_PI / 180.0)) + 0.0, /* + 0.0: never "-0" */
 		p->o.yaw_mode == 1 ? " (--yaw)" : p->extent.facing_known ? " (the clip's mean facing)" : "");
 	if (p->render_ready)
-		render_set_yaw(&p->r, yaw, 0);
+		render_set_yaw(&p->r, yaw + p->cam_yaw, 0);
 	clips_frame(p, 0);
 }
 

@@ -332,7 +332,9 @@ static const cli_command play_command = {
 		"Keys in a window (x11; the legend shows for its first 10 s): 1 LBS, 2 DQBS, 3 fixed-point DQBS, 4 LBS\n"
 		"beside DQBS; v the next view, d the difference view and back; space pauses and plays; the left and\n"
 		"right arrows step one captured frame while paused; [ and ] seek a second back and on; + and - double\n"
-		"and halve the speed (1/8 to 4); n the next clip; q or Escape quit. A --sync=clock show keeps its clock\n"
+		"and halve the speed (1/8 to 4); n the next clip; q or Escape quit. A drag turns the camera round the\n"
+		"body and up or down, a right or middle drag (or shift and drag) moves the point it looks at, the wheel\n"
+		"brings it nearer or farther, f frames the body again, r resets it. A --sync=clock show keeps its clock\n"
 		"(space and n then act as the buttons do). On a terminal (--input keyboard) 1-4 or the arrows are the\n"
 		"four buttons: ALGO, PLAY, NEXT, VIEW.\n",
 	.exit2 = "headless, no clip of the show could play (the bind pose was rendered)",

@@ -87,7 +87,7 @@ static void take_clip(skinplay *p, int clip)
 		p->eng.shown = 0; /* the first pose is the clock's: nothing to fade from */
 	clips_select(p, clip);
 	if (!p->sync_started && p->render_ready) {
-		render_set_yaw(&p->r, p->yaw, 1);
+		render_set_yaw(&p->r, p->yaw + p->cam_yaw, 1);
 		clips_frame(p, 1);
 	}
 }

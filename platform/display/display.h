@@ -25,6 +25,14 @@ typedef struct display_info {
 	const char *gl_renderer; /* GL_RENDERER string */
 } display_info;
 
+/* A window's pointer since the last look: drags with the left button
+ * (orbit) and with the right or middle one, or shift and left (pan), in
+ * pixels (y down), wheel clicks (up positive), and whether a drag ended. */
+typedef struct display_pointer {
+	int orbit_dx, orbit_dy, pan_dx, pan_dy, wheel;
+	int released;
+} display_pointer;
+
 /* display_backend.key's codes for keys that are not characters. */
 #define DISPLAY_KEY_LEFT 0x100
 #define DISPLAY_KEY_RIGHT 0x101
@@ -50,6 +58,9 @@ typedef struct display_backend {
 	 * character, DISPLAY_KEY_LEFT or _RIGHT, 0 when none is waiting): keys
 	 * the frame loop maps to methods, views and time. */
 	int (*key)(void);
+	/* NULL, or the pointer's drags and wheel since the last call (then
+	 * cleared): what the frame loop turns into the camera's moves. */
+	void (*pointer)(display_pointer *moved);
 	/* Releases everything init took (kms: restores the saved CRTC). */
 	void (*shutdown)(void);
 } display_backend;

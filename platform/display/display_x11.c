@@ -1,4 +1,5 @@
 /* A fixed-size Xlib window with an EGL window surface (EGL platform X11).
+ * Drags and the wheel go to skinplay's camera (display_backend.pointer).
  * q, Escape or the window manager's close button quit; other keys pressed
  * in the window are handed to skinplay (display_backend.key: the method,
  * view and time keys of app/runtime/kiosk_shell.h, the arrows as
@@ -23,6 +24,9 @@ static struct {
 	display_egl egl;
 	int keys[16];           /* keys pressed in the window, not yet taken */
 	int key_count;
+	display_pointer moved;  /* drags and wheel not yet taken */
+	int drag;               /* 0 none, 1 orbit, 2 pan: the button held */
+	int last_x, last_y;
 } s;
 
 static int open_x(const char *name, skp_error *err)
@@ -53,7 +57,8 @@ static int create_window(int width, int height, skp_error *err)
 	attr.colormap = s.cmap;
 	attr.background_pixel = 0;
 	attr.border_pixel = 0;
-	attr.event_mask = ExposureMask | StructureNotifyMask | KeyPressMask;
+	attr.event_mask = ExposureMask | StructureNotifyMask | KeyPressMask | ButtonPressMask | ButtonReleaseMask |
+			  PointerMotionMask;
 	s.win = XCreateWindow(s.dpy, root, 0, 0, (unsigned)width, (unsigned)height, 0, vi->depth, InputOutput,
 			      vi->visual, CWBackPixel | CWBorderPixel | CWColormap | CWEventMask, &attr);
 	XFree(vi);
@@ -92,6 +97,8 @@ static int x11_init(const display_config *cfg, display_info *out, skp_error *err
 		EGL_NONE
 	};
 	s.key_count = 0;
+	memset(&s.moved, 0, sizeof s.moved);
+	s.drag = 0;
 	int rc = display_check_config(cfg, 16384, 16384, err);
 	if (rc != SKP_OK)
 		return rc;
@@ -156,6 +163,43 @@ static int x11_key(void)
 	return k;
 }
 
+/* Left: orbit (with shift: pan); middle or right: pan; 4 and 5: the wheel. */
+static void handle_button(const XButtonEvent *ev, int down)
+{
+	if (ev->button == Button4 || ev->button == Button5) {
+		s.moved.wheel += down ? (ev->button == Button4 ? 1 : -1) : 0;
+		return;
+	}
+	if (!down) {
+		s.moved.released |= s.drag != 0;
+		s.drag = 0;
+		return;
+	}
+	s.drag = ev->button == Button1 && !(ev->state & ShiftMask) ? 1 : 2;
+	s.last_x = ev->x;
+	s.last_y = ev->y;
+}
+
+static void handle_motion(const XMotionEvent *ev)
+{
+	int dx = ev->x - s.last_x, dy = ev->y - s.last_y;
+	s.last_x = ev->x;
+	s.last_y = ev->y;
+	if (s.drag == 1) {
+		s.moved.orbit_dx += dx;
+		s.moved.orbit_dy += dy;
+	} else if (s.drag == 2) {
+		s.moved.pan_dx += dx;
+		s.moved.pan_dy += dy;
+	}
+}
+
+static void x11_pointer(display_pointer *moved)
+{
+	*moved = s.moved;
+	memset(&s.moved, 0, sizeof s.moved);
+}
+
 static int x11_handle_events(int *quit)
 {
 	if (!s.dpy)
@@ -166,6 +210,13 @@ static int x11_handle_events(int *quit)
 		switch (ev.type) {
 		case KeyPress:
 			handle_key(&ev.xkey, quit);
+			break;
+		case ButtonPress:
+		case ButtonRelease:
+			handle_button(&ev.xbutton, ev.type == ButtonPress);
+			break;
+		case MotionNotify:
+			handle_motion(&ev.xmotion);
 			break;
 		case ClientMessage:
 			if ((Atom)ev.xclient.data.l[0] == s.wm_delete)
@@ -189,5 +240,6 @@ const display_backend display_x11 = {
 	.present = x11_present,
 	.handle_events = x11_handle_events,
 	.key = x11_key,
+	.pointer = x11_pointer,
 	.shutdown = x11_shutdown,
 };

@@ -184,7 +184,9 @@ static void test_camera_faces_the_clip(void **state)
 /* Keys pressed in the window, as a user would (xdotool under Xvfb), each
  * doing what the legend says: 2 picks DQBS, d the difference view and
  * back, v the next view, space pauses, the right arrow steps a frame, ]
- * seeks a second, + doubles the speed, n the next clip, q quits (exit 0). */
+ * seeks a second, + doubles the speed, n the next clip; a drag turns the
+ * camera, the wheel brings it nearer, a right drag moves its aim, f frames
+ * the body again, r resets; q quits (exit 0). */
 static void test_window_keys(void **state)
 {
 	(void)state;
@@ -207,7 +209,12 @@ static void test_window_keys(void **state)
 			  "xdotool key d && seen 'key d -> body' && xdotool key v && seen 'VIEW -> ' && "
 			  "xdotool key space && seen 'PLAY -> pause' && xdotool key Right && seen 'key right -> frame' && "
 			  "xdotool key bracketright && seen 'key ] -> ' && xdotool key plus && seen 'speed 2' && "
-			  "xdotool key n && seen 'NEXT -> ' && xdotool key q; wait $pid",
+			  "xdotool key n && seen 'NEXT -> ' && "
+			  "xdotool mousemove 160 120 mousedown 1 mousemove_relative -- 60 20 sleep 0.2 mouseup 1 && "
+			  "seen 'drag -> camera yaw -' && xdotool click 4 && seen 'wheel -> .*distance 0.85' && "
+			  "xdotool mousedown 3 mousemove_relative -- 30 0 sleep 0.2 mouseup 3 && seen 'drag -> .*aim -0' && "
+			  "xdotool key f && seen 'key f -> .*distance 1.00, aim 0.00 0.00 0.00' && xdotool key r && "
+			  "seen 'key r -> camera yaw +0' && xdotool key q; wait $pid",
 			  name, log, test_tool_path("skinplay"), test_tool_path("assets/demo.skn"));
 	test_xvfb_stop(x);
 	if (rc != 0) {
