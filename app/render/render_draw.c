@@ -258,24 +258,26 @@ static void draw_label(renderer *r, const render_frame *f, const layout *l, int 
 			    l->caption, caption, caption_rgba);
 }
 
-/* Eases the framed box towards the one asked for: it grows at once (the
- * body never leaves the picture), shrinks over the next frames. */
-static float ease_down(float now, float goal, float k)
+/* Eases the framed box towards the one asked for: it grows fast (time
+ * constant 0.15 s: within the 300 ms crossfade a new clip's pose takes
+ * to arrive, so the body stays in the picture and the camera never cuts),
+ * and shrinks over the camera's 0.6 s. */
+static float ease_down(float now, float goal, float grow, float shrink)
 {
-	return goal < now ? goal : now + (goal - now) * k;
+	return now + (goal - now) * (goal < now ? grow : shrink);
 }
 
-static float ease_up(float now, float goal, float k)
+static float ease_up(float now, float goal, float grow, float shrink)
 {
-	return goal > now ? goal : now + (goal - now) * k;
+	return now + (goal - now) * (goal > now ? grow : shrink);
 }
 
 static void ease_extent(renderer *r, float dt)
 {
-	float k = camera_ease(dt);
+	float k = camera_ease(dt), g = dt > 0.0f ? 1.0f - expf(-dt / 0.15f) : 1.0f;
 	vec3 *lo = &r->ext_lo, *hi = &r->ext_hi, glo = r->goal_lo, ghi = r->goal_hi;
-	*lo = vec3_make(ease_down(lo->x, glo.x, k), ease_down(lo->y, glo.y, k), ease_down(lo->z, glo.z, k));
-	*hi = vec3_make(ease_up(hi->x, ghi.x, k), ease_up(hi->y, ghi.y, k), ease_up(hi->z, ghi.z, k));
+	*lo = vec3_make(ease_down(lo->x, glo.x, g, k), ease_down(lo->y, glo.y, g, k), ease_down(lo->z, glo.z, g, k));
+	*hi = vec3_make(ease_up(hi->x, ghi.x, g, k), ease_up(hi->y, ghi.y, g, k), ease_up(hi->z, ghi.z, g, k));
 }
 
 /* The panel's camera: the box the body takes, placed at the followed root
