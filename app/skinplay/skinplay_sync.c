@@ -18,8 +18,10 @@
 #include "play_sync.h"
 #include "skinplay.h"
 
-/* Off the clock by more than this: a join (crossfaded), not a correction. */
+/* Off the clock by more than this: a join (crossfaded), not a correction;
+ * a picture that stood still this long (a stop, a stall) joins too. */
 #define SYNC_TOLERANCE_S 0.1
+#define SYNC_STALL_S 0.5
 
 /* The show's clips in display time at the speed (0: one that cannot play). */
 static int show_lengths(const skinplay *p, uint64_t *len)
@@ -97,7 +99,8 @@ static void say_join(skinplay *p, int stood, double still_s, double off_s)
 {
 	unsigned long held;
 	p->sync_joins++;
-	if (!skp_ratelimit_take(&p->sync_said, p->now, &held))
+	/* a stop of a second or more is always said; pauses once an hour */
+	if (!(stood && still_s >= 1.0) && !skp_ratelimit_take(&p->sync_said, p->now, &held))
 		return;
 	if (stood)
 		fprintf(stderr, "sync: %.2f s without a frame (a stop or a stall): joined the show's clock, crossfading "
@@ -133,7 +136,7 @@ void sync_frame(skinplay *p, long n)
 	/* the clip time the picture has moved on to; a picture that stood
 	 * still (a stop, a stall) is off the clock however far the clock went */
 	double dt = (double)(p->now - p->sync_last_now) * 1e-9, expect = p->sync_last + dt * p->o.speed;
-	int stood = p->sync_started && dt > SYNC_TOLERANCE_S;
+	int stood = p->sync_started && dt > SYNC_STALL_S;
 	int off = p->sync_started && !changed && (stood || play_sync_off(expect, target, SYNC_TOLERANCE_S));
 	if (off)
 		play_rejoin(&p->eng, target, p->now);

@@ -22,6 +22,7 @@ static const command commands[] = {
 	{ "metrics", cmd_metrics, "volume and radius ratios per frame, as CSV" },
 	{ "compare", cmd_compare, "the LBS vs DQBS report: a page, CSV, charts, renders" },
 	{ "pack", cmd_pack, "a flash image of the bound body and clips for skinplay --image" },
+	{ "view", cmd_view, "a mesh or rig and a motion played at once (bound, packed, skinplay)" },
 	{ "info", cmd_info, "an image's header and clips; checks every block" },
 	{ "repair", cmd_repair, "rebuilds an image's bad blocks from its parity" },
 	{ "bench", cmd_bench, "skinning speed against the memory-bandwidth bound" },

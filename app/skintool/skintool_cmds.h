@@ -11,6 +11,7 @@ int cmd_skin(int argc, char **argv);
 int cmd_metrics(int argc, char **argv);
 int cmd_compare(int argc, char **argv);
 int cmd_pack(int argc, char **argv);
+int cmd_view(int argc, char **argv);
 int cmd_info(int argc, char **argv);
 int cmd_repair(int argc, char **argv);
 int cmd_bench_image(int argc, char **argv);

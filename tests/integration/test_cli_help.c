@@ -71,7 +71,7 @@ static void test_every_command_has_help(void **state)
 		}
 	}
 	free(list);
-	assert_int_equal(commands, 13);
+	assert_int_equal(commands, 14);
 }
 
 static void test_option_forms(void **state)
