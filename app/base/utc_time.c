@@ -2,6 +2,8 @@
  * and timegm() and strptime() are neither C11 nor on a microcontroller. */
 #include "utc_time.h"
 
+#include <stddef.h>
+
 /* n digits at s as a number; -1 when one is not a digit. */
 static long digits(const char *s, int n)
 {
@@ -43,7 +45,11 @@ int utc_time_parse(const char *text, int64_t *ns)
 {
 	static const int mdays[] = { 31, 28, 31, 30, 31, 30, 31, 31, 30, 31, 30, 31 };
 	const char *s = text;
-	if (!s)
+	/* YYYY-MM-DDTHH:MM:SS and a zone at least: nothing read past the end */
+	size_t n = 0;
+	while (s && n < 20 && s[n])
+		n++;
+	if (n < 20)
 		return -1;
 	long y = digits(s, 4), mo = digits(s + 5, 2), d = digits(s + 8, 2);
 	if (y < 1900 || y > 2200 || s[4] != '-' || mo < 1 || mo > 12 || s[7] != '-' || d < 1 ||
