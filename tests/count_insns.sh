@@ -80,3 +80,20 @@ END {
 	printf "close-up (where LBS and DQBS part, where on the joint): %.1f instructions/vertex, %.2fx the compare frame'"'"'s two compact kernels (%.1f)\n", closeup, closeup / frame, frame
 	printf "difference view (distances, colours): %.1f instructions/vertex, %.2fx those kernels\n", diffview, diffview / frame
 }'
+
+# What version 7's per-block digests cost a block read on the Pi: the
+# instructions of one block's leaf (SHA-256 of its 4096 bytes: 65 rounds
+# of the compression) and of one check against its digest block, counted
+# while `skintool info` reads a small image (tests/data/tiny.*), every block
+# checked.
+img=$(mktemp --suffix=.skn) && trap 'rm -f "$log" "$log.rows" "$log.extra" "$img"' EXIT
+"$qemu" "$tool" pack tests/data/tiny.asf tests/data/tiny.amc -q --sequence=1 -o "$img" >/dev/null
+# every instruction of sha256.o, then each entry of skp_block_leaf
+"$qemu" $step -d exec,nochain -dfilter "$(range app/base/sha256.o sha256_update)" -D "$log" "$tool" info "$img" >/dev/null || true
+sha=$(grep -c '^Trace' "$log")
+leaf_at=$(printf '0x%x' $((base + 0x$("$nm" "$tool" | awk '$3 == "skp_block_leaf" { print $1 }'))))
+"$qemu" $step -d exec,nochain -dfilter "$leaf_at..$(printf 0x%x $((leaf_at + 3)))" -D "$log" "$tool" info "$img" >/dev/null || true
+leaves=$(grep -c "^Trace.*/0*${leaf_at#0x}/" "$log")
+[ "$leaves" -gt 0 ] || { echo "count_insns: skp_block_leaf was not called" >&2; exit 1; }
+awk -v sha="$sha" -v n="$leaves" 'BEGIN {
+	printf "block digests (aarch64): a block'"'"'s leaf (SHA-256 of its 4096 bytes) %.0f instructions, %.2f a byte (%d leaves taken by skintool info)\n", sha / n, sha / n / 4096, n }'

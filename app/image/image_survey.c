@@ -116,7 +116,7 @@ void skp_image_verify(skp_image *im, uint8_t *buf, void (*bad)(void *ctx, uint32
 	for (uint32_t b = 0; b < im->hdr.block_count; b++) {
 		skp_image_survey(im, b, &r, buf);
 		int usable = r.state == SKP_BLOCK_OK || r.repairable;
-		if (b > 0 && b < im->hdr.data_blocks && usable)
+		if (b > 0 && b < im->hdr.data_blocks && usable && !im->digest_first) /* version 7: the leaves did */
 			sha256_update(&digest, buf, im->hdr.block_size);
 		if (b < im->hdr.data_blocks && !usable)
 			v->digest = -1;
