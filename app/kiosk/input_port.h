@@ -16,6 +16,12 @@
 
 #define INPUT_MAX_EVENTS 32   /* a good size for read()'s event array */
 
+/* key()'s codes for keys that are not characters: a window's are the same
+ * (platform/display/display.h), so one key map serves both. */
+#define INPUT_KEY_LEFT 0x100
+#define INPUT_KEY_RIGHT 0x101
+#define INPUT_KEY_ESCAPE 27
+
 typedef struct input_backend {
 	const char *name;
 	/* cfg: the board's buttons and chip; arg: the script file (else NULL);
@@ -28,6 +34,10 @@ typedef struct input_backend {
 	int (*read)(uint64_t now_ms, control_event *ev, int max, skp_error *err);
 	/* Releases the lines, restores the terminal. */
 	void (*shutdown)(void);
+	/* NULL for buttons alone; else the next key typed since (a printable
+	 * character, INPUT_KEY_*, 0 when none is waiting): a desktop's keys,
+	 * mapped by the kiosk as a window's are. Never blocks. */
+	int (*key)(void);
 } input_backend;
 
 #endif

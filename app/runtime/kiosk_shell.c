@@ -199,13 +199,35 @@ static unsigned tap(kiosk_shell *k, int button, uint64_t t)
 	return act;
 }
 
+_Static_assert(DISPLAY_KEY_LEFT == INPUT_KEY_LEFT && DISPLAY_KEY_RIGHT == INPUT_KEY_RIGHT,
+	       "a window's keys and a terminal's share one map");
+
+/* A console's camera keys (kiosk_camera_step); 0 when key is none. */
+static unsigned camera_step_key(kiosk_shell *k, int key)
+{
+	/* h l turn left, right; j k tilt down, up; H L J K move the same
+	 * ways; z nearer, x farther */
+	static const char keys[] = "hljkHLJKzx";
+	const char *at = key > 0 && key < 0x80 ? strchr(keys, key) : NULL;
+	if (!at)
+		return 0;
+	int i = (int)(at - keys);
+	int *axis[] = { &k->cam.turn, &k->cam.tilt, &k->cam.move_x, &k->cam.move_y, &k->cam.zoom };
+	memset(&k->cam, 0, sizeof k->cam);
+	*axis[i / 2] = i % 2 ? 1 : -1;
+	if (i / 2 == 4)
+		k->cam.zoom = -k->cam.zoom;
+	k->camera = 3;
+	return KIOSK_ACT_CAMERA;
+}
+
 /* Keys for time and the camera: an arrow, [ ], + -, f, r. 0 when key is
  * none of them. */
 static unsigned time_key(kiosk_shell *k, int key)
 {
 	switch (key) {
-	case DISPLAY_KEY_LEFT: case DISPLAY_KEY_RIGHT:
-		k->step = key == DISPLAY_KEY_LEFT ? -1 : 1;
+	case INPUT_KEY_LEFT: case INPUT_KEY_RIGHT:
+		k->step = key == INPUT_KEY_LEFT ? -1 : 1;
 		return KIOSK_ACT_STEP;
 	case '[': case ']':
 		k->seek = key == '[' ? -1 : 1;
@@ -216,8 +238,10 @@ static unsigned time_key(kiosk_shell *k, int key)
 	case 'f': case 'F': case 'r': case 'R':
 		k->camera = key == 'f' || key == 'F' ? 1 : 2;
 		return KIOSK_ACT_CAMERA;
+	case 'q': case 'Q': case INPUT_KEY_ESCAPE:
+		return KIOSK_ACT_QUIT;
 	default:
-		return 0;
+		return camera_step_key(k, key);
 	}
 }
 

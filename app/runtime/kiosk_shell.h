@@ -32,6 +32,13 @@ enum {
 	KIOSK_ACT_CAMERA = 1 << 11    /* f frames the body again, r resets the camera (k->camera 1, 2) */
 };
 
+/* A camera key's step on a console (no pointer there; a window takes them
+ * too): h l turn it round the body, j k tilt it, H J K L move the point it
+ * looks at, z x bring it nearer or farther. */
+typedef struct kiosk_camera_step {
+	int turn, tilt, move_x, move_y, zoom;
+} kiosk_camera_step;
+
 typedef struct kiosk_shell {
 	const char *prog;        /* the program's name, for its messages */
 	board_config board;
@@ -48,7 +55,8 @@ typedef struct kiosk_shell {
 	uint64_t play_ms;        /* when PLAY last paused or resumed (the input's clock) */
 	char board_note[128];    /* the board file's first problem, for the engineer HUD; "" none */
 	int step, seek, speed_step; /* the last STEP, SEEK, SPEED key's: -1 back or slower, 1 on or faster */
-	int camera;              /* the last CAMERA key's: 1 frame the body, 2 reset */
+	int camera;              /* the last CAMERA key's: 1 frame the body, 2 reset, 3 a step (cam) */
+	kiosk_camera_step cam;   /* camera 3: the step, each -1, 0 or 1 */
 } kiosk_shell;
 
 /* What the shell starts with: the controls' first state, the frame clock. */
@@ -92,7 +100,8 @@ unsigned kiosk_shell_frame(kiosk_shell *k, long n);
  * the wheel move it: display_backend.pointer). Returns KIOSK_ACT_* bits
  * like kiosk_shell_frame. */
 #define KIOSK_KEYS_LEGEND "KEYS: 1-4 METHOD  V VIEW  SPACE PAUSE  N NEXT  ARROWS STEP  [ ] SEEK  + - SPEED  Q QUIT"
-#define KIOSK_MOUSE_LEGEND "DRAG TURNS  RIGHT-DRAG MOVES  WHEEL ZOOMS  F FRAMES  R RESETS"
+#define KIOSK_MOUSE_LEGEND "CAMERA: DRAG TURNS  RIGHT-DRAG MOVES  WHEEL ZOOMS  F FRAMES  R RESETS"
+#define KIOSK_CAMERA_LEGEND "CAMERA: H L TURN  J K TILT  SHIFT+H J K L MOVE  Z X ZOOM  F FRAMES  R RESETS"
 unsigned kiosk_shell_key(kiosk_shell *k, int key, long n);
 
 /* Releases the input (terminal restored), signals; sends STOPPING=1. */

@@ -370,6 +370,15 @@ static void apply_input(skinplay *p, render_frame *f, unsigned act)
 	camera_key(p, act);
 }
 
+/* The next key typed in the window, else on the terminal (--input
+ * keyboard); 0 none. */
+static int next_key(const skinplay *p)
+{
+	int key = p->disp && p->disp->key ? p->disp->key() : 0;
+	const input_backend *in = p->kiosk.in_started ? p->kiosk.in : NULL;
+	return key ? key : in && in->key ? in->key() : 0;
+}
+
 static int play(skinplay *p)
 {
 	stage_start(&p->stages, clock_now_ns());
@@ -418,8 +427,11 @@ static int play(skinplay *p)
 		stage_frame_done(&p->stages, shown_number(p));
 		if (p->disp && p->disp->handle_events)
 			p->disp->handle_events(&quit);
-		for (int key; p->disp && p->disp->key && (key = p->disp->key()) != 0;)
-			apply_input(p, &f, kiosk_shell_key(&p->kiosk, key, shown));
+		for (int key; (key = next_key(p)) != 0;) {
+			unsigned keyed = kiosk_shell_key(&p->kiosk, key, shown);
+			quit |= (keyed & KIOSK_ACT_QUIT) != 0;
+			apply_input(p, &f, keyed);
+		}
 		camera_pointer(p);
 		uint64_t now = clock_now_ns();
 		if (now - p->stages.window_ns >= 1000000000u) {

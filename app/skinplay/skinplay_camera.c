@@ -46,6 +46,21 @@ static void pan(skinplay *p, int dx, int dy)
 	aim->z = clampf(aim->z, -5.0f, 5.0f);
 }
 
+/* A move of the pointer's (or a camera key's as one): turn, tilt, pan,
+ * zoom; what says which, for the log. */
+static void camera_move(skinplay *p, const display_pointer *m, const char *what)
+{
+	p->cam_yaw -= (float)m->orbit_dx * TURN_PER_PX;
+	p->o.view_cam.pitch = clampf(p->o.view_cam.pitch + (float)m->orbit_dy * TURN_PER_PX, -0.5f, 1.4f);
+	if (m->pan_dx || m->pan_dy)
+		pan(p, m->pan_dx, m->pan_dy);
+	if (m->wheel)
+		p->o.view_cam.distance = clampf(p->o.view_cam.distance * powf(ZOOM_PER_CLICK, (float)m->wheel), 0.2f, 10.0f);
+	apply(p);
+	if (what)
+		say(p, what);
+}
+
 void camera_pointer(skinplay *p)
 {
 	display_pointer m;
@@ -57,21 +72,28 @@ void camera_pointer(skinplay *p)
 			say(p, "drag");
 		return;
 	}
-	p->cam_yaw -= (float)m.orbit_dx * TURN_PER_PX;
-	p->o.view_cam.pitch = clampf(p->o.view_cam.pitch + (float)m.orbit_dy * TURN_PER_PX, -0.5f, 1.4f);
-	if (m.pan_dx || m.pan_dy)
-		pan(p, m.pan_dx, m.pan_dy);
-	if (m.wheel)
-		p->o.view_cam.distance = clampf(p->o.view_cam.distance * powf(ZOOM_PER_CLICK, (float)m.wheel), 0.2f, 10.0f);
-	apply(p);
-	if (m.released || m.wheel)
-		say(p, m.wheel ? "wheel" : "drag");
+	camera_move(p, &m, m.released || m.wheel ? (m.wheel ? "wheel" : "drag") : NULL);
+}
+
+/* A console's camera key as the pointer's move: 15 degrees a turn, 10 a
+ * tilt, a twentieth of the picture a move, a wheel click a zoom. */
+static void camera_step(skinplay *p)
+{
+	const kiosk_camera_step *c = &p->kiosk.cam;
+	int turn_px = (int)lroundf(0.2618f / TURN_PER_PX), tilt_px = (int)lroundf(0.1745f / TURN_PER_PX);
+	int move_px = (p->info.height > 0 ? p->info.height : 480) / 20;
+	display_pointer m = { c->turn * turn_px, c->tilt * tilt_px, -c->move_x * move_px, c->move_y * move_px, c->zoom, 0 };
+	camera_move(p, &m, "camera key");
 }
 
 void camera_key(skinplay *p, unsigned act)
 {
 	if (!(act & KIOSK_ACT_CAMERA) || !p->render_ready)
 		return;
+	if (p->kiosk.camera == 3) {
+		camera_step(p);
+		return;
+	}
 	float pitch = p->o.view_cam.pitch;
 	p->o.view_cam = p->view_home;
 	if (p->kiosk.camera == 1)

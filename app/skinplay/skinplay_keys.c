@@ -75,13 +75,16 @@ void keys_time(skinplay *p, unsigned act)
 const char *keys_legend(const skinplay *p, int engineer)
 {
 	const kiosk_shell *k = &p->kiosk;
-	if (p->disp && p->disp->key)
-		/* the engineer's window: the first 10 s, then the figures alone */
-		return !engineer || p->now < 10000000000ull ? KIOSK_KEYS_LEGEND : NULL;
+	int window = p->disp && p->disp->key, terminal = k->in && k->in->key;
+	if (window || terminal) {
+		/* the engineer's: the keys 5 s, then the camera's 5 s (a window's
+		 * pointer, else a console's keys), then the figures alone */
+		if (!engineer || p->now < 5000000000ull)
+			return KIOSK_KEYS_LEGEND;
+		return p->now < 10000000000ull ? (window ? KIOSK_MOUSE_LEGEND : KIOSK_CAMERA_LEGEND) : NULL;
+	}
 	if (engineer)
 		return NULL;
-	if (!strcmp(k->in->name, "keyboard"))
-		return "KEYS: 1 METHOD   2 PAUSE   3 NEXT CLIP   4 VIEW";
 	if (!strcmp(k->in->name, "gpio"))
 		return "BUTTONS: ALGO CHANGES THE METHOD   PLAY PAUSES   NEXT CLIP   VIEW";
 	return NULL;

@@ -83,7 +83,7 @@ static const cli_opt play_opts_table[] = {
 	{ "report-timing", 0, NULL, OPT_REPORT_TIMING, "print per stage (decode, FK, bones, skinning, upload, draw, "
 	  "swap) the mean and worst time at the end" },
 	{ "board", 0, "FILE", OPT_BOARD, "the board's runtime config (board/NAME/board.ini; default: none)" },
-	{ "input", 0, "SPEC", OPT_INPUT, "buttons: gpio, keyboard, script:FILE or none (default: the board's)" },
+	{ "input", 0, "SPEC", OPT_INPUT, "buttons: gpio, keyboard (the terminal's keys), script:FILE or none (default: the board's)" },
 	{ "print-platform", 0, NULL, OPT_PRINT_PLATFORM, "print the display backend auto would pick, and exit" },
 	{ NULL, 0, NULL, 0, NULL },
 };
@@ -329,14 +329,15 @@ static const cli_command play_command = {
 		"the moment, held at least 2 s, named (LEFT WRIST), with how the joint turned and how far apart the two\n"
 		"put its skin in millimetres.\n"
 		"\n"
-		"Keys in a window (x11; the legend shows for its first 10 s): 1 LBS, 2 DQBS, 3 fixed-point DQBS, 4 LBS\n"
+		"Keys in a window (x11) and on a terminal (--input keyboard: a console), the legend showing for the first\n"
+		"10 s: 1 LBS, 2 DQBS, 3 fixed-point DQBS, 4 LBS\n"
 		"beside DQBS; v the next view, d the difference view and back; space pauses and plays; the left and\n"
 		"right arrows step one captured frame while paused; [ and ] seek a second back and on; + and - double\n"
 		"and halve the speed (1/8 to 4); n the next clip; q or Escape quit. A drag turns the camera round the\n"
 		"body and up or down, a right or middle drag (or shift and drag) moves the point it looks at, the wheel\n"
-		"brings it nearer or farther, f frames the body again, r resets it. A --sync=clock show keeps its clock\n"
-		"(space and n then act as the buttons do). On a terminal (--input keyboard) 1-4 or the arrows are the\n"
-		"four buttons: ALGO, PLAY, NEXT, VIEW.\n",
+		"brings it nearer or farther, f frames the body again, r resets it. Without a pointer (a console), h and\n"
+		"l turn the camera 15 degrees, j and k tilt it 10, H J K L move the point it looks at, z and x bring it\n"
+		"nearer and farther. A --sync=clock show keeps its clock (space and n then act as the buttons do).\n",
 	.exit2 = "headless, no clip of the show could play (the bind pose was rendered)",
 	.examples = (const cli_example[]){
 		{ "The packaged demo on the screen",

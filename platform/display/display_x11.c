@@ -136,8 +136,12 @@ static int x11_present(skp_error *err)
 
 static void handle_key(XKeyEvent *ev, int *quit)
 {
-	KeySym sym = XLookupKeysym(ev, 0);
-	int key = sym >= 0x20 && sym < 0x7f ? (int)sym : 0;
+	/* the character typed, shift applied (H J K L move the camera where
+	 * h j k l turn it; a keymap may list a letter's lower case alone) */
+	char typed[8];
+	KeySym sym = 0;
+	int n = XLookupString(ev, typed, (int)sizeof typed, &sym, NULL);
+	int key = n == 1 && typed[0] >= 0x20 && typed[0] < 0x7f ? typed[0] : 0;
 	if (sym == XK_Left || sym == XK_KP_Left)
 		key = DISPLAY_KEY_LEFT;
 	else if (sym == XK_Right || sym == XK_KP_Right)
@@ -146,7 +150,7 @@ static void handle_key(XKeyEvent *ev, int *quit)
 		key = '+';
 	else if (sym == XK_KP_Subtract)
 		key = '-';
-	if (sym == XK_q || sym == XK_Escape)
+	if (sym == XK_q || sym == XK_Q || sym == XK_Escape)
 		*quit = 1;
 	else if (key && s.key_count < (int)(sizeof s.keys / sizeof s.keys[0]))
 		s.keys[s.key_count++] = key;

@@ -22,7 +22,7 @@ static void none_shutdown(void)
 {
 }
 
-const input_backend input_none = { "none", none_init, none_read, none_shutdown };
+const input_backend input_none = { "none", none_init, none_read, none_shutdown, NULL };
 
 const input_backend *input_find(const char *spec, const char **arg)
 {

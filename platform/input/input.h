@@ -2,7 +2,7 @@
  * names them; a board builds those its board.mk lists in INPUTS):
  *
  *   gpio          libgpiod (1.6 or 2.x) both-edge line events, debounced per button
- *   keyboard      keys 1-4 and the arrows on the controlling terminal
+ *   keyboard      the controlling terminal's keys (key(): mapped as a window's)
  *   script:FILE   lines "TIME_MS BUTTON press|release" (tests, demos)
  *   none          no input
  *

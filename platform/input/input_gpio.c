@@ -150,4 +150,4 @@ static int gpio_read(uint64_t now_ms, control_event *ev, int max, skp_error *err
 	return n;
 }
 
-const input_backend input_gpio = { "gpio", gpio_init, gpio_read, gpio_shutdown };
+const input_backend input_gpio = { "gpio", gpio_init, gpio_read, gpio_shutdown, NULL };

@@ -1,11 +1,10 @@
-/* Buttons on the keyboard of the controlling terminal, for desktop work:
- *
- *   1 / Left   ALGO        2 / Down   PLAY (r: long, restart)
- *   3 / Right  NEXT        4 / Up     VIEW (g: long, CPU/GPU)
+/* The keyboard of the controlling terminal, for desktop work and a
+ * console: its keys, mapped by the kiosk as a window's are (1-4 the
+ * method, V the view, space, N, the arrows, [ ], + -, the camera's keys,
+ * Q or Escape to quit: app/runtime/kiosk_shell.h), not buttons.
  *
  * The terminal goes to non-canonical, no-echo mode (signals still work, so
- * Ctrl-C quits cleanly) and is restored by shutdown(). A terminal reports
- * no key releases: each key is a press and a release at once. */
+ * Ctrl-C quits cleanly) and is restored by shutdown(). */
 #include "input.h"
 
 #include <poll.h>
@@ -19,15 +18,12 @@ static struct {
 	int fd;                  /* -1: no terminal */
 	int saved;
 	struct termios old;
-	char esc[3];             /* an escape sequence read so far */
-	int esc_len;
-} k = { -1, 0, { 0 }, { 0 }, 0 };
+} k = { -1, 0, { 0 } };
 
 static int kb_init(const board_config *cfg, const char *arg, uint64_t now_ms, skp_error *err)
 {
 	(void)cfg, (void)arg, (void)now_ms;
 	k.fd = -1;
-	k.esc_len = 0;
 	if (!isatty(STDIN_FILENO))
 		return 0; /* no terminal (a service, a pipe): no keys, not an error */
 	struct termios t;
@@ -44,59 +40,49 @@ static int kb_init(const board_config *cfg, const char *arg, uint64_t now_ms, sk
 	return 0;
 }
 
-/* The button of a key and whether it is the long press; -1 for others. */
-static int key_button(int c, int *is_long)
+/* The next byte typed, without waiting; 0 when none. */
+static int next_byte(unsigned char *c)
 {
-	static const char keys[] = "1234";
-	static const char arrows[] = "DBCA"; /* ESC [ D left, B down, C right, A up */
-	*is_long = 0;
-	if (c == 'r' || c == 'g') {
-		*is_long = 1;
-		return c == 'r' ? CONTROL_BTN_PLAY : CONTROL_BTN_VIEW;
-	}
-	const char *p = c ? strchr(keys, c) : NULL;
-	if (p)
-		return (int)(p - keys);
-	p = c < 0 && -c < 128 ? strchr(arrows, -c) : NULL;
-	return p ? (int)(p - arrows) : -1;
+	struct pollfd p = { k.fd, POLLIN, 0 };
+	return poll(&p, 1, 0) > 0 && (p.revents & POLLIN) && read(k.fd, c, 1) == 1;
 }
 
-/* Feeds one byte; returns a key (arrows as -'A'..-'D') or 0. */
-static int key_of(char c)
+/* An escape sequence after its ESC: the arrows left and right as
+ * INPUT_KEY_*, a lone Escape as itself, any other sequence (up, down,
+ * function keys, Alt and a key) read to its end and passed over (0). A
+ * terminal sends a sequence's bytes together: an ESC with nothing after
+ * it is the Escape key. */
+static int escape(void)
 {
-	if (k.esc_len == 0 && c == 27) {
-		k.esc[k.esc_len++] = c;
+	unsigned char c;
+	if (!next_byte(&c))
+		return INPUT_KEY_ESCAPE;
+	if (c != '[' && c != 'O')
 		return 0;
-	}
-	if (k.esc_len == 1) {
-		k.esc_len = c == '[' ? 2 : 0;
-		return 0;
-	}
-	if (k.esc_len == 2) {
-		k.esc_len = 0;
-		return -c;
-	}
-	return c;
+	while (next_byte(&c))
+		if (c >= 0x40 && c <= 0x7e)
+			return c == 'D' ? INPUT_KEY_LEFT : c == 'C' ? INPUT_KEY_RIGHT : 0;
+	return 0;
 }
 
-static int kb_read(uint64_t now_ms, control_event *ev, int max, skp_error *err)
+static int kb_key(void)
 {
-	int n = 0;
-	(void)err;
+	unsigned char c;
 	if (k.fd < 0)
 		return 0;
-	struct pollfd p = { k.fd, POLLIN, 0 };
-	while (max - n >= 3 && poll(&p, 1, 0) > 0 && (p.revents & POLLIN)) {
-		char c;
-		if (read(k.fd, &c, 1) != 1)
-			break;
-		int is_long, b = key_button(key_of(c), &is_long);
-		if (b < 0)
-			continue;
-		unsigned bits = DEBOUNCE_PRESS | DEBOUNCE_RELEASE | (is_long ? DEBOUNCE_LONG : 0);
-		n += input_emit(bits, b, now_ms, ev + n);
+	while (next_byte(&c)) {
+		int key = c == 27 ? escape() : c >= 0x20 && c < 0x7f ? c : 0;
+		if (key)
+			return key;
 	}
-	return n;
+	return 0;
+}
+
+/* Keys, not buttons: the kiosk maps them (key()). */
+static int kb_read(uint64_t now_ms, control_event *ev, int max, skp_error *err)
+{
+	(void)now_ms, (void)ev, (void)max, (void)err;
+	return 0;
 }
 
 static void kb_shutdown(void)
@@ -107,4 +93,4 @@ static void kb_shutdown(void)
 	k.fd = -1;
 }
 
-const input_backend input_keyboard = { "keyboard", kb_init, kb_read, kb_shutdown };
+const input_backend input_keyboard = { "keyboard", kb_init, kb_read, kb_shutdown, kb_key };

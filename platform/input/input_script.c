@@ -127,4 +127,4 @@ static void script_shutdown(void)
 	s.count = s.next = 0;
 }
 
-const input_backend input_script = { "script", script_init, script_read, script_shutdown };
+const input_backend input_script = { "script", script_init, script_read, script_shutdown, NULL };

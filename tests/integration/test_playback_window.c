@@ -186,7 +186,8 @@ static void test_camera_faces_the_clip(void **state)
  * back, v the next view, space pauses, the right arrow steps a frame, ]
  * seeks a second, + doubles the speed, n the next clip; a drag turns the
  * camera, the wheel brings it nearer, a right drag moves its aim, f frames
- * the body again, r resets; q quits (exit 0). */
+ * the body again, r resets; l (a console's camera key) turns it, shift
+ * and k moves it up; q quits (exit 0). */
 static void test_window_keys(void **state)
 {
 	(void)state;
@@ -214,7 +215,8 @@ static void test_window_keys(void **state)
 			  "seen 'drag -> camera yaw -' && xdotool click 4 && seen 'wheel -> .*distance 0.85' && "
 			  "xdotool mousedown 3 mousemove_relative -- 30 0 sleep 0.2 mouseup 3 && seen 'drag -> .*aim -0' && "
 			  "xdotool key f && seen 'key f -> .*distance 1.00, aim 0.00 0.00 0.00' && xdotool key r && "
-			  "seen 'key r -> camera yaw +0' && xdotool key q; wait $pid",
+			  "seen 'key r -> camera yaw +0' && xdotool key l && seen 'camera key -> camera yaw -15' && "
+			  "xdotool key shift+k && seen 'camera key -> .*aim 0.00 0.06' && xdotool key q || kill $pid; wait $pid",
 			  name, log, test_tool_path("skinplay"), test_tool_path("assets/demo.skn"));
 	test_xvfb_stop(x);
 	if (rc != 0) {
@@ -227,12 +229,48 @@ static void test_window_keys(void **state)
 	test_assert_contains_all(log, want);
 }
 
+/* The same keys on a terminal (--input keyboard: a console has no
+ * window), typed into a pseudo-terminal as a user would (util-linux's
+ * script): 2 DQBS, d the difference view, space pauses, the right arrow
+ * (an escape sequence) steps a frame, the camera's keys turn, zoom and
+ * move it (no pointer on a console), q quits a run of 3,000 frames before
+ * its end (exit 0). The terminal stays open until skinplay has ended. */
+static void test_console_keys(void **state)
+{
+	(void)state;
+	if (test_run("command -v script >/dev/null") != 0) {
+		print_message("script not installed (util-linux)\n");
+		skip();
+	}
+	const char *log = test_scratch("console.log");
+	int rc = test_run("log='%s'; "
+			  "seen() { for i in $(seq 300); do grep -q \"$1\" \"$log\" 2>/dev/null && return 0; sleep 0.1; done; return 1; }; "
+			  "( seen '^display: ' && printf 2 && seen 'key 2 -> dqbs' && printf d && seen 'key d -> difference' && "
+			  "printf ' ' && seen 'PLAY -> pause' && printf '\\033[C' && seen 'key right -> frame' && "
+			  "printf l && seen 'camera key -> camera yaw -15' && printf z && seen 'distance 0.85' && "
+			  "printf K && seen 'aim 0.00 0.05' && printf q; seen '^played ' ) | timeout 300 "
+			  "script -qfec \"ASAN_OPTIONS=detect_leaks=0 %s --image %s --platform surfaceless --size 160x120 "
+			  "--input keyboard --frames 3000 2>$log\" /dev/null >/dev/null",
+			  log, test_tool_path("skinplay"), test_tool_path("assets/demo.skn"));
+	char *text = test_read_file(log, NULL);
+	if (rc != 0)
+		fail_msg("exit %d; log:\n%s", rc, text ? text : "");
+	static const char *const want[] = { "input: key 2 -> dqbs", "input: key d -> difference", "input: PLAY -> pause",
+					    "input: key right -> frame", "input: camera key -> camera yaw -15, pitch",
+					    "distance 0.85, aim 0.00 0.00 0.00", "distance 0.85, aim 0.00 0.05 0.00", NULL };
+	test_assert_contains_all(log, want);
+	/* q ended it, before its 3,000 frames */
+	assert_null(strstr(text, "played 3000 frames"));
+	free(text);
+}
+
 int main(void)
 {
 	const struct CMUnitTest tests[] = {
 		cmocka_unit_test(test_camera_faces_the_clip),
 		cmocka_unit_test(test_window_plays_at_the_captured_rate),
 		cmocka_unit_test(test_window_keys),
+		cmocka_unit_test(test_console_keys),
 	};
 	return cmocka_run_group_tests_name("playback_window", tests, test_scratch_setup, test_scratch_teardown);
 }
