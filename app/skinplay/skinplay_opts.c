@@ -421,7 +421,8 @@ int play_parse(play_opts *o, int argc, char **argv)
 	if (o->out_dir && output_kind(o) < 0)
 		return -1;
 	if (o->transparent && o->video) {
-		fprintf(stderr, PROG ": --background=transparent: a video has no alpha; write PNG frames with -o DIR\n");
+		fprintf(stderr, PROG ": -o %s: --background=transparent needs an alpha channel, which a video has not; "
+			"write PNG frames with -o DIR\n", cli_shown(o->out_dir));
 		return -1;
 	}
 	if (o->sheet_path && !o->out_dir) {
