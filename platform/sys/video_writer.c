@@ -313,6 +313,7 @@ int video_writer_add_rgba(video_writer *v, const uint8_t *rgba, int bottom_up, s
 	int stride = v->width * 4;
 	const uint8_t *src[4] = { bottom_up ? rgba + (size_t)stride * (size_t)(v->height - 1) : rgba, NULL, NULL, NULL };
 	int strides[4] = { bottom_up ? -stride : stride, 0, 0, 0 };
+	av_said[0] = '\0'; /* what libav says now is about this frame */
 	int e = av_frame_make_writable(v->frame);
 	if (e < 0)
 		return skp_fail(err, SKP_ERR_IO, 0, "%s: %s", v->path, why(e));
@@ -342,6 +343,7 @@ long video_writer_frames(const video_writer *v)
 
 int video_writer_close(video_writer *v, skp_error *err)
 {
+	av_said[0] = '\0';
 	int e = avcodec_send_frame(v->c, NULL);
 	if (e < 0) {
 		skp_fail(err, SKP_ERR_IO, 0, "%s: the %s encoder failed: %s", v->path, v->c->codec->name, why(e));
