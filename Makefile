@@ -47,8 +47,18 @@ PLAT_LIBS   := $(shell $(PKG_CONFIG) --libs $(PLAT_PC) 2>/dev/null) $(if $(filte
 # libgpiod's API changed at 2.0: one seam file per API, by the library's
 # pkg-config version (1.6 on Debian 12 / Pi OS bookworm, 2.x on trixie).
 GPIOD_API := $(if $(filter 0 1,$(firstword $(subst ., ,$(shell $(PKG_CONFIG) --modversion libgpiod 2>/dev/null)))),1,2)
+# Video output (skinplay -o F.mp4, F.webm): where board.mk asks for it
+# (VIDEO: auto, yes; unset or no: none) and pkg-config finds libavcodec,
+# libavformat, libavutil and libswscale. Only skinplay, the tests and the
+# layer check link them; elsewhere skinplay refuses a video name.
+VIDEO_ON     := $(if $(filter auto yes,$(VIDEO)),$(shell $(PKG_CONFIG) --exists $(PC_video) 2>/dev/null && echo 1))
+ifeq ($(VIDEO)$(VIDEO_ON),yes)
+$(error VIDEO=yes: pkg-config finds no $(PC_video) (Debian: libavcodec-dev libavformat-dev libavutil-dev libswscale-dev))
+endif
+VIDEO_CFLAGS := $(if $(VIDEO_ON),$(shell $(PKG_CONFIG) --cflags $(PC_video) 2>/dev/null))
+VIDEO_LIBS   := $(if $(VIDEO_ON),$(shell $(PKG_CONFIG) --libs $(PC_video) 2>/dev/null))
 BACKEND_DEFS := $(foreach d,$(DISPLAYS),-DSKP_DISPLAY_$(d)) $(foreach i,$(INPUTS),-DSKP_INPUT_$(i)) \
-                -DSKP_GPIOD_API=$(GPIOD_API)
+                -DSKP_GPIOD_API=$(GPIOD_API) $(if $(VIDEO_ON),-DSKP_VIDEO)
 CPPFLAGS    := -Iboard/$(BOARD) $(SIMD_DEFS) -MMD -MP
 CFLAGS_CORE := -std=c11 $(WARN) $(BOARD_CFLAGS) $(SAN_FLAGS) $(EXTRA_CFLAGS)
 # Host code (platform, programs) talks to Linux and POSIX, so it may use
@@ -71,9 +81,10 @@ PLAT_SRC := platform/display/display.c platform/display/display_common.c \
             $(DISPLAYS:%=platform/display/display_%.c) \
             platform/input/input.c platform/input/input_common.c $(INPUTS:%=platform/input/input_%.c) \
             $(if $(filter gpio,$(INPUTS)),platform/input/input_gpiod$(GPIOD_API).c) \
-            $(wildcard platform/storage/*.c platform/sys/*.c)
+            $(filter-out $(if $(VIDEO_ON),,platform/sys/video_writer.c),$(wildcard platform/storage/*.c platform/sys/*.c))
 PLAT_OBJ := $(PLAT_SRC:%.c=$(OUT)/%.o)
 $(PLAT_OBJ): MOD_FLAGS = $(foreach m,$(DEPS_platform),-Iapp/$(m)) $(PLAT_INC) $(CFLAGS_HOST)
+$(OUT)/platform/sys/video_writer.o: MOD_FLAGS += $(VIDEO_CFLAGS)
 
 CORE_OBJ := $(foreach m,$(CORE_MODULES),$(OBJ_$(m)))
 FIXED_OBJ := $(FIXED_SRC:%.c=$(OUT)/%.o) $(if $(filter avx2 neon,$(SIMD)),$(OUT)/app/skin/kernels/skin_fixed_$(SIMD).o)
@@ -201,14 +212,14 @@ $(foreach m,$(LIB_MODULES),$(LIB_$(m))):
 
 # the link map feeds `make size` (static RAM per module)
 $(SKINPLAY): $(OBJ_skinplay) $(call libs_of,skinplay)
-	$(CC) $(LDFLAGS) -Wl,-Map=$@.map -o $@ $^ $(LDLIBS)
+	$(CC) $(LDFLAGS) -Wl,-Map=$@.map -o $@ $^ $(VIDEO_LIBS) $(LDLIBS)
 $(SKINTOOL): $(OBJ_skintool) $(call libs_of,skintool)
 	$(CC) $(LDFLAGS) -o $@ $^ $(IMPORT_LIBS) $(LDLIBS)
 
 # Test programs are white-box: they may use every module (DEPS_tests).
 $(OUT)/tests/%: $(OUT)/tests/obj/%.o $(TESTLIB_OBJ) $(call libs_of,tests)
 	@mkdir -p $(@D)
-	$(CC) $(LDFLAGS) -o $@ $^ $(CMOCKA_LIBS) $(IMPORT_LIBS) $(LDLIBS)
+	$(CC) $(LDFLAGS) -o $@ $^ $(CMOCKA_LIBS) $(IMPORT_LIBS) $(VIDEO_LIBS) $(LDLIBS)
 
 # The layers at link time: each module's archive, whole, linked with the
 # archives of its DEPS_ only (and a main() that calls nothing): a call into
@@ -223,7 +234,7 @@ $(LAYER_MAIN):
 define layer_link
 	@mkdir -p $(dir $(1))
 	@$(CC) $(LDFLAGS) -o $(1) $(LAYER_MAIN) -Wl,--whole-archive $(2) -Wl,--no-whole-archive $(3) \
-	  $(IMPORT_LIBS) $(LDLIBS) 2> $(1).log || { \
+	  $(IMPORT_LIBS) $(VIDEO_LIBS) $(LDLIBS) 2> $(1).log || { \
 	  echo "layers: $(4) calls what its DEPS_ in app/sources.mk do not give it ($(or $(DEPS_$(4)),nothing)):"; \
 	  grep -o "undefined reference to .*" $(1).log | sort -u | sed 's/^/  /'; rm -f $(1); exit 1; }
 endef

@@ -106,6 +106,10 @@ PC_input_gpio          := libgpiod
 PC_input_keyboard      :=
 PC_input_script        :=
 PC_platform            := libpng
+# skinplay's video output (platform/sys/video_writer.c: -o F.mp4, F.webm),
+# built where the board asks for it (board.mk: VIDEO) and pkg-config finds
+# all four; only skinplay (and the tests) link them, skintool does not.
+PC_video               := libavcodec libavformat libavutil libswscale
 # The host tool's importer (app/import): the Open Asset Import Library, and
 # json-c for MakeHuman's rig files.
 PC_import              := assimp json-c

@@ -15,6 +15,13 @@
 #define KERNELS "scalar"
 #endif
 
+/* skinplay -o F.mp4 / F.webm (the Makefile: VIDEO, platform/sys/video_writer.c) */
+#if defined(SKP_VIDEO)
+#define VIDEO "mp4 (H.264), webm (VP9)"
+#else
+#define VIDEO "none (built without libavcodec)"
+#endif
+
 void cli_print_version(const char *prog)
 {
 	char displays[128];
@@ -23,6 +30,7 @@ void cli_print_version(const char *prog)
 	printf("revision %s, board %s\n", SKP_GIT_REV, SKP_BOARD);
 	printf("skinning kernels: %s\n", KERNELS);
 	printf("displays: %s; buttons: %s\n", displays, input_gpio_api);
+	printf("video output: %s\n", VIDEO);
 	printf("Copyright (C) 2026 the skinplay authors.\n"
 	       "License MIT: the LICENSE file of the source, /usr/share/doc/skinplay/copyright when installed.\n"
 	       "This is free software: you are free to change and redistribute it. There is NO WARRANTY.\n");

@@ -5,7 +5,6 @@
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
-#include <sys/stat.h>
 #include <unistd.h>
 
 #include "board_config.h"
@@ -14,7 +13,6 @@
 #include "cli_version.h"
 #include "clock.h"
 #include "mem_report.h"
-#include "png_writer.h"
 #include "setup_bind.h"
 #include "signals.h"
 #include "skinplay.h"
@@ -120,16 +118,7 @@ static int setup(skinplay *p)
 	clips_frame(p, 1);
 	choose_paths(p);
 	sheet_init(&p->contact, p->info.width, p->info.height);
-	if (p->o.out_dir && (p->info.width > SKP_DISPLAY_MAX_W || p->info.height > SKP_DISPLAY_MAX_H)) {
-		fprintf(stderr, "skinplay: --out reads frames back into %dx%d at most (board limit); %s shows %dx%d\n",
-			SKP_DISPLAY_MAX_W, SKP_DISPLAY_MAX_H, p->info.name, p->info.width, p->info.height);
-		return -1;
-	}
-	if (p->o.out_dir && mkdir(p->o.out_dir, 0755) != 0 && errno != EEXIST) {
-		fprintf(stderr, "skinplay: %s: %s\n", p->o.out_dir, strerror(errno));
-		return -1;
-	}
-	return 0;
+	return output_open(p);
 }
 
 /* " on 2 threads" when the CPU kernels share the mesh, ", compact
@@ -254,23 +243,6 @@ static void hud_text(skinplay *p, render_frame *f, double fps, char lines[3][128
 	f->hud[0] = lines[0];
 	f->hud[1] = lines[1];
 	f->hud[2] = p->o.hud_fps ? lines[2] : NULL;
-}
-
-static int write_png(skinplay *p, long n)
-{
-	char path[1024];
-	skp_error err;
-	snprintf(path, sizeof path, "%s/frame_%06ld.png", p->o.out_dir, n);
-	render_read_rgba(&p->r, p->rgba);
-	if (cli_output_check(path) < 0)
-		return -1;
-	if (png_write_rgba(path, p->rgba, p->info.width, p->info.height, 1, &err) != 0) {
-		fprintf(stderr, "skinplay: %s: %s\n", path, err.msg);
-		return -1;
-	}
-	if (p->o.sheet_path)
-		sheet_add(&p->contact, p->rgba, p->info.width, p->info.height);
-	return 0;
 }
 
 /* --pose-digest: FNV-1a over the joints of every pose shown. */
@@ -421,7 +393,7 @@ static int play(skinplay *p)
 		p->drift = ((double)p->now - (double)(clock_now_ns() - p->wall0)) * 1e-9;
 		p->shown = ++shown;
 		uint64_t t_png = clock_now_ns();
-		if (p->o.out_dir && (shown - 1) % p->o.every == 0 && write_png(p, shown) < 0)
+		if (p->o.out_dir && (shown - 1) % p->o.every == 0 && output_frame(p, shown) < 0)
 			return -1;
 		stage_add(&p->stages, STAGE_SWAP, clock_now_ns() - t_png);
 		stage_frame_done(&p->stages, shown_number(p));
@@ -451,6 +423,8 @@ static int play(skinplay *p)
 		fprintf(stderr, "poses: %ld shown, digest %016llx\n", shown, (unsigned long long)p->digest);
 	if (p->o.report_timing)
 		stage_report(&p->stages);
+	if (output_close(p, 1) < 0)
+		return -1;
 	if (p->o.sheet_path && sheet_write(&p->contact, p->o.sheet_path) < 0)
 		return -1;
 	return 0;
@@ -481,6 +455,7 @@ int main(int argc, char **argv)
 		rc = 2;
 	if (p.reload && rc == 0)
 		signals_hold();
+	output_close(&p, 0); /* a video a failed run began: dropped */
 	kiosk_shell_shutdown(&p.kiosk);
 	clip_file_close(&p.text);
 	show_close(&p.show);

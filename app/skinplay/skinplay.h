@@ -20,6 +20,7 @@
 #include "skinplay_opts.h"
 #include "skinplay_timing.h"
 #include "skinplay_sheet.h"
+#include "video_writer.h"
 
 typedef struct skinplay {
 	play_opts o;
@@ -65,6 +66,7 @@ typedef struct skinplay {
 	float nrm[RENDER_MAX_PANELS][3 * SKP_MAX_VERTS];
 	int16_t nrm16[RENDER_MAX_PANELS][3 * SKP_MAX_VERTS]; /* --streams compact */
 	uint8_t rgba[SKP_DISPLAY_MAX_W * SKP_DISPLAY_MAX_H * 4]; /* one frame read back for --out */
+	video_writer *video;     /* --out F.mp4 or F.webm (skinplay_output.c), NULL: none or PNG frames */
 	char clip[64];
 	sheet contact;
 	kiosk_shell kiosk;       /* --board, --input, signals, systemd */
@@ -167,6 +169,15 @@ unsigned slots_news(skinplay *p);
  * joint shown and the values coloured into f. */
 void closeup_setup(skinplay *p);
 void closeup_frame(skinplay *p, render_frame *f);
+
+/* --output (skinplay_output.c). output_open once the display is up: the
+ * PNG frames' directory made, or the video opened; output_frame: frame n
+ * (from 1) read back into it, and into the contact sheet; output_close
+ * at the end: the video finished and made its file (keep), or dropped
+ * with nothing left (a run that failed). Each 0, or -1 after reporting. */
+int output_open(skinplay *p);
+int output_frame(skinplay *p, long n);
+int output_close(skinplay *p, int keep);
 
 /* Shows text on screen for about seconds. */
 void clips_notice(skinplay *p, const char *text, double seconds);

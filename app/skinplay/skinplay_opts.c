@@ -4,6 +4,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <strings.h>
+#include <sys/stat.h>
 
 #include "board_config.h"
 #include "cli_args.h"
@@ -17,6 +18,12 @@ enum {
 	OPT_THREADS, OPT_STREAMS, OPT_DISPLAY_RATE, OPT_SPEED, OPT_BLEND, OPT_ROOT, OPT_YAW, OPT_LOOP, OPT_POSE_DIGEST,
 	OPT_BACKGROUND, OPT_SYNC, OPT_EPOCH, OPT_WALL, OPT_BEZEL
 };
+
+#ifdef SKP_VIDEO
+#define VIDEO_NOTE ""
+#else
+#define VIDEO_NOTE "; this build writes no video"
+#endif
 
 static const cli_opt play_opts_table[] = {
 	{ "image", 0, "SHOW.skn", OPT_IMAGE, "play a packed image (repeat for slots: the newest valid one plays)" },
@@ -42,12 +49,14 @@ static const cli_opt play_opts_table[] = {
 	{ "size", 0, "WxH", OPT_SIZE, "the picture's size headless or in a window (default 1280x720)" },
 	{ "frames", 0, "N", OPT_FRAMES, "play N frames (default: the clip once headless, for ever on a screen)" },
 	{ "start", 0, "FRAME", OPT_START, "start at the frame numbered FRAME" },
-	{ "output", 'o', "DIR", OPT_OUT, "write every K-th frame as DIR/frame_NNNNNN.png (also --out)" },
-	{ "out", 0, "DIR", OPT_OUT, "the same as --output" },
-	{ "every", 0, "K", OPT_EVERY, "with --output: every K-th frame (default 1)" },
-	{ "sheet", 0, "F.png", OPT_SHEET, "with --output: also a contact sheet of the frames written" },
-	{ "background", 0, "scene|transparent", OPT_BACKGROUND, "with --output: transparent writes the character alone "
-	  "on a see-through background (PNG alpha: no floor, grid, shadow, close-up or HUD; default scene)" },
+	{ "output", 'o', "DIR|F.mp4|F.webm", OPT_OUT, "write every K-th frame as DIR/frame_NNNNNN.png, or headless "
+	  "into one video, F.mp4 (H.264) or F.webm (VP9), of --display-rate/K frames a second that lasts as long as "
+	  "the frames it shows (the clip's duration; an even --size; also --out)" VIDEO_NOTE },
+	{ "out", 0, "DIR|F.mp4|F.webm", OPT_OUT, "the same as --output" },
+	{ "every", 0, "K", OPT_EVERY, "with --output: every K-th frame (default 1; a video then has 1/K the frame rate)" },
+	{ "sheet", 0, "F.png", OPT_SHEET, "with --output: also a contact sheet of the frames written (PNG or video)" },
+	{ "background", 0, "scene|transparent", OPT_BACKGROUND, "with --output DIR: transparent writes the character "
+	  "alone on a see-through background (PNG alpha: no floor, grid, shadow, close-up or HUD; default scene)" },
 	{ "view", 0, "VIEW", OPT_VIEW, "body, skeleton, weights or difference (the body coloured by how far LBS lies "
 	  "from DQBS in the compare view, or the skin from its bone as bound with one method, in millimetres; "
 	  "default: the board's [display] view, else body)" },
@@ -309,6 +318,37 @@ static int take(void *ctx, int id, const char *v)
 	return -1;
 }
 
+/* --output: a directory of PNG frames (one that exists is one, whatever
+ * its name), or a video by its name: F.mp4 or F.webm where the build has
+ * video output; another video container's name is refused rather than
+ * made a directory of frames the user did not mean. */
+static int output_kind(play_opts *o)
+{
+	static const char *const videos[] = { ".mp4", ".webm" };
+	static const char *const others[] = { ".avi", ".mkv", ".mov", ".m4v", ".gif", ".ogv", ".flv", ".wmv",
+					      ".mpg", ".mpeg", ".ts", ".3gp", ".h264", ".264", ".ivf" };
+	struct stat st;
+	const char *slash = strrchr(o->out_dir, '/'), *dot = strrchr(slash ? slash + 1 : o->out_dir, '.');
+	if (!dot || (stat(o->out_dir, &st) == 0 && S_ISDIR(st.st_mode)))
+		return 0;
+	for (size_t i = 0; i < sizeof videos / sizeof videos[0]; i++)
+		if (!strcasecmp(dot, videos[i])) {
+#ifdef SKP_VIDEO
+			o->video = 1;
+			return 0;
+#else
+			return fprintf(stderr, PROG ": -o %s: this build has no video output (built without libavcodec; "
+				       "Debian: libavcodec-dev libavformat-dev libswscale-dev); write PNG frames with -o DIR\n",
+				       cli_shown(o->out_dir)), -1;
+#endif
+		}
+	for (size_t i = 0; i < sizeof others / sizeof others[0]; i++)
+		if (!strcasecmp(dot, others[i]))
+			return fprintf(stderr, PROG ": -o %s: a video is F.mp4 (H.264) or F.webm (VP9), not %s; PNG frames go "
+				       "into a directory (-o DIR)\n", cli_shown(o->out_dir), dot), -1;
+	return 0;
+}
+
 static const cli_command play_command = {
 	.prog = PROG,
 	.usage = "[OPTION]... --image SHOW.skn\n"
@@ -346,6 +386,8 @@ static const cli_command play_command = {
 		  "skinplay --board /etc/skinplay/board.ini" },
 		{ "A BVH headless, LBS beside DQBS, every 60th frame into out/",
 		  "skinplay --bvh 131_01.bvh --platform surfaceless --algo compare -o out --every 60" },
+		{ "The same as an H.264 video of 30 frames a second, as long as the clip",
+		  "skinplay --bvh 131_01.bvh --platform surfaceless --algo compare --size 960x540 --display-rate 30 -o walk.mp4" },
 		{ NULL, NULL },
 	},
 };
@@ -377,6 +419,13 @@ int play_parse(play_opts *o, int argc, char **argv)
 		return rc;
 	if (o->print_platform)
 		return 0;
+	if (o->out_dir && output_kind(o) < 0)
+		return -1;
+	if (o->transparent && o->video) {
+		fprintf(stderr, PROG ": -o %s: --background=transparent needs an alpha channel, which a video has not; "
+			"write PNG frames with -o DIR\n", cli_shown(o->out_dir));
+		return -1;
+	}
 	if (o->sheet_path && !o->out_dir) {
 		fprintf(stderr, PROG ": --sheet collects the frames --out writes: give --out too\n");
 		return -1;

@@ -28,7 +28,8 @@ typedef struct play_opts {
 	int width, height;
 	long frames;             /* -1: the clip once headless, forever on a display */
 	long start;              /* first frame number to show, -1: the clip's first */
-	const char *out_dir;
+	const char *out_dir;     /* --output: PNG frames' directory, or the video file (video) */
+	int video;               /* --output names a video: F.mp4 or F.webm (skinplay_output.c) */
 	const char *sheet_path;  /* --sheet: contact sheet of the frames written */
 	int transparent;         /* --background=transparent: the character alone, PNG alpha */
 	int print_platform;      /* --print-platform: say what auto picks, exit */

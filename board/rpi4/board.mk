@@ -37,7 +37,8 @@ export QEMU_LD_PREFIX := /usr/aarch64-linux-gnu
 TARGET_RUN    := qemu-aarch64-static
 RPI4_QEMU_SKIP := test_render test_display test_kiosk test_image_cli test_compare_report test_compare_pictures test_compare_parts test_image_repair \
                   test_convert_cli test_user_mesh_play test_rig_import test_readme test_image_meaning test_playback_window test_kiosk_wait \
-                  test_compare_seen test_background test_kiosk_options test_image_cli_damage test_sync test_skintool_view
+                  test_compare_seen test_background test_kiosk_options test_image_cli_damage test_sync test_skintool_view \
+                  test_video
 TEST_WRAP     := sh tests/cross_run.sh aarch64 "$(RPI4_QEMU_SKIP)" --
 endif
 endif

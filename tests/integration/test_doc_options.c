@@ -242,9 +242,17 @@ static int is_placeholder(const char *v)
 }
 
 /* The doc's placeholder is --help's, maybe with a file name's extension
- * (OUT.bvh for OUT) or "..." for a repeat; FILE and DIR are any name. */
+ * (OUT.bvh for OUT) or "..." for a repeat; FILE and DIR are any name; of
+ * alternatives (DIR|F.mp4|F.webm) any one. */
 static int same_placeholder(const char *doc, const char *help)
 {
+	const char *bar = strchr(help, '|');
+	if (bar) {
+		char first[32];
+		snprintf(first, sizeof first, "%.*s", (int)(bar - help), help);
+		if (same_placeholder(doc, first) || same_placeholder(doc, bar + 1))
+			return 1;
+	}
 	size_t n = strlen(help), d = strlen(doc);
 	if (!strcmp(help, "FILE") || !strcmp(help, "DIR"))
 		return 1;
