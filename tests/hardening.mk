@@ -4,9 +4,10 @@
 #   make lint                 cppcheck and clang-tidy over app/ and platform/
 #   make soak [SOAK_FRAMES=1000000]   a long headless run of skinplay, then a week of faults
 #   make import-sweep         every assimp-testmodels sample through skintool bind (ASan+UBSan)
+#   make damage-sweep [DAMAGE_EVERY=2]  damaged images by class through skinplay, info and repair
 # None of them is part of `make test`; the fuzzers' regression inputs are
 # (tests/unit/test_fuzz_regressions.c).
-.PHONY: fuzz fuzz-smoke fuzz-build lint soak import-sweep
+.PHONY: fuzz fuzz-smoke fuzz-build lint soak import-sweep damage-sweep
 
 FUZZ_CC      ?= clang
 SECONDS      ?= 60
@@ -84,6 +85,17 @@ SKP_SHARED ?= ../shared
 import-sweep:
 	@$(MAKE) --no-print-directory SANITIZE=1 $(BUILD)/san/skintool
 	@sh tests/import_sweep.sh $(BUILD)/san/skintool $(SKP_SHARED)/data/mocap/cmu/02.asf
+
+# Damage sweep (issue 45): a show packed compressed and --raw, damaged class
+# by class (a bit flipped, a block zeroed or forged, two adjacent, block 0
+# with its group or its copy, blocks of another pack, truncated, a forger's
+# out-of-range rotation, wrong-length and zero-filled slots), each copy
+# played headless (--pose-digest), given to info and repaired: a markdown
+# table of the verdicts; fails on any wrong result with exit 0, crash or
+# wrong repair. DAMAGE_EVERY=1 takes every block (about twice the time).
+DAMAGE_EVERY ?= 2
+damage-sweep: all
+	python3 tests/damage_sweep.py $(OUT) --every $(DAMAGE_EVERY) --jobs $(JOBS)
 
 # Soak: tests/soak.sh on the host build (not part of `make test`: about an
 # hour for the default million frames at 160x90), then tests/soak_week.sh:
