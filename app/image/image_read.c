@@ -247,6 +247,10 @@ static skp_status header_from_copy(skp_image *im, skp_status rc0)
 	skp_image_header h;
 	if (rc0 == SKP_ERR_RANGE)
 		return rc0;
+	/* nothing of block 0's header is kept: its block size, damaged, would
+	 * have every block read short */
+	memset(&im->hdr, 0, sizeof im->hdr);
+	im->hdr.block_size = im->dev->block_size;
 	if (!skp_image_copy_header(im, &h)) {
 		if (!skp_image_parity_header(im, &h))
 			return rc0;
