@@ -85,7 +85,7 @@ const char *keys_legend(const skinplay *p, int engineer)
 	}
 	if (engineer)
 		return NULL;
-	if (!strcmp(k->in->name, "gpio"))
+	if (k->in && !strcmp(k->in->name, "gpio"))
 		return "BUTTONS: ALGO CHANGES THE METHOD   PLAY PAUSES   NEXT CLIP   VIEW";
 	return NULL;
 }
