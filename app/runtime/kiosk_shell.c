@@ -205,9 +205,10 @@ _Static_assert(DISPLAY_KEY_LEFT == INPUT_KEY_LEFT && DISPLAY_KEY_RIGHT == INPUT_
 /* A console's camera keys (kiosk_camera_step); 0 when key is none. */
 static unsigned camera_step_key(kiosk_shell *k, int key)
 {
-	/* h l turn left, right; j k tilt down, up; H L J K move the same
-	 * ways; z nearer, x farther */
-	static const char keys[] = "hljkHLJKzx";
+	/* pairs, the first of each -1 and the second 1: h l turn left,
+	 * right; j k tilt down, up; H L J K move the same ways; x farther,
+	 * z nearer */
+	static const char keys[] = "hljkHLJKxz";
 	const char *at = key > 0 && key < 0x80 ? strchr(keys, key) : NULL;
 	if (!at)
 		return 0;
@@ -215,8 +216,6 @@ static unsigned camera_step_key(kiosk_shell *k, int key)
 	int *axis[] = { &k->cam.turn, &k->cam.tilt, &k->cam.move_x, &k->cam.move_y, &k->cam.zoom };
 	memset(&k->cam, 0, sizeof k->cam);
 	*axis[i / 2] = i % 2 ? 1 : -1;
-	if (i / 2 == 4)
-		k->cam.zoom = -k->cam.zoom;
 	k->camera = 3;
 	return KIOSK_ACT_CAMERA;
 }
