@@ -9,6 +9,7 @@
 
 #include "clock.h"
 #include "image_digests.h"
+#include "tool_state.h"
 
 typedef struct digest_ns {
 	uint64_t body, decode;      /* skeleton and body loaded; every frame of clip 0 decoded */
@@ -16,15 +17,16 @@ typedef struct digest_ns {
 
 static int time_reads(show_image *img, digest_ns *t)
 {
-	static bound_body body;
+	static void *body_kept;
+	bound_body *body = tool_state(&body_kept, sizeof *body);
 	static skp_clip_stream st;
 	static amc_frame f;
 	static float values[SKP_MAX_DOF];
 	skp_error err;
 	long number;
 	uint64_t t0 = clock_now_ns();
-	if (skp_image_load_skel(&img->im, &body.skel, &err) != SKP_OK ||
-	    skp_image_load_bind(&img->im, &body.skel, &body.mesh, &body.weights, values, &number, &err) != SKP_OK)
+	if (skp_image_load_skel(&img->im, &body->skel, &err) != SKP_OK ||
+	    skp_image_load_bind(&img->im, &body->skel, &body->mesh, &body->weights, values, &number, &err) != SKP_OK)
 		return -1;
 	uint64_t t1 = clock_now_ns();
 	if (skp_clip_stream_open(&st, &img->im, 0, &err) != SKP_OK)

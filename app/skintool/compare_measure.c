@@ -18,6 +18,7 @@
 #include "rig_load.h"
 #include "setup_bind.h"
 #include "setup_gate.h"
+#include "tool_state.h"
 
 #define OVERLAP_GRID 256
 #define OVERLAP_HITS (1 << 22)
@@ -359,9 +360,11 @@ int compare_measure_clip(compare_run *c, const compare_args *a)
 static void measure_overlap(compare_run *c, const float *values)
 {
 	static int ray_start[OVERLAP_GRID * OVERLAP_GRID + 1];
-	static float hit_z[OVERLAP_HITS];
-	static signed char hit_dir[OVERLAP_HITS];
-	static const overlap_work work = { OVERLAP_GRID, OVERLAP_HITS, ray_start, hit_z, hit_dir };
+	static void *hit_z_kept;
+	float *hit_z = tool_state(&hit_z_kept, (size_t)(OVERLAP_HITS) * sizeof *hit_z);
+	static void *hit_dir_kept;
+	signed char *hit_dir = tool_state(&hit_dir_kept, (size_t)(OVERLAP_HITS) * sizeof *hit_dir);
+	const overlap_work work = { OVERLAP_GRID, OVERLAP_HITS, ray_start, hit_z, hit_dir };
 	if (!(c->meas.rest_volume > 0.0))
 		return;
 	runtime_skin_frame(&c->sk, values);
@@ -398,7 +401,8 @@ int compare_explain_volume(compare_run *c, const compare_args *a)
 
 int compare_other_weights(compare_run *main_run, const compare_args *a)
 {
-	static compare_run other;
+	static void *other_kept;
+	compare_run *other = tool_state(&other_kept, sizeof *other);
 	static compare_args oa;
 	if (!main_run->body.rigged || a->bind.weights_path)
 		return 0;
@@ -408,12 +412,12 @@ int compare_other_weights(compare_run *main_run, const compare_args *a)
 	oa.csv_name = oa.bind.weights_mesh ? "metrics_weights_mesh.csv" : "metrics_weights_computed.csv";
 	fprintf(cli_note(), "%s: the clip again with the %s weights, for the side-by-side table\n", a->mesh,
 		oa.bind.weights_mesh ? "mesh's own" : "computed");
-	memset(&other.rep, 0, sizeof other.rep);
-	if (compare_load_clip(&other, &oa) < 0 || compare_measure_clip(&other, &oa) < 0)
+	memset(&other->rep, 0, sizeof other->rep);
+	if (compare_load_clip(other, &oa) < 0 || compare_measure_clip(other, &oa) < 0)
 		return -1;
-	main_run->rep.other_weights = other.rep.weights;
+	main_run->rep.other_weights = other->rep.weights;
 	main_run->rep.other_csv = oa.csv_name;
-	main_run->rep.other_algo = other.rep.algo;
+	main_run->rep.other_algo = other->rep.algo;
 	/* runtime_skin keeps one body's vertices (a static block), now the other
 	 * weights': the renders and the rest of the report are the main run's */
 	const compare_run *m = main_run;

@@ -11,6 +11,7 @@
 #include "motion_file.h"
 #include "report_chart.h"
 #include "report_render.h"
+#include "tool_state.h"
 
 const char *const compare_algo_label[NALGO] = { "LBS", "DQBS", "DQBS fixed" };
 
@@ -127,7 +128,12 @@ int compare_write_charts(compare_run *c, const char *dir)
 
 /* ---- the pictures ---------------------------------------------------- */
 
-static report_view view;
+/* The pictures' view: megabytes (tool_state.h), kept between the scenes' and the stills' renders. */
+static report_view *the_view(void)
+{
+	static void *kept;
+	return tool_state(&kept, sizeof(report_view));
+}
 
 static void keep_closeup(report_closeup *out, const report_part *p)
 {
@@ -170,17 +176,18 @@ int compare_render_scenes(compare_run *c, const compare_args *a)
 {
 	static skel_pose pose;
 	static const char *const what[SCENE_KIND_COUNT] = { "TWISTED ABOUT ITS AXIS", "BENT" };
+	report_view *view = the_view();
 	const scene_rig *sc = &c->scene;
 	report *r = &c->rep;
 	char hud0[96];
 	if (a->renders <= 0)
 		return 0;
 	/* the ground under the skin, which bulges out of the bend */
-	if (report_view_open(&view, &c->sk, &sc->mesh, -2.0f * SCENE_RADIUS, REPORT_IMG_W, REPORT_IMG_H) < 0) {
+	if (report_view_open(view, &c->sk, &sc->mesh, -2.0f * SCENE_RADIUS, REPORT_IMG_W, REPORT_IMG_H) < 0) {
 		r->render_note = "no headless display could be opened (surfaceless EGL, OSMesa)";
 		return 0;
 	}
-	report_view_scene(&view, SCENE_CLOSEUP_SPAN);
+	report_view_scene(view, SCENE_CLOSEUP_SPAN);
 	int rc = 0;
 	for (int k = 0; k < SCENE_KIND_COUNT && rc == 0; k++) {
 		report_scene_still *s = &r->scene_still[k];
@@ -195,16 +202,16 @@ int compare_render_scenes(compare_run *c, const compare_args *a)
 		s->dqbs_rmax = row->rmax[SKIN_DQBS];
 		scene_pose(sc, s->kind, (float)(s->angle_deg * (3.14159265358979323846 / 180.0)), &pose);
 		runtime_skin_pose(&c->sk, &pose);
-		keep_closeup(&s->closeup, report_view_pose(&view, &c->sk));
+		keep_closeup(&s->closeup, report_view_pose(view, &c->sk));
 		snprintf(hud0, sizeof hud0, "%s SCENE: THE SECOND BONE %s %d DEG", s->kind == SCENE_TWIST ? "TWIST" : "BEND",
 			 what[k], s->angle_deg);
 		snprintf(s->png, sizeof s->png, "scene_%s.png", scene_name(s->kind));
 		snprintf(c->path, sizeof c->path, "%s/%s", a->out, s->png);
-		rc = report_view_write(&view, &c->sk, REPORT_SHOT_BODY, hud0, "A CYLINDER OF RADIUS 0.2 ROUND TWO BONES OF LENGTH 1",
+		rc = report_view_write(view, &c->sk, REPORT_SHOT_BODY, hud0, "A CYLINDER OF RADIUS 0.2 ROUND TWO BONES OF LENGTH 1",
 				       c->path);
 		s->rendered = rc == 0;
 	}
-	report_view_close(&view);
+	report_view_close(view);
 	return rc;
 }
 
@@ -276,11 +283,12 @@ void compare_pick_stills(compare_run *c, int want)
 int compare_render_stills(compare_run *c, const compare_args *a)
 {
 	static amc_frame f;
+	report_view *view = the_view();
 	report *r = &c->rep;
 	char hud0[96], hud1[96], near0[128], near1[128];
 	if (r->still_count == 0)
 		return 0;
-	if (report_view_open(&view, &c->sk, &c->body.mesh, c->floor_y, REPORT_IMG_W, REPORT_IMG_H) < 0) {
+	if (report_view_open(view, &c->sk, &c->body.mesh, c->floor_y, REPORT_IMG_W, REPORT_IMG_H) < 0) {
 		r->render_note = "no headless display could be opened (surfaceless EGL, OSMesa)";
 		return 0;
 	}
@@ -292,12 +300,12 @@ int compare_render_stills(compare_run *c, const compare_args *a)
 			break;
 		}
 		runtime_skin_frame(&c->sk, f.value);
-		const report_part *part = report_view_pose(&view, &c->sk);
+		const report_part *part = report_view_pose(view, &c->sk);
 		keep_closeup(&s->closeup, part);
 		/* the two ratios at the still's vertex, for the caption */
 		measure_pose(&c->meas, &c->sk.pose);
 		for (int k = 0; k < 2; k++)
-			measure_skinned(&c->meas, view.pos[k], c->ratio[k]);
+			measure_skinned(&c->meas, view->pos[k], c->ratio[k]);
 		s->lbs_ratio = c->ratio[SKIN_LBS][s->vertex];
 		s->dqbs_ratio = c->ratio[SKIN_DQBS][s->vertex];
 		snprintf(hud0, sizeof hud0, "%s  FRAME %ld", r->clip, s->frame);
@@ -308,15 +316,15 @@ int compare_render_stills(compare_run *c, const compare_args *a)
 		snprintf(s->close_png, sizeof s->close_png, "worst_%d_closeup.png", i + 1);
 		snprintf(s->diff_png, sizeof s->diff_png, "worst_%d_difference.png", i + 1);
 		snprintf(c->path, sizeof c->path, "%s/%s", a->out, s->full_png);
-		rc = report_view_write(&view, &c->sk, REPORT_SHOT_BODY, hud0, hud1, c->path);
+		rc = report_view_write(view, &c->sk, REPORT_SHOT_BODY, hud0, hud1, c->path);
 		snprintf(c->path, sizeof c->path, "%s/%s", a->out, s->close_png);
 		if (rc == 0)
-			rc = report_view_write(&view, &c->sk, REPORT_SHOT_CLOSEUP, near0, near1, c->path);
+			rc = report_view_write(view, &c->sk, REPORT_SHOT_CLOSEUP, near0, near1, c->path);
 		snprintf(c->path, sizeof c->path, "%s/%s", a->out, s->diff_png);
 		if (rc == 0)
-			rc = report_view_write(&view, &c->sk, REPORT_SHOT_DIFFERENCE, hud0, NULL, c->path);
+			rc = report_view_write(view, &c->sk, REPORT_SHOT_DIFFERENCE, hud0, NULL, c->path);
 		s->rendered = rc == 0;
 	}
-	report_view_close(&view);
+	report_view_close(view);
 	return rc;
 }

@@ -22,6 +22,7 @@
 #include "tool_anchor.h"
 #include "tool_args.h"
 #include "workers.h"
+#include "tool_state.h"
 
 #define BENCH_BONES 31
 
@@ -169,12 +170,13 @@ static void make_bones(skin_bones *bones)
  * *pose_name says which. */
 static int load_body(bench *b, const tool_common *c, const char **pose_name)
 {
-	static bound_body body;
+	static void *body_kept;
+	bound_body *body = tool_state(&body_kept, sizeof *body);
 	static runtime_skin sk;
 	static amc_frame f;
-	if (rig_bind_load(&c->bind, c->asf, c->mesh, &body) < 0 ||
-	    (c->amc && motion_read_frame(c->amc, &body.skel, -1, &f) < 0) ||
-	    runtime_skin_init(&sk, &body.skel, &body.pose, &body.mesh, &body.weights,
+	if (rig_bind_load(&c->bind, c->asf, c->mesh, body) < 0 ||
+	    (c->amc && motion_read_frame(c->amc, &body->skel, -1, &f) < 0) ||
+	    runtime_skin_init(&sk, &body->skel, &body->pose, &body->mesh, &body->weights,
 			  c->mesh ? c->mesh : "generated body") < 0)
 		return -1;
 	runtime_skin_use_compact(&sk);

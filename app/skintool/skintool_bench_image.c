@@ -23,6 +23,7 @@
 #include "clock.h"
 #include "fk.h"
 #include "skintool_cmds.h"
+#include "tool_state.h"
 
 typedef struct first_frame_ns {
 	uint64_t open, body, frame;
@@ -32,7 +33,8 @@ static int time_first_frame(const char *path, first_frame_ns *t)
 {
 	static show_image img;
 	static skp_clip_stream pl;
-	static bound_body body;
+	static void *body_kept;
+	bound_body *body = tool_state(&body_kept, sizeof *body);
 	static amc_frame f;
 	static float values[SKP_MAX_DOF];
 	skp_error err;
@@ -43,10 +45,10 @@ static int time_first_frame(const char *path, first_frame_ns *t)
 		return -1;
 	}
 	uint64_t t1 = clock_now_ns();
-	int ok = skp_image_load_skel(&img.im, &body.skel, &err) == SKP_OK &&
-		 skp_image_load_bind(&img.im, &body.skel, &body.mesh, &body.weights, values, &number, &err) == SKP_OK;
+	int ok = skp_image_load_skel(&img.im, &body->skel, &err) == SKP_OK &&
+		 skp_image_load_bind(&img.im, &body->skel, &body->mesh, &body->weights, values, &number, &err) == SKP_OK;
 	if (ok)
-		fk_pose(&body.skel, values, &body.pose); /* values are 0 for the rest pose */
+		fk_pose(&body->skel, values, &body->pose); /* values are 0 for the rest pose */
 	uint64_t t2 = clock_now_ns();
 	ok = ok && skp_clip_stream_open(&pl, &img.im, 0, &err) == SKP_OK && skp_clip_stream_next(&pl, &f, &err) == 1;
 	uint64_t t3 = clock_now_ns();

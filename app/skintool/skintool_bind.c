@@ -15,6 +15,7 @@
 #include "setup_weights.h"
 #include "skintool_cmds.h"
 #include "tool_args.h"
+#include "tool_state.h"
 
 
 static void report_pose(FILE *to, const bind_args *a, const bound_body *b)
@@ -158,7 +159,8 @@ static const cli_command bind_command = {
 int cmd_bind(int argc, char **argv)
 {
 	static bind_cmd b;
-	static bound_body body;
+	static void *body_kept;
+	bound_body *body = tool_state(&body_kept, sizeof *body);
 	tool_common_init(&b.c, bind_command.prog);
 	b.want_report = 0;
 	b.motion_count = 0;
@@ -170,11 +172,11 @@ int cmd_bind(int argc, char **argv)
 	b.c.bind.gate_motion = b.motion;
 	b.c.bind.gate_motion_count = b.motion_count;
 	b.c.bind.gate_report = b.want_report;
-	if (rig_bind_load(&b.c.bind, b.c.asf, b.c.mesh, &body) < 0)
+	if (rig_bind_load(&b.c.bind, b.c.asf, b.c.mesh, body) < 0)
 		return 1;
-	if (setup_write_weights(b.c.out, &body.skel, &body.weights) < 0)
+	if (setup_write_weights(b.c.out, &body->skel, &body->weights) < 0)
 		return 1;
 	if (b.want_report)
-		report(stderr, &b.c.bind, &body);
+		report(stderr, &b.c.bind, body);
 	return 0;
 }

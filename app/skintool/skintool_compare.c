@@ -24,6 +24,7 @@
 #include "compare.h"
 #include "skintool_cmds.h"
 #include "tool_args.h"
+#include "tool_state.h"
 
 enum { OPT_RENDERS = 1 };
 
@@ -134,7 +135,8 @@ static int fail(const char *dir, int made)
 int cmd_compare(int argc, char **argv)
 {
 	static compare_args a;
-	static compare_run c;
+	static void *c_kept;
+	compare_run *c = tool_state(&c_kept, sizeof *c);
 	static char clip[256];
 	uint64_t t_start = clock_now_ns();
 	int rc = parse_args(&a, argc, argv);
@@ -143,31 +145,31 @@ int cmd_compare(int argc, char **argv)
 	int made = make_dir(a.out);
 	if (made < 0)
 		return 1;
-	memset(&c.rep, 0, sizeof c.rep);
+	memset(&c->rep, 0, sizeof c->rep);
 	snprintf(clip, sizeof clip, "%s", cli_basename(a.amc));
 	char *dot = strrchr(clip, '.');
 	if (dot)
 		*dot = '\0';
-	c.rep.asf = a.asf;
-	c.rep.amc = a.amc;
-	c.rep.clip = clip;
-	if (compare_load_clip(&c, &a) < 0 || compare_measure_clip(&c, &a) < 0 || compare_other_weights(&c, &a) < 0)
+	c->rep.asf = a.asf;
+	c->rep.amc = a.amc;
+	c->rep.clip = clip;
+	if (compare_load_clip(c, &a) < 0 || compare_measure_clip(c, &a) < 0 || compare_other_weights(c, &a) < 0)
 		return fail(a.out, made);
 	uint64_t t1 = clock_now_ns();
-	compare_pick_stills(&c, (int)a.renders);
+	compare_pick_stills(c, (int)a.renders);
 	/* the scenes last (bad input is refused before any work), pictured
-	 * while c.sk still holds them */
-	if (compare_explain_volume(&c, &a) < 0 || compare_render_stills(&c, &a) < 0 ||
-	    compare_write_charts(&c, a.out) < 0 || compare_measure_scenes(&c) < 0 || compare_render_scenes(&c, &a) < 0)
+	 * while c->sk still holds them */
+	if (compare_explain_volume(c, &a) < 0 || compare_render_stills(c, &a) < 0 ||
+	    compare_write_charts(c, a.out) < 0 || compare_measure_scenes(c) < 0 || compare_render_scenes(c, &a) < 0)
 		return fail(a.out, made);
 	/* the page and the last line give the same total: taken once, before
 	 * the page (which takes a millisecond) */
 	uint64_t t2 = clock_now_ns();
-	c.rep.total_seconds = (double)(t2 - t_start) * 1e-9;
-	if (report_write_html(&c.rep, a.out) < 0)
+	c->rep.total_seconds = (double)(t2 - t_start) * 1e-9;
+	if (report_write_html(&c->rep, a.out) < 0)
 		return fail(a.out, made);
 	fprintf(cli_note(), "%s: %ld frames x 3 algorithms, %d vertices: measured in %.2f s, renders, "
-		"charts and page %.2f s, total %.2f s -> %s/index.html\n", a.amc, c.rep.frames, c.rep.vert_count,
-		c.rep.seconds, (double)(t2 - t1) * 1e-9, c.rep.total_seconds, a.out);
+		"charts and page %.2f s, total %.2f s -> %s/index.html\n", a.amc, c->rep.frames, c->rep.vert_count,
+		c->rep.seconds, (double)(t2 - t1) * 1e-9, c->rep.total_seconds, a.out);
 	return 0;
 }

@@ -14,6 +14,7 @@
 #include "show_source.h"
 #include "skintool_cmds.h"
 #include "tool_args.h"
+#include "tool_state.h"
 
 static void print_hex(const char *label, const uint8_t *p, int n)
 {
@@ -205,9 +206,10 @@ static long scan_raw(storage_file *sf)
  * or a clip cannot play (each listed). */
 static int accept(show_image *s)
 {
-	static bound_body body;
+	static void *body_kept;
+	bound_body *body = tool_state(&body_kept, sizeof *body);
 	skp_error err;
-	if (show_accept_body(s, &body, &err) < 0) {
+	if (show_accept_body(s, body, &err) < 0) {
 		if (err.block >= 0)
 			printf("accept: refused: block %ld: %s\n", err.block, err.msg);
 		else
@@ -216,7 +218,7 @@ static int accept(show_image *s)
 	}
 	int playable = 0;
 	for (int c = 0; c < s->im.clip_count; c++) {
-		if (show_accept_clip(s, &body.skel, c, &err) == 0) {
+		if (show_accept_clip(s, &body->skel, c, &err) == 0) {
 			playable++;
 			continue;
 		}

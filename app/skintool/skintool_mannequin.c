@@ -11,6 +11,7 @@
 #include "cli_quiet.h"
 #include "mannequin.h"
 #include "skintool_cmds.h"
+#include "tool_state.h"
 
 typedef struct manq_args {
 	const char *asf, *out;
@@ -81,8 +82,10 @@ static int parse_args(int argc, char **argv, manq_args *a)
 int cmd_mannequin(int argc, char **argv)
 {
 	static skel s;
-	static manq_work work;
-	static mesh body;
+	static void *work_kept;
+	manq_work *work = tool_state(&work_kept, sizeof *work);
+	static void *body_kept;
+	mesh *body = tool_state(&body_kept, sizeof *body);
 	manq_args a;
 	skp_error err;
 
@@ -91,16 +94,16 @@ int cmd_mannequin(int argc, char **argv)
 		return rc < 0;
 	if (motion_load_skel(a.asf, &s) < 0)
 		return 1;
-	if (manq_build(&s, (int)a.detail, &work, &body, &err) != SKP_OK) {
+	if (manq_build(&s, (int)a.detail, work, body, &err) != SKP_OK) {
 		cli_error(a.asf, &err);
 		return 1;
 	}
-	if (mesh_write_obj(a.out, &body, TOOL_GENERATED_BODY) < 0)
+	if (mesh_write_obj(a.out, body, TOOL_GENERATED_BODY) < 0)
 		return 1;
-	fprintf(cli_summary(), "%s: %d vertices, %d triangles", a.out, body.vert_count, body.tri_count);
-	if (work.arms_raised)
+	fprintf(cli_summary(), "%s: %d vertices, %d triangles", a.out, body->vert_count, body->tri_count);
+	if (work->arms_raised)
 		fprintf(cli_summary(), ", around the rest pose with %d hanging arm%s raised sideways (the pose it binds in)",
-		       work.arms_raised, work.arms_raised == 1 ? "" : "s");
+		       work->arms_raised, work->arms_raised == 1 ? "" : "s");
 	fprintf(cli_summary(), "\n");
 	return 0;
 }

@@ -25,6 +25,7 @@
 #include "skintool_cmds.h"
 #include "tool_args.h"
 #include "text_tokens.h"
+#include "tool_state.h"
 
 typedef struct metrics_args {
 	tool_common c;
@@ -173,13 +174,14 @@ static void metrics_pose(metrics_run *r, const metrics_args *a, long frame)
 
 static int run_scene(metrics_run *r, const metrics_args *a)
 {
-	static scene_rig sc;
+	static void *sc_kept;
+	scene_rig *sc = tool_state(&sc_kept, sizeof *sc);
 	static skel_pose pose;
-	scene_build(&sc);
-	if (start(r, &sc.skel, &sc.bind, &sc.mesh, &sc.weights, "scene") < 0)
+	scene_build(sc);
+	if (start(r, &sc->skel, &sc->bind, &sc->mesh, &sc->weights, "scene") < 0)
 		return -1;
 	float rad = (float)(a->angle_deg * (3.14159265358979323846 / 180.0));
-	scene_pose(&sc, (scene_kind)a->scene, rad, &pose);
+	scene_pose(sc, (scene_kind)a->scene, rad, &pose);
 	runtime_skin_pose(&r->sk, &pose);
 	metrics_pose(r, a, 0);
 	return 0;
@@ -187,18 +189,19 @@ static int run_scene(metrics_run *r, const metrics_args *a)
 
 static int run_clip(metrics_run *r, metrics_args *a)
 {
-	static bound_body body;
+	static void *body_kept;
+	bound_body *body = tool_state(&body_kept, sizeof *body);
 	static motion_file mo;
 	static amc_frame f;
 	a->c.bind.gate_motion = &a->c.amc;
 	a->c.bind.gate_motion_count = 1;
-	if (rig_bind_load(&a->c.bind, a->c.asf, a->c.mesh, &body) < 0 ||
-	    start(r, &body.skel, &body.pose, &body.mesh, &body.weights, a->c.mesh) < 0 ||
-	    motion_file_open(&mo, a->c.amc, &body.skel) < 0)
+	if (rig_bind_load(&a->c.bind, a->c.asf, a->c.mesh, body) < 0 ||
+	    start(r, &body->skel, &body->pose, &body->mesh, &body->weights, a->c.mesh) < 0 ||
+	    motion_file_open(&mo, a->c.amc, &body->skel) < 0)
 		return -1;
 	static cli_progress pr;
 	static char what[300], extra[96];
-	long total = motion_file_count(a->c.amc, &body.skel);
+	long total = motion_file_count(a->c.amc, &body->skel);
 	if (total < 0)
 		return -1;
 	snprintf(what, sizeof what, "metrics %s", cli_basename(a->c.amc));
@@ -211,7 +214,7 @@ static int run_clip(metrics_run *r, metrics_args *a)
 		cli_progress_step(&pr, ++frames);
 	}
 	motion_file_close(&mo);
-	snprintf(extra, sizeof extra, ", %d algorithms, %d vertices", a->algo_count, body.mesh.vert_count);
+	snprintf(extra, sizeof extra, ", %d algorithms, %d vertices", a->algo_count, body->mesh.vert_count);
 	cli_progress_end(&pr, extra);
 	return rc < 0 ? -1 : 0;
 }
@@ -219,11 +222,12 @@ static int run_clip(metrics_run *r, metrics_args *a)
 int cmd_metrics(int argc, char **argv)
 {
 	static metrics_args a;
-	static metrics_run r;
+	static void *r_kept;
+	metrics_run *r = tool_state(&r_kept, sizeof *r);
 
 	int rc = parse_args(&a, argc, argv);
 	if (rc != 0)
 		return rc < 0;
-	rc = a.scene >= 0 ? run_scene(&r, &a) : run_clip(&r, &a);
+	rc = a.scene >= 0 ? run_scene(r, &a) : run_clip(r, &a);
 	return rc < 0 ? 1 : 0;
 }

@@ -35,6 +35,7 @@
 #include "skp_format.h"
 #include "skintool_cmds.h"
 #include "tool_args.h"
+#include "tool_state.h"
 
 #define PACK_MAX_AMC SKP_IMAGE_MAX_CLIPS
 
@@ -342,14 +343,15 @@ static void refuse_written(const char *out, const char *what, const skp_error *e
 static int accept_written(const skp_blockdev *dev, const char *out)
 {
 	static skp_image im;
-	static bound_body body;
+	static void *body_kept;
+	bound_body *body = tool_state(&body_kept, sizeof *body);
 	skp_error err;
-	if (skp_image_open(&im, dev, &err) != SKP_OK || image_accept_body(&im, &body, &err) < 0) {
+	if (skp_image_open(&im, dev, &err) != SKP_OK || image_accept_body(&im, body, &err) < 0) {
 		refuse_written(out, "it", &err);
 		return -1;
 	}
 	for (int c = 0; c < im.clip_count; c++)
-		if (image_accept_clip(&im, &body.skel, c, &err) < 0) {
+		if (image_accept_clip(&im, &body->skel, c, &err) < 0) {
 			char what[SKP_MAX_NAME + 8];
 			snprintf(what, sizeof what, "clip %s", im.clip[c].name);
 			refuse_written(out, what, &err);
@@ -395,7 +397,8 @@ static int write_image(const pack_args *p, const bound_body *body, storage_file 
 int cmd_pack(int argc, char **argv)
 {
 	static pack_args p;
-	static bound_body body;
+	static void *body_kept;
+	bound_body *body = tool_state(&body_kept, sizeof *body);
 	static cli_image_out out;
 	memset(&p, 0, sizeof p);
 	int rc = pack_parse(&p, argc, argv);
@@ -403,10 +406,10 @@ int cmd_pack(int argc, char **argv)
 		return rc < 0;
 	p.bind.gate_motion = p.amc;
 	p.bind.gate_motion_count = p.amc_count;
-	if (rig_bind_load(&p.bind, p.asf, p.mesh, &body) < 0 ||
+	if (rig_bind_load(&p.bind, p.asf, p.mesh, body) < 0 ||
 	    cli_image_out_open(&out, p.out, (uint32_t)p.block_size) < 0)
 		return 1;
-	if (write_image(&p, &body, &out.sf) < 0) {
+	if (write_image(&p, body, &out.sf) < 0) {
 		cli_image_out_abort(&out);
 		return 1;
 	}

@@ -15,6 +15,7 @@
 #include "runtime_skin.h"
 #include "skintool_cmds.h"
 #include "tool_args.h"
+#include "tool_state.h"
 
 typedef struct skin_args {
 	tool_common c;
@@ -86,7 +87,8 @@ static void store(mesh *m, const float *pos, const float *nrm)
 int cmd_skin(int argc, char **argv)
 {
 	static skin_args a;
-	static bound_body body;
+	static void *body_kept;
+	bound_body *body = tool_state(&body_kept, sizeof *body);
 	static runtime_skin sk;
 	static amc_frame f;
 	static float pos[3 * SKP_MAX_VERTS], nrm[3 * SKP_MAX_VERTS];
@@ -96,14 +98,14 @@ int cmd_skin(int argc, char **argv)
 		return rc < 0;
 	a.c.bind.gate_motion = &a.c.amc;
 	a.c.bind.gate_motion_count = 1;
-	if (rig_bind_load(&a.c.bind, a.c.asf, a.c.mesh, &body) < 0)
+	if (rig_bind_load(&a.c.bind, a.c.asf, a.c.mesh, body) < 0)
 		return 1;
-	if (motion_read_frame(a.c.amc, &body.skel, a.frame, &f) < 0)
+	if (motion_read_frame(a.c.amc, &body->skel, a.frame, &f) < 0)
 		return 1;
-	if (runtime_skin_init(&sk, &body.skel, &body.pose, &body.mesh, &body.weights, a.c.mesh) < 0)
+	if (runtime_skin_init(&sk, &body->skel, &body->pose, &body->mesh, &body->weights, a.c.mesh) < 0)
 		return 1;
 	runtime_skin_frame(&sk, f.value);
 	runtime_skin_run(&sk, (skin_algo)a.algo, pos, nrm);
-	store(&body.mesh, pos, nrm);
-	return mesh_write_obj(a.c.out, &body.mesh, NULL) < 0 ? 1 : 0;
+	store(&body->mesh, pos, nrm);
+	return mesh_write_obj(a.c.out, &body->mesh, NULL) < 0 ? 1 : 0;
 }

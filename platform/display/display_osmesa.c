@@ -8,8 +8,10 @@
 #include "display.h"
 
 #include <dlfcn.h>
+#include <errno.h>
 #include <stdint.h>
 #include <string.h>
+#include <sys/mman.h>
 
 #include "board_limits.h"
 #include "display_common.h"
@@ -58,8 +60,13 @@ static struct {
 	char renderer[128];
 } s;
 
-/* Rows bottom-up, like glReadPixels. */
-static uint32_t color_buffer[DISPLAY_OSMESA_MAX_W * DISPLAY_OSMESA_MAX_H];
+/* Rows bottom-up, like glReadPixels; mapped at the display's size while
+ * it is open (as a static at the largest size it was 32 MB of the program
+ * image, which a leak checker reads whole at every exit). */
+static struct {
+	uint32_t *px;
+	size_t bytes;
+} color_buffer;
 
 static int load_library(skp_error *err)
 {
@@ -92,6 +99,19 @@ static void osmesa_shutdown(void)
 		s.destroy(s.ctx);
 	s.ctx = NULL;
 	s.finish = NULL;
+	if (color_buffer.px)
+		munmap(color_buffer.px, color_buffer.bytes);
+	color_buffer.px = NULL;
+}
+
+static int map_color_buffer(int width, int height, skp_error *err)
+{
+	color_buffer.bytes = (size_t)width * (size_t)height * sizeof *color_buffer.px;
+	void *p = mmap(NULL, color_buffer.bytes, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
+	if (p == MAP_FAILED)
+		return skp_fail(err, SKP_ERR_IO, 0, "no memory for a %dx%d colour buffer: %s", width, height, strerror(errno));
+	color_buffer.px = p;
+	return SKP_OK;
 }
 
 static int make_context(int width, int height, skp_error *err)
@@ -106,10 +126,13 @@ static int make_context(int width, int height, skp_error *err)
 		OSMESA_CONTEXT_MINOR_VERSION, 1,
 		0
 	};
+	int rc = map_color_buffer(width, height, err);
+	if (rc != SKP_OK)
+		return rc;
 	s.ctx = s.create(attribs, NULL);
 	if (!s.ctx)
 		return skp_fail(err, SKP_ERR_IO, 0, "OSMesaCreateContextAttribs (RGBA, depth 24, GL 2.1 compat) failed");
-	if (!s.make_current(s.ctx, color_buffer, GL_UNSIGNED_BYTE_, width, height))
+	if (!s.make_current(s.ctx, color_buffer.px, GL_UNSIGNED_BYTE_, width, height))
 		return skp_fail(err, SKP_ERR_IO, 0, "OSMesaMakeCurrent %dx%d failed", width, height);
 	return SKP_OK;
 }

@@ -7,6 +7,7 @@
 #include "cli_inputs.h"
 #include "png_writer.h"
 #include "render_font.h"
+#include "tool_state.h"
 
 static void blend(canvas *c, int x, int y, rgba8 col, float cover)
 {
@@ -275,14 +276,17 @@ void chart_draw(canvas *c, const chart *ch)
 		draw_series(c, ch, &p, &ch->series[s]);
 }
 
+#define CHART_MAX_BYTES ((size_t)2048 * 1024 * 4)
+
 int chart_write_png(const char *path, const chart *ch, int w, int h)
 {
-	static uint8_t px[2048 * 1024 * 4];
+	static void *px_kept;
 	skp_error err;
-	if ((size_t)w * (size_t)h * 4 > sizeof px) {
+	if ((size_t)w * (size_t)h * 4 > CHART_MAX_BYTES) {
 		fprintf(stderr, "%s: a %dx%d chart is too big\n", path, w, h);
 		return -1;
 	}
+	uint8_t *px = tool_state(&px_kept, CHART_MAX_BYTES);
 	canvas c = { px, w, h };
 	chart_draw(&c, ch);
 	if (cli_output_check(path) < 0)
