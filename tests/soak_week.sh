@@ -65,8 +65,7 @@ ref=$digest
 [ "$rc" = 0 ] && [ -n "$ref" ] || { echo "soak-week: the undamaged run failed (log $dir/undamaged.log)"; exit 1; }
 echo "soak-week: undamaged: $frames frames (a day at $hz Hz), digest $ref, $lines log lines, $secs s"
 
-fail=0
-# day N FAULT REPAIRABLE LOG_WANTED SLOTS...
+# day N FAULT REPAIRABLE LOG_WANTED SLOTS...: its verdict in $dir/dayN.out
 day() {
 	n=$1 what=$2 same=$3 want=$4; shift 4
 	run "day$n" "$@"
@@ -76,12 +75,15 @@ day() {
 	[ "$same" = no ] && [ -z "$digest" ] && verdict="no poses"
 	[ "$lines" -le "$max_lines" ] || verdict="$lines log lines (at most $max_lines)"
 	grep -q "$want" "$dir/day$n.log" || verdict="no '$want' in the log"
-	echo "soak-week: day $n, $what: exit $rc, $([ "$same" = yes ] && echo "poses as undamaged" || echo "poses held over the loss"), $lines log lines, $secs s: $verdict"
-	[ "$verdict" = ok ] || { fail=1; echo "soak-week: FAILED: day $n (log $dir/day$n.log)"; }
+	{
+		echo "soak-week: day $n, $what: exit $rc, $([ "$same" = yes ] && echo "poses as undamaged" || echo "poses held over the loss"), $lines log lines, $secs s: $verdict"
+		[ "$verdict" = ok ] || echo "soak-week: FAILED: day $n (log $dir/day$n.log)"
+	} >"$dir/day$n.out"
 }
 
-f="$dir/fault.skn"
-for n in $(seq 1 "$days"); do
+# one_day N: day N's fault on a copy of its own, played
+one_day() {
+	n=$1 f="$dir/fault$1.skn"
 	cp "$dir/week1.skn" "$f"
 	case $(( (n - 1) % 7 + 1 )) in
 	1) flip_byte "$f" "$frames_block"
@@ -94,14 +96,35 @@ for n in $(seq 1 "$days"); do
 	   day "$n" "1000 bytes after the image, block 0 lost" yes "header read from its copy" "$f" ;;
 	5) truncate -s "-$((2 * bs))" "$f"
 	   day "$n" "the storage ending before the copies" yes "the storage ends 2 blocks before the image" "$f" ;;
-	6) rm -f "$dir/fifo.skn" && mkfifo "$dir/fifo.skn"
-	   day "$n" "a FIFO in the newer slot" yes "refused: a FIFO" "$dir/fifo.skn" "$f" ;;
+	6) rm -f "$dir/fifo$n.skn" && mkfifo "$dir/fifo$n.skn"
+	   day "$n" "a FIFO in the newer slot" yes "refused: a FIFO" "$dir/fifo$n.skn" "$f" ;;
 	7) zero_block "$f" "$frames_block"; zero_block "$f" "$(parity_of "$frames_block")"
 	   zero_block "$f" "$dir_block"; zero_block "$f" "$(parity_of "$dir_block")"
 	   day "$n" "frames and directory blocks beyond parity" no "held over bad blocks" "$f" ;;
 	esac
+}
+
+# the days side by side, one a processor (each is one skinplay, nothing
+# drawn), their verdicts in order
+jobs=${SKP_SOAK_JOBS:-$(nproc 2>/dev/null || echo 1)}
+running=0
+for n in $(seq 1 "$days"); do
+	one_day "$n" &
+	running=$((running + 1))
+	[ "$running" -lt "$jobs" ] || { wait; running=0; }
+done
+wait
+fail=0
+for n in $(seq 1 "$days"); do
+	if [ -s "$dir/day$n.out" ]; then
+		cat "$dir/day$n.out"
+		! grep -q "FAILED" "$dir/day$n.out" || fail=1
+	else
+		echo "soak-week: FAILED: day $n gave no verdict"
+		fail=1
+	fi
 done
 all=$(($(date +%s) - start_all))
-echo "soak-week: $days days at $hz Hz ($((days * frames)) frames of a 10-frame clip), $all s"
+echo "soak-week: $days days at $hz Hz ($((days * frames)) frames of a 10-frame clip), $jobs at a time, $all s"
 [ $fail = 0 ] && echo "soak-week: passed" || echo "soak-week: FAILED"
 exit $fail
