@@ -135,15 +135,26 @@ static void test_mannequin_cmu(void **state)
 	bind_mannequin("mocap/cmu/02.asf");
 }
 
+/* Under an emulator (the arm64 build under qemu-user: each bind is half
+ * a minute) the CMU body stands for the other two skeletons, which the
+ * native and sanitizer runs bind. */
 static void test_mannequin_hdm05(void **state)
 {
 	(void)state;
+	if (test_emulator()) {
+		print_message("under %s the CMU skeleton's bind stands for HDM05's: skipped\n", test_emulator());
+		skip();
+	}
 	bind_mannequin("mocap/hdm05/HDM_dg.asf");
 }
 
 static void test_mannequin_endorphin(void **state)
 {
 	(void)state;
+	if (test_emulator()) {
+		print_message("under %s the CMU skeleton's bind stands for endorphin's: skipped\n", test_emulator());
+		skip();
+	}
 	bind_mannequin("mocap/endorphin/skeleton.asf");
 }
 
