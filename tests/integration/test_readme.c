@@ -3,7 +3,8 @@
  * tests/README.md, assets/README.md, each group in name order), in one shell
  * from the repository root (README's first block sets PATH to the built
  * programs and D to ../shared/data), stopping at the first failure.
- * Skips without ../shared/data or without build/skintool (a cross build). */
+ * Skips without ../shared/data or without build/skintool and build/skinplay
+ * (a cross build, or the sanitizer build's tests alone: `make` first). */
 #include <stdarg.h>
 #include <stddef.h>
 #include <setjmp.h>
@@ -70,8 +71,11 @@ static void add_blocks(FILE *script, const char *path, int *docs, int *blocks, i
 static void test_readme_blocks_run(void **state)
 {
 	(void)state;
-	if (access("../shared/data/mocap/cmu/02.asf", R_OK) != 0 || access("build/skintool", X_OK) != 0) {
-		print_message("README blocks: need ../shared/data and build/skintool (make): skipped\n");
+	/* the README puts build/ on PATH: its programs, whichever build runs
+	 * this test (the sanitizer build's tests use them too) */
+	if (access("../shared/data/mocap/cmu/02.asf", R_OK) != 0 || access("build/skintool", X_OK) != 0 ||
+	    access("build/skinplay", X_OK) != 0) {
+		print_message("README blocks: need ../shared/data, build/skintool and build/skinplay (make): skipped\n");
 		skip();
 	}
 	const char *list = test_scratch("docs.txt");
