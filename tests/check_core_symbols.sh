@@ -1,5 +1,6 @@
 #!/bin/sh
-# The portable core must not allocate or use stdio: list any object that
+# The portable core (and the frame's path above it, WHAT="runtime and
+# setup objects") must not allocate or use stdio: list any object that
 # references such a symbol and fail.
 forbidden='^(malloc|calloc|realloc|free|strdup|strndup|aligned_alloc|posix_memalign|printf|fprintf|sprintf|snprintf|vprintf|vfprintf|vsprintf|vsnprintf|dprintf|puts|fputs|fputc|putc|putchar|fopen|fdopen|freopen|fclose|fread|fwrite|fgets|fgetc|getc|getchar|fflush|fseek|ftell|rewind|perror|scanf|fscanf|sscanf|stdin|stdout|stderr|setvbuf|__.*printf_chk|__.*sprintf_chk)$'
 bad=0
@@ -10,5 +11,5 @@ for o in "$@"; do
 		bad=1
 	fi
 done
-[ $bad -eq 0 ] && echo "check-core: $# core objects use no allocation and no stdio"
+[ $bad -eq 0 ] && echo "check-core: $# ${WHAT:-core objects} use no allocation and no stdio"
 exit $bad

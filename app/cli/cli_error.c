@@ -25,6 +25,11 @@ void cli_error(const char *path, const skp_error *err)
 		fprintf(stderr, "%s: %s\n", path, err->msg);
 }
 
+void cli_error_errno(const char *path, const char *doing, int rc)
+{
+	fprintf(stderr, "%s: cannot %s: %s\n", cli_shown(path), doing, strerror(-rc));
+}
+
 const char *cli_basename(const char *path)
 {
 	const char *s = strrchr(path, '/');

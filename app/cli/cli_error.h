@@ -10,6 +10,10 @@
  * path's control characters as \xNN. */
 void cli_error(const char *path, const skp_error *err);
 
+/* Prints "PATH: cannot DOING: why" for a call that returned rc, a
+ * negative errno ("open", "create", "write"). */
+void cli_error_errno(const char *path, const char *doing, int rc);
+
 /* text (a path or name from the command line or a file) with its control
  * characters as \xNN, for messages: in one of 4 rotating buffers, cut to
  * 1023 bytes. */

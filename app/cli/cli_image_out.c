@@ -3,6 +3,7 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "cli_error.h"
 #include "cli_inputs.h"
 
 int cli_image_out_replace(cli_image_out *o, const char *path, uint32_t block_size)
@@ -13,7 +14,7 @@ int cli_image_out_replace(cli_image_out *o, const char *path, uint32_t block_siz
 	if (rc == 0 && (rc = storage_file_use_fd(&o->sf, o->af.fd, block_size)) < 0)
 		atomic_file_abort(&o->af);
 	if (rc < 0) {
-		fprintf(stderr, "%s: cannot create: %s\n", path, strerror(-rc));
+		cli_error_errno(path, "create", rc);
 		return -1;
 	}
 	return 0;
@@ -28,7 +29,7 @@ int cli_image_out_commit(cli_image_out *o)
 {
 	int rc = atomic_file_commit(&o->af);
 	if (rc < 0) {
-		fprintf(stderr, "%s: cannot write: %s\n", o->af.path, strerror(-rc));
+		cli_error_errno(o->af.path, "write", rc);
 		cli_image_out_abort(o);
 		return -1;
 	}

@@ -4,6 +4,7 @@
 #include <string.h>
 #include <unistd.h>
 
+#include "cli_error.h"
 #include "cli_inputs.h"
 
 int cli_text_out_open(cli_text_out *o, const char *path)
@@ -18,7 +19,7 @@ int cli_text_out_open(cli_text_out *o, const char *path)
 		atomic_file_abort(&o->af);
 	}
 	if (rc < 0) {
-		fprintf(stderr, "%s: cannot create: %s\n", path, strerror(-rc));
+		cli_error_errno(path, "create", rc);
 		return -1;
 	}
 	return 0;
@@ -30,7 +31,7 @@ int cli_text_out_commit(cli_text_out *o)
 	if (rc == 0)
 		rc = atomic_file_commit(&o->af);
 	if (rc < 0) {
-		fprintf(stderr, "%s: cannot write: %s\n", o->af.path, strerror(-rc));
+		cli_error_errno(o->af.path, "write", rc);
 		cli_text_out_abort(o);
 		return -1;
 	}

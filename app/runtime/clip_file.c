@@ -1,8 +1,8 @@
 #include "clip_file.h"
+#include "cli_say.h"
 #include "motion_file.h"
 
 #include <math.h>
-#include <stdio.h>
 
 static int clip_next(void *ctx, amc_frame *f, skp_error *err)
 {
@@ -43,7 +43,7 @@ int clip_file_open(clip_file *c, const char *path, const skel *s, double amc_fps
 	if (frames < 0)
 		return -1;
 	if (frames == 0) {
-		fprintf(stderr, "%s: no frames\n", path);
+		cli_warn("%s: no frames\n", path);
 		return -1;
 	}
 	if (motion_file_open(&c->m, path, s) < 0)
@@ -54,7 +54,7 @@ int clip_file_open(clip_file *c, const char *path, const skel *s, double amc_fps
 	if (c->m.is_bvh) {
 		double ft = c->m.layout.frame_time;
 		if (!(ft >= 1e-6 && ft <= 10.0)) {
-			fprintf(stderr, "%s: Frame Time %g s: expected 1 us to 10 s\n", path, ft);
+			cli_warn("%s: Frame Time %g s: expected 1 us to 10 s\n", path, ft);
 			clip_file_close(c);
 			return -1;
 		}

@@ -2,15 +2,15 @@
 #include "kiosk_shell.h"
 
 #include <poll.h>
-#include <stdio.h>
 #include <string.h>
 
 #include "cli_error.h"
-#include "cli_quiet.h"
+#include "cli_say.h"
 #include "clock.h"
 #include "display.h"
 #include "file_reader.h"
 #include "render.h"
+#include "skp_format.h"
 #include "signals.h"
 
 void kiosk_shell_init(kiosk_shell *k, const char *prog)
@@ -30,15 +30,19 @@ static void report_board(kiosk_shell *k, const char *path)
 	int listed = b->problem_count < BOARD_MAX_PROBLEMS ? b->problem_count : BOARD_MAX_PROBLEMS;
 	for (int i = 0; i < listed; i++) {
 		if (b->problem[i].line > 0)
-			fprintf(stderr, "%s:%ld: %s; ignored, the default stays\n", path, b->problem[i].line, b->problem[i].msg);
+			cli_warn("%s:%ld: %s; ignored, the default stays\n", path, b->problem[i].line, b->problem[i].msg);
 		else
-			fprintf(stderr, "%s: %s\n", path, b->problem[i].msg);
+			cli_warn("%s: %s\n", path, b->problem[i].msg);
 	}
 	if (b->problem_count > listed)
-		fprintf(stderr, "%s: %d more problems not listed\n", path, b->problem_count - listed);
-	if (b->problem_count)
-		snprintf(k->board_note, sizeof k->board_note, "%.24s: %.72s%s", cli_basename(path), b->problem[0].msg,
-			 b->problem_count > 1 ? " (MORE IN THE LOG)" : "");
+		cli_warn("%s: %d more problems not listed\n", path, b->problem_count - listed);
+	if (b->problem_count) {
+		char file[25], first[73];   /* what fits the HUD's line */
+		skp_escape_name(file, sizeof file, cli_basename(path));
+		skp_escape_name(first, sizeof first, b->problem[0].msg);
+		skp_format(k->board_note, sizeof k->board_note, "%s: %s%s", file, first,
+			   b->problem_count > 1 ? " (MORE IN THE LOG)" : "");
+	}
 }
 
 void kiosk_shell_load_board(kiosk_shell *k, const char *path)
@@ -48,7 +52,7 @@ void kiosk_shell_load_board(kiosk_shell *k, const char *path)
 	int rc = file_reader_open(&fr, path);
 	if (rc < 0) {
 		char msg[160];
-		snprintf(msg, sizeof msg, "cannot open: %s; running with the defaults", strerror(-rc));
+		skp_format(msg, sizeof msg, "cannot open: %s; running with the defaults", strerror(-rc));
 		board_config_problem(&k->board, 0, msg);
 	} else {
 		if (board_config_read(&k->board, file_reader_as_reader(&fr), &err) != SKP_OK)
@@ -64,7 +68,7 @@ int kiosk_shell_prepare(kiosk_shell *k, const char *input)
 	k->input_spec = input ? input : k->have_board && k->board.input[0] ? k->board.input : "none";
 	const char *arg;
 	if (!input_find(k->input_spec, &arg)) {
-		fprintf(stderr, "%s: --input expects gpio, keyboard, script:FILE or none, got '%s'\n", k->prog,
+		cli_warn("%s: --input expects gpio, keyboard, script:FILE or none, got '%s'\n", k->prog,
 			k->input_spec);
 		return -1;
 	}
@@ -72,7 +76,7 @@ int kiosk_shell_prepare(kiosk_shell *k, const char *input)
 	 * long setup is then not lost, and the handler serves every thread */
 	k->sig_fd = signals_init();
 	if (k->sig_fd < 0) {
-		fprintf(stderr, "%s: signals: %s\n", k->prog, strerror(-k->sig_fd));
+		cli_warn("%s: signals: %s\n", k->prog, strerror(-k->sig_fd));
 		return -1;
 	}
 	return 0;
@@ -100,7 +104,7 @@ int kiosk_shell_start(kiosk_shell *k, const kiosk_start *s)
 	k->in = input_find(k->input_spec, &arg);
 	if (k->in->init(&k->board, arg, now_ms(k, 0), &err) != 0) {
 		/* a batch run fails; on a display no buttons is no reason to go dark */
-		fprintf(stderr, "%s: input %s: %s%s\n", k->prog, k->in->name, err.msg,
+		cli_warn("%s: input %s: %s%s\n", k->prog, k->in->name, err.msg,
 			s->headless ? "" : "; running without buttons");
 		if (s->headless)
 			return -1;
@@ -109,10 +113,10 @@ int kiosk_shell_start(kiosk_shell *k, const kiosk_start *s)
 	}
 	k->in_started = 1;
 	if (k->in != &input_none)
-		fprintf(cli_note(), "input: %s%s%s\n", k->in->name, arg ? " " : "", arg ? arg : "");
+		cli_say("input: %s%s%s\n", k->in->name, arg ? " " : "", arg ? arg : "");
 	int rc = sdnotify_init(&k->sd);
 	if (rc < 0)
-		fprintf(stderr, "%s: $NOTIFY_SOCKET: %s\n", k->prog, strerror(-rc));
+		cli_warn("%s: $NOTIFY_SOCKET: %s\n", k->prog, strerror(-rc));
 	sdnotify_send(&k->sd, "READY=1");
 	return 0;
 }
@@ -127,12 +131,12 @@ static unsigned take_signals(kiosk_shell *k)
 {
 	unsigned s = signals_take(), act = 0;
 	if (s & SIGNALS_RELOAD) {
-		fprintf(cli_note(), "signal: SIGHUP -> reopen the show\n");
+		cli_say("signal: SIGHUP -> reopen the show\n");
 		sdnotify_send(&k->sd, "RELOADING=1");
 		act |= KIOSK_ACT_RELOAD;
 	}
 	if (s & SIGNALS_QUIT) {
-		fprintf(cli_note(), "signal: quit -> clean exit\n");
+		cli_say("signal: quit -> clean exit\n");
 		act |= KIOSK_ACT_QUIT;
 	}
 	return act;
@@ -163,7 +167,7 @@ unsigned kiosk_shell_frame(kiosk_shell *k, long n)
 	int got = k->in->read(now_ms(k, n), ev, INPUT_MAX_EVENTS, &err);
 	if (got < 0) {
 		/* once, not every frame for months: the show goes on without buttons */
-		fprintf(stderr, "%s: input %s: %s; input off\n", k->prog, k->in->name, err.msg);
+		cli_warn("%s: input %s: %s; input off\n", k->prog, k->in->name, err.msg);
 		k->in->shutdown();
 		k->in = &input_none;
 		got = 0;
@@ -172,7 +176,7 @@ unsigned kiosk_shell_frame(kiosk_shell *k, long n)
 		char line[96];
 		control_action a = controls_handle(&k->ps, &ev[i], line, sizeof line);
 		if (a != CONTROL_ACT_NONE)
-			fprintf(cli_note(), "%s\n", line);
+			cli_say("%s\n", line);
 		if (a == CONTROL_ACT_PLAY)
 			k->play_ms = ev[i].t_ms;
 		act |= act_bit(a);
@@ -191,7 +195,7 @@ static unsigned tap(kiosk_shell *k, int button, uint64_t t)
 		char line[96];
 		control_action a = controls_handle(&k->ps, &ev, line, sizeof line);
 		if (a != CONTROL_ACT_NONE)
-			fprintf(cli_note(), "%s\n", line);
+			cli_say("%s\n", line);
 		if (a == CONTROL_ACT_PLAY)
 			k->play_ms = t;
 		act |= act_bit(a);
@@ -253,7 +257,7 @@ unsigned kiosk_shell_key(kiosk_shell *k, int key, long n)
 		return act;
 	if (key >= '1' && key <= '4') {
 		k->ps.algo = key - '1';
-		fprintf(cli_note(), "input: key %c -> %s\n", key, skin_algo_name(k->ps.algo));
+		cli_say("input: key %c -> %s\n", key, skin_algo_name(k->ps.algo));
 		return KIOSK_ACT_ALGO;
 	}
 	for (int i = 0; i < 3; i++)
@@ -262,7 +266,7 @@ unsigned kiosk_shell_key(kiosk_shell *k, int key, long n)
 	if (key != 'd' && key != 'D')
 		return 0;
 	k->ps.view = k->ps.view == RENDER_VIEW_DIFFERENCE ? RENDER_VIEW_BODY : RENDER_VIEW_DIFFERENCE;
-	fprintf(cli_note(), "input: key d -> %s\n", render_view_name(k->ps.view));
+	cli_say("input: key d -> %s\n", render_view_name(k->ps.view));
 	return KIOSK_ACT_VIEW;
 }
 

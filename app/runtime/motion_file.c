@@ -1,18 +1,18 @@
 #include "motion_file.h"
 
-#include <stdio.h>
 #include <string.h>
 
 #include "asf.h"
 #include "bvh.h"
 #include "cli_error.h"
+#include "cli_say.h"
 #include "text_tokens.h"
 
 static int open_lines(const char *path, file_reader *fr, text_lines *tl)
 {
 	int rc = file_reader_open(fr, path);
 	if (rc < 0) {
-		fprintf(stderr, "%s: cannot open: %s\n", path, strerror(-rc));
+		cli_error_errno(path, "open", rc);
 		return -1;
 	}
 	text_lines_init(tl, file_reader_as_reader(fr));
@@ -72,7 +72,7 @@ int motion_file_open(motion_file *m, const char *path, const skel *s)
 	}
 	int bad = same_joints(&m->bvh_skel, s);
 	if (bad >= 0) {
-		fprintf(stderr, "%s: its HIERARCHY is not the skeleton's (joint %d, '%s')\n", path, bad,
+		cli_warn("%s: its HIERARCHY is not the skeleton's (joint %d, '%s')\n", path, bad,
 			bad < m->bvh_skel.count ? m->bvh_skel.bone[bad].name : "");
 		file_reader_close(&m->file);
 		return -1;
@@ -85,12 +85,12 @@ int motion_file_read(motion_file *m, amc_frame *f, skp_error *err)
 {
 	int r = m->is_bvh ? bvh_next(&m->bvh, f, err) : amc_next(&m->stream, f, err);
 	if (r == 0 && m->is_bvh && m->bvh.cut_frames > 0 && !m->warned_cut) {
-		fprintf(stderr, "%s: warning: the file ends %ld frames short of its Frames: %ld\n", m->path,
+		cli_warn("%s: warning: the file ends %ld frames short of its Frames: %ld\n", m->path,
 			m->bvh.cut_frames, m->layout.frames);
 		m->warned_cut = 1;
 	}
 	if (r == 0 && !m->is_bvh && m->stream.cut_frame >= 0 && !m->warned_cut) {
-		fprintf(stderr, "%s:%ld: warning: frame %ld is cut short (the file ends inside it): dropped\n",
+		cli_warn("%s:%ld: warning: frame %ld is cut short (the file ends inside it): dropped\n",
 			m->path, m->stream.cut_line, m->stream.cut_frame);
 		m->warned_cut = 1;
 	}
@@ -130,9 +130,9 @@ long motion_file_count(const char *path, const skel *s)
 static void no_frame(const char *path, long number, long first, long last)
 {
 	if (first < 0)
-		fprintf(stderr, "%s: no frames\n", path);
+		cli_warn("%s: no frames\n", path);
 	else
-		fprintf(stderr, "%s: no frame %ld (the file has frames %ld..%ld)\n", path, number,
+		cli_warn("%s: no frame %ld (the file has frames %ld..%ld)\n", path, number,
 			first, last);
 }
 

@@ -1,9 +1,9 @@
 #include "runtime_skin.h"
 
-#include <stdio.h>
 #include <string.h>
 
 #include "cli_error.h"
+#include "cli_say.h"
 #include "clock.h"
 
 static _Alignas(SKIN_ALIGN) unsigned char block[SKIN_SOA_BYTES(SKP_MAX_VERTS)];
@@ -23,7 +23,7 @@ int runtime_skin_init(runtime_skin *t, const skel *s, const skel_pose *bind, con
 {
 	skp_error err;
 	if (m->vert_count > SKP_MAX_VERTS || skin_soa_bytes(m->vert_count) > sizeof block) {
-		fprintf(stderr, "%s: %d vertices do not fit the skinning buffers\n", what,
+		cli_warn("%s: %d vertices do not fit the skinning buffers\n", what,
 			m->vert_count);
 		return -1;
 	}

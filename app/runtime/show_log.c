@@ -1,8 +1,8 @@
 /* The image's log lines: each block rebuilt or lost is logged once, the
  * rest counted, so a dying card does not fill the journal. */
-#include <stdio.h>
 
 #include "show_source.h"
+#include "cli_say.h"
 
 int show_log_once(show_image *img, long block)
 {
@@ -15,7 +15,7 @@ int show_log_once(show_image *img, long block)
 	}
 	/* a dying card: past the table, blocks are counted, not listed */
 	if (img->unlisted++ == 0)
-		fprintf(stderr, "image: %s: more than %d damaged blocks: further ones are counted, not listed\n",
+		cli_warn("image: %s: more than %d damaged blocks: further ones are counted, not listed\n",
 			img->path, SHOW_MAX_LOGGED);
 	return 0;
 }
@@ -31,12 +31,12 @@ void show_log_rebuild(void *ctx, uint32_t block)
 	if (!show_log_once(img, (long)block))
 		return;
 	if (block == 0 && img->im.header_from_parity)
-		fprintf(stderr, "image: %s: block 0 and the header copy bad: header rebuilt from parity group 0\n",
+		cli_warn("image: %s: block 0 and the header copy bad: header rebuilt from parity group 0\n",
 			img->path);
 	else if (block == 0 && img->im.header_from_copy)
-		fprintf(stderr, "image: %s: block 0 bad: header read from its copy\n", img->path);
+		cli_warn("image: %s: block 0 bad: header read from its copy\n", img->path);
 	else
-		fprintf(stderr, "image: %s: block %lu rebuilt from %s (%s, parity group %lu)\n", img->path,
+		cli_warn("image: %s: block %lu rebuilt from %s (%s, parity group %lu)\n", img->path,
 			(unsigned long)block, img->im.rebuilt_from, skp_block_report_what(&r),
 			(unsigned long)skp_image_group(&img->im.hdr, block));
 }

@@ -1,12 +1,12 @@
 #include "show_source.h"
 
 #include <errno.h>
-#include <stdio.h>
 #include <string.h>
 
 #include "cli_error.h"
-#include "cli_quiet.h"
+#include "cli_say.h"
 #include "play_policy.h"
+#include "skp_format.h"
 
 /* n bytes of the file from offset at into buf; how many came. */
 static long read_at(storage_file *sf, uint64_t at, uint8_t *buf, long n)
@@ -85,7 +85,7 @@ void show_image_verify(show_image *s, void (*bad)(void *ctx, uint32_t block, con
 void show_image_warn(const show_image *s)
 {
 	if (s->im.missing)
-		fprintf(stderr, "image: %s: the storage ends %lu block%s before the image (its copies or parity): "
+		cli_warn("image: %s: the storage ends %lu block%s before the image (its copies or parity): "
 			"it plays; skintool repair writes them again\n", s->path, (unsigned long)s->im.missing,
 			s->im.missing == 1 ? "" : "s");
 }
@@ -93,9 +93,9 @@ void show_image_warn(const show_image *s)
 static void refuse(const char *path, const skp_error *err)
 {
 	if (err->block >= 0)
-		fprintf(stderr, "image: %s refused: block %ld: %s\n", path, err->block, err->msg);
+		cli_warn("image: %s refused: block %ld: %s\n", path, err->block, err->msg);
 	else
-		fprintf(stderr, "image: %s refused: %s\n", path, err->msg);
+		cli_warn("image: %s refused: %s\n", path, err->msg);
 }
 
 /* Opens every slot; newest (largest sequence) first into order[]. */
@@ -136,9 +136,9 @@ static int accept_clips(show_source *s, show_image *img, const skel *sk, int lou
 		if (s->playable[c] || !loud)
 			continue;
 		if (err.block >= 0)
-			fprintf(stderr, "image: clip %s skipped: block %ld: %s\n", img->im.clip[c].name, err.block, err.msg);
+			cli_warn("image: clip %s skipped: block %ld: %s\n", img->im.clip[c].name, err.block, err.msg);
 		else
-			fprintf(stderr, "image: clip %s skipped: %s\n", img->im.clip[c].name, err.msg);
+			cli_warn("image: clip %s skipped: %s\n", img->im.clip[c].name, err.msg);
 	}
 	return playable;
 }
@@ -154,12 +154,12 @@ static int slot_flawed(show_source *s, show_image *img, const skel *sk, int seve
 		return 0;
 	show_image_verify(img, NULL, NULL, &v);
 	if (v.beyond)
-		fprintf(stderr, "image: %s has %ld blocks beyond repair: trying an older slot\n", img->path, v.beyond);
+		cli_warn("image: %s has %ld blocks beyond repair: trying an older slot\n", img->path, v.beyond);
 	else if (v.digest == 0)
-		fprintf(stderr, "image: %s does not match its digest (a block altered with a good CRC): trying an older slot\n",
+		cli_warn("image: %s does not match its digest (a block altered with a good CRC): trying an older slot\n",
 			img->path);
 	else if (accept_clips(s, img, sk, 0) == 0)
-		fprintf(stderr, "image: %s has no clip that can play: trying an older slot\n", img->path);
+		cli_warn("image: %s has no clip that can play: trying an older slot\n", img->path);
 	else
 		return 0;
 	return 1;
@@ -196,13 +196,13 @@ int show_open(show_source *s, const char *const *paths, int n, bound_body *body)
 	play_slot_checks checks = { s, slot_accept, slot_damaged };
 	s->active = play_slot_choose(order, k, n, &checks);
 	if (s->active < 0) {
-		fprintf(stderr, "image: no valid image among %d slot%s\n", n, n > 1 ? "s" : "");
+		cli_warn("image: no valid image among %d slot%s\n", n, n > 1 ? "s" : "");
 		close_others(s, -1);
 		return -1;
 	}
 	close_others(s, s->active);
 	show_image *img = &s->slot[s->active];
-	fprintf(cli_note(), "image: playing %s (sequence %llu, %d clip%s, a body of %d vertices)\n", img->path,
+	cli_say("image: playing %s (sequence %llu, %d clip%s, a body of %d vertices)\n", img->path,
 		(unsigned long long)img->im.hdr.sequence, img->im.clip_count, img->im.clip_count == 1 ? "" : "s",
 		body->mesh.vert_count);
 	show_image_warn(img);
@@ -240,7 +240,7 @@ static void log_lost(void *ctx, long block, const char *why, long held)
 {
 	show_source *s = ctx;
 	if (show_log_once(&s->slot[s->active], block))
-		fprintf(stderr, "image: block %ld bad (%s), holding frame %ld\n", block, why, held);
+		cli_warn("image: block %ld bad (%s), holding frame %ld\n", block, why, held);
 }
 
 /* One line for a pass over the clip that lost or rebuilt anything: what a
@@ -252,11 +252,11 @@ static void log_pass(void *ctx)
 	/* a short clip loops thousands of times an hour: the first such pass,
 	 * then one line an hour (with how many passes went unsaid) */
 	if ((lost || rebuilt) && skp_ratelimit_take(&s->pass_said, s->now, &held)) {
-		fprintf(stderr, "image: clip %s: %lu frame%s held over bad blocks, %lu block%s rebuilt this pass",
-			s->clip_src.stream.c.name, lost, lost == 1 ? "" : "s", rebuilt, rebuilt == 1 ? "" : "s");
+		char since[64] = "";
 		if (held)
-			fprintf(stderr, " (and %lu passes like it since the last line)", held);
-		fputc('\n', stderr);
+			skp_format(since, sizeof since, " (and %lu passes like it since the last line)", held);
+		cli_warn("image: clip %s: %lu frame%s held over bad blocks, %lu block%s rebuilt this pass%s\n",
+			 s->clip_src.stream.c.name, lost, lost == 1 ? "" : "s", rebuilt, rebuilt == 1 ? "" : "s", since);
 	}
 	s->pass_rebuilt = s->slot[s->active].im.rebuilt;
 }
@@ -267,16 +267,16 @@ int show_select_clip(show_source *s, const char *name, play_source *src)
 	skp_error err;
 	int c = name ? skp_image_find_clip(&img->im, name) : show_next_playable(s, 0);
 	if (!name && c < 0) {
-		fprintf(stderr, "%s: no clip can play\n", img->path);
+		cli_warn("%s: no clip can play\n", img->path);
 		return -1;
 	}
 	if (c < 0 || c >= img->im.clip_count) {
-		fprintf(stderr, "%s: no clip '%s' (%d clips)\n", cli_shown(img->path), cli_shown(name),
+		cli_warn("%s: no clip '%s' (%d clips)\n", cli_shown(img->path), cli_shown(name),
 			img->im.clip_count);
 		return -1;
 	}
 	if (!s->playable[c]) {
-		fprintf(stderr, "%s: clip %s cannot play (see above)\n", img->path, img->im.clip[c].name);
+		cli_warn("%s: clip %s cannot play (see above)\n", img->path, img->im.clip[c].name);
 		return -1;
 	}
 	s->clip_src.on_lost = log_lost;

@@ -1,10 +1,10 @@
 #include "show_watch.h"
 
-#include <stdio.h>
 #include <string.h>
 #include <sys/stat.h>
 
 #include "cli_error.h"
+#include "cli_say.h"
 
 static show_slot_state slot_now(const char *path)
 {
@@ -51,7 +51,7 @@ static int whole_image(const char *path)
 	}
 	show_image_close(&probe);
 	if (!ok)
-		fprintf(stderr, "image: %s changed but holds no whole image (%s): playing on until it changes again\n",
+		cli_warn("image: %s changed but holds no whole image (%s): playing on until it changes again\n",
 			cli_shown(path), v.beyond ? "blocks beyond repair" : v.digest == 0 ? "its digest does not match"
 									  : err.msg);
 	return ok;

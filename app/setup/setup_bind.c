@@ -1,9 +1,9 @@
 #include "setup_bind.h"
 
-#include <stdio.h>
 #include <string.h>
 
 #include "cli_progress.h"
+#include "cli_say.h"
 #include "clock.h"
 #include "mannequin.h"
 #include "motion_file.h"
@@ -80,7 +80,7 @@ int setup_bind_auto_weights(const bind_args *a, int generated, const char *obj, 
 		rc = balance_watched(body, work, &err);
 	body->bind_ns = clock_now_ns() - t0;
 	if (rc != SKP_OK) {
-		fprintf(stderr, "%s: bind: %s\n", obj, err.msg);
+		cli_warn("%s: bind: %s\n", obj, err.msg);
 		return -1;
 	}
 	body->automatic = 1;
@@ -94,11 +94,11 @@ static int generate_body(const bind_args *a, const char *asf, bound_body *body)
 	manq_work *work = &setup_scratch_area()->manq;
 	skp_error err;
 	if (a->pose_path || a->fit || a->group || a->weights_path || a->weights_mesh || a->joint_map || a->rig) {
-		fprintf(stderr, "%s: --bind-pose, --fit, --group, --weights, --joint-map and --rig need a mesh\n", asf);
+		cli_warn("%s: --bind-pose, --fit, --group, --weights, --joint-map and --rig need a mesh\n", asf);
 		return -1;
 	}
 	if (manq_build(&body->skel, 0, work, &body->mesh, &err) != SKP_OK) {
-		fprintf(stderr, "%s: generated body: %s\n", asf, err.msg);
+		cli_warn("%s: generated body: %s\n", asf, err.msg);
 		return -1;
 	}
 	memcpy(body->pose_value, work->pose_value, sizeof body->pose_value);
@@ -130,20 +130,20 @@ static int load_body(const bind_args *a, const char *asf, const char *obj, bound
 	if (!obj)
 		return generate_body(a, asf, body) < 0 ? -1 : setup_bind_auto_weights(a, 1, asf, body);
 	if (setup_bind_rigged(a, obj)) {
-		fprintf(stderr, "%s: this program reads OBJ meshes and packed images: pack the rigged mesh into an "
+		cli_warn("%s: this program reads OBJ meshes and packed images: pack the rigged mesh into an "
 			"image first (skintool pack SKELETON MOTION --mesh %s%s%s -o SHOW.skn), then play that\n", obj,
 			obj, a->rig ? " --rig " : "", a->rig ? a->rig : "");
 		return -1;
 	}
 	if (a->weights_mesh || a->joint_map) {
-		fprintf(stderr, "%s: an OBJ has no joints or weights of its own: --weights mesh and --joint-map need "
+		cli_warn("%s: an OBJ has no joints or weights of its own: --weights mesh and --joint-map need "
 			"a rigged mesh (glTF 2.0, FBX, COLLADA) or the OBJ's MakeHuman rig (--rig FILE.mhskel)\n", obj);
 		return -1;
 	}
 	if (setup_mesh_check_obj(obj) < 0 || setup_pick_mesh(obj, a->group, &body->mesh) < 0)
 		return -1;
 	if (body->mesh.vert_count == 0) {
-		fprintf(stderr, "%s: no vertices%s%s\n", obj, a->group ? " in group " : "",
+		cli_warn("%s: no vertices%s%s\n", obj, a->group ? " in group " : "",
 			a->group ? a->group : "");
 		return -1;
 	}

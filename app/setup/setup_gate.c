@@ -2,9 +2,11 @@
 
 #include <string.h>
 
+#include "cli_say.h"
 #include "motion_file.h"
 #include "runtime_body.h"
 #include "setup_scratch.h"
+#include "skp_format.h"
 
 /* Where a figure was worst, for messages: "with lfemur forward 60 degrees"
  * or "at frame 84 of walk.amc". */
@@ -12,17 +14,21 @@ void setup_gate_where(const bound_body *body, const bind_gate_worst *w, char *ou
 {
 	const bind_rom_move *m = w->move >= 0 ? &body->rom.move[w->move] : NULL;
 	if (m)
-		snprintf(out, n, "with %s %s %d degrees", body->skel.bone[m->bone].name, bind_rom_kind_name(m->kind),
+		skp_format(out, n, "with %s %s %d degrees", body->skel.bone[m->bone].name, bind_rom_kind_name(m->kind),
 			 m->degrees);
 	else
-		snprintf(out, n, "at frame %ld of the motion", w->frame);
+		skp_format(out, n, "at frame %ld of the motion", w->frame);
 }
 
-static void say_where(FILE *to, const bound_body *body, const bind_gate_worst *w)
+typedef struct where_text {
+	char s[96];
+} where_text;
+
+static where_text where(const bound_body *body, const bind_gate_worst *w)
 {
-	char where[96];
-	setup_gate_where(body, w, where, sizeof where);
-	fputs(where, to);
+	where_text t;
+	setup_gate_where(body, w, t.s, sizeof t.s);
+	return t;
 }
 
 static const char *region_name(const bound_body *body, const bind_gate_worst *w)
@@ -48,30 +54,28 @@ static const char *fix_for(const bind_args *a, const bound_body *body, unsigned 
 	       "guessed wrong, and a rigged export (glTF 2.0) brings its own joints and weights";
 }
 
-static void say_failures(FILE *to, const char *name, const bind_args *a, const bound_body *body)
+static void say_failures(const char *name, const bind_args *a, const bound_body *body)
 {
 	const bind_gate_result *g = &body->gate;
 	if (g->failed & BIND_GATE_TEARS) {
-		fprintf(to, "%s: the skin tears at %s: an edge stretched to %.1f times its bind length ", name,
-			region_name(body, &g->stretch), (double)g->stretch.value);
-		say_where(to, body, &g->stretch);
-		fprintf(to, " (%d edges past %.0fx and %.0f%% of the skeleton's extent); %s\n", g->torn_edges,
-			(double)bind_gate_default_limits.stretch_ratio,
-			100.0 * (double)bind_gate_default_limits.stretch_extent, fix_for(a, body, BIND_GATE_TEARS));
+		cli_warn("%s: the skin tears at %s: an edge stretched to %.1f times its bind length %s (%d edges past "
+			 "%.0fx and %.0f%% of the skeleton's extent); %s\n", name, region_name(body, &g->stretch),
+			 (double)g->stretch.value, where(body, &g->stretch).s, g->torn_edges,
+			 (double)bind_gate_default_limits.stretch_ratio,
+			 100.0 * (double)bind_gate_default_limits.stretch_extent, fix_for(a, body, BIND_GATE_TEARS));
 	}
 	if (g->failed & BIND_GATE_DRIFT) {
-		fprintf(to, "%s: a part leaves its bones at %s: a vertex's distance to the posed skeleton grows by "
-			"%.1f%% of its extent ", name, region_name(body, &g->drift), 100.0 * (double)g->drift.value);
-		say_where(to, body, &g->drift);
-		fprintf(to, " (%d vertices past %.0f%%); %s\n", g->drifting, 100.0 * (double)bind_gate_default_limits.drift,
-			fix_for(a, body, BIND_GATE_DRIFT));
+		cli_warn("%s: a part leaves its bones at %s: a vertex's distance to the posed skeleton grows by "
+			 "%.1f%% of its extent %s (%d vertices past %.0f%%); %s\n", name, region_name(body, &g->drift),
+			 100.0 * (double)g->drift.value, where(body, &g->drift).s, g->drifting,
+			 100.0 * (double)bind_gate_default_limits.drift, fix_for(a, body, BIND_GATE_DRIFT));
 	}
 	if (g->failed & BIND_GATE_ROOT)
-		fprintf(to, "%s: %s moves, but %.0f%% of its vertices are bound to the root alone (%d such vertices in "
+		cli_warn("%s: %s moves, but %.0f%% of its vertices are bound to the root alone (%d such vertices in "
 			"all): its joints mapped to nothing; %s\n", name, region_name(body, &g->root),
 			100.0 * (double)g->root.value, g->root_moving, fix_for(a, body, BIND_GATE_ROOT));
 	if (g->failed & BIND_GATE_RIGID)
-		fprintf(to, "%s: %s stays rigid: its vertices follow its bone %.2f of the way (at least %.2f wanted); "
+		cli_warn("%s: %s stays rigid: its vertices follow its bone %.2f of the way (at least %.2f wanted); "
 			"%s\n", name, region_name(body, &g->rigid), (double)g->rigid.value,
 			(double)bind_gate_default_limits.follow_min, fix_for(a, body, BIND_GATE_RIGID));
 }
@@ -128,15 +132,15 @@ int setup_gate(const bind_args *a, const char *name, bound_body *body)
 	}
 	bind_gate_finish(w, &body->gate);
 	if (a->gate_report)
-		setup_gate_report(stderr, body);
+		setup_gate_report(body);
 	if (!body->gate.failed)
 		return 0;
-	say_failures(stderr, name, a, body);
+	say_failures(name, a, body);
 	if (a->force) {
-		fprintf(stderr, "%s: --force: bound anyway\n", name);
+		cli_warn("%s: --force: bound anyway\n", name);
 		return 0;
 	}
-	fprintf(stderr, "%s: bind refused (bind --report prints every figure; --force binds anyway)\n", name);
+	cli_warn("%s: bind refused (bind --report prints every figure; --force binds anyway)\n", name);
 	return -1;
 }
 
@@ -145,30 +149,27 @@ static const char *verdict(const bound_body *body, unsigned check)
 	return body->gate.failed & check ? "FAILED" : "ok";
 }
 
-void setup_gate_report(FILE *to, const bound_body *body)
+void setup_gate_report(const bound_body *body)
 {
 	const bind_gate_result *g = &body->gate;
 	const bind_gate_limits *lim = &bind_gate_default_limits;
-	fprintf(to, "quality gate: %d range-of-motion poses, %ld motion frames, skeleton extent %.4g\n", g->moves,
+	cli_warn("quality gate: %d range-of-motion poses, %ld motion frames, skeleton extent %.4g\n", g->moves,
 		g->frames, (double)g->extent);
-	fprintf(to, "  tears: worst edge %.2f times its bind length (%s, ", (double)g->stretch.value,
-		region_name(body, &g->stretch));
-	say_where(to, body, &g->stretch);
-	fprintf(to, "), %d edges ever past 2x, %d past %.0fx and %.0f%%: %s\n", g->doubled_edges, g->torn_edges,
+	cli_warn("  tears: worst edge %.2f times its bind length (%s, %s), %d edges ever past 2x, %d past %.0fx and "
+		 "%.0f%%: %s\n", (double)g->stretch.value, region_name(body, &g->stretch), where(body, &g->stretch).s,
+		 g->doubled_edges, g->torn_edges,
 		(double)lim->stretch_ratio, 100.0 * (double)lim->stretch_extent, verdict(body, BIND_GATE_TEARS));
-	fprintf(to, "  grow: an edge longer by %.2f%% of the extent at most (%s, ", 100.0 * (double)g->grow.value,
-		region_name(body, &g->grow));
-	say_where(to, body, &g->grow);
-	fprintf(to, ")\n");
-	fprintf(to, "  drift: a vertex's distance to the posed skeleton grew by %.2f%% of its extent at most (%s), "
+	cli_warn("  grow: an edge longer by %.2f%% of the extent at most (%s, %s)\n", 100.0 * (double)g->grow.value,
+		 region_name(body, &g->grow), where(body, &g->grow).s);
+	cli_warn("  drift: a vertex's distance to the posed skeleton grew by %.2f%% of its extent at most (%s), "
 		"%d vertices past %.0f%%: %s\n", 100.0 * (double)g->drift.value, region_name(body, &g->drift),
 		g->drifting, 100.0 * (double)lim->drift, verdict(body, BIND_GATE_DRIFT));
-	fprintf(to, "  closer: and shrank by %.2f%% at most (%s: contact, not judged)\n", 100.0 * (double)g->closer.value,
+	cli_warn("  closer: and shrank by %.2f%% at most (%s: contact, not judged)\n", 100.0 * (double)g->closer.value,
 		region_name(body, &g->closer));
-	fprintf(to, "  root: %.1f%% of a moving region's vertices bound to the root alone at most (%s), %d in all, "
+	cli_warn("  root: %.1f%% of a moving region's vertices bound to the root alone at most (%s), %d in all, "
 		"limit %.0f%%: %s\n", 100.0 * (double)g->root.value, region_name(body, &g->root), g->root_moving,
 		100.0 * (double)lim->root_share, verdict(body, BIND_GATE_ROOT));
-	fprintf(to, "  rigid: the region following its bone least follows it %.2f of the way (%s), limit %.2f: %s\n",
+	cli_warn("  rigid: the region following its bone least follows it %.2f of the way (%s), limit %.2f: %s\n",
 		(double)g->rigid.value, region_name(body, &g->rigid), (double)lim->follow_min,
 		verdict(body, BIND_GATE_RIGID));
 }

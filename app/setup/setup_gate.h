@@ -7,8 +7,6 @@
 #ifndef SETUP_GATE_H
 #define SETUP_GATE_H
 
-#include <stdio.h>
-
 #include "cli_bind_args.h"
 #include "runtime_body.h"
 
@@ -17,8 +15,8 @@
  * skeleton's, for the generated body). */
 int setup_gate(const bind_args *a, const char *name, bound_body *body);
 
-/* The gate's figures, for bind --report. */
-void setup_gate_report(FILE *to, const bound_body *body);
+/* The gate's figures on stderr, for bind --report. */
+void setup_gate_report(const bound_body *body);
 
 /* Where a gate figure was worst, as words: "with rhumerus forward 60
  * degrees" (a range-of-motion pose) or "at frame 273 of the motion". */

@@ -1,20 +1,16 @@
 #include "setup_mesh_format.h"
 
-#include <stdio.h>
 #include <string.h>
 #include <strings.h>
 
-#include "cli_quiet.h"
+#include "cli_say.h"
+#include "file_reader.h"
 
 mesh_format setup_mesh_format(const char *path)
 {
 	unsigned char head[MESH_FORMAT_HEAD];
-	FILE *f = fopen(path, "rb");
-	if (!f)
-		return MESH_FMT_EMPTY;
-	size_t n = fread(head, 1, sizeof head, f);
-	fclose(f);
-	return mesh_format_sniff(head, n);
+	long n = file_reader_head(path, head, sizeof head);
+	return n < 0 ? MESH_FMT_EMPTY : mesh_format_sniff(head, (size_t)n);
 }
 
 static const char *extension(const char *path)
@@ -69,20 +65,18 @@ void setup_mesh_format_note(const char *path, mesh_format f)
 {
 	if (setup_mesh_format_named(path, f) || !*extension(path))
 		return;
-	fprintf(cli_note(), "%s: the file is %s, whatever its name says ('%s'): read as that\n", path,
+	cli_say("%s: the file is %s, whatever its name says ('%s'): read as that\n", path,
 		mesh_format_name(f), extension(path));
 }
 
 int setup_mesh_check_obj(const char *path)
 {
-	FILE *f = fopen(path, "rb");
-	if (!f)
+	if (file_reader_head(path, NULL, 0) < 0)
 		return 0;
-	fclose(f);
 	mesh_format fmt = setup_mesh_format(path);
 	if (fmt == MESH_FMT_OBJ)
 		return 0;
-	fprintf(stderr, "%s: the file is %s, not a mesh skintool reads: give an OBJ (v and f lines) or a rigged "
+	cli_warn("%s: the file is %s, not a mesh skintool reads: give an OBJ (v and f lines) or a rigged "
 		"glTF 2.0 (.glb, .gltf), FBX or COLLADA (.dae, .zae)%s\n", path, mesh_format_name(fmt),
 		fmt == MESH_FMT_JSON ? "; a MakeHuman skeleton (.mhskel) goes with its OBJ as --rig FILE" : "");
 	return -1;

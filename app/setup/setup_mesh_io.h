@@ -1,5 +1,5 @@
-/* Mesh files for both programs: OBJ in (through the core parser, errors
- * reported as FILE:LINE: message) and OBJ out. */
+/* Mesh files for both programs: OBJ in, through the core parser, errors
+ * reported as FILE:LINE: message (skintool writes OBJ: tool_body_out.h). */
 #ifndef SETUP_MESH_IO_H
 #define SETUP_MESH_IO_H
 
@@ -12,11 +12,6 @@
  * NULL, then says whether it was that the group has no faces). The work area is the start-up scratch
  * (setup_scratch.h): valid until the next call or the next binding step. */
 const obj_work *setup_load_obj(const char *path, const char *group, mesh *out, int *group_missing);
-
-/* Writes a first comment "# WHAT: N vertices, M triangles" (what NULL:
- * "skinplay mesh"), v (9 significant digits), vn and `f a//a b//b c//c`
- * lines. Returns 0, or -1 after reporting the error. */
-int mesh_write_obj(const char *path, const mesh *m, const char *what);
 
 /* What the first comment of `skintool mannequin`'s OBJ says: a mesh that
  * starts with it is bound like the generated body (balanced by default). */

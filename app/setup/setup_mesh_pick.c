@@ -1,23 +1,23 @@
 #include "setup_mesh_pick.h"
 
-#include <stdio.h>
 #include <string.h>
 #include <strings.h>
 
 #include "setup_mesh_io.h"
-#include "cli_quiet.h"
+#include "cli_say.h"
 #include "setup_scratch.h"
+#include "skp_format.h"
 
 static void list_groups(const char *path, const obj_work *w)
 {
 	if (w->group_count == 0) {
-		fprintf(stderr, "%s: the file has no g or o names: leave --group out\n", path);
+		cli_warn("%s: the file has no g or o names: leave --group out\n", path);
 		return;
 	}
-	fprintf(stderr, "%s: its groups:", path);
+	cli_warn("%s: its groups:", path);
 	for (int i = 0; i < w->group_count; i++)
-		fprintf(stderr, "%s %s (%ld faces)", i ? "," : "", w->group[i].name, w->group[i].faces);
-	fprintf(stderr, "%s\n", w->group_overflow ? ", and more" : "");
+		cli_warn("%s %s (%ld faces)", i ? "," : "", w->group[i].name, w->group[i].faces);
+	cli_warn("%s\n", w->group_overflow ? ", and more" : "");
 }
 
 static const obj_group *body_group(const obj_work *w)
@@ -34,18 +34,18 @@ static int pick_body_group(const char *path, const obj_work *w, mesh *out)
 	static char name[SKP_MAX_NAME];
 	const obj_group *g = body_group(w);
 	long all_verts = w->file_verts, other_faces = w->file_faces - g->faces;
-	snprintf(name, sizeof name, "%s", g->name);
+	skp_format(name, sizeof name, "%s", g->name);
 	int others = w->group_count - 1;
 	if (!setup_load_obj(path, name, out, NULL))
 		return -1;
-	fprintf(cli_note(), "%s: using group '%s' (%d vertices); left out %d other group%s (%ld faces, %ld vertices",
+	cli_say("%s: using group '%s' (%d vertices); left out %d other group%s (%ld faces, %ld vertices",
 		path, name, out->vert_count, others, others == 1 ? "" : "s", other_faces,
 		all_verts - out->vert_count);
 	w = &setup_scratch_area()->obj;
 	for (int i = 0, shown = 0; i < w->group_count && shown < 4; i++)
 		if (strcmp(w->group[i].name, name) != 0 && w->group[i].faces > 0)
-			fprintf(cli_note(), "%s %s", shown++ ? "," : ":", w->group[i].name);
-	fprintf(cli_note(), "%s); --group NAME picks another\n", others > 4 ? ", ..." : "");
+			cli_say("%s %s", shown++ ? "," : ":", w->group[i].name);
+	cli_say("%s); --group NAME picks another\n", others > 4 ? ", ..." : "");
 	return 0;
 }
 
@@ -170,7 +170,7 @@ static void pick_largest_part(const char *path, mesh *m)
 	long kept = p->verts[best];
 	int closed = !p->open[best];
 	keep_part(m, p, best);
-	fprintf(cli_note(), "%s: using its largest %sconnected part (%ld vertices); left out %d other part%s (%ld vertices)\n",
+	cli_say("%s: using its largest %sconnected part (%ld vertices); left out %d other part%s (%ld vertices)\n",
 		path, closed ? "closed " : "", kept, count - 1, count == 2 ? "" : "s", all - kept);
 }
 

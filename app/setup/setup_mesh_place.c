@@ -1,13 +1,12 @@
 #include "setup_mesh_place.h"
 
 #include <math.h>
-#include <stdio.h>
 #include <string.h>
 
 #include "bind_shape.h"
 #include "runtime_body.h"
 #include "setup_mesh_io.h"
-#include "cli_quiet.h"
+#include "cli_say.h"
 #include "setup_scratch.h"
 #include "skel_roles.h"
 #include "skel_tpose.h"
@@ -20,7 +19,7 @@ static int fit_mesh(const char *obj, bound_body *body)
 	skp_error err;
 	mesh *m = &body->mesh;
 	if (bind_fit(m->pos, m->vert_count, &body->skel, &body->pose, &body->fit, &err) != SKP_OK) {
-		fprintf(stderr, "%s: fit: %s\n", obj, err.msg);
+		cli_warn("%s: fit: %s\n", obj, err.msg);
 		return -1;
 	}
 	body->fitted = 1;
@@ -39,7 +38,7 @@ static int auto_fit(const char *obj, bound_body *body)
 		return 0;
 	bind_fit_apply(m->pos, m->vert_count, f);
 	body->fitted = 1;
-	fprintf(cli_note(), "%s: the mesh is %.4g units tall, the skeleton %.4g: fitted (scale %.4g, then moved by "
+	cli_say("%s: the mesh is %.4g units tall, the skeleton %.4g: fitted (scale %.4g, then moved by "
 		"%.4g %.4g %.4g); --no-fit keeps it as it is\n", obj, (double)f->mesh_height,
 		(double)f->skel_height, (double)f->scale, (double)f->offset.x, (double)f->offset.y,
 		(double)f->offset.z);
@@ -49,24 +48,24 @@ static int auto_fit(const char *obj, bound_body *body)
 static void say_guess(const char *obj, const bound_body *body, const bind_guess_result *g, float refit)
 {
 	int ends = 0;
-	fprintf(cli_note(), "%s: bound in the mesh's own pose:", obj);
+	cli_say("%s: bound in the mesh's own pose:", obj);
 	for (int i = 0, n = 0; i < g->arm_count; i++) {
 		const bind_guess_arm *a = &g->arm[i];
 		if (a->to_deg != a->from_deg)
-			fprintf(cli_note(), "%s '%s' from %.0f to %.0f degrees of elevation", n++ ? "," : "",
+			cli_say("%s '%s' from %.0f to %.0f degrees of elevation", n++ ? "," : "",
 				body->skel.bone[a->bone].name, (double)a->from_deg, (double)a->to_deg);
 		if (a->lower_turn_deg != 0.0f)
-			fprintf(cli_note(), "%s '%s' turned %.0f degrees", n++ ? "," : "",
+			cli_say("%s '%s' turned %.0f degrees", n++ ? "," : "",
 				body->skel.bone[a->lower].name, (double)a->lower_turn_deg);
 		ends += a->ends;
 	}
 	if (ends)
-		fprintf(cli_note(), "; %d turns of limbs, hands, thumbs, feet and toes to the mesh's cross-sections and "
+		cli_say("; %d turns of limbs, hands, thumbs, feet and toes to the mesh's cross-sections and "
 			"ends", ends);
 	if (refit != 1.0f)
-		fprintf(cli_note(), "; the mesh fitted again to that pose (scale %.4g more) and the guess carried on",
+		cli_say("; the mesh fitted again to that pose (scale %.4g more) and the guess carried on",
 			(double)refit);
-	fprintf(cli_note(), " (--bind-pose P.amc[:F] or --bind-pose rest chooses)\n");
+	cli_say(" (--bind-pose P.amc[:F] or --bind-pose rest chooses)\n");
 }
 
 static void set_pose(bound_body *body, const float *values)
@@ -96,14 +95,14 @@ static int check_shape(const bind_args *a, const char *obj, const bound_body *bo
 		return 0;
 	float wide = fmaxf(sh.foot_x, sh.foot_z) / sh.height, narrow = fminf(sh.foot_x, sh.foot_z) / sh.height;
 	if (wide > BIND_SHAPE_SPAN || narrow > BIND_SHAPE_FEET)
-		fprintf(stderr, "%s: not a biped: what touches the ground spans %.0f%% by %.0f%% of its height (two "
+		cli_warn("%s: not a biped: what touches the ground spans %.0f%% by %.0f%% of its height (two "
 			"feet %.0f%% by %.0f%% at most): a quadruped, a prop, or a figure lying down", obj,
 			100.0 * (double)wide, 100.0 * (double)narrow, 100.0 * (double)BIND_SHAPE_SPAN,
 			100.0 * (double)BIND_SHAPE_FEET);
 	else
-		fprintf(stderr, "%s: not a biped: it is %.0f%% as wide as it is tall (a body %.0f%% or more): a pole or "
+		cli_warn("%s: not a biped: it is %.0f%% as wide as it is tall (a body %.0f%% or more): a pole or "
 			"a prop", obj, 100.0 * (double)(sh.width / sh.height), 100.0 * (double)BIND_SHAPE_WIDE);
-	fprintf(stderr, "; skintool plays human motion on standing bipeds, Y up%s\n",
+	cli_warn("; skintool plays human motion on standing bipeds, Y up%s\n",
 		a->force ? " (--force: bound anyway)" : " (--force binds it anyway)");
 	return a->force ? 0 : -1;
 }

@@ -15,6 +15,7 @@
 #include "setup_weights.h"
 #include "skintool_cmds.h"
 #include "tool_args.h"
+#include "tool_body_out.h"
 #include "tool_state.h"
 
 
@@ -174,7 +175,7 @@ int cmd_bind(int argc, char **argv)
 	b.c.bind.gate_report = b.want_report;
 	if (rig_bind_load(&b.c.bind, b.c.asf, b.c.mesh, body) < 0)
 		return 1;
-	if (setup_write_weights(b.c.out, &body->skel, &body->weights) < 0)
+	if (tool_write_weights(b.c.out, &body->skel, &body->weights) < 0)
 		return 1;
 	if (b.want_report)
 		report(stderr, &b.c.bind, body);

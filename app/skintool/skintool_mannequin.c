@@ -11,6 +11,7 @@
 #include "cli_quiet.h"
 #include "mannequin.h"
 #include "skintool_cmds.h"
+#include "tool_body_out.h"
 #include "tool_state.h"
 
 typedef struct manq_args {
@@ -98,7 +99,7 @@ int cmd_mannequin(int argc, char **argv)
 		cli_error(a.asf, &err);
 		return 1;
 	}
-	if (mesh_write_obj(a.out, body, TOOL_GENERATED_BODY) < 0)
+	if (tool_write_obj(a.out, body, TOOL_GENERATED_BODY) < 0)
 		return 1;
 	fprintf(cli_summary(), "%s: %d vertices, %d triangles", a.out, body->vert_count, body->tri_count);
 	if (work->arms_raised)

@@ -15,6 +15,7 @@
 #include "runtime_skin.h"
 #include "skintool_cmds.h"
 #include "tool_args.h"
+#include "tool_body_out.h"
 #include "tool_state.h"
 
 typedef struct skin_args {
@@ -107,5 +108,5 @@ int cmd_skin(int argc, char **argv)
 	runtime_skin_frame(&sk, f.value);
 	runtime_skin_run(&sk, (skin_algo)a.algo, pos, nrm);
 	store(&body->mesh, pos, nrm);
-	return mesh_write_obj(a.c.out, &body->mesh, NULL) < 0 ? 1 : 0;
+	return tool_write_obj(a.c.out, &body->mesh, NULL) < 0 ? 1 : 0;
 }

@@ -34,3 +34,18 @@ void file_reader_close(file_reader *fr)
 		close(fr->fd);
 	fr->fd = -1;
 }
+
+long file_reader_head(const char *path, void *buf, size_t len)
+{
+	file_reader fr;
+	int rc = file_reader_open(&fr, path);
+	if (rc < 0)
+		return rc;
+	size_t got = 0;
+	long n = 1;
+	while (got < len && (n = fd_read(&fr, (char *)buf + got, len - got)) > 0)
+		got += (size_t)n;
+	rc = n < 0 ? -errno : 0;
+	file_reader_close(&fr);
+	return rc < 0 ? rc : (long)got;
+}
