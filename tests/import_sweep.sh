@@ -76,11 +76,7 @@ find "$models" -type f \( -iname '*.gltf' -o -iname '*.glb' -o -iname '*.fbx' -o
 	-o -iname '*.obj' -o -iname '*.x' -o -iname '*.3ds' -o -iname '*.ply' -o -iname '*.blend' \
 	-o -iname '*.stl' -o -iname '*.ms3d' -o -iname '*.smd' -o -iname '*.md5mesh' \) | sort > "$scratch/files"
 total=$(wc -l < "$scratch/files")
-# slowest first by the last run (files not timed then first of all)
-[ -f "$times" ] || times_last=/dev/null
-awk -F '\t' 'FILENAME == ARGV[1] { t[$2] = $1; next } { print (($0 in t) ? t[$0] : 1e9) "\t" $0 }' \
-	"${times_last:-$times}" "$scratch/files" | sort -g -r -k1,1 | cut -f2- |
-	tr '\n' '\0' |
+sh "$(dirname "$0")/slowest_first.sh" "$times" < "$scratch/files" | tr '\n' '\0' |
 	scratch=$scratch tool=$tool asf=$asf limit=$limit total=$total \
 	xargs -0 -P "$jobs" -n 1 sh "$0" --one
 sort -t "$(printf '\t')" -k2 "$scratch/times" > "$times.new" && mv "$times.new" "$times"

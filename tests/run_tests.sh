@@ -6,8 +6,8 @@
 #
 # SKP_TEST_JOBS programs run at a time (default: the machine's processors).
 # The slowest programs start first, by the times of the last run (kept in
-# BUILD_DIR/tests/.times), so that the run ends when its longest program
-# does. Each program's output is shown whole when it ends, followed by its
+# BUILD_DIR/tests/.times; slowest_first.sh), so that the run ends when its
+# longest program does. Each program's output is shown whole when it ends, followed by its
 # time; the five slowest are listed at the end.
 # (run_tests.sh --one PROGRAM: one program, for the parallel runs below)
 if [ "$1" != --one ]; then
@@ -44,19 +44,11 @@ if [ "$1" = --one ]; then
 	exit 0
 fi
 
-# slowest first (unknown ones first of all: they may be slow)
-order() {
-	for t in "$@"; do
-		s=$(awk -v n="$(basename "$t")" '$1 == n { s = $2 } END { print (s == "" ? 1e9 : s) }' "$times" 2>/dev/null)
-		echo "${s:-1e9} $t"
-	done | sort -g -r -k1,1 | cut -d' ' -f2-
-}
-
 if [ "$jobs" -le 1 ]; then
 	for t in "$@"; do run_one "$t"; done
 else
 	export logs SKP_TEST_RUNNER SKP_TEST_SKIP SKP_TEST_SKIP_WHY
-	order "$@" | xargs -P "$jobs" -n 1 sh "$0" --one
+	printf '%s\n' "$@" | sh "$(dirname "$0")/slowest_first.sh" "$times" | xargs -P "$jobs" -n 1 sh "$0" --one
 fi
 
 run=0; passed=0; failed=0; skipped=0; failed_progs=""
@@ -65,7 +57,7 @@ for t in "$@"; do
 	name=$(basename "$t") log=$logs/$name.log
 	rc=$(cat "$logs/$name.rc" 2>/dev/null || echo 1)
 	if [ "$rc" = skip ]; then skipped=$((skipped + 1)); continue; fi
-	echo "$name $(cat "$logs/$name.time" 2>/dev/null || echo 0)" >> "$times.new"
+	printf '%s\t%s\n' "$(cat "$logs/$name.time" 2>/dev/null || echo 0)" "$t" >> "$times.new"
 	# cmocka 1.1.7 (Debian 13) puts the group's name before the count:
 	# "[==========] tests: 4 test(s) run."; 1.1.5 (Debian 12) does not
 	g='\([^ ]*: \)\{0,1\}'
@@ -80,9 +72,10 @@ for t in "$@"; do
 		failed_progs="$failed_progs $name"
 	fi
 done
-slowest=$(sort -g -r -k2,2 "$times.new" | head -n 5 | awk '{ printf "%s%s %s s", (NR > 1 ? ", " : ""), $1, $2 }')
+slowest=$(sort -g -r -k1,1 "$times.new" | head -n 5 |
+	awk -F '\t' '{ n = split($2, p, "/"); printf "%s%s %s s", (NR > 1 ? ", " : ""), p[n], $1 }')
 # the times of programs not run this time are kept
-awk 'NR == FNR { run[$1] = 1; print; next } !($1 in run)' "$times.new" "$times" 2>/dev/null > "$times.all" &&
+awk -F '\t' 'NR == FNR { run[$2] = 1; print; next } NF == 2 && !($2 in run)' "$times.new" "$times" 2>/dev/null > "$times.all" &&
 	mv "$times.all" "$times" || mv "$times.new" "$times"
 rm -f "$times.new"
 echo

@@ -17,8 +17,7 @@ typedef struct digest_ns {
 
 static int time_reads(show_image *img, digest_ns *t)
 {
-	static void *body_kept;
-	bound_body *body = tool_state(&body_kept, sizeof *body);
+	TOOL_STATE(bound_body, body);
 	static skp_clip_stream st;
 	static amc_frame f;
 	static float values[SKP_MAX_DOF];

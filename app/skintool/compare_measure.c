@@ -360,10 +360,8 @@ int compare_measure_clip(compare_run *c, const compare_args *a)
 static void measure_overlap(compare_run *c, const float *values)
 {
 	static int ray_start[OVERLAP_GRID * OVERLAP_GRID + 1];
-	static void *hit_z_kept;
-	float *hit_z = tool_state(&hit_z_kept, (size_t)(OVERLAP_HITS) * sizeof *hit_z);
-	static void *hit_dir_kept;
-	signed char *hit_dir = tool_state(&hit_dir_kept, (size_t)(OVERLAP_HITS) * sizeof *hit_dir);
+	TOOL_STATE_ARRAY(float, hit_z, OVERLAP_HITS);
+	TOOL_STATE_ARRAY(signed char, hit_dir, OVERLAP_HITS);
 	const overlap_work work = { OVERLAP_GRID, OVERLAP_HITS, ray_start, hit_z, hit_dir };
 	if (!(c->meas.rest_volume > 0.0))
 		return;
@@ -401,8 +399,7 @@ int compare_explain_volume(compare_run *c, const compare_args *a)
 
 int compare_other_weights(compare_run *main_run, const compare_args *a)
 {
-	static void *other_kept;
-	compare_run *other = tool_state(&other_kept, sizeof *other);
+	TOOL_STATE(compare_run, other);
 	static compare_args oa;
 	if (!main_run->body.rigged || a->bind.weights_path)
 		return 0;

@@ -131,8 +131,8 @@ int compare_write_charts(compare_run *c, const char *dir)
 /* The pictures' view: megabytes (tool_state.h), kept between the scenes' and the stills' renders. */
 static report_view *the_view(void)
 {
-	static void *kept;
-	return tool_state(&kept, sizeof(report_view));
+	TOOL_STATE(report_view, view);
+	return view;
 }
 
 static void keep_closeup(report_closeup *out, const report_part *p)

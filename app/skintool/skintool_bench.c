@@ -170,8 +170,7 @@ static void make_bones(skin_bones *bones)
  * *pose_name says which. */
 static int load_body(bench *b, const tool_common *c, const char **pose_name)
 {
-	static void *body_kept;
-	bound_body *body = tool_state(&body_kept, sizeof *body);
+	TOOL_STATE(bound_body, body);
 	static runtime_skin sk;
 	static amc_frame f;
 	if (rig_bind_load(&c->bind, c->asf, c->mesh, body) < 0 ||

@@ -33,8 +33,7 @@ static int time_first_frame(const char *path, first_frame_ns *t)
 {
 	static show_image img;
 	static skp_clip_stream pl;
-	static void *body_kept;
-	bound_body *body = tool_state(&body_kept, sizeof *body);
+	TOOL_STATE(bound_body, body);
 	static amc_frame f;
 	static float values[SKP_MAX_DOF];
 	skp_error err;

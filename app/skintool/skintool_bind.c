@@ -160,8 +160,7 @@ static const cli_command bind_command = {
 int cmd_bind(int argc, char **argv)
 {
 	static bind_cmd b;
-	static void *body_kept;
-	bound_body *body = tool_state(&body_kept, sizeof *body);
+	TOOL_STATE(bound_body, body);
 	tool_common_init(&b.c, bind_command.prog);
 	b.want_report = 0;
 	b.motion_count = 0;

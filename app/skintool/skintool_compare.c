@@ -135,8 +135,7 @@ static int fail(const char *dir, int made)
 int cmd_compare(int argc, char **argv)
 {
 	static compare_args a;
-	static void *c_kept;
-	compare_run *c = tool_state(&c_kept, sizeof *c);
+	TOOL_STATE(compare_run, c);
 	static char clip[256];
 	uint64_t t_start = clock_now_ns();
 	int rc = parse_args(&a, argc, argv);

@@ -206,8 +206,7 @@ static long scan_raw(storage_file *sf)
  * or a clip cannot play (each listed). */
 static int accept(show_image *s)
 {
-	static void *body_kept;
-	bound_body *body = tool_state(&body_kept, sizeof *body);
+	TOOL_STATE(bound_body, body);
 	skp_error err;
 	if (show_accept_body(s, body, &err) < 0) {
 		if (err.block >= 0)

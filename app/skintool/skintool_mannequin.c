@@ -83,10 +83,8 @@ static int parse_args(int argc, char **argv, manq_args *a)
 int cmd_mannequin(int argc, char **argv)
 {
 	static skel s;
-	static void *work_kept;
-	manq_work *work = tool_state(&work_kept, sizeof *work);
-	static void *body_kept;
-	mesh *body = tool_state(&body_kept, sizeof *body);
+	TOOL_STATE(manq_work, work);
+	TOOL_STATE(mesh, body);
 	manq_args a;
 	skp_error err;
 

@@ -174,8 +174,7 @@ static void metrics_pose(metrics_run *r, const metrics_args *a, long frame)
 
 static int run_scene(metrics_run *r, const metrics_args *a)
 {
-	static void *sc_kept;
-	scene_rig *sc = tool_state(&sc_kept, sizeof *sc);
+	TOOL_STATE(scene_rig, sc);
 	static skel_pose pose;
 	scene_build(sc);
 	if (start(r, &sc->skel, &sc->bind, &sc->mesh, &sc->weights, "scene") < 0)
@@ -189,8 +188,7 @@ static int run_scene(metrics_run *r, const metrics_args *a)
 
 static int run_clip(metrics_run *r, metrics_args *a)
 {
-	static void *body_kept;
-	bound_body *body = tool_state(&body_kept, sizeof *body);
+	TOOL_STATE(bound_body, body);
 	static motion_file mo;
 	static amc_frame f;
 	a->c.bind.gate_motion = &a->c.amc;
@@ -222,8 +220,7 @@ static int run_clip(metrics_run *r, metrics_args *a)
 int cmd_metrics(int argc, char **argv)
 {
 	static metrics_args a;
-	static void *r_kept;
-	metrics_run *r = tool_state(&r_kept, sizeof *r);
+	TOOL_STATE(metrics_run, r);
 
 	int rc = parse_args(&a, argc, argv);
 	if (rc != 0)

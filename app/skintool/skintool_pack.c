@@ -343,8 +343,7 @@ static void refuse_written(const char *out, const char *what, const skp_error *e
 static int accept_written(const skp_blockdev *dev, const char *out)
 {
 	static skp_image im;
-	static void *body_kept;
-	bound_body *body = tool_state(&body_kept, sizeof *body);
+	TOOL_STATE(bound_body, body);
 	skp_error err;
 	if (skp_image_open(&im, dev, &err) != SKP_OK || image_accept_body(&im, body, &err) < 0) {
 		refuse_written(out, "it", &err);
@@ -397,8 +396,7 @@ static int write_image(const pack_args *p, const bound_body *body, storage_file 
 int cmd_pack(int argc, char **argv)
 {
 	static pack_args p;
-	static void *body_kept;
-	bound_body *body = tool_state(&body_kept, sizeof *body);
+	TOOL_STATE(bound_body, body);
 	static cli_image_out out;
 	memset(&p, 0, sizeof p);
 	int rc = pack_parse(&p, argc, argv);

@@ -88,8 +88,7 @@ static void store(mesh *m, const float *pos, const float *nrm)
 int cmd_skin(int argc, char **argv)
 {
 	static skin_args a;
-	static void *body_kept;
-	bound_body *body = tool_state(&body_kept, sizeof *body);
+	TOOL_STATE(bound_body, body);
 	static runtime_skin sk;
 	static amc_frame f;
 	static float pos[3 * SKP_MAX_VERTS], nrm[3 * SKP_MAX_VERTS];

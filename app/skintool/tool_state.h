@@ -13,4 +13,15 @@
  * on stderr and exits with status 1, as GNU's xmalloc does. */
 void *tool_state(void **slot, size_t size);
 
+/* Declares name, a T * to the command's kept state: TOOL_STATE(bound_body,
+ * body); stands for a `static bound_body body;` made at first use. */
+#define TOOL_STATE(T, name) \
+	static void *name##_kept; \
+	T *name = tool_state(&name##_kept, sizeof *name)
+
+/* The same for an array of n T. */
+#define TOOL_STATE_ARRAY(T, name, n) \
+	static void *name##_kept; \
+	T *name = tool_state(&name##_kept, (size_t)(n) * sizeof *name)
+
 #endif

@@ -280,13 +280,12 @@ void chart_draw(canvas *c, const chart *ch)
 
 int chart_write_png(const char *path, const chart *ch, int w, int h)
 {
-	static void *px_kept;
+	TOOL_STATE_ARRAY(uint8_t, px, CHART_MAX_BYTES);
 	skp_error err;
 	if ((size_t)w * (size_t)h * 4 > CHART_MAX_BYTES) {
 		fprintf(stderr, "%s: a %dx%d chart is too big\n", path, w, h);
 		return -1;
 	}
-	uint8_t *px = tool_state(&px_kept, CHART_MAX_BYTES);
 	canvas c = { px, w, h };
 	chart_draw(&c, ch);
 	if (cli_output_check(path) < 0)
