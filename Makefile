@@ -188,11 +188,13 @@ $(OUT)/app/skin/kernels/%_avx2.o: CPPFLAGS += $(SIMD_FLAGS)
 VERSION_H := $(OUT)/gen/skp_version.h
 $(OUT)/app/cli/cli_version.o: $(VERSION_H)
 $(OUT)/app/cli/cli_version.o: CPPFLAGS += -I$(OUT)/gen
+# (through a temporary of its own: two makes of one build, CI's soak beside
+# its lint, both write it)
 $(VERSION_H): FORCE
 	@mkdir -p $(@D)
-	@printf '#define SKP_VERSION "%s"\n#define SKP_GIT_REV "%s"\n#define SKP_BOARD "%s"\n' \
-	  '$(VERSION)' '$(GIT_REV)' '$(BOARD) ($(BOARD_DESC))' > $@.tmp
-	@if cmp -s $@.tmp $@; then rm -f $@.tmp; else mv $@.tmp $@; fi
+	@t=$@.$$$$.tmp; printf '#define SKP_VERSION "%s"\n#define SKP_GIT_REV "%s"\n#define SKP_BOARD "%s"\n' \
+	  '$(VERSION)' '$(GIT_REV)' '$(BOARD) ($(BOARD_DESC))' > $$t && \
+	  if cmp -s $$t $@; then rm -f $$t; else mv $$t $@; fi
 .PHONY: FORCE
 FORCE:
 

@@ -26,7 +26,7 @@ typedef struct where_text {
 
 static where_text where(const bound_body *body, const bind_gate_worst *w)
 {
-	where_text t;
+	where_text t = { "" };
 	setup_gate_where(body, w, t.s, sizeof t.s);
 	return t;
 }
