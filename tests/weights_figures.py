@@ -9,10 +9,23 @@ pose tests/data/makehuman_apose.amc, 24 frames spread over each of the walk
     it, in % of the height.
 Run from the repository after make: python3 tests/weights_figures.py
 [BUILD_DIR] (about a minute and a half; prints one row a clip for the
-computed weights and the artist's)."""
-import math, os, subprocess, sys, tempfile
+computed weights and the artist's).
 
-BUILD = sys.argv[1] if len(sys.argv) > 1 else "build"
+With RIG files (python3 tests/weights_figures.py [BUILD_DIR] RIG.glb...):
+rigged bodies nobody here made, each bound in its own pose (no hand-made
+bind pose) to the same skeleton and clips, with computed weights and with
+its own. Per clip and weights the quality gate's tear figures, as `skintool
+bind --motion CLIP --report` gives them (the range of motion and the clip:
+the worst edge's ratio to its bind length, the edges ever past 2x, the
+largest lengthening in % of the skeleton's extent), and the mean distance
+of the computed weights' deformation from the rig's own over the same 24
+frames (LBS), in % of the body's height as its own weights pose it in the
+walk's first of them (a minute or two a rig)."""
+import math, os, re, subprocess, sys, tempfile
+
+ARGS = [a for a in sys.argv[1:] if not a.lower().endswith((".glb", ".gltf", ".fbx", ".dae"))]
+RIGS = [a for a in sys.argv[1:] if a not in ARGS]
+BUILD = ARGS[0] if ARGS else "build"
 TOOL = os.path.join(BUILD, "skintool")
 ASF = "assets/cmu/02.asf"
 BIND = "tests/data/makehuman_apose.amc"
@@ -26,9 +39,9 @@ def frames_of(amc, count=24):
     return [numbers[i * (len(numbers) - 1) // (count - 1)] for i in range(count)]
 
 
-def skin(amc, frame, weights, out):
-    subprocess.run([TOOL, "skin", ASF, amc] + BODY + ["--frame=%d" % frame, "--algo=lbs", "-q", "-o", out] + weights,
-                   check=True)
+def skin(amc, frame, weights, out, body=None):
+    subprocess.run([TOOL, "skin", ASF, amc] + (body or BODY) + ["--frame=%d" % frame, "--algo=lbs", "-q", "--force",
+                                                                 "-o", out] + weights, check=True)
 
 
 def read_obj(path):
@@ -41,18 +54,53 @@ def read_obj(path):
     return verts, faces
 
 
-def posed(tag, weights):
+def posed(tag, weights, body=None):
     out = {}
     for clip in CLIPS:
         out[clip] = []
         for k, n in enumerate(frames_of(clip)):
             path = os.path.join(work, "%s_%s_%d.obj" % (tag, os.path.basename(clip), k))
-            skin(clip, n, weights, path)
+            skin(clip, n, weights, path, body)
             out[clip].append(path)
     return out
 
 
+def gate_tears(rig, clip, weights):
+    """The gate's tear figures for the rig in the range of motion and the clip."""
+    run = subprocess.run([TOOL, "bind", ASF, rig, "--motion=" + clip, "--report", "-o",
+                          os.path.join(work, "weights.csv")] + weights, capture_output=True, text=True)
+    tears = re.search(r"tears: worst edge ([0-9.]+) times .*?, ([0-9]+) edges ever past 2x", run.stderr)
+    grow = re.search(r"grow: an edge longer by ([0-9.]+)% of the extent", run.stderr)
+    if run.returncode not in (0, 1) or not tears or not grow:
+        sys.exit("%s: skintool bind said:\n%s" % (rig, run.stderr))
+    verdict = "refused by the gate" if run.returncode else "passes the gate"
+    return float(tears.group(1)), int(tears.group(2)), float(grow.group(1)), verdict
+
+
+def rig_figures(rig):
+    """One row a clip and weights for a rigged file bound in its own pose."""
+    own = posed("own", ["--weights=mesh"], [rig])
+    mine = posed("computed", [], [rig])
+    ys = [p[1] for p in read_obj(own[CLIPS[0]][0])[0]]
+    height = max(ys) - min(ys)
+    for clip in CLIPS:
+        dist = []
+        for k, path in enumerate(mine[clip]):
+            pos, ref = read_obj(path)[0], read_obj(own[clip][k])[0]
+            dist.append(sum(math.dist(p, q) for p, q in zip(pos, ref)) / len(pos) / height)
+        for tag, weights in (("computed", []), ("own", ["--weights=mesh"])):
+            ratio, doubled, grow, verdict = gate_tears(rig, clip, weights)
+            far = "; mean distance to its own %.2f%% of height" % (100 * sum(dist) / len(dist)) if tag == "computed" else ""
+            print("%-20s %-8s %-10s worst edge %.2fx, %d edges past 2x, longer by %.2f%% of the extent, %s%s" %
+                  (os.path.basename(rig), tag, os.path.basename(clip), ratio, doubled, grow, verdict, far))
+
+
 def main():
+    if RIGS:
+        for rig in RIGS:
+            rig_figures(rig)
+        subprocess.run(["rm", "-rf", work])
+        return
     bind_obj = os.path.join(work, "bind.obj")
     skin(BIND, 1, ["--weights=mesh"], bind_obj)
     bind, faces = read_obj(bind_obj)
