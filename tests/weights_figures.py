@@ -15,13 +15,13 @@ With RIG files (python3 tests/weights_figures.py [BUILD_DIR] RIG.glb...):
 rigged bodies nobody here made, each bound in its own pose (no hand-made
 bind pose) to the same skeleton and clips, with computed weights and with
 its own. Per clip and weights the quality gate's tear figures, as `skintool
-bind --motion CLIP --report` gives them (the range of motion and the clip:
+bind --motion=M.amc --report` gives them (the range of motion and the clip:
 the worst edge's ratio to its bind length, the edges ever past 2x, the
 largest lengthening in % of the skeleton's extent), and the mean distance
 of the computed weights' deformation from the rig's own over the same 24
 frames (LBS), in % of the body's height as its own weights pose it in the
 walk's first of them (a minute or two a rig)."""
-import math, os, re, subprocess, sys, tempfile
+import math, os, re, shutil, subprocess, sys, tempfile
 
 ARGS = [a for a in sys.argv[1:] if not a.lower().endswith((".glb", ".gltf", ".fbx", ".dae"))]
 RIGS = [a for a in sys.argv[1:] if a not in ARGS]
@@ -65,6 +65,11 @@ def posed(tag, weights, body=None):
     return out
 
 
+def mean_distance(pos, ref, height):
+    """The mean distance of each vertex from its reference, a fraction of the height."""
+    return sum(math.dist(p, q) for p, q in zip(pos, ref)) / len(pos) / height
+
+
 def gate_tears(rig, clip, weights):
     """The gate's tear figures for the rig in the range of motion and the clip."""
     run = subprocess.run([TOOL, "bind", ASF, rig, "--motion=" + clip, "--report", "-o",
@@ -87,7 +92,7 @@ def rig_figures(rig):
         dist = []
         for k, path in enumerate(mine[clip]):
             pos, ref = read_obj(path)[0], read_obj(own[clip][k])[0]
-            dist.append(sum(math.dist(p, q) for p, q in zip(pos, ref)) / len(pos) / height)
+            dist.append(mean_distance(pos, ref, height))
         for tag, weights in (("computed", []), ("own", ["--weights=mesh"])):
             ratio, doubled, grow, verdict = gate_tears(rig, clip, weights)
             far = "; mean distance to its own %.2f%% of height" % (100 * sum(dist) / len(dist)) if tag == "computed" else ""
@@ -99,7 +104,6 @@ def main():
     if RIGS:
         for rig in RIGS:
             rig_figures(rig)
-        subprocess.run(["rm", "-rf", work])
         return
     bind_obj = os.path.join(work, "bind.obj")
     skin(BIND, 1, ["--weights=mesh"], bind_obj)
@@ -125,11 +129,13 @@ def main():
                     if length > 2 * bind_len[i]:
                         doubled.add(i)
                 ref, _ = read_obj(artist[clip][k])
-                dist.append(sum(math.dist(p, q) for p, q in zip(pos, ref)) / len(pos) / height)
+                dist.append(mean_distance(pos, ref, height))
             print("%-8s %-10s lengthening %.2f%% of height, %d edges past 2x, largest ratio %.1fx, "
                   "mean distance to the artist's %.2f%%" % (tag, os.path.basename(clip), 100 * worst, len(doubled),
                                                            ratio, 100 * sum(dist) / len(dist)))
-    subprocess.run(["rm", "-rf", work])
 
 
-main()
+try:
+    main()
+finally:
+    shutil.rmtree(work, ignore_errors=True)

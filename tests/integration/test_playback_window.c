@@ -53,8 +53,12 @@ static double frames_per_wall_second(char *const argv[], int want, double second
 		_exit(127);
 	}
 	close(fds[1]);
-	char buf[8192], said[4096] = "";
+	char buf[8192];
 	size_t have = 0;
+	/* what it says besides the frame lines, for a failure */
+	const char *log = test_scratch("window.log");
+	FILE *said = fopen(log, "w");
+	assert_non_null(said);
 	double t0 = wall_s(), t[MAX_LINES], n[MAX_LINES];
 	*lines = 0;
 	*fps = 0;
@@ -83,25 +87,23 @@ static double frames_per_wall_second(char *const argv[], int want, double second
 				++*lines;
 				*fps = f;
 			} else if (strncmp(buf, "frame ", 6) != 0) {
-				/* what else it said, the last of it kept for a failure */
-				size_t keep = strlen(said), len = strlen(buf);
-				if (keep + len + 2 > sizeof said) {
-					memmove(said, said + keep / 2, keep - keep / 2 + 1);
-					keep = strlen(said);
-				}
-				snprintf(said + keep, sizeof said - keep, "%.*s\n", (int)(sizeof said - keep - 2), buf);
+				fprintf(said, "%s\n", buf);
 			}
 			memmove(buf, nl + 1, have - (size_t)(nl + 1 - buf) + 1);
 			have -= (size_t)(nl + 1 - buf);
 		}
 	}
 	close(fds[0]);
+	fclose(said);
 	int status;
 	waitpid(pid, &status, 0);
-	if (!WIFEXITED(status) || WEXITSTATUS(status) != 0)
+	if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) {
+		char *text = test_read_file(log, NULL);
 		fail_msg("%s %s %d after %.1f s and %d frame lines; what else it said:\n%s", argv[0],
 			 WIFEXITED(status) ? "exited with" : "was killed by signal",
-			 WIFEXITED(status) ? WEXITSTATUS(status) : WTERMSIG(status), wall_s() - t0, *lines, said);
+			 WIFEXITED(status) ? WEXITSTATUS(status) : WTERMSIG(status), wall_s() - t0, *lines,
+			 text ? text : "");
+	}
 	double st = 0, sn = 0, stt = 0, stn = 0, k = *lines - 1;
 	for (int i = 1; i < *lines; i++) {
 		st += t[i];
