@@ -152,13 +152,20 @@ static void map_spine(const rig_scene *r, const skel_pose *p, rig_map *m)
 	m->bone[m->head] = parts->spine[parts->spine_count - 1];
 }
 
+/* A limb part maps from its shallowest joint of that name; toes and
+ * fingers from every one (MakeHuman's five toes, a hand's four fingers:
+ * the skeleton has one bone for them all). */
 static void map_limbs(const rig_scene *r, rig_map *m)
 {
 	for (int side = RIG_LEFT; side <= RIG_RIGHT; side++)
 		for (int slot = RIG_CLAVICLE; slot < RIG_SLOT_COUNT; slot++) {
-			int j = named_joint(r, m, (rig_side)side, (rig_slot)slot);
-			if (j >= 0 && m->parts.bone[side][slot] >= 0)
-				m->bone[j] = m->parts.bone[side][slot];
+			int j = named_joint(r, m, (rig_side)side, (rig_slot)slot), b = m->parts.bone[side][slot];
+			if (j < 0 || b < 0)
+				continue;
+			m->bone[j] = b;
+			for (int k = 0; (slot == RIG_TOE || slot == RIG_FINGERS) && k < r->joint_count; k++)
+				if ((int)m->name[k].slot == slot && (int)m->name[k].side == side)
+					m->bone[k] = b;
 		}
 }
 
@@ -237,6 +244,22 @@ int rig_map_part_joint(const rig_map *m, const rig_scene *r, rig_side side, rig_
 		if (m->bone[j] == b && (best < 0 || depth_of(r, j) < depth_of(r, best)))
 			best = j;
 	return best;
+}
+
+int rig_map_part_head(const rig_map *m, const rig_scene *r, rig_side side, rig_slot slot, vec3 *head)
+{
+	int first = rig_map_part_joint(m, r, side, slot), n = 0;
+	if (first < 0)
+		return 0;
+	int depth = depth_of(r, first);
+	vec3 sum = vec3_make(0.0f, 0.0f, 0.0f);
+	for (int j = 0; j < r->joint_count; j++)
+		if (m->bone[j] == m->bone[first] && depth_of(r, j) == depth) {
+			sum = vec3_add(sum, r->joint[j].head);
+			n++;
+		}
+	*head = vec3_scale(sum, 1.0f / (float)n);
+	return 1;
 }
 
 /* Limbs (upper and lower part on one side) the names say. */

@@ -16,7 +16,8 @@
  * (where the arms hang from) matched to the chest: the hips-chest and
  * chest-head stretches each scaled to the skeleton's. A map file (rig_map_file.h) overrides any of it.
  *
- * A joint left unmapped (fingers, twist bones, face, helpers) moves with
+ * A joint left unmapped (the thumb, the fingers' and toes' further
+ * joints, twist bones, face, helpers) moves with
  * its nearest mapped ancestor, or with the root. */
 #ifndef RIG_MAP_H
 #define RIG_MAP_H
@@ -72,5 +73,10 @@ skp_status rig_map_joints(const rig_scene *r, const skel *s, const skel_pose *p,
 
 /* The mesh joint mapped to the skeleton part (side, slot), or -1. */
 int rig_map_part_joint(const rig_map *m, const rig_scene *r, rig_side side, rig_slot slot);
+
+/* Where the part starts on the mesh: the mean head of its shallowest
+ * mapped joints (the knuckles of a hand's four fingers, the bases of
+ * MakeHuman's five toes). 0 when it is not mapped. */
+int rig_map_part_head(const rig_map *m, const rig_scene *r, rig_side side, rig_slot slot, vec3 *head);
 
 #endif

@@ -58,6 +58,27 @@ static const struct {
 	{ "toebase", RIG_TOE, MIXAMO },
 	{ "ball", RIG_TOE, UNREAL },
 	{ "toes", RIG_TOE, CMU | UNITY },
+	/* each toe and finger that has joints of its own: all map to the one
+	 * bone a mocap skeleton has (CMU's ltoes, lfingers); the thumb stays
+	 * with the hand (CMU's lthumb turns some 60 degrees off MakeHuman's) */
+	{ "toe11", RIG_TOE, MAKEHUMAN }, { "toe21", RIG_TOE, MAKEHUMAN }, { "toe31", RIG_TOE, MAKEHUMAN },
+	{ "toe41", RIG_TOE, MAKEHUMAN }, { "toe51", RIG_TOE, MAKEHUMAN },
+	{ "fingers", RIG_FINGERS, CMU },
+	{ "fingerbase", RIG_FINGERS, CMU },
+	{ "finger21", RIG_FINGERS, MAKEHUMAN }, { "finger31", RIG_FINGERS, MAKEHUMAN },
+	{ "finger41", RIG_FINGERS, MAKEHUMAN }, { "finger51", RIG_FINGERS, MAKEHUMAN },
+	{ "findex01", RIG_FINGERS, RIGIFY }, { "fmiddle01", RIG_FINGERS, RIGIFY },
+	{ "fring01", RIG_FINGERS, RIGIFY }, { "fpinky01", RIG_FINGERS, RIGIFY },
+	{ "handindex1", RIG_FINGERS, MIXAMO }, { "handmiddle1", RIG_FINGERS, MIXAMO },
+	{ "handring1", RIG_FINGERS, MIXAMO }, { "handpinky1", RIG_FINGERS, MIXAMO },
+	{ "index01", RIG_FINGERS, UNREAL }, { "middle01", RIG_FINGERS, UNREAL },
+	{ "ring01", RIG_FINGERS, UNREAL }, { "pinky01", RIG_FINGERS, UNREAL },
+	{ "index1", RIG_FINGERS, DAZ }, { "mid1", RIG_FINGERS, DAZ },
+	{ "ring1", RIG_FINGERS, DAZ }, { "pinky1", RIG_FINGERS, DAZ },
+	{ "indexproximal", RIG_FINGERS, UNITY }, { "middleproximal", RIG_FINGERS, UNITY },
+	{ "ringproximal", RIG_FINGERS, UNITY }, { "littleproximal", RIG_FINGERS, UNITY },
+	{ "finger1", RIG_FINGERS, BIPED }, { "finger2", RIG_FINGERS, BIPED },
+	{ "finger3", RIG_FINGERS, BIPED }, { "finger4", RIG_FINGERS, BIPED },
 };
 
 #define NAME_MAX_LEN 128
@@ -182,7 +203,7 @@ const char *rig_family_name(int rig)
 const char *rig_slot_name(rig_slot slot)
 {
 	static const char *const names[RIG_SLOT_COUNT] = {
-		"-", "head", "clavicle", "upper arm", "forearm", "hand", "thigh", "shin", "foot", "toe"
+		"-", "head", "clavicle", "upper arm", "forearm", "hand", "thigh", "shin", "foot", "toe", "fingers"
 	};
 	return slot < RIG_SLOT_COUNT ? names[slot] : "-";
 }

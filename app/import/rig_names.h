@@ -13,6 +13,7 @@ typedef enum rig_slot {
 	RIG_HEAD,
 	RIG_CLAVICLE, RIG_UPPER_ARM, RIG_FOREARM, RIG_HAND,
 	RIG_THIGH, RIG_SHIN, RIG_FOOT, RIG_TOE,
+	RIG_FINGERS,    /* the first joints of the four fingers, not the thumb's */
 	RIG_SLOT_COUNT
 } rig_slot;
 

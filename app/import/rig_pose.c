@@ -11,22 +11,25 @@ static float deg_between(vec3 a, vec3 b)
 	return acosf(fmaxf(-1.0f, fminf(1.0f, c))) * 57.29578f;
 }
 
-static const rig_slot chains[2][4] = {
-	{ RIG_CLAVICLE, RIG_UPPER_ARM, RIG_FOREARM, RIG_HAND },
-	{ RIG_THIGH, RIG_SHIN, RIG_FOOT, RIG_TOE },
+#define CHAIN_LEN 5
+
+static const rig_slot chains[2][CHAIN_LEN] = {
+	{ RIG_CLAVICLE, RIG_UPPER_ARM, RIG_FOREARM, RIG_HAND, RIG_FINGERS },
+	{ RIG_THIGH, RIG_SHIN, RIG_FOOT, RIG_TOE, RIG_NONE },
 };
 
 static void aim_one(const skel *s, const rig_scene *r, const rig_map *m, rig_side side, rig_slot from,
 		    rig_slot to, float *values, skel_pose *pose, rig_pose_result *out)
 {
 	int bone = m->parts.bone[side][from];
-	int ja = rig_map_part_joint(m, r, side, from), jb = rig_map_part_joint(m, r, side, to);
-	if (bone < 0 || ja < 0 || jb < 0 || out->aim_count == RIG_POSE_MAX_AIMS)
+	vec3 next;
+	if (to == RIG_NONE || bone < 0 || rig_map_part_joint(m, r, side, from) < 0 ||
+	    !rig_map_part_head(m, r, side, to, &next) || out->aim_count == RIG_POSE_MAX_AIMS)
 		return;
 	fk_pose(s, values, pose);
 	/* at the mesh's next joint from where the bone starts now: a clavicle
 	 * starting elsewhere than the mesh's still puts the shoulder on it */
-	vec3 target = vec3_sub(r->joint[jb].head, pose->head[bone]);
+	vec3 target = vec3_sub(next, pose->head[bone]);
 	vec3 before = vec3_sub(pose->tip[bone], pose->head[bone]);
 	if (vec3_length(target) <= 0.0f || vec3_length(before) <= 0.0f)
 		return;
@@ -45,9 +48,10 @@ void rig_pose_measure(const rig_scene *r, const rig_map *m, const skel_pose *pos
 	for (int side = RIG_CENTRE; side <= RIG_RIGHT; side++)
 		for (int slot = RIG_HEAD; slot < RIG_SLOT_COUNT; slot++) {
 			int j = rig_map_part_joint(m, r, (rig_side)side, (rig_slot)slot);
-			if (j < 0)
+			vec3 head;
+			if (j < 0 || !rig_map_part_head(m, r, (rig_side)side, (rig_slot)slot, &head))
 				continue;
-			float gap = vec3_length(vec3_sub(pose->head[m->bone[j]], r->joint[j].head));
+			float gap = vec3_length(vec3_sub(pose->head[m->bone[j]], head));
 			out->mean_gap += gap;
 			out->pairs++;
 			if (gap > out->worst_gap) {
@@ -65,7 +69,7 @@ void rig_pose_fit(const skel *s, const rig_scene *r, const rig_map *m, float *va
 	memset(out, 0, sizeof *out);
 	for (int side = RIG_LEFT; side <= RIG_RIGHT; side++)
 		for (int c = 0; c < 2; c++)
-			for (int k = 0; k + 1 < 4; k++)
+			for (int k = 0; k + 1 < CHAIN_LEN; k++)
 				aim_one(s, r, m, (rig_side)side, chains[c][k], chains[c][k + 1], values, pose, out);
 	fk_pose(s, values, pose);
 	rig_pose_measure(r, m, pose, out);

@@ -5,6 +5,10 @@
 
 #define RATIO_MIN 0.5f
 #define RATIO_MAX 2.0f
+/* a mocap hand is a stub (CMU's lhand: a third of a palm), so the hand
+ * may reach further to put the fingers' joint on the knuckles (2.6 times
+ * on MakeHuman, 2.9 on the shared glb) */
+#define RATIO_MAX_HAND 4.0f
 
 static int part_joint(const rig_scene *r, const rig_map *m, int side, rig_slot slot)
 {
@@ -48,7 +52,7 @@ static int is_ancestor(const skel *s, int a, int b)
 }
 
 /* Step 2 for one pair of parts: bones a .. parent of b. */
-static void stretch_between(skel *s, const skel_pose *p, int a, int b, vec3 mesh_a, vec3 mesh_b,
+static void stretch_between(skel *s, const skel_pose *p, int a, int b, vec3 mesh_a, vec3 mesh_b, float max,
 			    rig_proportions *out)
 {
 	if (a < 0 || b < 0 || a == b || !is_ancestor(s, a, b))
@@ -57,7 +61,7 @@ static void stretch_between(skel *s, const skel_pose *p, int a, int b, vec3 mesh
 	float dm = vec3_length(vec3_sub(mesh_b, mesh_a));
 	if (!(ds > 0.0f) || !(dm > 0.0f))
 		return;
-	float ratio = fminf(RATIO_MAX, fmaxf(RATIO_MIN, dm / ds));
+	float ratio = fminf(max, fmaxf(RATIO_MIN, dm / ds));
 	for (int k = s->bone[b].parent; k >= 0; k = s->bone[k].parent) {
 		s->bone[k].length *= ratio;
 		if (k == a)
@@ -70,14 +74,17 @@ static void stretch_between(skel *s, const skel_pose *p, int a, int b, vec3 mesh
 
 /* The chain's first bone reaches from where it starts on the skeleton (a
  * clavicle at the spine) to the mesh's next joint; rig_pose.h aims it there. */
-static void stretch_chain(skel *s, const skel_pose *p, const rig_scene *r, const rig_map *m,
-			  const int *joints, int n, rig_proportions *out)
+static void stretch_chain(skel *s, const skel_pose *p, const rig_scene *r, const rig_map *m, int side,
+			  const rig_slot *slots, int n, rig_proportions *out)
 {
-	for (int i = 0; i + 1 < n; i++)
-		if (joints[i] >= 0 && joints[i + 1] >= 0)
-			stretch_between(s, p, m->bone[joints[i]], m->bone[joints[i + 1]],
-					i == 0 ? p->head[m->bone[joints[0]]] : r->joint[joints[i]].head,
-					r->joint[joints[i + 1]].head, out);
+	for (int i = 0; i + 1 < n; i++) {
+		int a = m->parts.bone[side][slots[i]], b = m->parts.bone[side][slots[i + 1]];
+		vec3 mesh_a, mesh_b;
+		if (rig_map_part_head(m, r, (rig_side)side, slots[i], &mesh_a) &&
+		    rig_map_part_head(m, r, (rig_side)side, slots[i + 1], &mesh_b))
+			stretch_between(s, p, a, b, i == 0 ? p->head[a] : mesh_a, mesh_b,
+					slots[i + 1] == RIG_FINGERS ? RATIO_MAX_HAND : RATIO_MAX, out);
+	}
 }
 
 /* Step 3: the thigh's parent chain back to the root, when it has no channels. */
@@ -116,18 +123,15 @@ void rig_fit_proportions(skel *s, const float *values, skel_pose *pose, rig_scen
 	 * the hip joints) */
 	int chest = m->chest >= 0 ? m->chest : m->head;
 	if (chest >= 0)
-		stretch_between(s, pose, 0, m->bone[chest], pose->head[0], r->joint[chest].head, out);
+		stretch_between(s, pose, 0, m->bone[chest], pose->head[0], r->joint[chest].head, RATIO_MAX, out);
 	if (m->chest >= 0 && m->head >= 0)
 		stretch_between(s, pose, m->bone[m->chest], m->bone[m->head], r->joint[m->chest].head,
-				r->joint[m->head].head, out);
+				r->joint[m->head].head, RATIO_MAX, out);
+	static const rig_slot arm[] = { RIG_CLAVICLE, RIG_UPPER_ARM, RIG_FOREARM, RIG_HAND, RIG_FINGERS };
+	static const rig_slot leg[] = { RIG_THIGH, RIG_SHIN, RIG_FOOT, RIG_TOE };
 	for (int side = RIG_LEFT; side <= RIG_RIGHT; side++) {
-		int arm[4], leg[4];
-		for (int k = 0; k < 4; k++) {
-			arm[k] = part_joint(r, m, side, (rig_slot)(RIG_CLAVICLE + k));
-			leg[k] = part_joint(r, m, side, (rig_slot)(RIG_THIGH + k));
-		}
-		stretch_chain(s, pose, r, m, arm, 4, out);
-		stretch_chain(s, pose, r, m, leg, 4, out);
+		stretch_chain(s, pose, r, m, side, arm, 5, out);
+		stretch_chain(s, pose, r, m, side, leg, 4, out);
 	}
 	fk_pose(s, values, pose);
 }

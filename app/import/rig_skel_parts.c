@@ -61,7 +61,8 @@ static int first_branching(const skel *s, const int *chain, int n, int from)
  * HDM05; endorphin puts a dummy before it), the clavicle the bone before
  * it, the forearm the bone after it, the hand the first bone that
  * branches, unless that is a short wrist the thumb hangs from (CMU's
- * lwrist): then the one after it, which the fingers follow. */
+ * lwrist): then the one after it, which the fingers follow; the fingers
+ * the next bone on from that hand. */
 static void limb_parts(const skel *s, const skel_pose *p, const skel_roles *r, const int *chain, int n,
 		       int leg, float min_len, int *slot_bone)
 {
@@ -92,7 +93,13 @@ static void limb_parts(const skel *s, const skel_pose *p, const skel_roles *r, c
 	}
 	if (hand >= 0 && hand + 2 < n && bone_length(p, chain[hand]) < 0.6f * bone_length(p, chain[u]))
 		hand++;
-	slot_bone[RIG_HAND] = hand > u ? chain[hand] : next_long(p, chain, n, &u, min_len);
+	if (hand <= u) {
+		slot_bone[RIG_HAND] = next_long(p, chain, n, &u, min_len);
+		return;
+	}
+	slot_bone[RIG_HAND] = chain[hand];
+	/* a hand that branches holds its fingers: the next bone on */
+	slot_bone[RIG_FINGERS] = next_long(p, chain, n, &hand, min_len);
 }
 
 /* Front: where the feet point, else the skeleton's depth axis. */

@@ -127,7 +127,8 @@ static void test_glb_maps(void **state)
 	static const want_map cmu[] = {
 		{ "spine", "root" }, { "spine.003", "thorax" }, { "spine.005", "head" },
 		{ "shoulder.L", "lclavicle" }, { "upper_arm.L", "lhumerus" }, { "forearm.R", "rradius" },
-		{ "hand.L", "lhand" }, { "f_index.02.L", "lhand" }, { "thumb.03.R", "rhand" },
+		{ "hand.L", "lhand" }, { "f_index.01.L", "lfingers" }, { "f_index.02.L", "lfingers" },
+		{ "f_pinky.03.R", "rfingers" }, { "thumb.03.R", "rhand" },
 		{ "thigh.R", "rfemur" }, { "shin.L", "ltibia" }, { "foot.R", "rfoot" }, { "toe.L", "ltoes" },
 		{ "heel.02.L", "lfoot" },
 	};
@@ -137,7 +138,7 @@ static void test_glb_maps(void **state)
 	static const want_map bvh[] = {
 		{ "spine", "Hips" }, { "upper_arm.L", "LeftShoulder" }, { "forearm.L", "LeftElbow" },
 		{ "shoulder.R", "RightCollar" }, { "thigh.L", "LeftHip" }, { "shin.R", "RightKnee" },
-		{ "foot.L", "LeftAnkle" },
+		{ "foot.L", "LeftAnkle" }, { "f_middle.02.L", "LFingers" }, { "thumb.02.R", "rhand" },
 	};
 	check_map("mocap/cmu_bvh/131_01.bvh", bvh, sizeof bvh / sizeof bvh[0]);
 }
@@ -153,9 +154,11 @@ static void test_bind_own_and_computed(void **state)
 	assert_int_equal(test_run("%s bind %s %s --weights mesh -o %s 2> %s", test_tool_path("skintool"), asf, glb,
 				  own, log), 0);
 	test_assert_contains_all(log, (const char *const[]){
-		"22 of 56 joints mapped onto the skeleton (names: Rigify",
+		"30 of 56 joints mapped onto the skeleton (names: Rigify",
 		"upper_arm.L=lhumerus",
-		"34 joints unmapped, moving with their nearest mapped parent",
+		"f_index.01.L=lfingers",
+		"26 joints unmapped, moving with their nearest mapped parent",
+		"thumb.01.L->hand.L",
 		"turned 180 degrees (a quarter-turn combination)",
 		"skeleton posed as the mesh stands",
 		"the mesh's own weights",

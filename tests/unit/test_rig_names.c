@@ -37,8 +37,12 @@ static void test_rigify(void **state)
 		{ "thigh.L", RIG_THIGH, RIG_LEFT }, { "shin.R", RIG_SHIN, RIG_RIGHT },
 		{ "foot.L", RIG_FOOT, RIG_LEFT }, { "toe.R", RIG_TOE, RIG_RIGHT },
 		{ "DEF-upper_arm.L", RIG_UPPER_ARM, RIG_LEFT }, { "DEF-thigh.R", RIG_THIGH, RIG_RIGHT },
-		/* twist halves, fingers, the spine and helpers are not parts */
-		{ "DEF-upper_arm.L.001", RIG_NONE, RIG_CENTRE }, { "f_index.01.L", RIG_NONE, RIG_CENTRE },
+		/* a finger's first joint is the fingers; the thumb, the fingers'
+		 * further joints, twist halves, the spine and helpers are not parts */
+		{ "f_index.01.L", RIG_FINGERS, RIG_LEFT }, { "DEF-f_pinky.01.R", RIG_FINGERS, RIG_RIGHT },
+		{ "f_index.02.L", RIG_NONE, RIG_CENTRE }, { "thumb.01.L", RIG_NONE, RIG_CENTRE },
+		{ "palm.01.L", RIG_NONE, RIG_CENTRE },
+		{ "DEF-upper_arm.L.001", RIG_NONE, RIG_CENTRE },
 		{ "spine.003", RIG_NONE, RIG_CENTRE }, { "pelvis.L", RIG_NONE, RIG_CENTRE },
 		{ "heel.02.L", RIG_NONE, RIG_CENTRE }, { "breast.R", RIG_NONE, RIG_CENTRE },
 	};
@@ -56,7 +60,17 @@ static void test_mixamo_makehuman_unreal_daz_cmu(void **state)
 		{ "upperarm01.L", RIG_UPPER_ARM, RIG_LEFT }, { "lowerarm01.R", RIG_FOREARM, RIG_RIGHT },
 		{ "wrist.L", RIG_HAND, RIG_LEFT }, { "upperleg01.R", RIG_THIGH, RIG_RIGHT },
 		{ "lowerleg01.L", RIG_SHIN, RIG_LEFT }, { "clavicle.R", RIG_CLAVICLE, RIG_RIGHT },
-		{ "upperarm02.L", RIG_NONE, RIG_CENTRE }, { "toe1-1.L", RIG_NONE, RIG_CENTRE },
+		{ "upperarm02.L", RIG_NONE, RIG_CENTRE }, { "metacarpal1.L", RIG_NONE, RIG_CENTRE },
+		/* MakeHuman's five toes are the toes, its fingers but the thumb (finger1) the fingers */
+		{ "toe1-1.L", RIG_TOE, RIG_LEFT }, { "toe5-1.R", RIG_TOE, RIG_RIGHT }, { "toe1-2.L", RIG_NONE, RIG_CENTRE },
+		{ "finger2-1.L", RIG_FINGERS, RIG_LEFT }, { "finger5-1.R", RIG_FINGERS, RIG_RIGHT },
+		{ "finger1-1.L", RIG_NONE, RIG_CENTRE }, { "finger2-2.L", RIG_NONE, RIG_CENTRE },
+		{ "mixamorig:LeftHandIndex1", RIG_FINGERS, RIG_LEFT }, { "mixamorig:RightHandPinky1", RIG_FINGERS, RIG_RIGHT },
+		{ "mixamorig:LeftHandThumb1", RIG_NONE, RIG_CENTRE }, { "mixamorig:LeftHandIndex2", RIG_NONE, RIG_CENTRE },
+		{ "index_01_l", RIG_FINGERS, RIG_LEFT }, { "thumb_01_l", RIG_NONE, RIG_CENTRE },
+		{ "lIndex1", RIG_FINGERS, RIG_LEFT }, { "rMid1", RIG_FINGERS, RIG_RIGHT }, { "lThumb1", RIG_NONE, RIG_CENTRE },
+		{ "lfingers", RIG_FINGERS, RIG_LEFT }, { "LFingers", RIG_FINGERS, RIG_LEFT }, { "lthumb", RIG_NONE, RIG_CENTRE },
+		{ "RightFingerBase", RIG_FINGERS, RIG_RIGHT },
 		{ "upperarm_l", RIG_UPPER_ARM, RIG_LEFT }, { "calf_r", RIG_SHIN, RIG_RIGHT },
 		{ "ball_l", RIG_TOE, RIG_LEFT }, { "clavicle_r", RIG_CLAVICLE, RIG_RIGHT },
 		{ "lShldrBend", RIG_UPPER_ARM, RIG_LEFT }, { "rForearmBend", RIG_FOREARM, RIG_RIGHT },
@@ -83,6 +97,9 @@ static void test_unity_biped_and_joint_names(void **state)
 		/* 3ds Max Biped, Character Creator, joint-named rigs (BCN_Epileptic.X) */
 		{ "Bip01 L UpperArm", RIG_UPPER_ARM, RIG_LEFT }, { "Bip01 R Calf", RIG_SHIN, RIG_RIGHT },
 		{ "Bip01 L Toe0", RIG_TOE, RIG_LEFT }, { "CC_Base_R_Thigh", RIG_THIGH, RIG_RIGHT },
+		{ "Bip01 L Finger1", RIG_FINGERS, RIG_LEFT }, { "Bip01 L Finger0", RIG_NONE, RIG_CENTRE },
+		{ "Left Index Proximal", RIG_FINGERS, RIG_LEFT }, { "Right Little Proximal", RIG_FINGERS, RIG_RIGHT },
+		{ "Left Thumb Proximal", RIG_NONE, RIG_CENTRE },
 		{ "B_UpperArm_Left", RIG_UPPER_ARM, RIG_LEFT }, { "B_Hip_Right", RIG_THIGH, RIG_RIGHT },
 		{ "B_Knee_Left", RIG_SHIN, RIG_LEFT }, { "B_Ankle_Right", RIG_FOOT, RIG_RIGHT },
 		{ "elbow_l", RIG_FOREARM, RIG_LEFT }, { "B_Spine4", RIG_NONE, RIG_CENTRE },
