@@ -8,8 +8,9 @@
  * from its shape (skel_roles.h): in each limb branch the upper bone is the
  * first at least 0.6 times as long as the branch's longest, the next
  * non-zero bones the forearm or shin, then the hand (the first bone that
- * branches into fingers) or the foot and toes, and a bone before the upper
- * arm the clavicle; left is up x front, front the way the feet point.
+ * branches into fingers) and the fingers (the bone on from it) or the foot
+ * and toes, and a bone before the upper arm the clavicle; left is up x
+ * front, front the way the feet point.
  * Limb joints map to the skeleton bone of the same part and side; the
  * spine chain between hips and head maps by where each joint sits along
  * it onto the skeleton's chain from the root to its head bone, the chest

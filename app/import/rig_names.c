@@ -60,7 +60,8 @@ static const struct {
 	{ "toes", RIG_TOE, CMU | UNITY },
 	/* each toe and finger that has joints of its own: all map to the one
 	 * bone a mocap skeleton has (CMU's ltoes, lfingers); the thumb stays
-	 * with the hand (CMU's lthumb turns some 60 degrees off MakeHuman's) */
+	 * with the hand (CMU's lthumb turns tens of degrees on its own in a
+	 * clip: mapped, MakeHuman's thumb swung 13% of the height away) */
 	{ "toe11", RIG_TOE, MAKEHUMAN }, { "toe21", RIG_TOE, MAKEHUMAN }, { "toe31", RIG_TOE, MAKEHUMAN },
 	{ "toe41", RIG_TOE, MAKEHUMAN }, { "toe51", RIG_TOE, MAKEHUMAN },
 	{ "fingers", RIG_FINGERS, CMU },

@@ -11,11 +11,15 @@ static float deg_between(vec3 a, vec3 b)
 	return acosf(fmaxf(-1.0f, fminf(1.0f, c))) * 57.29578f;
 }
 
-#define CHAIN_LEN 5
+/* Each bone aimed at the mesh's next joint, but not the hand at the
+ * fingers: aimed at the knuckles (MakeHuman's hands turned by 30 and 43
+ * degrees), the walk's hands came out bent back at the wrist with the
+ * fingers splayed, where unaimed they hang as modelled. */
+#define CHAIN_LEN 4
 
 static const rig_slot chains[2][CHAIN_LEN] = {
-	{ RIG_CLAVICLE, RIG_UPPER_ARM, RIG_FOREARM, RIG_HAND, RIG_FINGERS },
-	{ RIG_THIGH, RIG_SHIN, RIG_FOOT, RIG_TOE, RIG_NONE },
+	{ RIG_CLAVICLE, RIG_UPPER_ARM, RIG_FOREARM, RIG_HAND },
+	{ RIG_THIGH, RIG_SHIN, RIG_FOOT, RIG_TOE },
 };
 
 static void aim_one(const skel *s, const rig_scene *r, const rig_map *m, rig_side side, rig_slot from,
@@ -23,7 +27,7 @@ static void aim_one(const skel *s, const rig_scene *r, const rig_map *m, rig_sid
 {
 	int bone = m->parts.bone[side][from];
 	vec3 next;
-	if (to == RIG_NONE || bone < 0 || rig_map_part_joint(m, r, side, from) < 0 ||
+	if (bone < 0 || rig_map_part_joint(m, r, side, from) < 0 ||
 	    !rig_map_part_head(m, r, side, to, &next) || out->aim_count == RIG_POSE_MAX_AIMS)
 		return;
 	fk_pose(s, values, pose);
