@@ -9,9 +9,23 @@
 # BUILD_DIR/tests/.times; slowest_first.sh), so that the run ends when its
 # longest program does. Each program's output is shown whole when it ends, followed by its
 # time; the five slowest are listed at the end.
+# SKP_TEST_ONLY="test_a test_b" runs only those of the programs given;
+# SKP_TEST_SKIP="..." reports those skipped, with SKP_TEST_SKIP_WHY.
 # (run_tests.sh --one PROGRAM: one program, for the parallel runs below)
 if [ "$1" != --one ]; then
 out=$1; shift
+if [ -n "${SKP_TEST_ONLY:-}" ]; then
+	only=
+	for t in "$@"; do
+		case " $SKP_TEST_ONLY " in *" $(basename "$t") "*) only="$only $t" ;; esac
+	done
+	if [ -z "$only" ]; then
+		echo "run_tests.sh: none of SKP_TEST_ONLY ($SKP_TEST_ONLY) is among the programs given" >&2
+		exit 2
+	fi
+	# shellcheck disable=SC2086 # test paths have no spaces (build/tests/NAME)
+	set -- $only
+fi
 export SKP_BUILD="$out"
 export SKP_SHARED="${SKP_SHARED:-../shared}"
 # Mesa's OSMesa keeps its framebuffer for ever: suppress that leak only
