@@ -8,8 +8,8 @@
  *
  *   1. 2.95-5.25   the left forearm twisted half a turn (the candy
  *                  wrapper), the arm held out to the side;
- *   2. 6.15-8.45   the right elbow bent to 150 degrees, the upper arm out
- *                  from the side;
+ *   2. 6.15-8.45   the right elbow bent to 150 degrees, a curl: the upper
+ *                  arm hanging, the forearm folded up in front;
  *   3. 9.35-11.65  the left arm raised overhead (the shoulder and armpit);
  *   4. 12.55-14.85 the right hip flexed 115 degrees, the knee bent (a high
  *                  march step);
@@ -126,13 +126,16 @@ static void forearm_twist(pose *p, double s)
 	p->wrist[LEFT] -= 180 * s;
 }
 
-/* LBS loses the inside of a deep bend: the upper arm out from the side, 35
- * degrees below the horizontal, and the forearm folded up in front of it.
- * Not rolled: a roll of the upper arm parts the methods more at the
- * shoulder than the bend does at the elbow. */
+/* LBS loses the inside of a deep bend: a curl, the upper arm hanging and
+ * the forearm folded up in front of it, so that the bend's plane stands
+ * upright and the close-up sees the fold in profile from the body's side
+ * (out from the side, the arm bent in a nearly level plane that no view
+ * from the visitor's side shows in profile). Not rolled: a roll of the
+ * upper arm parts the methods more at the shoulder than the bend does at
+ * the elbow. */
 static void elbow_bend(pose *p, double s)
 {
-	p->humerus[RIGHT][2] -= 35 * s;
+	p->humerus[RIGHT][2] += 20 * s;   /* from 70 degrees lowered to hanging */
 	p->radius[RIGHT] += 135 * s;
 }
 

@@ -93,6 +93,15 @@ void closeup_camera_follow(closeup_camera *c, vec3 at, vec3 axis, vec3 parent, f
 	c->pitch += (pitch - c->pitch) * k;
 }
 
+float closeup_span_want(float reach, vec3 axis, vec3 parent, float height)
+{
+	float want = reach > 0.0f ? CLOSEUP_REACH * reach : CLOSEUP_SPAN * height;
+	float la = vec3_length(axis), lp = vec3_length(parent);
+	if (la > 0.0f && lp > 0.0f && vec3_dot(axis, parent) < 0.5f * la * lp)
+		want = fmaxf(want, CLOSEUP_FOLD_SHOWN * fminf(la, lp));
+	return fmaxf(CLOSEUP_SPAN_MIN * height, fminf(CLOSEUP_SPAN_MAX * height, want));
+}
+
 mat4 closeup_camera_matrix(const closeup_camera *c, float span, float aspect)
 {
 	float fit = aspect < 1.0f ? aspect : 1.0f;

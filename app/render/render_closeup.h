@@ -15,6 +15,7 @@
 #define CLOSEUP_SPAN_MIN 0.035f /* or round where the methods part: 2.5 times that reach, */
 #define CLOSEUP_SPAN_MAX 0.14f  /* within these */
 #define CLOSEUP_REACH 1.8f
+#define CLOSEUP_FOLD_SHOWN 0.85f /* of a bent joint's shorter bone, at least */
 
 typedef struct closeup_pick {
 	int joint;     /* -1: none yet */
@@ -42,6 +43,14 @@ typedef struct closeup_camera {
  * to the bone: a limb from its side, never down its length. */
 void closeup_camera_follow(closeup_camera *c, vec3 at, vec3 axis, vec3 parent, float main_azimuth, float dt,
 			   int immediate);
+
+/* The radius the close-up frames round a joint whose bone points along
+ * axis and its parent along parent (posed), on a body height tall: round
+ * where the methods part (reach, 0 if unknown), so that a twisted wrist
+ * fills the inset; a joint bent past 60 degrees wide enough to show the
+ * two bones folded, or its crease is a stretch of skin nobody reads as an
+ * elbow. */
+float closeup_span_want(float reach, vec3 axis, vec3 parent, float height);
 
 /* View-projection of the close-up for a viewport of aspect, framing a
  * sphere of radius span round the target. */

@@ -349,9 +349,7 @@ static void follow_closeup(renderer *r, const render_frame *f)
 	vec3 axis = vec3_sub(f->pose->tip[j], f->pose->head[j]);
 	vec3 parent = up >= 0 ? vec3_sub(f->pose->tip[up], f->pose->head[up]) : vec3_make(0.0f, 0.0f, 0.0f);
 	closeup_camera_follow(&r->inset, f->closeup.focus, axis, parent, r->cam.azimuth, f->dt, 0);
-	/* framed round where the methods part: a twisted wrist fills the inset */
-	float h = r->cam.height, want = f->closeup.span > 0.0f ? CLOSEUP_REACH * f->closeup.span : CLOSEUP_SPAN * h;
-	want = fmaxf(CLOSEUP_SPAN_MIN * h, fminf(CLOSEUP_SPAN_MAX * h, want));
+	float want = closeup_span_want(f->closeup.span, axis, parent, r->cam.height);
 	float *span = &r->inset.span;
 	*span = *span <= 0.0f || f->dt <= 0.0f ? want : *span + (want - *span) * camera_ease(f->dt);
 }

@@ -38,8 +38,6 @@ static int positions(skinplay *p, int need_every_frame)
 	return 1;
 }
 
-/* "TWISTED 178 DEG" or "BENT 150 DEG", whichever the joint did more; ""
- * when it hardly moved. */
 /* What the visitor should look at, by what the joint did. */
 static const char *look_at(skel_turn_kind k)
 {

@@ -53,6 +53,24 @@ static void test_camera_glides(void **state)
 	assert_true(along < 0.2f);
 }
 
+/* Round where the methods part, within the body's bounds; a joint folded
+ * past 60 degrees wide enough for its two bones. */
+static void test_span_wants(void **state)
+{
+	(void)state;
+	vec3 x = vec3_make(10, 0, 0), y = vec3_make(0, 8, 0), back = vec3_make(-6, 1, 0);
+	float h = 100.0f;
+	assert_float_equal(closeup_span_want(2.0f, x, x, h), CLOSEUP_REACH * 2.0f, 1e-5f);
+	assert_float_equal(closeup_span_want(0.0f, x, x, h), CLOSEUP_SPAN * h, 1e-5f);
+	assert_float_equal(closeup_span_want(0.1f, x, x, h), CLOSEUP_SPAN_MIN * h, 1e-5f);
+	assert_float_equal(closeup_span_want(50.0f, x, x, h), CLOSEUP_SPAN_MAX * h, 1e-5f);
+	/* bent 90 degrees: the shorter bone (8) sets it; folded back: 6.08 */
+	assert_float_equal(closeup_span_want(2.0f, x, y, h), CLOSEUP_FOLD_SHOWN * 8.0f, 1e-4f);
+	assert_float_equal(closeup_span_want(2.0f, back, x, h), CLOSEUP_FOLD_SHOWN * sqrtf(37.0f), 1e-4f);
+	/* bent 45 degrees: still round the parting */
+	assert_float_equal(closeup_span_want(2.0f, vec3_make(1, 1, 0), x, h), CLOSEUP_REACH * 2.0f, 1e-5f);
+}
+
 static skel sk;
 static skel_pose bind;
 static uint8_t block[SKIN_SOA_BYTES(8)] __attribute__((aligned(SKIN_ALIGN)));
@@ -114,6 +132,7 @@ int main(void)
 	const struct CMUnitTest tests[] = {
 		cmocka_unit_test(test_pick_holds_then_moves),
 		cmocka_unit_test(test_camera_glides),
+		cmocka_unit_test(test_span_wants),
 		cmocka_unit_test(test_diff_scores_and_focus),
 	};
 	return cmocka_run_group_tests(tests, NULL, NULL);
