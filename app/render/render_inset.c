@@ -10,7 +10,7 @@
 #include "render_font.h"
 #include "render_internal.h"
 
-#define INSET_SHARE 58      /* percent of the panel's width */
+#define INSET_SHARE 64      /* percent of the panel's width */
 #define INSET_MIN_PX 48     /* smaller than this: no inset */
 
 static int line_h(int scale)

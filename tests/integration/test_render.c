@@ -211,12 +211,12 @@ static void test_compare_view_of_a_twist(void **state)
 			 "--asf tests/data/twist.asf --amc tests/data/twist.amc --mesh %s --algo compare --platform surfaceless --size 640x360 --yaw 0 --start %d",
 			 tube, frame);
 		render(args, tmpdir(), &got);
-		/* panel columns: the body in the panel's left 42%, the joint in
+		/* panel columns: the body in the panel's left 36%, the joint in
 		 * its middle, the tube's ends towards its sides; the close-up in
 		 * the rest (rows between the HUD and the labels) */
-		double joint = halves_diff(&got, 55, 75, 165, 195);
-		double ends = (halves_diff(&got, 14, 40, 165, 195) + halves_diff(&got, 92, 118, 165, 195)) / 2;
-		double inset = halves_diff(&got, 145, 310, 90, 255);
+		double joint = halves_diff(&got, 48, 68, 165, 195);
+		double ends = (halves_diff(&got, 12, 34, 165, 195) + halves_diff(&got, 82, 104, 165, 195)) / 2;
+		double inset = halves_diff(&got, 135, 310, 90, 255);
 		print_message("lower arm twisted %d deg: LBS vs DQBS mean difference %.2f at the joint, %.2f at the ends, "
 			      "%.2f in the close-up\n", frame == 2 ? 170 : 0, joint, ends, inset);
 		if (frame == 1) {
