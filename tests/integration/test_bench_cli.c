@@ -74,7 +74,13 @@ static void check_table(char *text, const char *first, int threads)
 		 * (one decimal for the rate, two for the time) */
 		if (fabs(rate * ns - 1000) > 0.05 * ns + 0.005 * rate + 0.01)
 			fail_msg("row '%s': %g M/s and %g ns/vertex disagree", line, rate, ns);
-		assert_true(fabs(100 * rate / bound - of) <= 1);
+		/* the share of the bound, to the printed digits: a whole per
+		 * cent, from a rate and a bound each to a tenth. On a loaded
+		 * machine the bound falls to a few Mv/s, and those tenths move
+		 * the share by more than a per cent (the CI run of 5cd8979) */
+		double digits = 0.5 + 100 * 0.05 * (1 / bound + rate / (bound * bound)) + 0.01;
+		if (fabs(100 * rate / bound - of) > digits)
+			fail_msg("row '%s': %g M/s of a %g Mv/s bound is not %g%%", line, rate, bound, of);
 		if (rows[r].ratio && !strstr(line, rows[r].ratio))
 			fail_msg("row '%s' lacks '%s'", line, rows[r].ratio);
 		const char *scaling = strstr(line, "x one thread");
