@@ -12,9 +12,9 @@
 #define CLOSEUP_HOLD_S 2.0f    /* seconds a joint is shown at least */
 #define CLOSEUP_SWITCH 1.25f   /* another joint must differ this much more */
 #define CLOSEUP_SPAN 0.09f     /* the inset shows a sphere this radius (of the body's size), */
-#define CLOSEUP_SPAN_MIN 0.035f /* or round where the methods part: 2.5 times that reach, */
-#define CLOSEUP_SPAN_MAX 0.14f  /* within these */
-#define CLOSEUP_REACH 1.5f
+#define CLOSEUP_REACH 1.5f      /* or round where the methods part: this times that reach, */
+#define CLOSEUP_SPAN_MIN 0.035f /* within these (of the body's size) */
+#define CLOSEUP_SPAN_MAX 0.14f
 #define CLOSEUP_FOLD_SHOWN 0.85f /* of a bent joint's shorter bone, at least */
 
 typedef struct closeup_pick {

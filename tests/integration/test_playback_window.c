@@ -268,11 +268,12 @@ static void test_console_keys(void **state)
 	/* the log's text freed before any assertion, which jumps out */
 	char *text = test_read_file(log, NULL);
 	int ran_out = text && strstr(text, "played 3000 frames");
-	if (rc != 0)
+	if (rc != 0) {
 		print_message("log:\n%s", text ? text : "");
-	free(text);
-	if (rc != 0)
+		free(text);
 		fail_msg("exit %d (the log above)", rc);
+	}
+	free(text);
 	static const char *const want[] = { "input: key 2 -> dqbs", "input: key d -> difference", "input: PLAY -> pause",
 					    "input: key right -> frame", "input: camera key -> camera yaw -15, pitch",
 					    "distance 0.85, aim 0.00 0.00 0.00", "distance 0.85, aim 0.00 0.05 0.00", NULL };
