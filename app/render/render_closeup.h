@@ -16,6 +16,12 @@
 #define CLOSEUP_SPAN_MIN 0.035f /* within these (of the body's size) */
 #define CLOSEUP_SPAN_MAX 0.14f
 #define CLOSEUP_FOLD_SHOWN 0.85f /* of a bent joint's shorter bone, at least */
+/* The glide's time constant, in seconds: half the main camera's, so that
+ * the close-up settles on a joint within the first second of its hold.
+ * Between two joints its view may pass through the body (the elbow's
+ * profile is across a forearm folded towards the visitor): a slower glide
+ * showed a blur of skin for most of the elbow's hold. */
+#define CLOSEUP_EASE_S 0.3f
 
 typedef struct closeup_pick {
 	int joint;     /* -1: none yet */
@@ -27,6 +33,10 @@ void closeup_pick_init(closeup_pick *c);
 /* dt seconds later, with score[j] the largest difference at joint j of n
  * (0: none): the joint to show. -1 while nothing differs. */
 int closeup_pick_update(closeup_pick *c, const float *score, int n, float dt);
+
+/* The share of the way to its goal the close-up's camera (and the radius
+ * it frames) moves in dt seconds; all of it for dt <= 0. */
+float closeup_ease(float dt);
 
 typedef struct closeup_camera {
 	int started;

@@ -351,7 +351,7 @@ static void follow_closeup(renderer *r, const render_frame *f)
 	closeup_camera_follow(&r->inset, f->closeup.focus, axis, parent, r->cam.azimuth, f->dt, 0);
 	float want = closeup_span_want(f->closeup.span, axis, parent, r->cam.height);
 	float *span = &r->inset.span;
-	*span = *span <= 0.0f || f->dt <= 0.0f ? want : *span + (want - *span) * camera_ease(f->dt);
+	*span = *span <= 0.0f ? want : *span + (want - *span) * closeup_ease(f->dt);
 }
 
 /* A line between the two panels: down the middle, or across on a portrait

@@ -45,6 +45,10 @@ static void test_camera_glides(void **state)
 	closeup_camera_follow(&cam, vec3_make(0, 0, 0), axis, parent, 0.45f, 0.016f, 1);
 	closeup_camera_follow(&cam, vec3_make(10, 0, 0), axis, parent, 0.45f, 0.016f, 0);
 	assert_true(cam.target.x > 0.0f && cam.target.x < 1.0f);
+	/* settled within a second of a joint's 2 s hold: 5% of the way left */
+	for (int i = 0; i < 62; i++)
+		closeup_camera_follow(&cam, vec3_make(10, 0, 0), axis, parent, 0.45f, 0.016f, 0);
+	assert_true(cam.target.x > 9.5f);
 	for (int i = 0; i < 300; i++)
 		closeup_camera_follow(&cam, vec3_make(10, 0, 0), axis, parent, 0.45f, 0.016f, 0);
 	assert_true(fabsf(cam.target.x - 10.0f) < 0.01f);
