@@ -12,16 +12,14 @@ for spec in "$@"; do
 	m=${spec%%=*} objs=${spec#*=}
 	[ -n "$objs" ] || continue
 	modules=$((modules + 1))
-	: > "$tmp/def"
-	for o in $objs; do
-		$nm --defined-only "$o" | awk -v f="$(basename "$o" .o)" '$2 ~ /^[TDRB]$/ { print $3, f }' >> "$tmp/def"
-	done
-	: > "$tmp/edges"
-	for o in $objs; do
-		f=$(basename "$o" .o)
-		$nm -u "$o" | awk '{ print $NF }' | sort -u | join - "$(sort -o "$tmp/def.s" "$tmp/def" && echo "$tmp/def.s")" |
-			awk -v f="$f" '$2 != f { print f, $2 }' >> "$tmp/edges"
-	done
+	# two nm a module (-A: each line names its object); one a file took 43 s.
+	# A file calls (or reads) another when it leaves undefined what the
+	# other defines: the defined come first, then each use is an edge.
+	# shellcheck disable=SC2086 # object paths have no spaces
+	{ $nm -A --defined-only $objs | sed 's/^/D /'; $nm -A -u $objs | sed 's/^/U /'; } |
+		awk 'function file(o) { sub(/:.*/, "", o); sub(/.*\//, "", o); sub(/\.o$/, "", o); return o }
+		$1 == "D" && $3 ~ /^[TDRB]$/ { owner[$4] = file($2); next }
+		$1 == "U" && ($NF in owner) && owner[$NF] != file($2) { print file($2), owner[$NF] }' > "$tmp/edges"
 	sort -u "$tmp/edges" -o "$tmp/edges"
 	if ! tsort "$tmp/edges" > /dev/null 2> "$tmp/loop"; then
 		echo "check-layers: app/$m: its files call each other in a circle:$(sed -n 's/^tsort: //p' "$tmp/loop" | grep -v loop | tr '\n' ' ')"
