@@ -17,6 +17,11 @@ void camera_init(follow_camera *c, float skel_height, float floor_y, float azimu
 #define CAMERA_FOVY 0.6f     /* radians, vertical */
 #define CAMERA_MARGIN 0.04f  /* of the space it may take, left clear round a framed box */
 
+float camera_ease_in(float dt, float seconds)
+{
+	return dt > 0.0f ? 1.0f - expf(-dt / seconds) : 1.0f;
+}
+
 float camera_ease(float dt)
 {
 	return 1.0f - expf(-dt / 0.6f);

@@ -38,6 +38,10 @@ mat4 camera_matrix(const follow_camera *c, float aspect);
  * exp(-dt / 0.6 s), the camera's time constant. */
 float camera_ease(float dt);
 
+/* The share of the way an exponential ease with a time constant of seconds
+ * covers in dt seconds; all of it for dt <= 0 (a first frame, a still). */
+float camera_ease_in(float dt, float seconds);
+
 /* View-projection for a viewport of the given aspect ratio that shows the
  * whole box [lo, hi] (world space) from the camera's azimuth, a little from
  * above, as large as it fits between the rows ndc_bottom and ndc_top

@@ -7,11 +7,6 @@
 #define CLOSEUP_FOVY 0.6f
 #define CLOSEUP_PITCH 0.25f      /* a little from above */
 
-float closeup_ease(float dt)
-{
-	return dt > 0.0f ? 1.0f - expf(-dt / CLOSEUP_EASE_S) : 1.0f;
-}
-
 void closeup_pick_init(closeup_pick *c)
 {
 	c->joint = -1;
@@ -92,7 +87,7 @@ void closeup_camera_follow(closeup_camera *c, vec3 at, vec3 axis, vec3 parent, f
 		c->pitch = pitch;
 		return;
 	}
-	float k = closeup_ease(dt);
+	float k = camera_ease_in(dt, CLOSEUP_EASE_S);
 	c->target = vec3_add(c->target, vec3_scale(vec3_sub(at, c->target), k));
 	c->azimuth += remainderf(az - c->azimuth, 6.2831853f) * k;
 	c->pitch += (pitch - c->pitch) * k;

@@ -34,10 +34,6 @@ void closeup_pick_init(closeup_pick *c);
  * (0: none): the joint to show. -1 while nothing differs. */
 int closeup_pick_update(closeup_pick *c, const float *score, int n, float dt);
 
-/* The share of the way to its goal the close-up's camera (and the radius
- * it frames) moves in dt seconds; all of it for dt <= 0. */
-float closeup_ease(float dt);
-
 typedef struct closeup_camera {
 	int started;
 	vec3 target;       /* eased towards the joint */

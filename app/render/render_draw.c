@@ -274,7 +274,7 @@ static float ease_up(float now, float goal, float grow, float shrink)
 
 static void ease_extent(renderer *r, float dt)
 {
-	float k = camera_ease(dt), g = dt > 0.0f ? 1.0f - expf(-dt / 0.15f) : 1.0f;
+	float k = camera_ease(dt), g = camera_ease_in(dt, 0.15f);
 	vec3 *lo = &r->ext_lo, *hi = &r->ext_hi, glo = r->goal_lo, ghi = r->goal_hi;
 	*lo = vec3_make(ease_down(lo->x, glo.x, g, k), ease_down(lo->y, glo.y, g, k), ease_down(lo->z, glo.z, g, k));
 	*hi = vec3_make(ease_up(hi->x, ghi.x, g, k), ease_up(hi->y, ghi.y, g, k), ease_up(hi->z, ghi.z, g, k));
@@ -351,7 +351,7 @@ static void follow_closeup(renderer *r, const render_frame *f)
 	closeup_camera_follow(&r->inset, f->closeup.focus, axis, parent, r->cam.azimuth, f->dt, 0);
 	float want = closeup_span_want(f->closeup.span, axis, parent, r->cam.height);
 	float *span = &r->inset.span;
-	*span = *span <= 0.0f ? want : *span + (want - *span) * closeup_ease(f->dt);
+	*span = *span <= 0.0f ? want : *span + (want - *span) * camera_ease_in(f->dt, CLOSEUP_EASE_S);
 }
 
 /* A line between the two panels: down the middle, or across on a portrait
