@@ -139,7 +139,14 @@ int render_gpu_fits(const renderer *r, skin_algo algo);
  * render_draw so the two can be timed separately). */
 void render_upload(renderer *r, const render_frame *f);
 
+/* Moves the cameras (the body's, the close-up's, the framed box) by the
+ * frame's dt, then draws it. */
 void render_draw(renderer *r, const render_frame *f);
+
+/* Moves the cameras as render_draw would, drawing nothing: a headless run
+ * skips the frames it does not write, and the next one it draws is the
+ * same picture as if every frame had been drawn. */
+void render_advance(renderer *r, const render_frame *f);
 
 /* Reads the frame back as RGBA8, bottom row first (glReadPixels order). */
 void render_read_rgba(const renderer *r, uint8_t *rgba);

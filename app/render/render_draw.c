@@ -389,11 +389,8 @@ static void draw_hud(renderer *r, const render_frame *f, const layout *l, render
 	}
 }
 
-void render_draw(renderer *r, const render_frame *f)
+void render_advance(renderer *r, const render_frame *f)
 {
-	const gl_api *gl = r->gl;
-	int lw, lh;
-	render_logical_size(r, &lw, &lh);
 	if (r->framed) {
 		ease_extent(r, f->dt);
 		camera_follow(&r->cam, f->pose->tip[0], f->dt);
@@ -401,6 +398,14 @@ void render_draw(renderer *r, const render_frame *f)
 		camera_follow(&r->cam, fk_tip_centre(f->pose, r->bone_count), f->dt);
 	}
 	follow_closeup(r, f);
+}
+
+void render_draw(renderer *r, const render_frame *f)
+{
+	const gl_api *gl = r->gl;
+	int lw, lh;
+	render_logical_size(r, &lw, &lh);
+	render_advance(r, f);
 	gl->Enable(GL_DEPTH_TEST);
 	gl->Enable(GL_CULL_FACE);
 	gl->CullFace(GL_BACK);

@@ -297,11 +297,17 @@ static void log_second(skinplay *p, uint64_t now, int last)
 	stage_window_reset(&p->stages, now);
 }
 
-static int draw_one(skinplay *p, double fps, render_frame *f)
+/* The frame skinned, then drawn and presented; or, when it is not to be
+ * seen (paint 0), only its cameras moved. */
+static int draw_one(skinplay *p, double fps, render_frame *f, int paint)
 {
 	char lines[3][128];
 	skp_error err;
 	skin_panels(p, f);
+	if (!paint) {
+		render_advance(&p->r, f);
+		return 0;
+	}
 	uint64_t t1 = clock_now_ns();
 	render_upload(&p->r, f);
 	uint64_t t2 = clock_now_ns();
@@ -351,6 +357,18 @@ static int next_key(const skinplay *p)
 	return key ? key : in && in->key ? in->key() : 0;
 }
 
+/* Headless with --every: the frames drawn are the ones written, and the
+ * upload and draw times are theirs. */
+static const char *drawn_note(const skinplay *p, long shown)
+{
+	static char note[80];
+	long drawn = p->stages.ran[STAGE_DRAW];
+	if (!p->disp || drawn >= shown)
+		return "";
+	snprintf(note, sizeof note, "; %ld drawn, the ones written", drawn);
+	return note;
+}
+
 static int play(skinplay *p)
 {
 	stage_start(&p->stages, clock_now_ns());
@@ -388,14 +406,17 @@ static int play(skinplay *p)
 		prev = p->now;
 		if (p->o.pose_digest)
 			pose_digest_add(p);
-		if (p->disp && draw_one(p, fps, &f) < 0)
+		/* headless with --output, a frame not written is not drawn */
+		int write = p->o.out_dir && shown % p->o.every == 0, paint = write || !p->headless || !p->o.out_dir;
+		if (p->disp && draw_one(p, fps, &f, paint) < 0)
 			return -1;
 		p->drift = ((double)p->now - (double)(clock_now_ns() - p->wall0)) * 1e-9;
 		p->shown = ++shown;
 		uint64_t t_png = clock_now_ns();
-		if (p->o.out_dir && (shown - 1) % p->o.every == 0 && output_frame(p, shown) < 0)
+		if (write && output_frame(p, shown) < 0)
 			return -1;
-		stage_add(&p->stages, STAGE_SWAP, clock_now_ns() - t_png);
+		if (paint)
+			stage_add(&p->stages, STAGE_SWAP, clock_now_ns() - t_png);
 		stage_frame_done(&p->stages, shown_number(p));
 		if (p->disp && p->disp->handle_events)
 			p->disp->handle_events(&quit);
@@ -415,10 +436,10 @@ static int play(skinplay *p)
 		return -1;
 	log_second(p, clock_now_ns(), 1);
 	double secs = (double)(clock_now_ns() - p->stages.start_ns) * 1e-9;
-	fprintf(cli_note(), "played %ld frames of %s in %.2f s: %.1f fps; per frame " TIMES_FMT " (%s, %dx%d, %s skinning%s)\n",
+	fprintf(cli_note(), "played %ld frames of %s in %.2f s: %.1f fps; per frame " TIMES_FMT " (%s, %dx%d, %s skinning%s%s)\n",
 		shown, p->o.amc ? p->o.amc : p->clip, secs, shown / secs, TIMES(&p->stages, stage_run_ms),
 		p->disp ? p->disp->name : "none", p->info.width, p->info.height, p->gpu[0] ? "GPU" : "CPU",
-		threads_note(p));
+		threads_note(p), drawn_note(p, shown));
 	if (p->o.pose_digest)
 		fprintf(stderr, "poses: %ld shown, digest %016llx\n", shown, (unsigned long long)p->digest);
 	if (p->o.report_timing)

@@ -23,11 +23,13 @@ typedef struct stage_times {
 	uint64_t sum[STAGE_COUNT], worst[STAGE_COUNT];
 	long worst_frame[STAGE_COUNT];
 	long frames;
+	long ran[STAGE_COUNT];             /* frames in which the stage ran */
 	uint64_t start_ns;                 /* the run's start */
 	uint64_t window[STAGE_COUNT];      /* since window_ns */
-	long window_frames;
+	long window_frames, window_ran[STAGE_COUNT];
 	uint64_t window_ns;
 	uint64_t this_frame[STAGE_COUNT];
+	unsigned char this_ran[STAGE_COUNT];
 } stage_times;
 
 /* A new run (and window) starting at now_ns. */
@@ -38,7 +40,9 @@ void stage_add(stage_times *t, stage s, uint64_t ns);
  * worst and the window's mean. */
 void stage_frame_done(stage_times *t, long frame);
 /* Mean ms a frame of stages first..last (inclusive), over the window or
- * over the run; 0 without frames. */
+ * over the run; 0 without frames. Each stage's mean is over the frames in
+ * which it ran: a headless run draws only the frames it writes, and their
+ * draw time is not spread over the frames it did not draw. */
 double stage_window_ms(const stage_times *t, stage first, stage last);
 double stage_run_ms(const stage_times *t, stage first, stage last);
 /* Frames a second over the window ending at now_ns; then a new window. */
