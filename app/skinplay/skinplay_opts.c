@@ -49,7 +49,7 @@ static const cli_opt play_opts_table[] = {
 	{ "size", 0, "WxH", OPT_SIZE, "the picture's size headless or in a window (default 1280x720)" },
 	{ "frames", 0, "N", OPT_FRAMES, "play N frames (default: the clip once headless, for ever on a screen)" },
 	{ "start", 0, "FRAME", OPT_START, "start at the frame numbered FRAME" },
-	{ "output", 'o', "DIR|F.mp4|F.webm", OPT_OUT, "write every K-th frame as DIR/frame_NNNNNN.png, or headless "
+	{ "output", 'o', "DIR|F.mp4|F.webm", OPT_OUT, "write every K-th frame as DIR/frame_NNNNNN.png (compressed for speed), or headless "
 	  "into one video, F.mp4 (H.264) or F.webm (VP9), of --display-rate/K frames a second that lasts as long as "
 	  "the frames it shows (the clip's duration; an even --size; also --out)" VIDEO_NOTE },
 	{ "out", 0, "DIR|F.mp4|F.webm", OPT_OUT, "the same as --output" },

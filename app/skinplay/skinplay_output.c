@@ -121,7 +121,7 @@ static int write_png(skinplay *p, long n)
 	snprintf(path, sizeof path, "%s/frame_%06ld.png", p->o.out_dir, n);
 	if (cli_output_check(path) < 0)
 		return -1;
-	if (png_write_rgba(path, p->rgba, p->info.width, p->info.height, 1, &err) != 0) {
+	if (png_write_rgba(path, p->rgba, p->info.width, p->info.height, PNG_WRITE_BOTTOM_UP | PNG_WRITE_FAST, &err) != 0) {
 		fprintf(stderr, "skinplay: %s: %s\n", path, err.msg);
 		return -1;
 	}

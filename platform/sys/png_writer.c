@@ -6,8 +6,7 @@
 /* libpng's simplified API: it keeps its setjmp error handling inside, and
  * a negative row stride writes bottom-up rows without a copy. */
 
-int png_write_rgba(const char *path, const uint8_t *rgba, int width, int height, int bottom_up,
-		   skp_error *err)
+int png_write_rgba(const char *path, const uint8_t *rgba, int width, int height, unsigned how, skp_error *err)
 {
 	png_image image;
 
@@ -19,8 +18,9 @@ int png_write_rgba(const char *path, const uint8_t *rgba, int width, int height,
 	image.width = (png_uint_32)width;
 	image.height = (png_uint_32)height;
 	image.format = PNG_FORMAT_RGBA;
+	image.flags = how & PNG_WRITE_FAST ? PNG_IMAGE_FLAG_FAST : 0;
 	png_int_32 stride = (png_int_32)width * 4;
-	if (!png_image_write_to_file(&image, path, 0, rgba, bottom_up ? -stride : stride, NULL))
+	if (!png_image_write_to_file(&image, path, 0, rgba, how & PNG_WRITE_BOTTOM_UP ? -stride : stride, NULL))
 		return skp_fail(err, SKP_ERR_IO, 0, "%s: cannot write PNG: %s", path, image.message);
 	return SKP_OK;
 }

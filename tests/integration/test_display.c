@@ -140,7 +140,7 @@ static void check_png_round_trip(const char *backend)
 
 	assert_true(fd >= 0);
 	close(fd);
-	if (png_write_rgba(path, pixels, W, H, 1, &err) != SKP_OK)
+	if (png_write_rgba(path, pixels, W, H, PNG_WRITE_BOTTOM_UP, &err) != SKP_OK)
 		fail_msg("%s: %s", backend, err.msg);
 	memset(png_pixels, 0, sizeof png_pixels);
 	int rc = png_read_rgba(path, png_pixels, sizeof png_pixels, &w, &h, &err);
