@@ -23,6 +23,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <dirent.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -86,20 +87,31 @@ static double panels_differ(const image *m)
 	return n ? (double)differ / (double)n : 0.0;
 }
 
-/* Every frame_NNNNNN.png of dir in order: their shares; returns the count. */
+static int is_frame(const struct dirent *e)
+{
+	return strncmp(e->d_name, "frame_", 6) == 0 && strstr(e->d_name, ".png") != NULL;
+}
+
+/* Every frame_NNNNNN.png of dir in order (the numbers are zero-padded,
+ * so by name): their shares; returns the count. */
 static int measure_dir(const char *dir)
 {
-	int count = 0;
-	for (int n = 1; n < 1000000 && count < MAX_FRAMES; n++) {
+	struct dirent **names;
+	int count = 0, found = scandir(dir, &names, is_frame, alphasort);
+	if (found < 0)
+		fail_msg("%s: cannot list its frames", dir);
+	for (int i = 0; i < found; i++) {
 		char path[512];
 		skp_error err;
-		snprintf(path, sizeof path, "%s/frame_%06d.png", dir, n);
-		if (access(path, R_OK) != 0)
-			continue;
-		if (png_read_rgba(path, im.px, sizeof im.px, &im.w, &im.h, &err) != 0)
-			fail_msg("%s: %s", path, err.msg);
-		share[count++] = panels_differ(&im);
+		snprintf(path, sizeof path, "%s/%s", dir, names[i]->d_name);
+		if (count < MAX_FRAMES) {
+			if (png_read_rgba(path, im.px, sizeof im.px, &im.w, &im.h, &err) != 0)
+				fail_msg("%s: %s", path, err.msg);
+			share[count++] = panels_differ(&im);
+		}
+		free(names[i]);
 	}
+	free(names);
 	return count;
 }
 
