@@ -20,6 +20,20 @@ headers_in() { # the headers directly in folder $1 (not its subfolders)
 	find "$1" -maxdepth 1 -name '*.h' -printf '%f\n' 2>/dev/null
 }
 
+# Every #include "..." of the files given that is not in $allowed, said
+# with the reason $1; fails if there is one. One awk for all the files.
+includes_outside() {
+	why=$1; shift
+	[ $# -gt 0 ] || return 0
+	awk -v why="$why" '
+		FNR == NR { ok[$0] = 1; next }
+		/^#include "/ {
+			h = $0; sub(/^#include "/, "", h); sub(/".*/, "", h)
+			if (!(h in ok)) { print "check-layers: " FILENAME " includes " h ": " why; bad = 1 }
+		}
+		END { exit bad }' "$allowed" "$@"
+}
+
 allowed=$(mktemp) && trap 'rm -f "$allowed"' EXIT
 for dir in app/*/; do
 	m=$(basename "$dir")
@@ -35,30 +49,20 @@ for dir in app/*/; do
 	done
 	echo board_limits.h >> "$allowed"
 	[ "$m" = cli ] && echo skp_version.h >> "$allowed"   # generated: --version
-	for f in $(find "app/$m" -name '*.[ch]'); do
-		files=$((files + 1))
-		for h in $(sed -n 's/^#include "\([^"]*\)".*/\1/p' "$f"); do
-			if ! grep -qx "$h" "$allowed"; then
-				echo "check-layers: $f includes $h: not in module $m or the modules it may use ($(deps_of "$m" | tr '\n' ' '))"
-				fail=1
-			fi
-		done
-	done
+	files=$((files + $(find "app/$m" -name '*.[ch]' | wc -l)))
+	# shellcheck disable=SC2046 # source paths have no spaces
+	includes_outside "not in module $m or the modules it may use ($(deps_of "$m" | tr '\n' ' '))" \
+		$(find "app/$m" -name '*.[ch]') || fail=1
 done
 
 : > "$allowed"
 for d in $plat_deps; do [ "$d" = base ] && headers_in app/base >> "$allowed"; done
 for p in $plat_dirs; do headers_in "platform/$p" >> "$allowed"; done
 printf '%s\n' $ports board_limits.h >> "$allowed"
-for f in $(find platform -name '*.[ch]'); do
-	files=$((files + 1))
-	for h in $(sed -n 's/^#include "\([^"]*\)".*/\1/p' "$f"); do
-		if ! grep -qx "$h" "$allowed"; then
-			echo "check-layers: $f includes $h: platform code may include base, platform and the port headers ($ports) only"
-			fail=1
-		fi
-	done
-done
+files=$((files + $(find platform -name '*.[ch]' | wc -l)))
+# shellcheck disable=SC2046
+includes_outside "platform code may include base, platform and the port headers ($ports) only" \
+	$(find platform -name '*.[ch]') || fail=1
 
 # An upward include must not compile: app/math with math's include path.
 probe=app/math/.check_layers_probe.c
