@@ -7,6 +7,7 @@
  * terminal that started it). */
 #include "display.h"
 
+#include <stdio.h>
 #include <string.h>
 
 #include <X11/Xlib.h>
@@ -29,8 +30,25 @@ static struct {
 	int last_x, last_y;
 } s;
 
+static unsigned long x_errors;
+
+/* Xlib's own handler exits the program on any protocol error (a window
+ * gone under the window manager, a request the server refused): a kiosk
+ * says it and keeps playing. The first is said; shutdown counts the rest. */
+static int on_x_error(Display *dpy, XErrorEvent *ev)
+{
+	if (x_errors++ == 0) {
+		char text[128];
+		XGetErrorText(dpy, ev->error_code, text, (int)sizeof text);
+		fprintf(stderr, "x11: X error '%s' (request %u.%u): ignored, the window plays on\n", text,
+			(unsigned)ev->request_code, (unsigned)ev->minor_code);
+	}
+	return 0;
+}
+
 static int open_x(const char *name, skp_error *err)
 {
+	XSetErrorHandler(on_x_error);
 	s.dpy = XOpenDisplay(name);
 	if (!s.dpy) {
 		const char *shown = XDisplayName(name);
@@ -84,6 +102,9 @@ static void x11_shutdown(void)
 			XFreeColormap(s.dpy, s.cmap);
 		XCloseDisplay(s.dpy);
 	}
+	if (x_errors > 1)
+		fprintf(stderr, "x11: %lu X errors ignored in all\n", x_errors);
+	x_errors = 0;
 	memset(&s, 0, sizeof s);
 }
 
