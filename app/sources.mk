@@ -7,7 +7,7 @@
 #
 #   skinplay   skintool (+ report/)            the programs: argv, stdio, main()
 #        \      /  |   \      \
-#          |   import  analysis  encode        tool-only: rigged meshes (libassimp), measures, clip encoder
+#          |   import  analysis  encode        tool-only: rigged meshes (libassimp), measures, clip and ETC1 encoders
 #          |   /
 #          setup                               binding at start-up: mesh, pose, weights, the gate
 #           |
@@ -22,13 +22,15 @@
 #        skin (+ kernels/, private)            LBS, DQBS, DQBS fixed
 #           |
 #     mesh -> motion -> math -> base          (codec: base only; image and play read it)
+#                                             (texture: base only; encode writes its ETC1)
 
 # What each module owns (app/README.md has the whole map):
 #   base      errors, readers, tokens, lines, CRC-32, INI, algorithm/view names
 #   math      vec3, quat, rigid, dual quaternions, mat4, fixed point
 #   motion    skeleton, ASF, streaming AMC and BVH, forward kinematics, roles, T-pose
 #   codec     compressed motion clips: the format and its fixed-memory decoder
-#   encode    tool-only: the clip encoder (grid steps within an error budget, segments)
+#   texture   textures: the ETC1 block layout and decoder, RGB565, mip chains, the box filter
+#   encode    tool-only: the clip encoder (grid steps within an error budget, segments), the ETC1 encoder
 #   mesh      meshes, normals, OBJ, the generated body
 #   skin      weights, SoA vertices, bone transforms, skin_run; kernels/
 #   bind      automatic and balanced weights, fitting, pose guessing, the weights CSV
@@ -44,9 +46,10 @@
 #   skinplay  the device program; skintool: the host tool (+ report/)
 
 # The portable core, bottom up: no malloc, no stdio (make check-core).
-CORE_MODULES  := base math motion codec mesh skin bind image render kiosk play
+CORE_MODULES  := base math motion codec texture mesh skin bind image render kiosk play
 DEPS_base     :=
 DEPS_codec    := base
+DEPS_texture  := base
 DEPS_math     := base
 DEPS_motion   := math base
 DEPS_mesh     := motion math base
@@ -60,7 +63,7 @@ DEPS_play     := image codec skin mesh motion math base
 # encoder, the command lines (cli), the frame's path (runtime), binding at
 # start-up (setup), the importer, the programs.
 DEPS_analysis := skin mesh motion math base
-DEPS_encode   := codec motion math base
+DEPS_encode   := codec texture motion math base
 DEPS_cli      := $(CORE_MODULES) platform
 DEPS_runtime  := cli $(CORE_MODULES) platform
 DEPS_setup    := runtime cli $(CORE_MODULES) platform
@@ -74,7 +77,7 @@ PROGRAM_MODULES := skinplay skintool
 DEPS_tests    := import setup runtime cli analysis encode $(CORE_MODULES) platform
 # The modules top down: the order of the archives on a link line (each
 # archive is searched once, so a module's calls resolve only downwards).
-LAYER_ORDER   := import analysis encode setup runtime cli platform play kiosk render image bind skin mesh motion codec math base
+LAYER_ORDER   := import analysis encode setup runtime cli platform play kiosk render image bind skin mesh motion codec texture math base
 # ... checked against the DEPS_ lists whenever make reads this file: every
 # module but the programs is in it, after each module that depends on it.
 layer_after = $(if $(2),$(if $(filter $(1),$(firstword $(2))),$(wordlist 2,999,$(2)),$(call layer_after,$(1),$(wordlist 2,999,$(2)))))
