@@ -69,14 +69,62 @@ static uint32_t fit_table(const half_pixels *hp, const int colour[3], int table,
 	return total;
 }
 
+/* What a half's error against one colour needs, whatever the table, for
+ * the tables under which no channel clamps: per pixel the sum over the
+ * channels of pixel - colour, and the squared distance. */
+typedef struct half_offsets {
+	int sum[8];
+	int dist[8];
+	int spare; /* how far the colour's channels are from 0 and 255, the least */
+} half_offsets;
+
+static void offsets_of(const half_pixels *hp, const int colour[3], half_offsets *o)
+{
+	o->spare = 255;
+	for (int c = 0; c < 3; c++) {
+		int room = colour[c] < 255 - colour[c] ? colour[c] : 255 - colour[c];
+		o->spare = room < o->spare ? room : o->spare;
+	}
+	for (int i = 0; i < 8; i++) {
+		o->sum[i] = o->dist[i] = 0;
+		for (int c = 0; c < 3; c++) {
+			int d = hp->rgb[i][c] - colour[c];
+			o->sum[i] += d;
+			o->dist[i] += d * d;
+		}
+	}
+}
+
+/* fit_table's error and indices, the same to the bit, for a table whose
+ * levels do not clamp: then a pixel's error with modifier m is
+ * dist - 2 m sum + 3 m^2, so the sign of sum picks +m or -m, and
+ * 2 |sum| > 3 (a + b) the large modifier b over the small a. */
+static uint32_t fit_table_unclamped(const half_offsets *o, int table, uint32_t bound, uint8_t index[8])
+{
+	int a = tex_etc1_modifier[table][0], b = tex_etc1_modifier[table][1];
+	uint32_t total = 0;
+	for (int i = 0; i < 8 && total < bound; i++) {
+		int negative = o->sum[i] < 0;
+		int size = negative ? -o->sum[i] : o->sum[i];
+		int large = 2 * size > 3 * (a + b);
+		int m = large ? b : a;
+		total += (uint32_t)(o->dist[i] + 3 * m * m - 2 * m * size);
+		index[i] = (uint8_t)(negative << 1 | large);
+	}
+	return total;
+}
+
 static int expand(int v, int bits)
 {
 	return bits == 4 ? tex_etc1_expand4(v) : tex_etc1_expand5(v);
 }
 
 /* The best table for a stored base colour; fit->error is UINT32_MAX when
- * none beats bound. */
-static void fit_base(const half_pixels *hp, const int base[3], int bits, uint32_t bound, half_fit *fit)
+ * none beats bound. Table first_table is tried first: a neighbour's best
+ * table is usually this colour's too, and the bound it sets at once cuts
+ * the other tables short after a pixel or two. */
+static void fit_base(const half_pixels *hp, const int base[3], int bits, int first_table,
+		     uint32_t bound, half_fit *fit)
 {
 	int colour[3];
 	uint8_t index[8];
@@ -84,9 +132,15 @@ static void fit_base(const half_pixels *hp, const int base[3], int bits, uint32_
 		colour[c] = expand(base[c], bits);
 		fit->base[c] = (uint8_t)base[c];
 	}
+	half_offsets o;
+	offsets_of(hp, colour, &o);
 	fit->error = UINT32_MAX;
-	for (int t = 0; t < 8; t++) {
-		uint32_t e = fit_table(hp, colour, t, bound, index);
+	for (int k = 0; k <= 8; k++) {
+		int t = k == 0 ? first_table : k - 1;
+		if (k > 0 && t == first_table)
+			continue;
+		uint32_t e = tex_etc1_modifier[t][1] <= o.spare ? fit_table_unclamped(&o, t, bound, index)
+								: fit_table(hp, colour, t, bound, index);
 		if (e < bound && e < fit->error) {
 			fit->error = bound = e;
 			fit->table = (uint8_t)t;
@@ -115,14 +169,23 @@ static void quantised_mean(const half_pixels *hp, int bits, int q[3])
 static void fit_neighbours(const half_pixels *hp, int bits, uint32_t bound, int shrink,
 			   half_fit fits[NEIGHBOURS])
 {
-	int q[3], top = (1 << bits) - 1;
+	int q[3], top = (1 << bits) - 1, table = 0;
 	quantised_mean(hp, bits, q);
+	/* the mean itself first (n = 13: no step), for the table it likes */
+	fit_base(hp, q, bits, 0, UINT32_MAX, &fits[13]);
+	table = fits[13].table;
+	if (fits[13].error >= bound)
+		fits[13].error = UINT32_MAX;
+	else if (shrink)
+		bound = fits[13].error;
 	for (int n = 0; n < NEIGHBOURS; n++) {
 		int base[3] = { q[0] + n % 3 - 1, q[1] + n / 3 % 3 - 1, q[2] + n / 9 - 1 };
+		if (n == 13)
+			continue;
 		fits[n].error = UINT32_MAX;
 		if (base[0] < 0 || base[1] < 0 || base[2] < 0 || base[0] > top || base[1] > top || base[2] > top)
 			continue;
-		fit_base(hp, base, bits, bound, &fits[n]);
+		fit_base(hp, base, bits, table, bound, &fits[n]);
 		if (shrink && fits[n].error < bound)
 			bound = fits[n].error;
 	}
@@ -161,7 +224,7 @@ static void fit_reaching(const half_pixels *other, const uint8_t anchor[3], int 
 		hi = hi > 31 ? 31 : hi;
 		q[c] = q[c] < lo ? lo : q[c] > hi ? hi : q[c];
 	}
-	fit_base(other, q, 5, UINT32_MAX, fit);
+	fit_base(other, q, 5, 0, UINT32_MAX, fit);
 }
 
 typedef struct block_choice {
@@ -214,19 +277,40 @@ static void try_individual(block_choice *best, int flip, const half_pixels hp[2]
 	choose(best, 0, flip, hp, best_fit(fits[0]), best_fit(fits[1]));
 }
 
+/* Each mode's block from the halves' means alone: a good block found
+ * cheaply, whose error bounds the searches that follow from the start. */
+static void try_means(block_choice *best, int flip, const half_pixels hp[2])
+{
+	half_fit fit[2];
+	for (int bits = 4; bits <= 5; bits++) {
+		int q[2][3];
+		for (int h = 0; h < 2; h++) {
+			quantised_mean(&hp[h], bits, q[h]);
+			fit_base(&hp[h], q[h], bits, 0, UINT32_MAX, &fit[h]);
+		}
+		if (bits == 4 || delta_allowed(fit[0].base, fit[1].base)) {
+			choose(best, bits == 5, flip, hp, &fit[0], &fit[1]);
+		} else {
+			fit_reaching(&hp[1], fit[0].base, +1, &fit[1]);
+			choose(best, 1, flip, hp, &fit[0], &fit[1]);
+		}
+	}
+}
+
 uint32_t tex_encode_etc1_block(const uint8_t rgb[4 * 4 * 3], uint8_t block[TEX_ETC1_BLOCK_BYTES])
 {
 	block_choice best;
 	memset(&best, 0, sizeof best);
 	best.error = UINT32_MAX;
+	half_pixels halves[2][2];
 	for (int flip = 0; flip < 2; flip++) {
-		half_pixels hp[2];
-		gather_half(rgb, flip, 0, &hp[0]);
-		gather_half(rgb, flip, 1, &hp[1]);
-		/* individual first: it is the cheaper search, and the bound it
-		 * sets prunes the differential one */
-		try_individual(&best, flip, hp);
-		try_differential(&best, flip, hp);
+		gather_half(rgb, flip, 0, &halves[flip][0]);
+		gather_half(rgb, flip, 1, &halves[flip][1]);
+		try_means(&best, flip, halves[flip]);
+	}
+	for (int flip = 0; flip < 2; flip++) {
+		try_individual(&best, flip, halves[flip]);
+		try_differential(&best, flip, halves[flip]);
 	}
 	/* every field was chosen within its range: packing cannot fail */
 	(void)tex_etc1_pack(&best.fields, block);
