@@ -461,17 +461,11 @@ static void test_mipmaps(void **state)
 	w = h = 256;
 	tex_etc1_mipmaps m;
 	skp_error err;
-	double best_ms = 1e9;
-	for (int run = 0; run < 3; run++) {
-		/* processor time: the machine may be shared */
-		clock_t t0 = clock();
-		assert_int_equal(tex_encode_etc1_mipmaps(rgb, w, h, &m, &err), SKP_OK);
-		double ms = (double)(clock() - t0) * 1e3 / CLOCKS_PER_SEC;
-		best_ms = ms < best_ms ? ms : best_ms;
-		if (run < 2)
-			tex_etc1_mipmaps_free(&m);
-	}
-	print_message("256x256 with its 8 mip levels: %.1f ms of processor time to encode (best of 3)\n", best_ms);
+	/* processor time, said not judged: the machine may be shared */
+	clock_t t0 = clock();
+	assert_int_equal(tex_encode_etc1_mipmaps(rgb, w, h, &m, &err), SKP_OK);
+	print_message("256x256 with its 8 mip levels: %.1f ms of processor time to encode\n",
+		      (double)(clock() - t0) * 1e3 / CLOCKS_PER_SEC);
 	assert_int_equal(m.chain.levels, 9);
 	uint8_t *level = malloc(tex_rgb8_bytes(w, h)), *next = malloc(tex_rgb8_bytes(w, h));
 	uint8_t *blocks = malloc(m.chain.etc1_bytes);
