@@ -21,11 +21,7 @@ static void test_every_shared_clip(void **state)
 	(void)state;
 	if (!test_data_path("mocap"))
 		skip();
-#ifdef __SANITIZE_ADDRESS__
-	const int slow = 1;
-#else
-	const int slow = test_emulator() != NULL;
-#endif
+	const int slow = test_slow();
 	for (int i = 0; i < test_clip_count; i++) {
 		/* under the sanitizers or an emulator (10x slower and more) the
 		 * short clips only: the same code, and make test natively checks

@@ -40,6 +40,15 @@ const char *test_emulator(void)
 	return e && *e ? e : NULL;
 }
 
+int test_slow(void)
+{
+#ifdef __SANITIZE_ADDRESS__
+	return 1;
+#else
+	return test_emulator() != NULL;
+#endif
+}
+
 char *test_read_file(const char *path, size_t *size)
 {
 	FILE *f = fopen(path, "rb");

@@ -15,6 +15,10 @@ const char *test_tool_path(const char *tool);
  * or NULL natively. */
 const char *test_emulator(void);
 
+/* 1 under the sanitizers or an emulator (10x slower and more): corpus
+ * tests then take a sample, and the native run takes all. */
+int test_slow(void);
+
 /* 1 when the file at path holds text (0 also when it cannot be read). */
 int test_file_contains(const char *path, const char *text);
 

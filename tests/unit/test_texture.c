@@ -282,11 +282,7 @@ static void test_real_textures(void **state)
 		/* a photographed fabric, where blender-data is installed */
 		{ "/usr/share/blender/scripts/addons/archimesh/images/fabric_diffuse.png", 0, 0, 40.0 },
 	};
-#ifdef __SANITIZE_ADDRESS__
-	const int slow = 1;
-#else
-	const int slow = test_emulator() != NULL;
-#endif
+	const int slow = test_slow();
 	int found = 0;
 	/* under the sanitizers or an emulator (10x slower and more) the first
 	 * texture found: the same code, and the native run measures them all */
