@@ -55,10 +55,10 @@ DEPS_motion   := math base
 DEPS_mesh     := motion math base
 DEPS_skin     := mesh motion math base
 DEPS_bind     := skin mesh motion math base
-DEPS_image    := codec skin mesh motion math base
-DEPS_render   := skin mesh motion math base
+DEPS_image    := codec texture skin mesh motion math base
+DEPS_render   := texture skin mesh motion math base
 DEPS_kiosk    := base
-DEPS_play     := image codec skin mesh motion math base
+DEPS_play     := image codec texture skin mesh motion math base
 # Host code, which may allocate and print: the tool-only measures and
 # encoder, the command lines (cli), the frame's path (runtime), binding at
 # start-up (setup), the importer, the programs.

@@ -122,7 +122,7 @@ void scene_build(scene_rig *sc)
 	scene_bind(&sc->bind);
 	sc->mesh.vert_count = 0;
 	sc->mesh.tri_count = 0;
-	sc->mesh.coloured = 0;
+	sc->mesh.coloured = sc->mesh.textured = 0;
 	build_rings(sc);
 	add_vertex(sc, vec3_make(0, 0, 0), vec3_make(-1, 0, 0));
 	add_vertex(sc, vec3_make(2, 0, 0), vec3_make(1, 0, 0));

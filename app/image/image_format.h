@@ -13,7 +13,9 @@
  * clips are all quantised). Version 6 adds each vertex's colour to the
  * bind section. Version 7 gives every data block its own digest, checked
  * whenever the block is read (DIGESTS below); versions 4 to 6 still read
- * and play, checked by their CRCs and the whole-image digest.
+ * and play, checked by their CRCs and the whole-image digest. Version 8
+ * adds the body's texture coordinates and base colour texture to the bind
+ * section; version 7 images still read and play (no texture).
  *
  * All integers are little-endian; floats are IEEE-754 binary32 stored as
  * their little-endian bit pattern; a "str" is a u8 length then that many
@@ -149,6 +151,19 @@
  *     influence count (1..4), u8 bone[4], u16 weight[4]: weight / 65535, the
  *     used ones summing to exactly 65535 (largest remainder), so |error| <=
  *     1/65535 per weight. 23 bytes a vertex.
+ *     Version 6: u8 coloured (0 or 1), then when 1 u8 colour[V][3], each
+ *     vertex's sRGB base colour. Version 8: u8 textured (0 or 1), then
+ *     when 1: f32 uv_origin[2], f32 uv_step[2], u16 uv[V][2] (origin + q *
+ *     step, as the positions; GL's: (0, 0) the texture's bottom left,
+ *     repeating), u8 sampled[V] (1: the vertex's colour is multiplied by
+ *     the texture's at uv; 0: its colour alone), u16 width, u16 height
+ *     (powers of two), u8 format (1: ETC1), u32 bytes, then the ETC1 mip
+ *     chain to 1x1 (app/texture/tex_mip.h), level 0 first, each level's
+ *     4x4 blocks left to right, rows in GL's order (the first row at
+ *     v = 0, the picture's bottom: glCompressedTexImage2D takes them as
+ *     they are), 8 bytes each (OES_compressed_ETC1_RGB8_texture). A reader whose
+ *     board keeps no texture that large (SKP_MAX_TEXTURE_SIDE) plays the
+ *     body in its colours.
  *
  * CLIP QUANTISATION (kind 5, item = clip), of a quantised clip (coded 0):
  * per dof f32 min, f32 step.
@@ -226,7 +241,7 @@
 #endif
 
 #define SKP_IMAGE_MAGIC        "SKPIMAGE"
-#define SKP_IMAGE_VERSION      7
+#define SKP_IMAGE_VERSION      8
 #define SKP_IMAGE_VERSION_MIN  4     /* the oldest version still read */
 #define SKP_IMAGE_HEADER_SIZE  168
 #define SKP_IMAGE_ID_BYTES     16
@@ -246,6 +261,7 @@ static inline uint32_t skp_image_stream_room(uint32_t block_size)
 #define SKP_IMAGE_MIN_BLOCK    512
 #define SKP_IMAGE_DEFAULT_BLOCK 4096
 #define SKP_IMAGE_QMAX         65535u
+#define SKP_IMAGE_TEXTURE_ETC1 1     /* the bind section's texture format */
 /* a vertex's influences in the bind section: count, bones, weights */
 #define SKP_IMAGE_INFLUENCE_BYTES     (1 + 3 * SKP_MAX_INFLUENCES)
 /* the frame fields, at the block's start */

@@ -6,6 +6,7 @@
 #include <string.h>
 
 #include "image_error.h"
+#include "image_load_texture.h"
 #include "image_section.h"
 #include "skin_compact.h"
 
@@ -203,7 +204,9 @@ static skp_status get_colours(skp_image *im, mesh *m, skp_error *err)
 	m->coloured = coloured;
 	if (!rc && coloured)
 		rc = sec_get(im, m->colour, 3 * (uint32_t)m->vert_count, err);
-	return rc;
+	m->textured = 0;
+	im->texture_skipped = 0;
+	return rc || im->hdr.version < 8 ? rc : image_get_texture(im, m, err);
 }
 
 skp_status skp_image_load_bind(skp_image *im, const skel *s, mesh *m, skin_weights *w,

@@ -16,6 +16,7 @@
 #include "skel.h"
 #include "image_recover.h"
 #include "skin_weights.h"
+#include "tex_image.h"
 #include "skp_error.h"
 
 /* The block size in a raw first block when it holds a whole header of this
@@ -73,6 +74,12 @@ typedef struct skp_image {
 	 * a copy (block 0 also when the header came from the copy). */
 	void (*on_rebuild)(void *ctx, uint32_t block);
 	void *on_rebuild_ctx;
+	/* Where skp_image_load_bind puts a version 8 body's texture (set it
+	 * before; NULL: not kept). texture_skipped: the body had one that was
+	 * not kept (none asked for, or larger than SKP_MAX_TEXTURE_SIDE): the
+	 * body plays in its colours (mesh.textured 0). */
+	tex_image *texture;
+	int texture_skipped;
 } skp_image;
 
 /* Reads and checks the header (block 0, or its copy when block 0 is bad:

@@ -93,6 +93,11 @@ skp_status image_put_f32(skp_image_writer *w, float v, skp_error *err)
 	return image_put_u32(w, u, err);
 }
 
+skp_status image_put_bytes(skp_image_writer *w, const void *data, uint32_t n, skp_error *err)
+{
+	return put(w, data, n, err);
+}
+
 static skp_status put_floats(skp_image_writer *w, const float *v, int n, skp_error *err)
 {
 	skp_status rc = SKP_OK;
@@ -296,6 +301,8 @@ skp_status skp_image_write_bind(skp_image_writer *w, const mesh *m, const skin_w
 		if (!rc && m->coloured)
 			rc = put(w, m->colour, 3 * (uint32_t)m->vert_count, err);
 	}
+	if (!rc && w->hdr.version >= 8)
+		rc = image_put_texture(w, m, err);
 	return rc ? rc : image_sec_end(w, &w->hdr.sec[SKP_SEC_BIND], err);
 }
 

@@ -14,6 +14,7 @@
 #include "mesh.h"
 #include "sha256.h"
 #include "skin_weights.h"
+#include "tex_image.h"
 
 /* Pass 1 over a clip: frame count, numbering, per-dof min and max. */
 typedef struct skp_clip_range {
@@ -48,6 +49,9 @@ typedef struct skp_image_writer {
 	int clip_count;
 	skp_image_clip dir[SKP_IMAGE_MAX_CLIPS];
 	int parity_group;         /* data blocks per parity group: 0 default, < 0 none */
+	/* the body's texture (version 8), set before skp_image_write_bind:
+	 * packed with the mesh's uv when the mesh is textured; NULL none */
+	const tex_image *texture;
 	uint8_t block[SKP_IMAGE_BLOCK_SIZE];
 	uint8_t head[SKP_IMAGE_BLOCK_SIZE], tmp[SKP_IMAGE_BLOCK_SIZE];
 } skp_image_writer;

@@ -391,7 +391,7 @@ skp_status rig_import_as(const char *path, const char *hint, const char *group, 
 	mesh *m = out->mesh;
 	memset(out, 0, offsetof(rig_scene, infl_count));
 	out->mesh = m;
-	m->vert_count = m->tri_count = m->coloured = 0;
+	m->vert_count = m->tri_count = m->coloured = m->textured = 0;
 	uint64_t size;
 	mem_cap cap;
 	if (rig_limits_check(path, &size, err) != SKP_OK)

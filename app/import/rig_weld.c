@@ -71,6 +71,8 @@ static void compact(rig_scene *r, int *remap)
 		slot[v] = kept;
 		m->pos[kept] = m->pos[v];
 		memcpy(m->colour[kept], m->colour[v], sizeof m->colour[v]);
+		memcpy(m->uv[kept], m->uv[v], sizeof m->uv[v]);
+		m->sampled[kept] = m->sampled[v];
 		r->infl_count[kept] = r->infl_count[v];
 		r->held[kept] = r->held[v];
 		memcpy(r->infl_joint[kept], r->infl_joint[v], sizeof r->infl_joint[v]);

@@ -274,7 +274,7 @@ static void set_normals(grid *g)
 skp_status manq_build(const skel *s, int detail, manq_work *w, mesh *out, skp_error *err)
 {
 	skp_error_clear(err);
-	out->vert_count = out->tri_count = out->coloured = 0;
+	out->vert_count = out->tri_count = out->coloured = out->textured = 0;
 	if (detail == 0)
 		detail = MANQ_DEFAULT_DETAIL;
 	if (detail < MANQ_MIN_DETAIL || detail > MANQ_MAX_DETAIL)

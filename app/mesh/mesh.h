@@ -18,6 +18,14 @@ typedef struct mesh {
 	 * materials); 0: drawn in the renderer's skin colour */
 	int coloured;
 	uint8_t colour[SKP_MAX_VERTS][3];
+	/* 1: the body has a base colour texture (app/texture/tex_image.h), its
+	 * colour multiplied into colour's at the vertices whose sampled is 1,
+	 * at uv (GL's: (0, 0) the texture's bottom left, repeating); the other
+	 * vertices keep their colour alone (a second texture is baked into
+	 * it); 0: no texture */
+	int textured;
+	float uv[SKP_MAX_VERTS][2];
+	uint8_t sampled[SKP_MAX_VERTS];
 } mesh;
 
 #endif

@@ -377,7 +377,7 @@ static void init_state(obj_state *st, mesh *out, obj_work *w, const obj_options 
 	w->group_count = 0;
 	w->group_overflow = 0;
 	w->current_group = -1;
-	out->vert_count = out->tri_count = out->coloured = 0;
+	out->vert_count = out->tri_count = out->coloured = out->textured = 0;
 }
 
 skp_status obj_parse(mesh *out, obj_work *w, text_lines *tl, const obj_options *opt, skp_error *err)

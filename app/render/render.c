@@ -10,7 +10,7 @@
 
 static const char *const uniform_names[U_COUNT] = {
 	"u_mvp", "u_bone", "u_key", "u_fill", "u_skin", "u_use_col", "u_color", "u_point",
-	"u_strength", "u_font",
+	"u_strength", "u_font", "u_tex", "u_use_tex",
 };
 GLint render_loc[SHADER_COUNT][U_COUNT];
 
@@ -158,6 +158,7 @@ skp_status render_init(renderer *r, const gl_api *gl, int width, int height, int
 	gl->BufferData(GL_ARRAY_BUFFER, (GLsizeiptr)soa->count * 4, NULL, GL_DYNAMIC_DRAW);
 	gl->GenBuffers(1, &r->vbo_look);
 	r->look_ready = 0;
+	r->tex_ready = 0;
 	camera_init(&r->cam, body_extent(soa), floor_y, RENDER_CAMERA_AZIMUTH);
 	render_set_units(r, 0.0f);
 	return gl->GetError() == GL_NO_ERROR ? SKP_OK
@@ -210,6 +211,7 @@ void render_shutdown(renderer *r)
 	gl->DeleteBuffers(1, &r->vbo_diff);
 	gl->DeleteBuffers(1, &r->vbo_look);
 	gl->DeleteTextures(1, &r->font_tex);
+	render_texture_shutdown(r);
 	r->gl = NULL;
 }
 

@@ -14,6 +14,7 @@
 #include "gl_api.h"
 #include "render_shaders.h"
 #include "skin.h"
+#include "tex_image.h"
 
 #define RENDER_MAX_PANELS 2
 #define RENDER_HUD_LINES 4
@@ -111,6 +112,9 @@ typedef struct renderer {
 	GLuint vbo_diff;         /* the difference view's colours, RGBA8 per vertex */
 	GLuint vbo_look;         /* the body's own colours, RGB8 per vertex (render_set_colours) */
 	int look_ready;          /* vbo_look holds them: drawn instead of the skin colour */
+	GLuint vbo_uv, vbo_sampled, body_tex; /* the body's texture (render_set_texture) */
+	int tex_ready;           /* they hold it: multiplied into the colours */
+	const char *tex_path;    /* how it went to the GPU: "ETC1" or "RGB565" */
 	int diff_ready;          /* vbo_diff holds this frame's */
 	uint8_t diff_rgba[4 * SKP_MAX_VERTS];
 	float misc[6 * 1024];    /* grid, shadow and overlay vertices */
@@ -130,6 +134,15 @@ skp_status render_init(renderer *r, const gl_api *gl, int width, int height, int
  * mesh.colour), drawn in the plain and compare views, lit as the skin
  * colour is; rgb NULL: the skin colour again. */
 void render_set_colours(renderer *r, const uint8_t (*rgb)[3]);
+
+/* The body's base colour texture (m->textured: its uv and sampled, t's
+ * ETC1 mip chain), multiplied into its colours in the plain and compare
+ * views. etc1: 1 to hand the blocks to a GPU that samples ETC1 (the
+ * Raspberry Pi's; r->tex_path "ETC1"), 0 to decode each level to RGB565
+ * first ("RGB565", what a GPU without ETC1 gets either way). m not
+ * textured, or t NULL: no texture. Fails on a GL error or a chain that
+ * does not decode. */
+skp_status render_set_texture(renderer *r, const mesh *m, const tex_image *t, int etc1, skp_error *err);
 
 /* 1 when the skeleton's bone uniforms for algo fit GLES 2.0's guaranteed
  * vertex uniforms, so GPU skinning can be used. */

@@ -23,7 +23,7 @@ static int bone_uniforms(renderer *r, const skin_bones *b, int as_dq)
 	return r->bone_count * (as_dq ? 2 : 3);
 }
 
-static void body_program(renderer *r, shader_kind k, const mat4 *vp, int use_col, float azimuth)
+static void body_program(renderer *r, shader_kind k, const mat4 *vp, int use_col, int use_tex, float azimuth)
 {
 	const gl_api *gl = r->gl;
 	/* the lights turn with the camera about the vertical: a close-up from
@@ -37,6 +37,26 @@ static void body_program(renderer *r, shader_kind k, const mat4 *vp, int use_col
 	gl->Uniform3f(render_loc[k][U_FILL], fill.x, fill.y, fill.z);
 	gl->Uniform3fv(render_loc[k][U_SKIN], 1, skin_rgb);
 	gl->Uniform1f(render_loc[k][U_USE_COL], use_col ? 1.0f : 0.0f);
+	gl->Uniform1i(render_loc[k][U_TEX], 1);
+	gl->Uniform1f(render_loc[k][U_USE_TEX], use_tex ? 1.0f : 0.0f);
+}
+
+/* The body's texture coordinates, where its own colours are drawn and it
+ * has a texture (render_set_texture); 1 when bound. */
+static int bind_texture(renderer *r, const render_frame *f)
+{
+	const gl_api *gl = r->gl;
+	if (!r->tex_ready || !r->look_ready || f->view == RENDER_VIEW_WEIGHTS || f->view == RENDER_VIEW_DIFFERENCE)
+		return 0;
+	gl->ActiveTexture(GL_TEXTURE1);
+	gl->BindTexture(GL_TEXTURE_2D, r->body_tex);
+	gl->ActiveTexture(GL_TEXTURE0);
+	gl->BindBuffer(GL_ARRAY_BUFFER, r->vbo_uv);
+	render_attrib(gl, ATTR_UV, 2, 8, 0);
+	gl->BindBuffer(GL_ARRAY_BUFFER, r->vbo_sampled);
+	gl->EnableVertexAttribArray(ATTR_SAMPLED);
+	gl->VertexAttribPointer(ATTR_SAMPLED, 1, GL_UNSIGNED_BYTE, GL_FALSE, 1, (const void *)0);
+	return 1;
 }
 
 /* The vertex colours: the bones' (weights view), the differences'
@@ -71,9 +91,9 @@ void render_body_seen(renderer *r, const mat4 *vp, const render_frame *f, int pa
 {
 	const gl_api *gl = r->gl;
 	const render_panel *p = &f->panel[panel];
-	int use_col = bind_colours(r, f);
+	int use_col = bind_colours(r, f), use_tex = bind_texture(r, f);
 	if (p->pos) {
-		body_program(r, SHADER_BODY_CPU, vp, use_col, azimuth);
+		body_program(r, SHADER_BODY_CPU, vp, use_col, use_tex, azimuth);
 		gl->BindBuffer(GL_ARRAY_BUFFER, r->vbo_skinned[panel]);
 		render_attrib(gl, ATTR_POS, 3, 12, 0);
 		if (p->nrm)
@@ -83,7 +103,7 @@ void render_body_seen(renderer *r, const mat4 *vp, const render_frame *f, int pa
 	} else {
 		int as_dq = p->algo != SKIN_LBS;
 		shader_kind k = as_dq ? SHADER_BODY_DQBS : SHADER_BODY_LBS;
-		body_program(r, k, vp, use_col, azimuth);
+		body_program(r, k, vp, use_col, use_tex, azimuth);
 		gl->Uniform4fv(render_loc[k][U_BONE], bone_uniforms(r, f->bones, as_dq), r->bone_uniforms);
 		gl->BindBuffer(GL_ARRAY_BUFFER, r->vbo_static);
 		render_attrib(gl, ATTR_POS, 3, STATIC_STRIDE, 0);

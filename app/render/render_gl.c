@@ -73,7 +73,7 @@ void render_attrib_snorm16(const gl_api *gl, GLuint slot, int size, size_t offse
 
 void render_disable_attribs(const gl_api *gl)
 {
-	for (GLuint a = 0; a <= ATTR_UV; a++)
+	for (GLuint a = 0; a <= ATTR_SAMPLED; a++)
 		gl->DisableVertexAttribArray(a);
 }
 

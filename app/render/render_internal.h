@@ -9,7 +9,7 @@
 #define STATIC_FLOATS 17
 #define STATIC_STRIDE (STATIC_FLOATS * 4)
 
-enum { U_MVP, U_BONE, U_KEY, U_FILL, U_SKIN, U_USE_COL, U_COLOR, U_POINT, U_STRENGTH, U_FONT, U_COUNT };
+enum { U_MVP, U_BONE, U_KEY, U_FILL, U_SKIN, U_USE_COL, U_COLOR, U_POINT, U_STRENGTH, U_FONT, U_TEX, U_USE_TEX, U_COUNT };
 
 /* uniform locations per program, looked up once at init */
 extern GLint render_loc[SHADER_COUNT][U_COUNT];
@@ -68,5 +68,8 @@ void render_inset_draw(renderer *r, const render_frame *f, int panel, render_rec
 void render_inset_ring(renderer *r, const mat4 *vp);
 /* The body lit as seen from azimuth (the lights turn with the camera). */
 void render_body_seen(renderer *r, const mat4 *vp, const render_frame *f, int panel, float azimuth);
+
+/* Frees the body's texture and its buffers (render_texture.c). */
+void render_texture_shutdown(renderer *r);
 
 #endif

@@ -9,9 +9,12 @@ static const char body_vs[] =
 	"attribute vec3 a_pos;\n"
 	"attribute vec3 a_nrm;\n"
 	"attribute vec3 a_col;\n"
+	"attribute vec2 a_uv;\n"
+	"attribute float a_sampled;\n"
 	"uniform mat4 u_mvp;\n"
 	"varying vec3 v_nrm;\n"
 	"varying vec3 v_col;\n"
+	"varying vec3 v_tex;\n"
 	"#if defined(SKIN_LBS) || defined(SKIN_DQBS)\n"
 	"attribute vec4 a_bones;\n"
 	"attribute vec4 a_weights;\n"
@@ -56,6 +59,7 @@ static const char body_vs[] =
 	"#endif\n"
 	"  v_nrm = n;\n"
 	"  v_col = a_col;\n"
+	"  v_tex = vec3(a_uv, a_sampled);\n"
 	"  gl_Position = u_mvp * vec4(p, 1.0);\n"
 	"}\n";
 
@@ -65,13 +69,18 @@ static const char body_fs[] =
 	"precision mediump float;\n"
 	"varying vec3 v_nrm;\n"
 	"varying vec3 v_col;\n"
+	"varying vec3 v_tex;\n"
 	"uniform vec3 u_key;\n"
 	"uniform vec3 u_fill;\n"
 	"uniform vec3 u_skin;\n"
 	"uniform float u_use_col;\n"
+	"uniform sampler2D u_tex;\n"
+	"uniform float u_use_tex;\n"
 	"void main() {\n"
 	"  vec3 n = normalize(v_nrm);\n"
-	"  vec3 base = mix(u_skin, v_col, u_use_col);\n"
+	/* the texture's colour times the vertex's, where the vertex samples it */
+	"  vec3 t = mix(vec3(1.0), texture2D(u_tex, v_tex.xy).rgb, v_tex.z * u_use_tex);\n"
+	"  vec3 base = mix(u_skin, v_col * t, u_use_col);\n"
 	"  float key = max(dot(n, u_key), 0.0);\n"
 	"  float fill = max(dot(n, u_fill), 0.0);\n"
 	"  vec3 c = base * (0.22 + 0.78 * key) + vec3(0.10, 0.12, 0.16) * fill;\n"
@@ -163,6 +172,7 @@ static void bind_attributes(const gl_api *gl, GLuint prog)
 	gl->BindAttribLocation(prog, ATTR_BONES, "a_bones");
 	gl->BindAttribLocation(prog, ATTR_WEIGHTS, "a_weights");
 	gl->BindAttribLocation(prog, ATTR_UV, "a_uv");
+	gl->BindAttribLocation(prog, ATTR_SAMPLED, "a_sampled");
 }
 
 GLuint shader_build(const gl_api *gl, shader_kind kind, skp_error *err)

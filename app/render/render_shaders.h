@@ -11,7 +11,8 @@ enum {
 	ATTR_COL = 2,
 	ATTR_BONES = 3,
 	ATTR_WEIGHTS = 4,
-	ATTR_UV = 5,
+	ATTR_UV = 5,      /* glyphs', the shadow's; the body's texture coordinates */
+	ATTR_SAMPLED = 6, /* 1: the body's vertex samples its texture */
 };
 
 /* Bone uniforms the GPU skinning shaders may use: GLES 2.0 guarantees 128

@@ -10,6 +10,7 @@
 #include "bind_gate.h"
 #include "bind_pose_guess.h"
 #include "mesh.h"
+#include "tex_image.h"
 #include "skel.h"
 
 /* A skeleton, a mesh bound to it and the weights: what start-up binding
@@ -23,6 +24,8 @@ typedef struct bound_body {
 	int arms_raised;            /* > 0: derived from the rest pose by skel_tpose */
 	bind_guess_result guess;    /* .turned > 0: the mesh's own pose (bind_pose_guess.h) */
 	mesh mesh;                  /* fitted when --fit */
+	tex_image texture;          /* mesh.textured: its base colour texture */
+	int texture_skipped;        /* the image's texture was larger than the board keeps */
 	int fitted;
 	bind_fit_result fit;
 	bind_rig rig;

@@ -14,9 +14,11 @@ int image_accept_body(skp_image *im, bound_body *body, skp_error *err)
 {
 	static float values[SKP_MAX_DOF];
 	long number;
+	im->texture = &body->texture;
 	if (skp_image_load_skel(im, &body->skel, err) != SKP_OK || skp_accept_skel(&body->skel, err) != SKP_OK ||
 	    skp_image_load_bind(im, &body->skel, &body->mesh, &body->weights, values, &number, err) != SKP_OK)
 		return -1;
+	body->texture_skipped = im->texture_skipped;
 	/* values are all 0 for the rest pose; a derived bind pose has number -1 */
 	fk_pose(&body->skel, values, &body->pose);
 	if (skp_accept_body(&body->skel, &body->pose, &body->mesh, err) != SKP_OK)

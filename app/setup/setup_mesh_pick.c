@@ -121,6 +121,8 @@ static void keep_part(mesh *m, mesh_pick_work *p, int root)
 		if (to[v] >= 0) {
 			m->pos[n] = m->pos[v];
 			memcpy(m->colour[n], m->colour[v], sizeof m->colour[v]);
+			memcpy(m->uv[n], m->uv[v], sizeof m->uv[v]);
+			m->sampled[n] = m->sampled[v];
 			m->normal[n++] = m->normal[v];
 		}
 	}

@@ -67,6 +67,27 @@ static void log_measured_threads(skinplay *p)
 		workers_count(p->pool), one, kept ? "all of them" : "one");
 }
 
+/* The body's texture to the GPU as --texture says, and said: how big,
+ * how it went (ETC1 as packed, or decoded to RGB565), or why not. */
+static int set_texture(skinplay *p)
+{
+	skp_error err;
+	const tex_image *t = &p->body.texture;
+	if (p->body.texture_skipped)
+		fprintf(stderr, "skinplay: the image's texture is larger than this board keeps (%d pixels a side): "
+			"the body plays in its colours\n", SKP_MAX_TEXTURE_SIDE);
+	if (!p->body.mesh.textured || p->o.texture == 2)
+		return 0;
+	if (render_set_texture(&p->r, &p->body.mesh, t, p->o.texture == 0, &err) != SKP_OK) {
+		fprintf(stderr, "skinplay: renderer: %s\n", err.msg);
+		return -1;
+	}
+	fprintf(cli_note(), "texture: %dx%d, %d levels, %s%s\n", t->width, t->height, t->chain.levels,
+		p->r.tex_path, p->r.tex_path[0] == 'E' ? " (the GPU samples the blocks as packed)"
+						       : " (decoded at start-up)");
+	return 0;
+}
+
 /* --platform none: nothing drawn and no GL; the clock, the show and its
  * logs run as headless (a soak of days of frames in minutes). */
 static int no_display(const skinplay *p)
@@ -109,6 +130,8 @@ static int setup(skinplay *p)
 		return -1;
 	}
 	render_set_colours(&p->r, m->coloured ? (const uint8_t (*)[3])m->colour : NULL);
+	if (set_texture(p) < 0)
+		return -1;
 	render_set_yaw(&p->r, p->yaw, 1);
 	render_set_view(&p->r, &p->o.view_cam);
 	p->view_home = p->o.view_cam;

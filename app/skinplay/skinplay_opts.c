@@ -16,7 +16,7 @@ enum {
 	OPT_ROTATION, OPT_SIZE, OPT_FRAMES, OPT_START, OPT_OUT, OPT_EVERY, OPT_SHEET, OPT_VIEW, OPT_FPS,
 	OPT_HUD_FPS, OPT_REPORT_MEMORY, OPT_BOARD, OPT_INPUT, OPT_PRINT_PLATFORM, OPT_HUD, OPT_REPORT_TIMING,
 	OPT_THREADS, OPT_STREAMS, OPT_DISPLAY_RATE, OPT_SPEED, OPT_BLEND, OPT_ROOT, OPT_YAW, OPT_LOOP, OPT_POSE_DIGEST,
-	OPT_BACKGROUND, OPT_SYNC, OPT_EPOCH, OPT_WALL, OPT_BEZEL
+	OPT_BACKGROUND, OPT_SYNC, OPT_EPOCH, OPT_WALL, OPT_BEZEL, OPT_TEXTURE
 };
 
 #ifdef SKP_VIDEO
@@ -55,6 +55,9 @@ static const cli_opt play_opts_table[] = {
 	{ "out", 0, "DIR|F.mp4|F.webm", OPT_OUT, "the same as --output" },
 	{ "every", 0, "K", OPT_EVERY, "with --output: every K-th frame (default 1; a video then has 1/K the frame rate)" },
 	{ "sheet", 0, "F.png", OPT_SHEET, "with --output: also a contact sheet of the frames written (PNG or video)" },
+	{ "texture", 0, "auto|rgb565|off", OPT_TEXTURE, "the body's texture (an image packed from a textured rig): "
+	  "auto hands its ETC1 blocks to a GPU that samples them (the Pi's) and decodes them to RGB565 for one that "
+	  "does not; rgb565 decodes them always; off draws the body in its colours alone (default auto)" },
 	{ "background", 0, "scene|transparent", OPT_BACKGROUND, "with --output DIR: transparent writes the character "
 	  "alone on a see-through background (PNG alpha: no floor, grid, shadow, close-up or HUD; default scene)" },
 	{ "view", 0, "VIEW", OPT_VIEW, "body, skeleton, weights or difference (the body coloured by how far LBS lies "
@@ -224,6 +227,7 @@ static int take_choice(play_opts *o, int id, const char *v)
 {
 	static const char *const skins[] = { "cpu", "gpu" }, *const onoff[] = { "off", "on" };
 	static const char *const backgrounds[] = { "scene", "transparent" };
+	static const char *const textures[] = { "auto", "rgb565", "off" };
 	int k;
 	switch (id) {
 	case OPT_ALGO:
@@ -242,6 +246,8 @@ static int take_choice(play_opts *o, int id, const char *v)
 		return (k = cli_choice(PROG, "skin", v, skins, 2)) < 0 ? -1 : (o->gpu = k, 0);
 	case OPT_BACKGROUND:
 		return (k = cli_choice(PROG, "background", v, backgrounds, 2)) < 0 ? -1 : (o->transparent = k, 0);
+	case OPT_TEXTURE:
+		return (k = cli_choice(PROG, "texture", v, textures, 3)) < 0 ? -1 : (o->texture = k, 0);
 	default:
 		return (k = cli_choice(PROG, "hud-fps", v, onoff, 2)) < 0 ? -1 : (o->hud_fps = k, 0);
 	}
@@ -264,7 +270,7 @@ static int take(void *ctx, int id, const char *v)
 	case OPT_AMC: return take_motion(o, v);
 	case OPT_BVH: o->bvh = v; return 0;
 	case OPT_MESH: o->mesh = v; return 0;
-	case OPT_ALGO: case OPT_VIEW: case OPT_SKIN: case OPT_HUD_FPS: case OPT_BACKGROUND:
+	case OPT_ALGO: case OPT_VIEW: case OPT_SKIN: case OPT_HUD_FPS: case OPT_BACKGROUND: case OPT_TEXTURE:
 		return take_choice(o, id, v);
 	case OPT_PLATFORM: o->platform = v; return 0;
 	case OPT_DEVICE: o->device = v; return 0;

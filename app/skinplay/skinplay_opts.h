@@ -32,6 +32,7 @@ typedef struct play_opts {
 	int video;               /* --output names a video: F.mp4 or F.webm (skinplay_output.c) */
 	const char *sheet_path;  /* --sheet: contact sheet of the frames written */
 	int transparent;         /* --background=transparent: the character alone, PNG alpha */
+	int texture;             /* --texture: 0 auto (ETC1 where sampled), 1 rgb565, 2 off */
 	int print_platform;      /* --print-platform: say what auto picks, exit */
 	long every;
 	render_view view;

@@ -13,6 +13,9 @@
 #define SKP_MAX_TRIS      2048  /* mesh triangles after triangulation */
 #define SKP_MAX_INFLUENCES   4  /* bones per vertex */
 
+/* No GPU: an image's texture is skipped (the body keeps its colours). */
+#define SKP_MAX_TEXTURE_SIDE 0
+
 /* Each bone has at most 7 dof (rx ry rz tx ty tz l); the root has 6. */
 #define SKP_MAX_DOF (7 * SKP_MAX_BONES)
 

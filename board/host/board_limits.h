@@ -13,6 +13,12 @@
 #define SKP_MAX_TRIS    131072  /* mesh triangles after triangulation */
 #define SKP_MAX_INFLUENCES   4  /* bones per vertex */
 
+/* The largest side of a body's base colour texture (a power of two): the
+ * tool scales a larger one down to it, and the device keeps its ETC1 mip
+ * chain (side * side / 2 * 4 / 3 bytes) and, for a GPU without ETC1, one
+ * level decoded to RGB565 (side * side * 2 bytes) in static RAM. */
+#define SKP_MAX_TEXTURE_SIDE 1024
+
 /* The largest frame skinplay renders headless or reads back for --out
  * (its buffer is W * H * 4 bytes of static RAM) and a board config may ask
  * for; a screen's own mode may be larger. */

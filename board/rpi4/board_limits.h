@@ -15,6 +15,12 @@
 #define SKP_MAX_TRIS     65536  /* 2.4x the MakeHuman body (13,380); 396 B each */
 #define SKP_MAX_INFLUENCES   4  /* bones per vertex */
 
+/* The largest side of a body's base colour texture (a power of two): the
+ * tool scales a larger one down to it, and the device keeps its ETC1 mip
+ * chain (side * side / 2 * 4 / 3 bytes) and, for a GPU without ETC1, one
+ * level decoded to RGB565 (side * side * 2 bytes) in static RAM. */
+#define SKP_MAX_TEXTURE_SIDE 1024
+
 /* The largest frame rendered headless or read back for --out (W * H * 4
  * bytes); the screen's own mode on kms may be larger. */
 #define SKP_DISPLAY_MAX_W 1920

@@ -168,8 +168,8 @@ static void test_info_refuses_truncated_and_wrong_version(void **state)
 	assert_int_equal(truncate(bad, size - 100), 0);
 	expect_info(bad, 2, "short read (header copy): repairable");
 	copy(image, bad);
-	set_version(bad, 8);
-	expect_info(bad, 2, "image format version 8, this build reads versions 4 to 7");
+	set_version(bad, 9);
+	expect_info(bad, 2, "image format version 9, this build reads versions 4 to 8");
 	expect_info(test_scratch("missing.skn"), 1, "cannot open");
 }
 

@@ -115,7 +115,7 @@ static void read_header(image *im)
 	assert_true(im->size >= 512);
 	const uint8_t *h = im->data + 24;
 	assert_memory_equal(h, "SKPIMAGE", 8);
-	assert_int_equal(le16(h + 8), 7);
+	assert_int_equal(le16(h + 8), 8);
 	assert_int_equal(le16(h + 10), 168);
 	assert_int_equal(spec_crc(h, 164), le32(h + 164));
 	im->bs = le32(h + 12);
@@ -230,6 +230,32 @@ static void read_skeleton(const image *im)
 	free(s.buf);
 }
 
+/* Version 8's texture: its chain's bytes are every level's blocks, each
+ * level half the one above down to 1 x 1. */
+static void read_texture(stream *s, uint32_t v)
+{
+	uint8_t textured = *take(s, 1);
+	assert_true(textured <= 1);
+	if (!textured)
+		return;
+	take(s, 16 + 4 * v);
+	for (uint32_t i = 0; i < v; i++)
+		assert_true(*take(s, 1) <= 1);
+	uint32_t w = le16(take(s, 2)), h = le16(take(s, 2)), format = *take(s, 1), bytes = le32(take(s, 4));
+	assert_int_equal(format, 1);
+	assert_true(w >= 1 && w <= 4096 && (w & (w - 1)) == 0 && h >= 1 && h <= 4096 && (h & (h - 1)) == 0);
+	uint32_t chain = 0;
+	for (;;) {
+		chain += (w + 3) / 4 * ((h + 3) / 4) * 8;
+		if (w == 1 && h == 1)
+			break;
+		w = w > 1 ? w / 2 : 1;
+		h = h > 1 ? h / 2 : 1;
+	}
+	assert_int_equal(bytes, chain);
+	take(s, bytes);
+}
+
 static void read_bind(const image *im)
 {
 	stream s;
@@ -255,6 +281,7 @@ static void read_bind(const image *im)
 	assert_true(coloured <= 1);
 	if (coloured)
 		take(&s, 3 * v);
+	read_texture(&s, v);
 	assert_int_equal(s.at, s.len);
 	free(s.buf);
 }

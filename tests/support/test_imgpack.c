@@ -9,6 +9,19 @@
 #include <math.h>
 #include <string.h>
 
+static const tex_image *pack_texture;
+static int pack_version;
+
+void test_imgpack_texture(const tex_image *t)
+{
+	pack_texture = t;
+}
+
+void test_imgpack_version(int version)
+{
+	pack_version = version;
+}
+
 void test_imgpack_next_id(uint8_t id[SKP_IMAGE_ID_BYTES])
 {
 	static uint64_t n = 0x9e3779b97f4a7c15ull;
@@ -50,6 +63,9 @@ void test_imgpack_pack(const test_imgpack *p, uint64_t sequence, const float *bi
 	test_imgpack_next_id(id);
 	assert_int_equal(skp_image_write_begin(p->wr, &dev, sequence, id, p->s, &err), SKP_OK);
 	p->wr->parity_group = parity;
+	p->wr->texture = pack_texture;
+	if (pack_version)
+		p->wr->hdr.version = (uint16_t)pack_version;
 	assert_int_equal(skp_image_write_bind(p->wr, p->m, p->w, bind_values, 7, &err), SKP_OK);
 	assert_int_equal(write_clip(p, "tiny", p->frames, *p->frame_count, &err), SKP_OK);
 	test_imgpack_synth(p->s, p->synth, TEST_IMGPACK_SYNTH);

@@ -66,6 +66,12 @@ void test_imgpack_synth(const skel *s, amc_frame *f, int n);
  * test if a step fails. */
 void test_imgpack_pack(const test_imgpack *p, uint64_t sequence, const float *bind_values, int parity);
 
+/* What the next packs carry besides: a texture (written with a textured
+ * mesh; NULL none, the default) and a format version (0: the writer's
+ * own). */
+void test_imgpack_texture(const tex_image *t);
+void test_imgpack_version(int version);
+
 /* Opens the image from the first size bytes of p->img. */
 skp_status test_imgpack_open(const test_imgpack *p, size_t size, skp_error *err);
 

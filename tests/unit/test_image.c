@@ -203,7 +203,7 @@ static void test_colours_round_trip(void **state)
 			m.colour[v][c] = (uint8_t)(37 * v + 91 * c + 5);
 	pack(1, NULL);
 	assert_int_equal(open_image(img_size, &err), SKP_OK);
-	assert_int_equal(im.hdr.version, 7);
+	assert_int_equal(im.hdr.version, SKP_IMAGE_VERSION);
 	assert_int_equal(skp_image_load_skel(&im, &s2, &err), SKP_OK);
 	assert_int_equal(skp_image_load_bind(&im, &s2, &m2, &w2, bind2, &number, &err), SKP_OK);
 	assert_int_equal(m2.coloured, 1);
@@ -247,7 +247,7 @@ static void patch_header(void (*fn)(uint8_t *p), int fix_header_crc)
 	skp_block_seal(copy, BS);
 }
 
-static void set_version_8(uint8_t *p) { le_put16(p + 8, 8); }
+static void set_version_9(uint8_t *p) { le_put16(p + 8, 9); }
 static void set_sequence(uint8_t *p) { le_put64(p + 20, 777); }
 static void set_many_bones(uint8_t *p) { le_put32(p + 44, SKP_MAX_BONES + 1); }
 static void set_magic(uint8_t *p) { p[0] = 'X'; }
@@ -262,8 +262,8 @@ static void test_refusals(void **state)
 	(void)state;
 	load_inputs();
 	pack(5, NULL);
-	patch_header(set_version_8, 1);
-	expect_refusal("version 8, this build reads versions 4 to 7", SKP_ERR_CORRUPT);
+	patch_header(set_version_9, 1);
+	expect_refusal("version 9, this build reads versions 4 to 8", SKP_ERR_CORRUPT);
 	pack(5, NULL);
 	patch_header(set_sequence, 0);
 	expect_refusal("header CRC mismatch", SKP_ERR_CORRUPT);

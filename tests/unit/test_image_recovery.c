@@ -208,7 +208,7 @@ static void test_parity_layout(void **state)
 	pack_with(3, NULL, 0);
 	assert_int_equal(open_image(img_size, &err), SKP_OK);
 	const skp_image_header *h = &im.hdr;
-	assert_int_equal(h->version, 7);
+	assert_int_equal(h->version, SKP_IMAGE_VERSION);
 	assert_int_equal(h->parity_blocks, skp_parity_blocks(h->data_blocks, 0));
 	assert_int_equal(h->block_count, h->copy_block + 1);
 	assert_int_equal(h->dir_copy, h->data_blocks + h->parity_blocks);
