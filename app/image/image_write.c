@@ -93,11 +93,6 @@ skp_status image_put_f32(skp_image_writer *w, float v, skp_error *err)
 	return image_put_u32(w, u, err);
 }
 
-skp_status image_put_bytes(skp_image_writer *w, const void *data, uint32_t n, skp_error *err)
-{
-	return put(w, data, n, err);
-}
-
 static skp_status put_floats(skp_image_writer *w, const float *v, int n, skp_error *err)
 {
 	skp_status rc = SKP_OK;
@@ -277,6 +272,51 @@ static skp_status check_weights(const skp_image_writer *w, const skin_weights *w
 	return SKP_OK;
 }
 
+static skp_status put_uv(skp_image_writer *w, const mesh *m, skp_error *err)
+{
+	float origin[2], step[2];
+	skp_status rc = SKP_OK;
+	for (int i = 0; i < 2; i++) {
+		skin_quant_bounds(&m->uv[0][i], m->vert_count, 2, &origin[i], &step[i]);
+		if (!rc) rc = image_put_f32(w, origin[i], err);
+	}
+	for (int i = 0; i < 2 && !rc; i++)
+		rc = image_put_f32(w, step[i], err);
+	for (int v = 0; v < m->vert_count && !rc; v++) {
+		uint8_t rec[4];
+		le_put16(rec, skin_quantise(m->uv[v][0], origin[0], step[0]));
+		le_put16(rec + 2, skin_quantise(m->uv[v][1], origin[1], step[1]));
+		rc = put(w, rec, sizeof rec, err);
+	}
+	for (int v = 0; v < m->vert_count && !rc; v++)
+		rc = image_put_u8(w, m->sampled[v] != 0, err);
+	return rc;
+}
+
+static skp_status put_chain(skp_image_writer *w, const tex_image *t, skp_error *err)
+{
+	skp_status rc = image_put_u16(w, (unsigned)t->width, err);
+	if (!rc) rc = image_put_u16(w, (unsigned)t->height, err);
+	if (!rc) rc = image_put_u8(w, SKP_IMAGE_TEXTURE_ETC1, err);
+	if (!rc) rc = image_put_u32(w, (uint32_t)t->chain.etc1_bytes, err);
+	return rc ? rc : put(w, t->etc1, (uint32_t)t->chain.etc1_bytes, err);
+}
+
+/* Version 8's end of the bind section: the texture coordinates in 16-bit
+ * steps over their bounds, which vertices sample, the ETC1 mip chain. */
+static skp_status put_texture(skp_image_writer *w, const mesh *m, skp_error *err)
+{
+	const tex_image *t = w->texture;
+	int textured = m->textured && t && t->width > 0;
+	if (textured && t->chain.etc1_bytes > sizeof t->etc1)
+		return skp_fail(err, SKP_ERR_RANGE, 0, "texture chain of %lu bytes in a %lu-byte buffer",
+				(unsigned long)t->chain.etc1_bytes, (unsigned long)sizeof t->etc1);
+	skp_status rc = image_put_u8(w, textured, err);
+	if (!rc && textured)
+		rc = put_uv(w, m, err);
+	return rc || !textured ? rc : put_chain(w, t, err);
+}
+
 skp_status skp_image_write_bind(skp_image_writer *w, const mesh *m, const skin_weights *wt,
 				const float *bind_values, long bind_number, skp_error *err)
 {
@@ -302,7 +342,7 @@ skp_status skp_image_write_bind(skp_image_writer *w, const mesh *m, const skin_w
 			rc = put(w, m->colour, 3 * (uint32_t)m->vert_count, err);
 	}
 	if (!rc && w->hdr.version >= 8)
-		rc = image_put_texture(w, m, err);
+		rc = put_texture(w, m, err);
 	return rc ? rc : image_sec_end(w, &w->hdr.sec[SKP_SEC_BIND], err);
 }
 

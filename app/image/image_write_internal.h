@@ -14,11 +14,6 @@ skp_status image_put_u8(skp_image_writer *w, unsigned v, skp_error *err);
 skp_status image_put_u16(skp_image_writer *w, unsigned v, skp_error *err);
 skp_status image_put_u32(skp_image_writer *w, uint32_t v, skp_error *err);
 skp_status image_put_f32(skp_image_writer *w, float v, skp_error *err);
-skp_status image_put_bytes(skp_image_writer *w, const void *data, uint32_t n, skp_error *err);
-
-/* Version 8's texture coordinates and texture, at the bind section's end
- * (image_write_texture.c). */
-skp_status image_put_texture(skp_image_writer *w, const mesh *m, skp_error *err);
 
 /* Frames w->block, CRCs it and writes it at the next position. */
 skp_status image_flush_block(skp_image_writer *w, skp_error *err);
