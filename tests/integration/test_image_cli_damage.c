@@ -205,7 +205,7 @@ static void test_barren_slot_and_bad_runs(void **state)
 	char bad[512];
 	snprintf(bad, sizeof bad, "%s", test_scratch("runs.skn"));
 	copy(small_image(), bad);
-	set_version(bad, 8);
+	set_version(bad, 9);
 	zero_bytes(bad, 2 * 512, 5 * 512);
 	assert_int_equal(test_run("%s info '%s' >'%s' 2>&1", test_tool_path("skintool"), bad, out), 2);
 	static const char *const runs[] = { "blocks 2..4 bad: CRC mismatch", "blocks of 512 bytes (block size found from their CRCs)",
