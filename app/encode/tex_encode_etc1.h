@@ -31,10 +31,18 @@ typedef struct tex_etc1_mipmaps {
 	uint8_t *blocks; /* chain.etc1_bytes, allocated; tex_etc1_mipmaps_free */
 } tex_etc1_mipmaps;
 
+/* Told after each row of blocks: the blocks done of every level's (a 1024
+ * square takes seconds). */
+typedef struct tex_encode_progress {
+	void (*fn)(void *ctx, long done, long total);
+	void *ctx;
+} tex_encode_progress;
+
 /* Encodes the image and every level below it (tex_downsample_rgb8 of the
- * level above, from the RGB8 source, never from decoded blocks). */
-skp_status tex_encode_etc1_mipmaps(const uint8_t *rgb, int width, int height,
-				   tex_etc1_mipmaps *out, skp_error *err);
+ * level above, from the RGB8 source, never from decoded blocks); progress
+ * NULL or told as it goes. */
+skp_status tex_encode_etc1_mipmaps(const uint8_t *rgb, int width, int height, tex_etc1_mipmaps *out,
+				   const tex_encode_progress *progress, skp_error *err);
 
 void tex_etc1_mipmaps_free(tex_etc1_mipmaps *m);
 

@@ -19,6 +19,25 @@ static void gather_block(const uint8_t *rgb, int width, int height, int bx, int 
 		}
 }
 
+/* The blocks of a size already checked, each row of them told to progress
+ * (when there is one) as more blocks of all done of total. */
+static void encode_blocks(const uint8_t *rgb, int width, int height, uint8_t *blocks,
+			  const tex_encode_progress *progress, long *done, long total)
+{
+	int across = (width + 3) / 4, down = (height + 3) / 4;
+	uint8_t pixels[48];
+	for (int by = 0; by < down; by++) {
+		for (int bx = 0; bx < across; bx++) {
+			gather_block(rgb, width, height, bx, by, pixels);
+			tex_encode_etc1_block(pixels, blocks + ((size_t)by * (size_t)across + (size_t)bx) * 8u);
+		}
+		if (progress && progress->fn) {
+			*done += across;
+			progress->fn(progress->ctx, *done, total);
+		}
+	}
+}
+
 skp_status tex_encode_etc1_image(const uint8_t *rgb, int width, int height,
 				 uint8_t *blocks, size_t capacity, skp_error *err)
 {
@@ -29,13 +48,7 @@ skp_status tex_encode_etc1_image(const uint8_t *rgb, int width, int height,
 	if (capacity < need)
 		return skp_fail(err, SKP_ERR_RANGE, 0, "ETC1 %dx%d needs %lu bytes of blocks, the buffer holds %lu",
 				width, height, (unsigned long)need, (unsigned long)capacity);
-	int across = (width + 3) / 4, down = (height + 3) / 4;
-	uint8_t pixels[48];
-	for (int by = 0; by < down; by++)
-		for (int bx = 0; bx < across; bx++) {
-			gather_block(rgb, width, height, bx, by, pixels);
-			tex_encode_etc1_block(pixels, blocks + ((size_t)by * (size_t)across + (size_t)bx) * 8u);
-		}
+	encode_blocks(rgb, width, height, blocks, NULL, NULL, 0);
 	return SKP_OK;
 }
 
@@ -47,17 +60,20 @@ void tex_etc1_mipmaps_free(tex_etc1_mipmaps *m)
 
 /* Encodes every level, each one downsampled from the one above into the
  * other of two scratch buffers. */
-static skp_status encode_levels(const uint8_t *rgb, tex_etc1_mipmaps *out, uint8_t *scratch[2], skp_error *err)
+static skp_status encode_levels(const uint8_t *rgb, tex_etc1_mipmaps *out, uint8_t *scratch[2],
+				const tex_encode_progress *progress, skp_error *err)
 {
 	const tex_mip_chain *chain = &out->chain;
 	const uint8_t *level_rgb = rgb;
+	long done = 0;
 	for (int i = 0; i < chain->levels; i++) {
 		const tex_level *l = &chain->level[i];
-		skp_status st = tex_encode_etc1_image(level_rgb, l->width, l->height,
-						      out->blocks + l->etc1_offset, l->etc1_bytes, err);
-		if (st == SKP_OK && i + 1 < chain->levels)
-			st = tex_downsample_rgb8(level_rgb, l->width, l->height, scratch[i % 2],
-						 chain->level[i + 1].rgb8_bytes, err);
+		encode_blocks(level_rgb, l->width, l->height, out->blocks + l->etc1_offset, progress, &done,
+			      (long)(chain->etc1_bytes / TEX_ETC1_BLOCK_BYTES));
+		if (i + 1 == chain->levels)
+			break;
+		skp_status st = tex_downsample_rgb8(level_rgb, l->width, l->height, scratch[i % 2],
+						    chain->level[i + 1].rgb8_bytes, err);
 		if (st != SKP_OK)
 			return st;
 		level_rgb = scratch[i % 2];
@@ -65,8 +81,8 @@ static skp_status encode_levels(const uint8_t *rgb, tex_etc1_mipmaps *out, uint8
 	return SKP_OK;
 }
 
-skp_status tex_encode_etc1_mipmaps(const uint8_t *rgb, int width, int height,
-				   tex_etc1_mipmaps *out, skp_error *err)
+skp_status tex_encode_etc1_mipmaps(const uint8_t *rgb, int width, int height, tex_etc1_mipmaps *out,
+				   const tex_encode_progress *progress, skp_error *err)
 {
 	out->blocks = NULL;
 	skp_status st = tex_mip_chain_make(width, height, &out->chain, err);
@@ -79,7 +95,7 @@ skp_status tex_encode_etc1_mipmaps(const uint8_t *rgb, int width, int height,
 	if (!scratch[0] || !scratch[1] || !out->blocks)
 		st = skp_fail(err, SKP_ERR_LIMIT, 0, "out of memory for a %dx%d texture's mip chain", width, height);
 	else
-		st = encode_levels(rgb, out, scratch, err);
+		st = encode_levels(rgb, out, scratch, progress, err);
 	free(scratch[0]);
 	free(scratch[1]);
 	if (st != SKP_OK)

@@ -7,6 +7,8 @@
 #include <strings.h>
 #include <unistd.h>
 
+#include "board_limits.h"
+
 #include <assimp/material.h>
 #include <assimp/texture.h>
 #include <png.h>
@@ -127,18 +129,19 @@ static int load_texture(rig_colour_work *w, const struct aiScene *sc, const char
 	return 1;
 }
 
-/* The cached texture at (u, v), bilinear, repeating; linear RGB. */
-static void sample(const rig_colour_work *w, float u, float v, float rgb[3])
+/* An RGBA8 texture (top row first) at (u, v), v down from the top,
+ * bilinear, repeating; linear RGB. */
+static void sample(const uint8_t *rgba, int w, int h, float u, float v, float rgb[3])
 {
-	float x = (u - floorf(u)) * (float)w->w - 0.5f, y = (v - floorf(v)) * (float)w->h - 0.5f;
+	float x = (u - floorf(u)) * (float)w - 0.5f, y = (v - floorf(v)) * (float)h - 0.5f;
 	int x0 = (int)floorf(x), y0 = (int)floorf(y);
 	float fx = x - (float)x0, fy = y - (float)y0;
 	for (int c = 0; c < 3; c++)
 		rgb[c] = 0.0f;
 	for (int k = 0; k < 4; k++) {
-		int xi = ((x0 + (k & 1)) % w->w + w->w) % w->w, yi = ((y0 + (k >> 1)) % w->h + w->h) % w->h;
+		int xi = ((x0 + (k & 1)) % w + w) % w, yi = ((y0 + (k >> 1)) % h + h) % h;
 		float f = ((k & 1) ? fx : 1.0f - fx) * ((k >> 1) ? fy : 1.0f - fy);
-		const uint8_t *p = w->rgba + 4 * ((size_t)yi * (size_t)w->w + (size_t)xi);
+		const uint8_t *p = rgba + 4 * ((size_t)yi * (size_t)w + (size_t)xi);
 		for (int c = 0; c < 3; c++)
 			rgb[c] += f * to_linear((float)p[c] / 255.0f);
 	}
@@ -168,12 +171,62 @@ static int texture_path(const struct aiMaterial *mat, struct aiString *path)
 		       aiReturn_SUCCESS;
 }
 
-int rig_colour_mesh(rig_colour_work *w, const struct aiScene *sc, const struct aiMesh *am, uint8_t (*out)[3])
+void rig_colour_tally(rig_colour_work *w, const struct aiScene *sc, const struct aiMesh *am)
+{
+	const struct aiMaterial *mat = am->mMaterialIndex < sc->mNumMaterials ? sc->mMaterials[am->mMaterialIndex] : NULL;
+	struct aiString path = { 0 };
+	if (!mat || !am->mTextureCoords[0] || !texture_path(mat, &path) || path.length >= sizeof w->tally[0].path)
+		return;
+	int k = 0;
+	while (k < w->tally_count && strcmp(w->tally[k].path, path.data))
+		k++;
+	if (k == w->tally_count) {
+		if (k == (int)(sizeof w->tally / sizeof w->tally[0]))
+			return; /* a rig of many textures: the first 16 are candidates enough */
+		memcpy(w->tally[k].path, path.data, path.length + 1);
+		w->tally[k].verts = 0;
+		w->tally_count++;
+	}
+	w->tally[k].verts += am->mNumVertices;
+}
+
+void rig_colour_choose(rig_colour_work *w)
+{
+	w->gpu_path[0] = '\0';
+	if (SKP_MAX_TEXTURE_SIDE <= 0)
+		return; /* the board draws vertex colours alone: every texture baked */
+	long most = 0;
+	for (int k = 0; k < w->tally_count; k++)
+		if (w->tally[k].verts > most) {
+			most = w->tally[k].verts;
+			memcpy(w->gpu_path, w->tally[k].path, sizeof w->gpu_path);
+		}
+}
+
+/* The cached texture becomes the GPU's, the first time a mesh uses it; 0
+ * when there is no memory for the copy (the texture is baked then). */
+static int keep_for_gpu(rig_colour_work *w, const char *material)
+{
+	if (w->gpu_rgba)
+		return 1;
+	size_t bytes = 4 * (size_t)w->w * (size_t)w->h;
+	w->gpu_rgba = malloc(bytes);
+	if (!w->gpu_rgba)
+		return 0;
+	memcpy(w->gpu_rgba, w->rgba, bytes);
+	w->gpu_w = w->w;
+	w->gpu_h = w->h;
+	snprintf(w->gpu_material, sizeof w->gpu_material, "%.63s", material);
+	return 1;
+}
+
+int rig_colour_mesh(rig_colour_work *w, const struct aiScene *sc, const struct aiMesh *am, uint8_t (*out)[3],
+		    float (*uv)[2], uint8_t *sampled)
 {
 	const struct aiMaterial *mat = am->mMaterialIndex < sc->mNumMaterials ? sc->mMaterials[am->mMaterialIndex] : NULL;
 	struct aiString name = { 0 }, path = { 0 };
 	float base[3] = { 1.0f, 1.0f, 1.0f };
-	int own = 0, textured = 0;
+	int own = 0, textured = 0, gpu = 0;
 	if (mat) {
 		aiGetMaterialString(mat, AI_MATKEY_NAME, &name);
 		/* the library's stand-in for a mesh without a material is unnamed
@@ -181,13 +234,18 @@ int rig_colour_mesh(rig_colour_work *w, const struct aiScene *sc, const struct a
 		own = material_colour(mat, base) && name.length && strcmp(name.data, AI_DEFAULT_MATERIAL_NAME) != 0;
 		if (texture_path(mat, &path) && am->mTextureCoords[0])
 			textured = load_texture(w, sc, path.data, name.data);
+		gpu = textured && w->gpu_path[0] && !strcmp(path.data, w->gpu_path) && keep_for_gpu(w, name.data);
 	}
 	const struct aiColor4D *vc = am->mColors[0];
+	const struct aiVector3D *tc = am->mTextureCoords[0];
 	for (unsigned v = 0; v < am->mNumVertices; v++) {
 		float rgb[3] = { base[0], base[1], base[2] }, t[3];
-		if (textured) {
-			/* the library turns glTF's top-left UV origin to OpenGL's bottom-left */
-			sample(w, am->mTextureCoords[0][v].x, 1.0f - am->mTextureCoords[0][v].y, t);
+		/* the library turns glTF's top-left UV origin to OpenGL's bottom-left */
+		uv[v][0] = gpu ? tc[v].x : 0.0f;
+		uv[v][1] = gpu ? tc[v].y : 0.0f;
+		sampled[v] = (uint8_t)gpu;
+		if (textured && !gpu) {
+			sample(w->rgba, w->w, w->h, tc[v].x, 1.0f - tc[v].y, t);
 			for (int c = 0; c < 3; c++)
 				rgb[c] *= t[c];
 		}
@@ -203,6 +261,20 @@ int rig_colour_mesh(rig_colour_work *w, const struct aiScene *sc, const struct a
 	own = own || textured || vc;
 	w->coloured += own;
 	return own;
+}
+
+void rig_colour_bake(const uint8_t *rgba, int w, int h, const float (*uv)[2], uint8_t *sampled, uint8_t (*colour)[3],
+		     int n)
+{
+	for (int v = 0; v < n; v++) {
+		if (!sampled[v])
+			continue;
+		float t[3];
+		sample(rgba, w, h, uv[v][0], 1.0f - uv[v][1], t);
+		for (int c = 0; c < 3; c++)
+			colour[v][c] = to_srgb(to_linear((float)colour[v][c] / 255.0f) * t[c]);
+		sampled[v] = 0;
+	}
 }
 
 void rig_colour_done(rig_colour_work *w)

@@ -1,10 +1,15 @@
 /* A rigged mesh's colours as its file has them: each vertex's base colour
- * from its material's base (or diffuse) colour, times its base colour
- * texture sampled at the vertex's first UV (PNG, embedded in the file or
- * beside it), times its vertex colour, stored sRGB per vertex
- * (mesh.colour). Per vertex, not per texel: a palette texture (Soldier's)
- * or flat materials (Paladin's 700) come out whole; a photographic one
- * (CesiumMan's suit) as its colours at the vertices. */
+ * from its material's base (or diffuse) colour, times its vertex colour,
+ * stored sRGB per vertex (mesh.colour), times its base colour texture (PNG,
+ * embedded in the file or beside it) at the vertex's first UV.
+ *   - One texture goes to the GPU, the one the most vertices use
+ *     (rig_colour_tally, rig_colour_choose), when the board keeps textures
+ *     (SKP_MAX_TEXTURE_SIDE): its vertices get their UV and sampled set, and
+ *     its pixels are kept (gpu_rgba) for the image (rig_texture.h), drawn
+ *     per texel (CesiumMan's suit whole, not its colours at the vertices).
+ *   - Any other is baked: sampled at the vertex into its colour, which
+ *     keeps a palette texture (Soldier's) or flat materials (Paladin's 700)
+ *     whole. */
 #ifndef RIG_COLOUR_H
 #define RIG_COLOUR_H
 
@@ -24,16 +29,45 @@ typedef struct rig_colour_work {
 	char cached[512];
 	uint8_t *rgba;
 	int w, h;
+	/* the textures the meshes use, by how many vertices (rig_colour_tally) */
+	int tally_count;
+	struct rig_colour_tally {
+		char path[512];
+		long verts;
+	} tally[16];
+	/* the one the GPU draws (rig_colour_choose; "" none), and once a mesh
+	 * using it is read, its pixels: RGBA8, top row first, owned here */
+	char gpu_path[512];
+	char gpu_material[64];
+	uint8_t *gpu_rgba;
+	int gpu_w, gpu_h;
 } rig_colour_work;
 
-/* Writes the base colour of each of am's vertices to out (am->mNumVertices
- * rows); returns 1 when the mesh's material, texture or vertex colours say
- * anything (0: the library's default material and nothing else). A
- * texture that cannot be read is noted in w (problems, problem) and the
- * material's colour used. */
-int rig_colour_mesh(rig_colour_work *w, const struct aiScene *sc, const struct aiMesh *am, uint8_t (*out)[3]);
+/* Counts am's vertices under its material's base colour texture, before
+ * the meshes are read. */
+void rig_colour_tally(rig_colour_work *w, const struct aiScene *sc, const struct aiMesh *am);
 
-/* Frees the cached texture. */
+/* The texture with the most vertices becomes the GPU's, when the board
+ * keeps one. */
+void rig_colour_choose(rig_colour_work *w);
+
+/* Writes the base colour of each of am's vertices to out, and its UV and
+ * whether it samples the GPU's texture to uv and sampled (am->mNumVertices
+ * rows each); returns 1 when the mesh's material, texture or vertex
+ * colours say anything (0: the library's default material and nothing
+ * else). A texture that cannot be read is noted in w (problems, problem)
+ * and the material's colour used. */
+int rig_colour_mesh(rig_colour_work *w, const struct aiScene *sc, const struct aiMesh *am, uint8_t (*out)[3],
+		    float (*uv)[2], uint8_t *sampled);
+
+/* Multiplies the RGBA8 texture (w x h, top row first) at each vertex's uv
+ * (GL's, bottom left (0, 0), repeating) into the colour of the n vertices
+ * whose sampled is 1, and clears sampled: the GPU's texture baked, when
+ * it cannot go to the GPU after all. */
+void rig_colour_bake(const uint8_t *rgba, int w, int h, const float (*uv)[2], uint8_t *sampled, uint8_t (*colour)[3],
+		     int n);
+
+/* Frees the cached texture (the GPU's stays: the caller takes gpu_rgba). */
 void rig_colour_done(rig_colour_work *w);
 
 #endif

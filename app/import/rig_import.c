@@ -16,6 +16,7 @@
 #include "rig_limits.h"
 #include "rig_names.h"
 #include "rig_rest.h"
+#include "rig_seam.h"
 #include "rig_weld.h"
 
 
@@ -129,7 +130,7 @@ static skp_status add_mesh(import_walk *w, const struct aiMesh *am, const struct
 	skp_status rc = place_vertices(w, am, node_m, base);
 	if (rc != SKP_OK)
 		return rc;
-	if (rig_colour_mesh(&w->colour, w->scene, am, m->colour + base))
+	if (rig_colour_mesh(&w->colour, w->scene, am, m->colour + base, m->uv + base, m->sampled + base))
 		m->coloured = 1;
 	rigid_part *last = w->rigid_count ? &w->rigid[w->rigid_count - 1] : NULL;
 	if (am->mNumBones || part < 0)
@@ -179,6 +180,19 @@ static int note_part(import_walk *w, const struct aiNode *node, const struct aiM
 	r->part_skinned[r->part_count] = am->mNumBones > 0;
 	r->part_joint[r->part_count] = r->part_near[r->part_count] = -1;
 	return r->part_count++;
+}
+
+/* The textures the meshes walk_node will read use, counted first: the GPU
+ * draws the one most of them use (rig_colour.h). */
+static void tally_node(import_walk *w, const struct aiNode *node)
+{
+	for (unsigned k = 0; k < node->mNumMeshes; k++) {
+		const struct aiMesh *am = w->scene->mMeshes[node->mMeshes[k]];
+		if ((am->mPrimitiveTypes & aiPrimitiveType_TRIANGLE) && wanted(w, node, am))
+			rig_colour_tally(&w->colour, w->scene, am);
+	}
+	for (unsigned c = 0; c < node->mNumChildren; c++)
+		tally_node(w, node->mChildren[c]);
 }
 
 static skp_status walk_node(import_walk *w, const struct aiNode *node, const struct aiMatrix4x4 *parent_m)
@@ -381,6 +395,20 @@ static const struct aiScene *read_as(const char *path, const char *hint, unsigne
 	return scene;
 }
 
+/* The GPU's texture from the colour work to the scene. */
+static void keep_texture(import_walk *w)
+{
+	rig_scene *r = w->out;
+	rig_colour_work *c = &w->colour;
+	r->texture_rgba = c->gpu_rgba;
+	r->texture_w = c->gpu_w;
+	r->texture_h = c->gpu_h;
+	memcpy(r->texture_path, c->gpu_path, sizeof r->texture_path);
+	memcpy(r->texture_material, c->gpu_material, sizeof r->texture_material);
+	r->mesh->textured = c->gpu_rgba != NULL;
+	c->gpu_rgba = NULL;
+}
+
 skp_status rig_import(const char *path, const char *group, rig_scene *out, skp_error *err)
 {
 	return rig_import_as(path, NULL, group, out, err);
@@ -389,8 +417,7 @@ skp_status rig_import(const char *path, const char *group, rig_scene *out, skp_e
 skp_status rig_import_as(const char *path, const char *hint, const char *group, rig_scene *out, skp_error *err)
 {
 	mesh *m = out->mesh;
-	memset(out, 0, offsetof(rig_scene, infl_count));
-	out->mesh = m;
+	rig_scene_reset(out);
 	m->vert_count = m->tri_count = m->coloured = m->textured = 0;
 	uint64_t size;
 	mem_cap cap;
@@ -417,6 +444,8 @@ skp_status rig_import_as(const char *path, const char *hint, const char *group, 
 	w.colour.model_path = path;
 	struct aiMatrix4x4 id;
 	aiIdentityMatrix4(&id);
+	tally_node(&w, scene->mRootNode);
+	rig_colour_choose(&w.colour);
 	skp_status rc = walk_node(&w, scene->mRootNode, &id);
 	if (rc == SKP_OK) {
 		link_parents(scene, scene->mRootNode, -1, out);
@@ -426,6 +455,7 @@ skp_status rig_import_as(const char *path, const char *hint, const char *group, 
 	free(w.rest_pos);
 	rig_colour_done(&w.colour);
 	aiReleaseImport(scene);
+	keep_texture(&w);
 	out->texture_problems = w.colour.problems;
 	memcpy(out->texture_problem, w.colour.problem, sizeof out->texture_problem);
 	out->textured = w.colour.textured;
@@ -437,5 +467,6 @@ skp_status rig_import_as(const char *path, const char *hint, const char *group, 
 		return skp_fail(err, SKP_ERR_SYNTAX, 0, "no triangles in the file");
 	rig_weld(out);
 	mesh_compute_normals(m);
+	rig_seam_normals(out, m);
 	return SKP_OK;
 }

@@ -11,15 +11,19 @@
 #include "setup_mesh_place.h"
 #include "cli_error.h"
 #include "cli_inputs.h"
+#include "cli_progress.h"
 #include "cli_quiet.h"
 #include "clock.h"
 #include "mesh_normals.h"
 #include "rig_align.h"
 #include "rig_biped.h"
+#include "rig_colour.h"
 #include "rig_makehuman.h"
 #include "rig_map_file.h"
 #include "rig_pose.h"
 #include "rig_proportions.h"
+#include "rig_seam.h"
+#include "rig_texture.h"
 #include "rig_weights.h"
 
 /* Everything here is tens of MB with the host's limits: static. */
@@ -106,6 +110,18 @@ static const char *import_advice(mesh_format fmt)
 	}
 }
 
+/* The GPU's texture as a message names it: its file, or which of the
+ * file's own ("*0" to the library). */
+static const char *texture_name(void)
+{
+	static char name[600];
+	if (scene.texture_path[0] == '*')
+		snprintf(name, sizeof name, "the file's embedded texture %.20s", scene.texture_path + 1);
+	else
+		snprintf(name, sizeof name, "texture '%.512s'", scene.texture_path);
+	return name;
+}
+
 /* Where the body's colours come from, and the textures that could not be
  * read (said once, with how many more). */
 static void say_colours(const char *path, const mesh *m)
@@ -113,7 +129,12 @@ static void say_colours(const char *path, const mesh *m)
 	if (scene.texture_problems)
 		fprintf(stderr, "%s: warning: %s%s\n", path, scene.texture_problem,
 			scene.texture_problems > 1 ? " (and more textures like it)" : "");
-	if (m->coloured)
+	if (m->textured)
+		fprintf(cli_note(), "%s: colours from its materials; %s (material '%s', %dx%d) drawn by the "
+			"GPU%s, %d seam vertices kept apart\n", path, texture_name(), scene.texture_material,
+			scene.texture_w, scene.texture_h, scene.textured > 1 ? ", the others per vertex" : "",
+			scene.seams);
+	else if (m->coloured)
 		fprintf(cli_note(), "%s: colours from its materials%s (drawn per vertex)\n", path,
 			scene.textured ? " and textures" : "");
 	else
@@ -124,6 +145,7 @@ static int import_scene(const bind_args *a, const char *path, bound_body *body)
 {
 	skp_error err;
 	scene.mesh = &body->mesh;
+	body->texture.width = body->texture.height = 0;
 	if (a->rig && setup_bind_is_interchange(path)) {
 		fprintf(stderr, "%s: --rig gives an OBJ its MakeHuman rig; this mesh has its own joints (leave "
 			"--rig out)\n", path);
@@ -252,6 +274,7 @@ static int align_mesh(const char *path, bound_body *body)
 	for (int j = 0; j < scene.joint_count; j++)
 		scene.joint[j].head = rig_align_point(&al, scene.joint[j].head);
 	mesh_compute_normals(m);
+	rig_seam_normals(&scene, m);
 	body->fitted = 1;
 	fprintf(cli_note(), "%s: put on the skeleton by its joints: turned %.0f degrees%s, scaled by %.4g, moved by "
 		"%.4g %.4g %.4g; joints off by %.3g after (--no-fit keeps the mesh as it is)\n", path,
@@ -346,9 +369,10 @@ static int bind_unrigged(const bind_args *a, const char *path, bound_body *body)
 	if (scene.joint_count)
 		fprintf(stderr, "%s: its arms and legs did not map onto the skeleton (a --joint-map FILE would map "
 			"them): bound like an OBJ, weights computed\n", path);
-	if (setup_place_mesh(a, path, body) < 0)
+	if (setup_place_mesh(a, path, body) < 0 || setup_bind_weights(a, 0, path, body) < 0)
 		return -1;
-	return setup_bind_weights(a, 0, path, body);
+	rig_seam_weights(&scene, &body->weights);
+	return 0;
 }
 
 /* A rig that is not a biped's (rig_biped.h): 0 when it is, or --force
@@ -401,10 +425,52 @@ int rig_load_mesh(const bind_args *a, const char *path, bound_body *body)
 		fprintf(cli_note(), "%s: weights computed from the skeleton (--weights mesh keeps the file's own)\n", path);
 	int rc = a->weights_mesh ? mesh_weights(a, path, body) : setup_bind_weights(a, 0, path, body);
 	if (rc == 0) {
+		rig_seam_weights(&scene, &body->weights);
 		say_loose_parts(path);
 		keep_held(body, body->automatic);
 	}
 	return rc;
+}
+
+static void progress_step(void *ctx, long done, long total)
+{
+	cli_progress *pr = ctx;
+	pr->total = total;
+	cli_progress_step(pr, done);
+}
+
+void rig_load_texture(const char *path, bound_body *body)
+{
+	skp_error err;
+	mesh *m = &body->mesh;
+	if (!m->textured || body->texture.width > 0)
+		return;         /* none, or encoded already */
+	if (!scene.texture_rgba) {
+		m->textured = 0; /* another body's import released it: the vertices keep their colours */
+		return;
+	}
+	uint64_t t0 = clock_now_ns();
+	static cli_progress pr;
+	cli_progress_start(&pr, "texture", "ETC1 blocks", 0);
+	tex_encode_progress told = { progress_step, &pr };
+	skp_status rc = rig_texture_make(scene.texture_rgba, scene.texture_w, scene.texture_h, &body->texture, &told,
+					 &err);
+	cli_progress_clear(&pr);
+	if (rc != SKP_OK) {
+		fprintf(stderr, "%s: warning: %s of material '%s': %s: drawn per vertex\n", path, texture_name(),
+			scene.texture_material, err.msg);
+		rig_colour_bake(scene.texture_rgba, scene.texture_w, scene.texture_h, (const float (*)[2])m->uv,
+				m->sampled, m->colour, m->vert_count);
+		m->textured = 0;
+	} else {
+		const tex_image *t = &body->texture;
+		fprintf(cli_note(), "%s: %s packed at %dx%d%s: ETC1, %d mip levels, %lu bytes (encoded in %.1f s)\n",
+			path, texture_name(), t->width, t->height,
+			t->width != scene.texture_w || t->height != scene.texture_h ? " (the board's power-of-two sides)"
+										     : "",
+			t->chain.levels, (unsigned long)t->chain.etc1_bytes, (double)(clock_now_ns() - t0) / 1e9);
+	}
+	rig_scene_release(&scene);
 }
 
 int rig_bind_load(const bind_args *a, const char *asf, const char *obj, bound_body *body)

@@ -26,4 +26,10 @@ int rig_load_mesh(const bind_args *a, const char *path, bound_body *body);
  * reporting the error. */
 int rig_bind_load(const bind_args *a, const char *asf, const char *obj, bound_body *body);
 
+/* After rig_bind_load, for an image or a render: the texture the GPU
+ * draws (rig_colour.h) encoded into body->texture (rig_texture.h), said
+ * on stderr; when that fails, a warning, and it is baked into the vertex
+ * colours. Nothing to do for a body without one. */
+void rig_load_texture(const char *path, bound_body *body);
+
 #endif

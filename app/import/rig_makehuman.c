@@ -89,8 +89,7 @@ skp_status rig_mh_skeleton(json_object *root, const obj_work *obj, rig_scene *ou
 	if (!bones || !joints)
 		return skp_syntax(err, 0, "expected a MakeHuman skeleton: an object with \"bones\" and \"joints\"");
 	mesh *m = out->mesh;
-	memset(out, 0, offsetof(rig_scene, infl_count));
-	out->mesh = m;
+	rig_scene_reset(out);
 	memset(out->infl_count, 0, sizeof out->infl_count[0] * (size_t)m->vert_count);
 	json_object_object_foreach(bones, name, bone) {
 		skp_status rc = add_bone(out, name, bone, joints, obj, err);

@@ -1,7 +1,26 @@
 /* What every rig reader (rig_import.c, rig_makehuman.c) fills a scene with. */
 #include "rig_scene.h"
 
+#include <stddef.h>
+#include <stdlib.h>
 #include <string.h>
+
+void rig_scene_release(rig_scene *r)
+{
+	free(r->texture_rgba);
+	r->texture_rgba = NULL;
+	r->texture_w = r->texture_h = 0;
+}
+
+void rig_scene_reset(rig_scene *r)
+{
+	mesh *m = r->mesh;
+	rig_scene_release(r);
+	memset(r, 0, offsetof(rig_scene, infl_count));
+	r->mesh = m;
+	r->seams = 0;
+	r->texture_path[0] = r->texture_material[0] = '\0';
+}
 
 int rig_find_joint(const rig_scene *r, const char *name)
 {

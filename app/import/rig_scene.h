@@ -42,14 +42,26 @@ typedef struct rig_scene {
 	int texture_problems;   /* textures that could not be read: the material's colour used */
 	char texture_problem[320]; /* the first, naming texture and material */
 	int rest_posed;         /* the skin's bind pose was no pose of its skeleton: the nodes' rest pose taken */
+	/* with mesh->textured, the texture the GPU draws (rig_colour.h): RGBA8,
+	 * top row first; allocated, freed by the next import or
+	 * rig_scene_release */
+	uint8_t *texture_rgba;
+	int texture_w, texture_h;
+	char texture_path[512];
+	char texture_material[64];
+	/* vertices kept apart from one at their place with the same weights
+	 * only because their UVs differ (a seam of the GPU's texture): each
+	 * vertex's first such twin, itself when it has none (rig_weld.h) */
+	int seams;
+	int seam_lead[SKP_MAX_VERTS];
 } rig_scene;
 
 /* Reads path: every triangle mesh (only those named group, when not NULL)
  * in the skin's bind pose, each moved by its node's transform (or, when
  * that bind pose is no pose of its skeleton, in the nodes' rest pose:
  * rig_rest.h), a part without a skin weighted wholly to the joint above
- * it, vertices at the same place with the same weights welded, and the
- * joints of their skins. Fails with a message naming what went wrong: a file the library
+ * it, vertices at the same place with the same weights welded (unless
+ * their UVs on the GPU's texture differ), and the joints of their skins. Fails with a message naming what went wrong: a file the library
  * cannot read, no triangles, a group that is not there (listing the
  * meshes), too many vertices, joints or triangles. */
 skp_status rig_import(const char *path, const char *group, rig_scene *out, skp_error *err);
@@ -58,6 +70,14 @@ skp_status rig_import(const char *path, const char *group, rig_scene *out, skp_e
  * extension of the format its content has ("zae" for a zip archive), so
  * the library reads it as that. hint NULL: rig_import. */
 skp_status rig_import_as(const char *path, const char *hint, const char *group, rig_scene *out, skp_error *err);
+
+/* Frees what an import allocated (the GPU's texture). */
+void rig_scene_release(rig_scene *r);
+
+/* Empties r for a reader to fill: its mesh pointer kept, the rest of its
+ * header cleared, what it held released (the influences are the reader's
+ * to clear, vertex by vertex). */
+void rig_scene_reset(rig_scene *r);
 
 /* Index of the joint named name, or -1. */
 int rig_find_joint(const rig_scene *r, const char *name);

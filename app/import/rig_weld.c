@@ -42,33 +42,51 @@ static int same_place(vec3 a, vec3 b)
 	return a.x == b.x && a.y == b.y && a.z == b.z;
 }
 
-/* remap[v]: the kept vertex v becomes (first of its place and weights) */
-static void find_twins(rig_scene *r, const int *order, int *remap)
+/* Whether two vertices show the same texels: neither samples the GPU's
+ * texture, or both do at the same UV (a seam's two sides do not). */
+static int same_surface(const mesh *m, int a, int b)
+{
+	if (m->sampled[a] != m->sampled[b])
+		return 0;
+	return !m->sampled[a] || (m->uv[a][0] == m->uv[b][0] && m->uv[a][1] == m->uv[b][1]);
+}
+
+/* remap[v]: the kept vertex v becomes (first of its place, weights and
+ * texels); lead[v]: the first kept one of its place and weights. */
+static void find_twins(rig_scene *r, const int *order, int *remap, int *lead)
 {
 	const vec3 *p = r->mesh->pos;
 	int n = r->mesh->vert_count;
 	for (int i = 0; i < n; i++) {
 		int v = order[i];
-		remap[v] = v;
-		for (int k = i - 1; k >= 0 && same_place(p[order[k]], p[v]); k--)
-			if (remap[order[k]] == order[k] && same_weights(r, order[k], v)) {
-				remap[v] = order[k]; /* the lower index: ties sort by index */
+		remap[v] = lead[v] = v;
+		for (int k = i - 1; k >= 0 && same_place(p[order[k]], p[v]); k--) {
+			int u = order[k];
+			if (remap[u] != u || !same_weights(r, u, v))
+				continue;
+			lead[v] = u; /* ties sort by index: the last one met is the lowest */
+			if (same_surface(r->mesh, u, v)) {
+				remap[v] = u;
 				break;
 			}
+		}
 	}
 }
 
-static void compact(rig_scene *r, int *remap)
+static void compact(rig_scene *r, int *remap, const int *lead)
 {
 	mesh *m = r->mesh;
 	int n = m->vert_count, kept = 0;
 	int *slot = malloc((size_t)n * sizeof *slot);
 	if (!slot)
 		return;
+	r->seams = 0;
 	for (int v = 0; v < n; v++) {
 		if (remap[v] != v)
 			continue;
 		slot[v] = kept;
+		r->seam_lead[kept] = slot[lead[v]];
+		r->seams += lead[v] != v;
 		m->pos[kept] = m->pos[v];
 		memcpy(m->colour[kept], m->colour[v], sizeof m->colour[v]);
 		memcpy(m->uv[kept], m->uv[v], sizeof m->uv[v]);
@@ -93,14 +111,16 @@ void rig_weld(rig_scene *r)
 {
 	int n = r->mesh->vert_count;
 	int *order = malloc((size_t)n * sizeof *order), *remap = malloc((size_t)n * sizeof *remap);
-	if (order && remap) {
+	int *lead = malloc((size_t)n * sizeof *lead);
+	if (order && remap && lead) {
 		for (int v = 0; v < n; v++)
 			order[v] = v;
 		sort_scene = r;
 		qsort(order, (size_t)n, sizeof *order, by_place);
-		find_twins(r, order, remap);
-		compact(r, remap);
+		find_twins(r, order, remap, lead);
+		compact(r, remap, lead);
 	}
 	free(order);
 	free(remap);
+	free(lead);
 }

@@ -8,6 +8,7 @@
 #include <string.h>
 
 #include "compare.h"
+#include "rig_load.h"
 #include "motion_file.h"
 #include "report_chart.h"
 #include "report_render.h"
@@ -183,7 +184,7 @@ int compare_render_scenes(compare_run *c, const compare_args *a)
 	if (a->renders <= 0)
 		return 0;
 	/* the ground under the skin, which bulges out of the bend */
-	if (report_view_open(view, &c->sk, &sc->mesh, -2.0f * SCENE_RADIUS, REPORT_IMG_W, REPORT_IMG_H) < 0) {
+	if (report_view_open(view, &c->sk, &sc->mesh, NULL, -2.0f * SCENE_RADIUS, REPORT_IMG_W, REPORT_IMG_H) < 0) {
 		r->render_note = "no headless display could be opened (surfaceless EGL, OSMesa)";
 		return 0;
 	}
@@ -288,7 +289,9 @@ int compare_render_stills(compare_run *c, const compare_args *a)
 	char hud0[96], hud1[96], near0[128], near1[128];
 	if (r->still_count == 0)
 		return 0;
-	if (report_view_open(view, &c->sk, &c->body.mesh, c->floor_y, REPORT_IMG_W, REPORT_IMG_H) < 0) {
+	rig_load_texture(a->mesh, &c->body); /* the stills only: drawn as skinplay would */
+	if (report_view_open(view, &c->sk, &c->body.mesh, c->body.mesh.textured ? &c->body.texture : NULL, c->floor_y,
+			     REPORT_IMG_W, REPORT_IMG_H) < 0) {
 		r->render_note = "no headless display could be opened (surfaceless EGL, OSMesa)";
 		return 0;
 	}

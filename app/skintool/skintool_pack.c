@@ -371,6 +371,7 @@ static int write_image(const pack_args *p, const bound_body *body, storage_file 
 	}
 	skp_status rc = skp_image_write_begin(&w, &sf->bd, (uint64_t)p->sequence, id, &body->skel, &err);
 	w.parity_group = p->parity;
+	w.texture = body->mesh.textured ? &body->texture : NULL;
 	if (rc != SKP_OK ||
 	    skp_image_write_bind(&w, &body->mesh, &body->weights, bound_pose_values(body),
 				 body->pose_frame, &err) != SKP_OK) {
@@ -404,8 +405,10 @@ int cmd_pack(int argc, char **argv)
 		return rc < 0;
 	p.bind.gate_motion = p.amc;
 	p.bind.gate_motion_count = p.amc_count;
-	if (rig_bind_load(&p.bind, p.asf, p.mesh, body) < 0 ||
-	    cli_image_out_open(&out, p.out, (uint32_t)p.block_size) < 0)
+	if (rig_bind_load(&p.bind, p.asf, p.mesh, body) < 0)
+		return 1;
+	rig_load_texture(p.mesh, body);
+	if (cli_image_out_open(&out, p.out, (uint32_t)p.block_size) < 0)
 		return 1;
 	if (write_image(&p, body, &out.sf) < 0) {
 		cli_image_out_abort(&out);

@@ -29,7 +29,8 @@ static int open_display(report_view *v, int w, int h)
 	return 0;
 }
 
-int report_view_open(report_view *v, const runtime_skin *sk, const mesh *m, float floor_y, int w, int h)
+int report_view_open(report_view *v, const runtime_skin *sk, const mesh *m, const tex_image *tex, float floor_y,
+		     int w, int h)
 {
 	skp_error err;
 	if (w > REPORT_VIEW_MAX_W || h > REPORT_VIEW_MAX_H) {
@@ -52,6 +53,8 @@ int report_view_open(report_view *v, const runtime_skin *sk, const mesh *m, floa
 		return -1;
 	}
 	render_set_colours(&v->r, m->coloured ? (const uint8_t (*)[3])m->colour : NULL);
+	if (tex && render_set_texture(&v->r, m, tex, 1, &err) != SKP_OK)
+		fprintf(stderr, "skintool compare: renderer: %s: the body drawn in its colours\n", err.msg);
 	v->started = 1;
 	v->scene = 0;
 	render_set_units(&v->r, (float)(10.0 * skel_unit_cm(sk->skel)));

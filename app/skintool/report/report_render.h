@@ -61,10 +61,11 @@ typedef struct report_view {
 } report_view;
 
 /* Opens the display at w x h and uploads the body sk skins (m's
- * triangles; floor_y the ground height); the difference view's legend in
- * millimetres at the skeleton's size (skel_unit_cm). Returns 0 or -1
- * (reported). */
-int report_view_open(report_view *v, const runtime_skin *sk, const mesh *m, float floor_y, int w, int h);
+ * triangles and colours, tex its texture or NULL; floor_y the ground
+ * height); the difference view's legend in millimetres at the skeleton's
+ * size (skel_unit_cm). Returns 0 or -1 (reported). */
+int report_view_open(report_view *v, const runtime_skin *sk, const mesh *m, const tex_image *tex, float floor_y,
+		     int w, int h);
 
 /* A synthetic scene rather than a body: the main camera frames the
  * posed bodies of the next report_view_pose, the close-up shows a sphere
