@@ -201,6 +201,24 @@ static long scan_raw(storage_file *sf)
 	return bad;
 }
 
+/* The body's texture as the device keeps it, and how many vertices
+ * sample it. */
+static void say_texture(const bound_body *body)
+{
+	const mesh *m = &body->mesh;
+	if (body->texture_skipped)
+		printf("texture: larger than this board keeps (%d pixels a side): the body plays in its colours\n",
+		       SKP_MAX_TEXTURE_SIDE);
+	if (!m->textured)
+		return;
+	int sampled = 0;
+	for (int v = 0; v < m->vert_count; v++)
+		sampled += m->sampled[v] != 0;
+	printf("texture: %dx%d ETC1, %d mip levels, %lu bytes; %d of %d vertices sample it\n", body->texture.width,
+	       body->texture.height, body->texture.chain.levels, (unsigned long)body->texture.chain.etc1_bytes, sampled,
+	       m->vert_count);
+}
+
 /* What skinplay checks before playing (show_accept.c), so that info and
  * skinplay never disagree: 1 when the body is refused (nothing would play)
  * or a clip cannot play (each listed). */
@@ -227,6 +245,7 @@ static int accept(show_image *s)
 		printf("%s\n", err.msg);
 	}
 	printf("accept: skeleton and body good, %d of %d clips can play\n", playable, s->im.clip_count);
+	say_texture(body);
 	return playable < s->im.clip_count;
 }
 

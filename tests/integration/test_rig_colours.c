@@ -211,6 +211,14 @@ static void test_played_in_colour(void **state)
 	const char *img = test_scratch("cesium.skn"), *out = test_scratch("frames");
 	assert_int_equal(test_run("%s pack -q assets/cmu/02.asf assets/cmu/02_01.amc --mesh tests/data/rigs/CesiumMan.glb "
 				  "--weights mesh -o '%s' >/dev/null 2>&1", test_tool_path("skintool"), img), 0);
+	const char *info = test_scratch("cesium_info.txt");
+	assert_int_equal(test_run("%s info '%s' > '%s' 2>&1", test_tool_path("skintool"), img, info), 0);
+	size_t n;
+	char *said = test_read_file(info, &n);
+	assert_non_null(said);
+	if (!strstr(said, "texture: 1024x1024 ETC1, 11 mip levels, 699064 bytes; 2612 of 2612 vertices sample it"))
+		fail_msg("skintool info said:\n%s", said);
+	free(said);
 	assert_int_equal(test_run("%s --image '%s' --platform surfaceless --size 480x540 --hud off --frames 1 --out '%s' "
 				  ">/dev/null 2>&1", test_tool_path("skinplay"), img, out), 0);
 	char png[600];
