@@ -13,6 +13,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 #include <sys/wait.h>
 #include <time.h>
 #include <unistd.h>
@@ -28,13 +29,34 @@ void test_assert_contains_all(const char *path, const char *const *texts)
 
 int test_wait_for_text(const char *path, const char *text, double seconds)
 {
+	return test_wait_for_text_after(path, 0, text, seconds) >= 0;
+}
+
+static long text_after(const char *path, long from, const char *text)
+{
+	size_t size = 0;
+	char *d = test_read_file(path, &size);
+	const char *at = d && (size_t)from <= size ? strstr(d + from, text) : NULL;
+	long found = at ? (long)(at - d) : -1;
+	free(d);
+	return found;
+}
+
+long test_wait_for_text_after(const char *path, long from, const char *text, double seconds)
+{
 	for (int i = 0; i < (int)(seconds * 10); i++) {
-		int found = test_file_contains(path, text);
-		if (found)
-			return 1;
+		long found = text_after(path, from, text);
+		if (found >= 0)
+			return found;
 		usleep(100000);
 	}
-	return 0;
+	return -1;
+}
+
+long test_file_size(const char *path)
+{
+	struct stat st;
+	return stat(path, &st) == 0 ? (long)st.st_size : 0;
 }
 
 void test_write_text(const char *path, const char *text)

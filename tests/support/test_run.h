@@ -17,6 +17,13 @@ const char *test_scratch(const char *name);
  * writes as it runs); 1 when it came. */
 int test_wait_for_text(const char *path, const char *text, double seconds);
 
+/* The same, looking only past the file's first `from` bytes (what a log
+ * said after a given moment); the offset of the text, or -1. */
+long test_wait_for_text_after(const char *path, long from, const char *text, double seconds);
+
+/* The file's size now (0 when it does not exist). */
+long test_file_size(const char *path);
+
 /* Writes text to path (the test fails when it cannot). */
 void test_write_text(const char *path, const char *text);
 
