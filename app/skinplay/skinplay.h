@@ -118,6 +118,13 @@ void camera_pointer(skinplay *p);
 void camera_key(skinplay *p, unsigned act);
 const char *keys_legend(const skinplay *p, int engineer);
 
+/* skinplay_hud.c: the captured frame on screen (its number in the file,
+ * the clip time; 0 while the bind pose is held), and the HUD's text for
+ * this frame in f, the engineer's lines written into lines. */
+long shown_number(const skinplay *p);
+double shown_time(const skinplay *p);
+void hud_text(skinplay *p, render_frame *f, double fps, char lines[3][128]);
+
 /* Selects clip c of the image as the show does (the next that can play
  * when it cannot), crossfading from the pose shown. */
 void clips_select(skinplay *p, int c);
