@@ -6,11 +6,25 @@
 #include "rig_topology.h"
 
 #define BIPED_SPINE_LEGS_COS (-0.5f) /* 120 degrees or more between spine and legs */
-#define BIPED_HANDS_UP       0.25f  /* hands this share of the leg's length above the feet */
+#define BIPED_HANDS_UP       0.25f  /* hands this share of the legs' height above the feet */
 
 static vec3 at(const rig_scene *r, int j)
 {
 	return r->joint[j].head;
+}
+
+/* The file's axis (+-X, +-Y or +-Z) nearest v: its vertical when v runs
+ * from the hips to the feet. A quadruped's hind legs may slope back far
+ * enough to pass the spine test, and along their own line its forepaws,
+ * lying ahead of them, would count as raised; along the file's vertical
+ * they stand on the floor. */
+static vec3 nearest_axis(vec3 v)
+{
+	float a[3] = { fabsf(v.x), fabsf(v.y), fabsf(v.z) };
+	int k = a[1] > a[0] ? 1 : 0;
+	k = a[2] > a[k] ? 2 : k;
+	float s = (k == 0 ? v.x : k == 1 ? v.y : v.z) < 0.0f ? -1.0f : 1.0f;
+	return (vec3){ k == 0 ? s : 0.0f, k == 1 ? s : 0.0f, k == 2 ? s : 0.0f };
 }
 
 /* A limb's end as mapped: the first of the slots given that is. */
@@ -56,12 +70,18 @@ int rig_biped_check(const rig_scene *r, const rig_map *m, char *why, size_t n)
 			 "or more): a quadruped, or a figure lying down", acos((double)c) * 180.0 / M_PI);
 		return 0;
 	}
-	float hands = 0.0f;
+	vec3 vertical = nearest_axis(down);
+	float drop = vec3_dot(down, vertical), hands = -INFINITY;
 	for (int k = 0; k < 2; k++)
-		hands = fmaxf(hands, -vec3_dot(vec3_sub(at(r, p.arm_end[k]), feet), down) / (leg * leg));
-	if (hands < BIPED_HANDS_UP) {
-		snprintf(why, n, "its arms reach the floor like its legs (their ends %.0f%% of a leg above the feet, a "
-			 "biped's %.0f%% or more): a quadruped", 100.0 * (double)hands, 100.0 * (double)BIPED_HANDS_UP);
+		hands = fmaxf(hands, -vec3_dot(vec3_sub(at(r, p.arm_end[k]), feet), vertical) / drop);
+	if (!(hands >= BIPED_HANDS_UP)) {
+		char where[64];
+		if (hands > 0.0f)
+			snprintf(where, sizeof where, "%.0f%% of the legs' height above the feet", 100.0 * (double)hands);
+		else
+			snprintf(where, sizeof where, "%.0f%% of the legs' height below the feet", -100.0 * (double)hands);
+		snprintf(why, n, "its arms reach the floor like its legs (their ends %s, a biped's %.0f%% or more "
+			 "above): a quadruped", where, 100.0 * (double)BIPED_HANDS_UP);
 		return 0;
 	}
 	return 1;

@@ -4,9 +4,10 @@
  *   - the legs hang from the hips the other way from the spine (hips to
  *     head): at least 120 degrees between them; a quadruped's spine lies
  *     level, square to its legs;
- *   - the arms' ends are off the floor: a quarter of the leg's length or
- *     more above the feet, along the legs; a quadruped's forelegs stand on
- *     it.
+ *   - the arms' ends are off the floor: a quarter of the legs' height or
+ *     more above the feet, along the file's axis nearest the legs' line
+ *     (its vertical); a quadruped's forelegs stand on it, even where its
+ *     hind legs slope back enough to pass the first test (Khronos' Fox).
  * A rig without two limb pairs is not judged here (the shape of its mesh
  * is, bind_shape.h, when it binds like an OBJ). */
 #ifndef RIG_BIPED_H
