@@ -152,9 +152,21 @@ static void map_spine(const rig_scene *r, const skel_pose *p, rig_map *m)
 	m->bone[m->head] = parts->spine[parts->spine_count - 1];
 }
 
+/* The mapped joint toes or fingers hang from (the foot, the hand), or -1:
+ * without it a toe or finger mapped alone would turn with the skeleton's
+ * foot or hand while the rest of the foot or hand turns with the shin or
+ * forearm, and the skin between them tears (RobotExpressive has no hand
+ * joint: its Ring1.L, a Daz finger's name, beside palms and fingers
+ * following LowerArm.L tore in CMU's kick). */
+static int digits_holder(const rig_scene *r, const rig_map *m, rig_side side, rig_slot slot)
+{
+	int j = named_joint(r, m, side, slot == RIG_TOE ? RIG_FOOT : RIG_HAND);
+	return j >= 0 && m->bone[j] >= 0 ? j : -1;
+}
+
 /* A limb part maps from its shallowest joint of that name; toes and
- * fingers from every one (MakeHuman's five toes, a hand's four fingers:
- * the skeleton has one bone for them all). */
+ * fingers from every one under the foot or hand (MakeHuman's five toes, a
+ * hand's four fingers: the skeleton has one bone for them all). */
 static void map_limbs(const rig_scene *r, rig_map *m)
 {
 	for (int side = RIG_LEFT; side <= RIG_RIGHT; side++)
@@ -162,9 +174,13 @@ static void map_limbs(const rig_scene *r, rig_map *m)
 			int j = named_joint(r, m, (rig_side)side, (rig_slot)slot), b = m->parts.bone[side][slot];
 			if (j < 0 || b < 0)
 				continue;
-			m->bone[j] = b;
-			for (int k = 0; (slot == RIG_TOE || slot == RIG_FINGERS) && k < r->joint_count; k++)
-				if ((int)m->name[k].slot == slot && (int)m->name[k].side == side)
+			if (slot != RIG_TOE && slot != RIG_FINGERS) {
+				m->bone[j] = b;
+				continue;
+			}
+			int holder = digits_holder(r, m, (rig_side)side, (rig_slot)slot);
+			for (int k = 0; holder >= 0 && k < r->joint_count; k++)
+				if ((int)m->name[k].slot == slot && (int)m->name[k].side == side && is_ancestor(r, holder, k))
 					m->bone[k] = b;
 		}
 }
