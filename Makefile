@@ -70,7 +70,7 @@ LDLIBS   := -lm -pthread $(PLAT_LIBS)
 $(foreach m,$(APP_MODULES),$(eval OBJ_$(m) := $(SRC_$(m):%.c=$$(OUT)/%.o)))
 $(foreach m,$(CORE_MODULES),$(eval $(OBJ_$(m)): MOD_FLAGS = $(call mod_inc,$(m)) $$(CFLAGS_CORE)))
 $(foreach m,$(HOST_MODULES),$(eval $(OBJ_$(m)): MOD_FLAGS = $(call mod_inc,$(m)) $$(CFLAGS_HOST)))
-# libassimp and json-c: only the importer compiles against them and only skintool (and
+# libassimp, json-c and libjpeg: only the importer compiles against them and only skintool (and
 # the tests) link them.
 IMPORT_CFLAGS := $(shell $(PKG_CONFIG) --cflags $(PC_import) 2>/dev/null)
 IMPORT_LIBS   := $(shell $(PKG_CONFIG) --libs $(PC_import) 2>/dev/null)

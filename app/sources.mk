@@ -113,9 +113,10 @@ PC_platform            := libpng
 # built where the board asks for it (board.mk: VIDEO) and pkg-config finds
 # all four; only skinplay (and the tests) link them, skintool does not.
 PC_video               := libavcodec libavformat libavutil libswscale
-# The host tool's importer (app/import): the Open Asset Import Library, and
-# json-c for MakeHuman's rig files.
-PC_import              := assimp json-c
+# The host tool's importer (app/import): the Open Asset Import Library,
+# json-c for MakeHuman's rig files and libjpeg for JPEG textures (PNG ones
+# through libpng, which platform links already).
+PC_import              := assimp json-c libjpeg
 # What platform code may include from app/: base, and the modules of the
 # port headers it implements (image: blockdev.h; kiosk: the button port,
 # input_port.h; render: the GL entry points, gl_api.h).

@@ -4,10 +4,10 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <strings.h>
 #include <unistd.h>
 
 #include "board_limits.h"
+#include "rig_jpeg.h"
 
 #include <assimp/material.h>
 #include <assimp/texture.h>
@@ -63,6 +63,10 @@ static int finish_png(rig_colour_work *w, png_image *img, const char **why)
 	return 1;
 }
 
+/* What a texture that is neither says: the decoders are picked by the
+ * bytes, whatever the name or the file's format hint says. */
+#define NOT_READ "is neither PNG nor JPEG (PNG and JPEG textures are read)"
+
 static int png_from_memory(rig_colour_work *w, const void *bytes, size_t n, const char **why)
 {
 	png_image img;
@@ -75,16 +79,74 @@ static int png_from_memory(rig_colour_work *w, const void *bytes, size_t n, cons
 	return finish_png(w, &img, why);
 }
 
-static int png_from_file(rig_colour_work *w, const char *file, const char **why)
+static int png_from_stream(rig_colour_work *w, FILE *f, const char **why)
 {
 	png_image img;
 	memset(&img, 0, sizeof img);
 	img.version = PNG_IMAGE_VERSION;
-	if (!png_image_begin_read_from_file(&img, file)) {
-		*why = access(file, R_OK) == 0 ? "is not a PNG it can read" : "is missing";
+	if (!png_image_begin_read_from_stdio(&img, f)) {
+		*why = "is not a PNG it can read";
 		return 0;
 	}
 	return finish_png(w, &img, why);
+}
+
+/* A JPEG from the bytes, or (bytes NULL) from the file f, in the cache. */
+static int jpeg_read(rig_colour_work *w, const void *bytes, size_t n, FILE *f, const char **why)
+{
+	rig_jpeg_pixels px;
+	if (!rig_jpeg_read(bytes, n, f, RIG_TEXTURE_MAX_SIDE, &px, why))
+		return 0;
+	w->rgba = px.rgba;
+	w->w = px.w;
+	w->h = px.h;
+	return 1;
+}
+
+static int is_png(const void *bytes, size_t n)
+{
+	return n >= 8 && !png_sig_cmp((png_const_bytep)bytes, 0, 8);
+}
+
+/* An embedded texture's bytes (a glb's image, a data URI) in the cache. */
+static int decode_memory(rig_colour_work *w, const void *bytes, size_t n, const char **why)
+{
+	if (is_png(bytes, n))
+		return png_from_memory(w, bytes, n, why);
+	if (rig_jpeg_is(bytes, n))
+		return jpeg_read(w, bytes, n, NULL, why);
+	*why = NOT_READ;
+	return 0;
+}
+
+/* A texture file's first bytes, then the file from its start through the
+ * decoder they name. */
+static int decode_stream(rig_colour_work *w, FILE *f, const char **why)
+{
+	uint8_t magic[8];
+	size_t n = fread(magic, 1, sizeof magic, f);
+	if (fseek(f, 0, SEEK_SET) != 0) {
+		*why = "cannot be read";
+		return 0;
+	}
+	if (is_png(magic, n))
+		return png_from_stream(w, f, why);
+	if (rig_jpeg_is(magic, n))
+		return jpeg_read(w, NULL, 0, f, why);
+	*why = NOT_READ;
+	return 0;
+}
+
+static int decode_file(rig_colour_work *w, const char *file, const char **why)
+{
+	FILE *f = fopen(file, "rb");
+	if (!f) {
+		*why = access(file, F_OK) == 0 ? "cannot be read" : "is missing";
+		return 0;
+	}
+	int ok = decode_stream(w, f, why);
+	fclose(f);
+	return ok;
 }
 
 /* The texture named path (embedded "*N", or a file beside the model) in
@@ -105,21 +167,18 @@ static int load_texture(rig_colour_work *w, const struct aiScene *sc, const char
 		const struct aiTexture *t = i < sc->mNumTextures ? sc->mTextures[i] : NULL;
 		if (!t)
 			why = "is not in the file";
-		else if (t->mHeight || strncmp(t->achFormatHint, "png", 3))
-			why = "is not PNG (PNG textures are read)";
+		else if (t->mHeight)
+			why = NOT_READ;   /* texels the library decoded itself (mHeight rows) */
 		else
-			ok = png_from_memory(w, t->pcData, t->mWidth, &why);
+			ok = decode_memory(w, t->pcData, t->mWidth, &why);
 	} else {
 		char file[1024];
 		const char *slash = strrchr(w->model_path, '/');
 		int dir = slash ? (int)(slash - w->model_path + 1) : 0;
-		const char *dot = strrchr(path, '.');
 		if ((size_t)snprintf(file, sizeof file, "%.*s%s", dir, w->model_path, path) >= sizeof file)
 			why = "has too long a path";
-		else if (dot && strcasecmp(dot, ".png"))
-			why = "is not PNG (PNG textures are read)";
 		else
-			ok = png_from_file(w, file, &why);
+			ok = decode_file(w, file, &why);
 	}
 	if (!ok) {
 		note(w, material, path, why);

@@ -1,7 +1,8 @@
 /* A rigged mesh's colours as its file has them: each vertex's base colour
  * from its material's base (or diffuse) colour, times its vertex colour,
- * stored sRGB per vertex (mesh.colour), times its base colour texture (PNG,
- * embedded in the file or beside it) at the vertex's first UV.
+ * stored sRGB per vertex (mesh.colour), times its base colour texture (PNG
+ * or JPEG, told by its bytes, embedded in the file or beside it; JPEG through
+ * rig_jpeg.h) at the vertex's first UV.
  *   - One texture goes to the GPU, the one the most vertices use
  *     (rig_colour_tally, rig_colour_choose), when the board keeps textures
  *     (SKP_MAX_TEXTURE_SIDE): its vertices get their UV and sampled set, and

@@ -18,6 +18,6 @@ SIMD          ?= avx2
 # clock; chromium: the report
 # page; ffmpeg: ffprobe reads the videos back) and the packaging tools (`make deb`).
 DEB_PKGS      := gcc libc6-dev make pkg-config libcmocka-dev libegl-dev libgles-dev libosmesa6-dev \
-                 libgbm-dev libdrm-dev libgpiod-dev libpng-dev libx11-dev libassimp-dev libjson-c-dev xvfb xdotool faketime chromium assimp-testmodels \
+                 libgbm-dev libdrm-dev libgpiod-dev libpng-dev libjpeg-dev libx11-dev libassimp-dev libjson-c-dev xvfb xdotool faketime chromium assimp-testmodels \
                  dpkg-dev help2man lintian \
                  $(if $(filter no,$(VIDEO)),,libavcodec-dev libavformat-dev libavutil-dev libswscale-dev ffmpeg)

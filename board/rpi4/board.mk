@@ -18,7 +18,7 @@ INPUTS        := gpio keyboard script
 # No AVX2 on ARM: NEON float kernels (app/skin/kernels/skin_neon.c), or SIMD=scalar.
 SIMD          ?= neon
 # Debian packages `make deps` installs (board/deps.mk), building on the Pi.
-LIB_PKGS      := libcmocka-dev libegl-dev libgles-dev libgbm-dev libdrm-dev libgpiod-dev libpng-dev libassimp-dev libjson-c-dev
+LIB_PKGS      := libcmocka-dev libegl-dev libgles-dev libgbm-dev libdrm-dev libgpiod-dev libpng-dev libjpeg-dev libassimp-dev libjson-c-dev
 DEB_PKGS      := gcc libc6-dev make pkg-config $(LIB_PKGS) dpkg-dev help2man lintian
 
 # Cross build from another architecture (Debian 12 x86-64): the compiler,
