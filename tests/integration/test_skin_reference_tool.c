@@ -123,6 +123,11 @@ static void test_skintool_skin_output(void **state)
 	skinref_body tool = { .skel = &cmu.skel, .bind = &cmu.rest };
 	skinref_run_kernels(&kern, &tool, &pose, in.vert_count);
 	for (int a = 0; a < SKIN_ALGO_COUNT; a++) {
+		/* under the sanitizers or an emulator (each run binds the body
+		 * again: minutes under qemu) the two DQBS kernels, float and
+		 * fixed-point; the native run checks LBS too */
+		if (test_slow() && a == SKIN_LBS)
+			continue;
 		snprintf(cmd, sizeof cmd, "%s skin %s %s %s --frame 100 --algo %s -o %s", test_tool_path("skintool"),
 			 asf, amc, body_obj, skin_algo_name((skin_algo)a), out_obj);
 		sh(cmd);
