@@ -75,13 +75,9 @@ int rig_biped_check(const rig_scene *r, const rig_map *m, char *why, size_t n)
 	for (int k = 0; k < 2; k++)
 		hands = fmaxf(hands, -vec3_dot(vec3_sub(at(r, p.arm_end[k]), feet), vertical) / drop);
 	if (!(hands >= BIPED_HANDS_UP)) {
-		char where[64];
-		if (hands > 0.0f)
-			snprintf(where, sizeof where, "%.0f%% of the legs' height above the feet", 100.0 * (double)hands);
-		else
-			snprintf(where, sizeof where, "%.0f%% of the legs' height below the feet", -100.0 * (double)hands);
-		snprintf(why, n, "its arms reach the floor like its legs (their ends %s, a biped's %.0f%% or more "
-			 "above): a quadruped", where, 100.0 * (double)BIPED_HANDS_UP);
+		snprintf(why, n, "its arms reach the floor like its legs (their ends %.0f%% of the legs' height %s the "
+			 "feet, a biped's %.0f%% or more above): a quadruped", 100.0 * fabs((double)hands),
+			 hands > 0.0f ? "above" : "below", 100.0 * (double)BIPED_HANDS_UP);
 		return 0;
 	}
 	return 1;

@@ -8,6 +8,7 @@
 
 #include "board_limits.h"
 #include "rig_jpeg.h"
+#include "rig_limits.h"
 
 #include <assimp/material.h>
 #include <assimp/texture.h>
@@ -45,9 +46,8 @@ static void drop_cache(rig_colour_work *w)
  * why says what went wrong. */
 static int finish_png(rig_colour_work *w, png_image *img, const char **why)
 {
-	if (img->width > RIG_TEXTURE_MAX_SIDE || img->height > RIG_TEXTURE_MAX_SIDE) {
+	if (!rig_limits_texture_fits(img->width, img->height, why)) {
 		png_image_free(img);
-		*why = "is larger than 8192 pixels a side";
 		return 0;
 	}
 	img->format = PNG_FORMAT_RGBA;
@@ -95,7 +95,7 @@ static int png_from_stream(rig_colour_work *w, FILE *f, const char **why)
 static int jpeg_read(rig_colour_work *w, const void *bytes, size_t n, FILE *f, const char **why)
 {
 	rig_jpeg_pixels px;
-	if (!rig_jpeg_read(bytes, n, f, RIG_TEXTURE_MAX_SIDE, &px, why))
+	if (!rig_jpeg_read(bytes, n, f, &px, why))
 		return 0;
 	w->rgba = px.rgba;
 	w->w = px.w;

@@ -18,8 +18,6 @@
 
 #include <assimp/scene.h>
 
-#define RIG_TEXTURE_MAX_SIDE 8192 /* a texture wider or taller is not read */
-
 typedef struct rig_colour_work {
 	const char *model_path;   /* external textures are found beside it */
 	int textured;             /* meshes that had a texture sampled */

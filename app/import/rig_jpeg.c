@@ -6,6 +6,8 @@
 
 #include <jpeglib.h>
 
+#include "rig_limits.h"
+
 #define JPEG_DAMAGED "is truncated or damaged"
 
 int rig_jpeg_is(const void *bytes, size_t n)
@@ -55,8 +57,7 @@ static void read_rows(struct jpeg_decompress_struct *cinfo, rig_jpeg_pixels *out
  * back to the setjmp below. Only out (the caller's) and cinfo's own
  * memory change after it, so nothing here is left indeterminate by the
  * jump. */
-static int decode(struct jpeg_decompress_struct *cinfo, jpeg_failure *fail, int max_side, rig_jpeg_pixels *out,
-		  const char **why)
+static int decode(struct jpeg_decompress_struct *cinfo, jpeg_failure *fail, rig_jpeg_pixels *out, const char **why)
 {
 	if (setjmp(fail->jump)) {
 		free(out->rgba);
@@ -65,10 +66,8 @@ static int decode(struct jpeg_decompress_struct *cinfo, jpeg_failure *fail, int 
 		return 0;
 	}
 	jpeg_read_header(cinfo, TRUE);
-	if (cinfo->image_width > (JDIMENSION)max_side || cinfo->image_height > (JDIMENSION)max_side) {
-		*why = "is larger than 8192 pixels a side";
+	if (!rig_limits_texture_fits(cinfo->image_width, cinfo->image_height, why))
 		return 0;
-	}
 	if (cinfo->jpeg_color_space == JCS_CMYK || cinfo->jpeg_color_space == JCS_YCCK) {
 		*why = "is a CMYK JPEG (RGB and grey ones are read)";
 		return 0;
@@ -95,7 +94,7 @@ static int decode(struct jpeg_decompress_struct *cinfo, jpeg_failure *fail, int 
 	return 1;
 }
 
-int rig_jpeg_read(const void *bytes, size_t n, FILE *f, int max_side, rig_jpeg_pixels *out, const char **why)
+int rig_jpeg_read(const void *bytes, size_t n, FILE *f, rig_jpeg_pixels *out, const char **why)
 {
 	struct jpeg_decompress_struct cinfo;
 	jpeg_failure fail;
@@ -115,7 +114,7 @@ int rig_jpeg_read(const void *bytes, size_t n, FILE *f, int max_side, rig_jpeg_p
 		jpeg_mem_src(&cinfo, (const unsigned char *)bytes, (unsigned long)n);
 	else
 		jpeg_stdio_src(&cinfo, f);
-	int ok = decode(&cinfo, &fail, max_side, out, why);
+	int ok = decode(&cinfo, &fail, out, why);
 	jpeg_destroy_decompress(&cinfo);
 	return ok;
 }

@@ -24,9 +24,9 @@ typedef struct rig_jpeg_pixels {
 } rig_jpeg_pixels;
 
 /* Decodes the n bytes at bytes, or (bytes NULL) the file f from where it
- * stands, refusing one wider or taller than max_side from its header, before
- * any pixel is decoded. 1 and out filled, or 0, out->rgba NULL and *why a
+ * stands, refusing one larger than the importer reads (rig_limits.h) from
+ * its header, before any pixel is decoded. 1 and out filled, or 0, out->rgba NULL and *why a
  * reason to follow the texture's name ("is truncated or damaged"). */
-int rig_jpeg_read(const void *bytes, size_t n, FILE *f, int max_side, rig_jpeg_pixels *out, const char **why);
+int rig_jpeg_read(const void *bytes, size_t n, FILE *f, rig_jpeg_pixels *out, const char **why);
 
 #endif

@@ -55,3 +55,11 @@ size_t rig_limits_budget(uint64_t size)
 	uint64_t b = RIG_IMPORT_BASE_BYTES + size * RIG_IMPORT_BYTES_PER_BYTE;
 	return b > (uint64_t)SIZE_MAX / 2 ? SIZE_MAX / 2 : (size_t)b;
 }
+
+int rig_limits_texture_fits(uint32_t w, uint32_t h, const char **why)
+{
+	if (w <= RIG_TEXTURE_MAX_SIDE && h <= RIG_TEXTURE_MAX_SIDE)
+		return 1;
+	*why = "is larger than 8192 pixels a side";
+	return 0;
+}

@@ -22,4 +22,10 @@ skp_status rig_limits_check(const char *path, uint64_t *size, skp_error *err);
 /* The import's memory budget for a file of size bytes. */
 size_t rig_limits_budget(uint64_t size);
 
+#define RIG_TEXTURE_MAX_SIDE 8192 /* a texture wider or taller is not read */
+
+/* Whether a texture of w x h pixels (from its header, before any pixel is
+ * decoded) may be read: 1, or 0 with why the words every decoder says. */
+int rig_limits_texture_fits(uint32_t w, uint32_t h, const char **why);
+
 #endif
