@@ -2,25 +2,25 @@
 # cross-built), skinplay (the device program, its demo, config, unit and
 # udev rule) and skinplay-tools (skintool: the host tool, which alone needs
 # Assimp), made with dpkg-deb from one `make install` tree: objects rebuilt
-# with Debian's hardening flags (dpkg-buildflags) in their own directory,
+# with Debian's hardening flags (dpkg-buildflags, harden.mk) in their own
+# directory (or, with HARDEN=1, the build as it is: it has them),
 # Depends computed from each package's binary (dpkg-shlibdeps), so the same
 # recipe gives libgpiod2 on bookworm and libgpiod3 on trixie. lintian, when
 # installed, checks both (errors fail the build).
-DEB_ARCH       ?= $(shell dpkg --print-architecture)
 DEB_MAINTAINER ?= skinplay developers <skinplay@example.org>
 DEB_PACKAGES   := skinplay skinplay-tools
 DEB_FILES      := $(foreach p,$(DEB_PACKAGES),$(BUILD)/$(p)_$(VERSION)_$(DEB_ARCH).deb)
 DEB_DIR        := $(BUILD)/deb
-DEB_ENV        := DEB_HOST_ARCH=$(DEB_ARCH) DEB_BUILD_MAINT_OPTIONS=hardening=+all
-DEB_FLAGS       = $(shell $(DEB_ENV) dpkg-buildflags --get $(1))
+# With HARDEN=1 the build itself has the flags: it is packaged as it is.
+DEB_SUB_MAKE    = $(if $(filter 1,$(HARDEN)),$(SUB_MAKE),$(SUB_MAKE) BUILD=$(DEB_DIR)/build \
+                  EXTRA_CFLAGS="$(DEB_CFLAGS)" EXTRA_LDFLAGS="$(DEB_LDFLAGS)")
 # dpkg 1.22 (trixie) packages units and udev rules under /usr/lib; 1.21
 # (bookworm) under /lib, as each release's debhelper and lintian expect.
 DEB_LIBDIR      = $(if $(shell dpkg --compare-versions "$$(dpkg-query -W -f='$${Version}' dpkg)" ge 1.22 && echo y),/usr/lib,/lib)
 
 .PHONY: deb deb-tree
 deb:
-	@$(SUB_MAKE) BUILD=$(DEB_DIR)/build SKP_DEB_OUT=$(abspath $(BUILD)) SKP_DEB_DIR=$(abspath $(DEB_DIR)) \
-	  EXTRA_CFLAGS="$(call DEB_FLAGS,CFLAGS) $(call DEB_FLAGS,CPPFLAGS)" EXTRA_LDFLAGS="$(call DEB_FLAGS,LDFLAGS)" deb-tree
+	@$(DEB_SUB_MAKE) SKP_DEB_OUT=$(abspath $(BUILD)) SKP_DEB_DIR=$(abspath $(DEB_DIR)) deb-tree
 	@if command -v lintian >/dev/null 2>&1; then \
 	  echo "deb: lintian $(notdir $(DEB_FILES))"; lintian --fail-on error $(DEB_FILES) && echo "deb: lintian: no errors"; \
 	else echo "deb: lintian is not installed: not checked"; fi
