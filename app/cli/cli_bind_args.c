@@ -23,7 +23,7 @@ const cli_opt bind_opts[] = {
 	{ "bind-pose", 0, "P.amc[:F]|rest", OPT_BIND_POSE, "bind in frame F of P (its first without :F) or the rest pose (default: the mesh's own pose)" },
 	{ "weights", 0, "W.csv|mesh", OPT_WEIGHTS, "read the weights, or keep a rigged mesh's own (default: computed)" },
 	{ "joint-map", 0, "FILE", OPT_JOINT_MAP, "a rigged mesh's joints onto skeleton bones (JOINT = BONE lines)" },
-	{ "rig", 0, "FILE.mhskel", OPT_RIG, "the OBJ's MakeHuman skeleton, with the weights file it names" },
+	{ "rig", 0, "FILE.mhskel", OPT_RIG, "the OBJ's MakeHuman skeleton, with the weights file it names (the OBJ's mtllib colours it)" },
 	{ "balance", 0, "on|off", OPT_BALANCE, "volume-balance computed weights (default: on for the generated body)" },
 	{ "force", 0, NULL, OPT_FORCE, "bind even when the quality check fails (torn skin, parts off their bones)" },
 	{ NULL, 0, NULL, 0, NULL },

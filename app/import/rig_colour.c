@@ -336,6 +336,31 @@ void rig_colour_bake(const uint8_t *rgba, int w, int h, const float (*uv)[2], ui
 	}
 }
 
+int rig_colour_file(rig_colour_work *w, const char *file, const char **why)
+{
+	if (w->rgba && !strcmp(w->cached, file))
+		return 1;
+	drop_cache(w);
+	if (strlen(file) >= sizeof w->cached) {
+		*why = "has too long a path";
+		return 0;
+	}
+	if (!decode_file(w, file, why))
+		return 0;
+	memcpy(w->cached, file, strlen(file) + 1);
+	return 1;
+}
+
+void rig_colour_texel(const rig_colour_work *w, float u, float v, float rgb[3])
+{
+	sample(w->rgba, w->w, w->h, u, 1.0f - v, rgb);
+}
+
+uint8_t rig_colour_srgb(float linear)
+{
+	return to_srgb(linear);
+}
+
 void rig_colour_done(rig_colour_work *w)
 {
 	drop_cache(w);

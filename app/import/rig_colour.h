@@ -66,6 +66,20 @@ int rig_colour_mesh(rig_colour_work *w, const struct aiScene *sc, const struct a
 void rig_colour_bake(const uint8_t *rgba, int w, int h, const float (*uv)[2], uint8_t *sampled, uint8_t (*colour)[3],
 		     int n);
 
+/* For readers of other files (an OBJ's .mtl: rig_obj_colour.h). The
+ * texture file (PNG or JPEG by its bytes, within rig_limits_texture_fits)
+ * decoded into w's cache (kept while the next call names the same file);
+ * 0 with *why (a phrase: "is missing", "is truncated or damaged", ...)
+ * when it cannot be read. */
+int rig_colour_file(rig_colour_work *w, const char *file, const char **why);
+
+/* The cached texture at GL's (u, v) (bottom left (0, 0), repeating),
+ * bilinear, linear RGB. */
+void rig_colour_texel(const rig_colour_work *w, float u, float v, float rgb[3]);
+
+/* A linear channel (clamped to 0..1) as sRGB. */
+uint8_t rig_colour_srgb(float linear);
+
 /* Frees the cached texture (the GPU's stays: the caller takes gpu_rgba). */
 void rig_colour_done(rig_colour_work *w);
 

@@ -19,6 +19,7 @@
 #include "rig_biped.h"
 #include "rig_colour.h"
 #include "rig_makehuman.h"
+#include "rig_obj_colour.h"
 #include "rig_map_file.h"
 #include "rig_pose.h"
 #include "rig_proportions.h"
@@ -40,6 +41,19 @@ static const char *weights_beside(const char *rig, const char *name)
 	if (snprintf(path, sizeof path, "%.*s%s", dir, rig, name) >= (int)sizeof path)
 		return NULL;
 	return path;
+}
+
+static void say_colours(const char *path, const mesh *m);
+
+/* The OBJ's materials (its mtllib), each problem a warning. */
+static void obj_colours(const char *path, const obj_work *w, const mesh *m)
+{
+	static rig_obj_colour_report rep;
+	rig_obj_colour(path, w, &scene, &rep);
+	for (int k = 0; k < rep.warnings && k < RIG_OBJ_WARNINGS; k++)
+		fprintf(stderr, "%s: warning: %s\n", path, rep.warning[k]);
+	if (w->mtllib[0])
+		say_colours(path, m);
 }
 
 static json_object *load_json(const char *path)
@@ -85,6 +99,7 @@ static int import_makehuman(const bind_args *a, const char *path, bound_body *bo
 	}
 	fprintf(cli_note(), "%s: group '%s', %d vertices, %d triangles; %s: %d bones, weights from %s\n", path, group,
 		body->mesh.vert_count, body->mesh.tri_count, a->rig, scene.joint_count, wpath);
+	obj_colours(path, w, &body->mesh);
 	rc = 0;
 out:
 	json_object_put(wt);

@@ -95,10 +95,17 @@ static skp_status normal_line(obj_state *st, char **t, int n)
 
 static skp_status texcoord_line(obj_state *st, char **t, int n)
 {
-	skp_status rc = parse_coords(st, t, n, 1, 3, NULL);
-	if (!rc)
-		st->w->file_texcoords++;
-	return rc;
+	obj_work *w = st->w;
+	vec3 c = vec3_make(0.0f, 0.0f, 0.0f);
+	skp_status rc = parse_coords(st, t, n, 1, 3, &c);
+	if (rc)
+		return rc;
+	if (w->file_texcoords < OBJ_MAX_FILE_TEXCOORDS) {
+		w->vt[w->file_texcoords][0] = c.x;
+		w->vt[w->file_texcoords][1] = c.y;
+	}
+	w->file_texcoords++;
+	return SKP_OK;
 }
 
 /* 1-based, or negative counting back from the last one defined so far */
@@ -129,7 +136,7 @@ static skp_status parse_corner(obj_state *st, char *tok, obj_corner *c)
 		*slash = '\0';
 		part[i] = slash + 1;
 	}
-	long v = 0, vt = 0, vn = -1; /* set on every path: c is filled even on error */
+	long v = 0, vt = -1, vn = -1; /* set on every path: c is filled even on error */
 	skp_status rc = resolve(st, part[0], "vertex", st->w->file_verts, &v);
 	if (!rc && parts >= 2 && (parts == 2 || part[1][0] != '\0'))
 		rc = resolve(st, part[1], "texture", st->w->file_texcoords, &vt);
@@ -137,6 +144,7 @@ static skp_status parse_corner(obj_state *st, char *tok, obj_corner *c)
 		rc = resolve(st, part[2], "normal", st->w->file_normals, &vn);
 	c->v = (uint32_t)v;
 	c->vn = (int32_t)vn;
+	c->vt = vt < OBJ_MAX_FILE_TEXCOORDS ? (int32_t)vt : -1;
 	return rc;
 }
 
@@ -169,6 +177,11 @@ static skp_status add_tri(obj_state *st, const obj_corner *a, const obj_corner *
 	if (m->tri_count >= st->max_tris)
 		return skp_fail(st->err, SKP_ERR_LIMIT, st->line,
 				"more than %d triangles (board limit SKP_MAX_TRIS)", st->max_tris);
+	obj_work *w = st->w;
+	w->tri_vt[m->tri_count][0] = a->vt;
+	w->tri_vt[m->tri_count][1] = b->vt;
+	w->tri_vt[m->tri_count][2] = c->vt;
+	w->tri_mtl[m->tri_count] = (int16_t)w->current_mtl;
 	uint32_t *t = m->tri[m->tri_count++];
 	t[0] = a->v;
 	t[1] = b->v;
@@ -266,10 +279,52 @@ static skp_status group_line(obj_state *st, char **t, int n)
 	return SKP_OK;
 }
 
+/* A material's name: the words after the keyword, one space between
+ * (names with spaces are written so); 0 when there are none or too many. */
+static int material_name(char **t, int n, char *out)
+{
+	size_t len = 0;
+	for (int i = 1; i < n; i++) {
+		size_t k = strlen(t[i]);
+		if (len + k + 2 > SKP_MAX_NAME)
+			return 0;
+		if (i > 1)
+			out[len++] = ' ';
+		memcpy(out + len, t[i], k);
+		len += k;
+	}
+	out[len] = '\0';
+	return len > 0;
+}
+
+/* `usemtl NAME`: the next faces' material; `mtllib FILE`: the first
+ * library named is kept (a bare one, or a name too long, says nothing). */
+static void material_line(obj_state *st, char **t, int n)
+{
+	obj_work *w = st->w;
+	char name[SKP_MAX_NAME];
+	int named = material_name(t, n, name);
+	if (t[0][0] == 'm') {
+		if (named && !w->mtllib[0])
+			memcpy(w->mtllib, name, sizeof name);
+		return;
+	}
+	w->current_mtl = -1;
+	for (int i = 0; named && i < w->mtl_count; i++)
+		if (strcmp(w->mtl_name[i], name) == 0) {
+			w->current_mtl = i;
+			return;
+		}
+	if (named && w->mtl_count < OBJ_MAX_MATERIALS) {
+		memcpy(w->mtl_name[w->mtl_count], name, sizeof name);
+		w->current_mtl = w->mtl_count++;
+	}
+}
+
 static int ignored(const char *k)
 {
 	static const char *const names[] = {
-		"s", "usemtl", "mtllib", "l", "p", "vp", "cstype", "deg", "bmat",
+		"s", "l", "p", "vp", "cstype", "deg", "bmat",
 		"step", "curv", "curv2", "surf", "parm", "trim", "hole", "scrv",
 		"sp", "end", "con", "mg", "bevel", "c_interp", "d_interp", "lod",
 		"shadow_obj", "trace_obj", "ctech", "stech", "maplib", "usemap",
@@ -293,6 +348,10 @@ static skp_status dispatch(obj_state *st, char **t, int n)
 		return face_line(st, t, n);
 	if (strcmp(k, "g") == 0 || strcmp(k, "o") == 0)
 		return group_line(st, t, n);
+	if (strcmp(k, "usemtl") == 0 || strcmp(k, "mtllib") == 0) {
+		material_line(st, t, n);
+		return SKP_OK;
+	}
 	if (ignored(k))
 		return SKP_OK;
 	return skp_syntax(st->err, st->line, "unknown statement '%s' (expected v, vt, vn, f, g, o, s, usemtl, ...)", k);
@@ -377,6 +436,9 @@ static void init_state(obj_state *st, mesh *out, obj_work *w, const obj_options 
 	w->group_count = 0;
 	w->group_overflow = 0;
 	w->current_group = -1;
+	w->mtl_count = 0;
+	w->current_mtl = -1;
+	w->mtllib[0] = '\0';
 	out->vert_count = out->tri_count = out->coloured = out->textured = 0;
 }
 

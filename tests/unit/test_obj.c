@@ -254,6 +254,36 @@ static void test_ignored_statements(void **state)
 	assert_int_equal(m.tri_count, 1);
 }
 
+/* For the importer's materials (app/import/rig_obj_colour.h): the vt
+ * coordinates, each triangle's corners' vt and usemtl, the first mtllib;
+ * a material name with spaces is its words one space apart. */
+static void test_materials_recorded(void **state)
+{
+	(void)state;
+	assert_int_equal(parse("mtllib my lib.mtl\nmtllib other.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\n"
+			       "vn 0 0 1\nvt 0.25 0.5\nvt 1 0\nvt 0 1\nf 1/1 2/2 3/3\nusemtl Hard  Shiny\nf 2/2 4 3/1\n"
+			       "usemtl b\nf 1//1 2 3\nusemtl Hard Shiny\nf 1/-1 2/-2 3/-3\n"),
+			 SKP_OK);
+	assert_string_equal(work.mtllib, "my lib.mtl");
+	assert_int_equal(work.mtl_count, 2);
+	assert_string_equal(work.mtl_name[0], "Hard Shiny");
+	assert_string_equal(work.mtl_name[1], "b");
+	assert_int_equal(m.tri_count, 4);
+	static const int16_t mtl[4] = { -1, 0, 1, 0 };
+	static const int32_t vt[4][3] = { { 0, 1, 2 }, { 1, -1, 0 }, { -1, -1, -1 }, { 2, 1, 0 } };
+	for (int t = 0; t < 4; t++) {
+		assert_int_equal(work.tri_mtl[t], mtl[t]);
+		for (int k = 0; k < 3; k++)
+			assert_int_equal(work.tri_vt[t][k], vt[t][k]);
+	}
+	assert_true(work.vt[0][0] == 0.25f && work.vt[0][1] == 0.5f);
+	/* a mesh without any: nothing recorded */
+	assert_int_equal(parse("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n"), SKP_OK);
+	assert_int_equal(work.mtllib[0], '\0');
+	assert_int_equal(work.mtl_count, 0);
+	assert_int_equal(work.tri_mtl[0], -1);
+}
+
 static void test_bad_number(void **state)
 {
 	(void)state;
@@ -400,6 +430,7 @@ int main(void)
 		cmocka_unit_test(test_normals_degenerate),
 		cmocka_unit_test(test_crlf),
 		cmocka_unit_test(test_group_filter),
+		cmocka_unit_test(test_materials_recorded),
 		cmocka_unit_test(test_group_names_escaped),
 		cmocka_unit_test(test_unused_vertices_kept),
 		cmocka_unit_test(test_ignored_statements),
