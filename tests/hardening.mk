@@ -20,7 +20,7 @@ FUZZ_BIN     := $(addprefix $(FUZZ_OUT)/fuzz_,$(FUZZ_NAMES))
 FUZZ_MODULES := $(filter-out render,$(CORE_MODULES))
 FUZZ_CORE    := $(foreach m,$(FUZZ_MODULES),$(filter-out app/skin/kernels/%,$(SRC_$(m)))) \
                 $(KERNELS_scalar:%=app/skin/kernels/%.c) app/import/rig_map_file.c \
-                $(addprefix app/import/,rig_json.c rig_makehuman.c rig_scene.c)
+                $(addprefix app/import/,rig_json.c rig_makehuman.c rig_mtl.c rig_scene.c)
 FUZZ_SAN     := -fsanitize=address,undefined -fno-sanitize-recover=undefined
 FUZZ_CFLAGS  := -std=c11 -g -O1 -Wall -Wextra -Werror -Wno-unused-command-line-argument \
                 -fsanitize=fuzzer-no-link $(FUZZ_SAN) $(sort $(foreach m,$(FUZZ_MODULES),$(call mod_inc,$(m)))) \
@@ -51,6 +51,7 @@ FUZZ_SEEDS_joint_map := tests/fuzz/seeds/joint_map
 FUZZ_SEEDS_makehuman := tests/fuzz/seeds/makehuman
 FUZZ_SEEDS_mesh_format := tests/fuzz/seeds/mesh_format
 FUZZ_SEEDS_codec := tests/fuzz/seeds/codec
+FUZZ_SEEDS_mtl := tests/fuzz/seeds/mtl
 
 # Each target runs SECONDS on a corpus kept in the build directory, one
 # target a job (make -j: `make fuzz-smoke` runs one a processor). A crash

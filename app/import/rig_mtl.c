@@ -167,6 +167,24 @@ static void read_lines(FILE *f, rig_mtl *m)
 	}
 }
 
+int rig_mtl_read_stream(FILE *f, rig_mtl *out, const char **why)
+{
+	out->count = out->warnings = 0;
+	/* a binary file (an image named .mtl) is no library: its NULs */
+	char head[512];
+	size_t got = fread(head, 1, sizeof head, f);
+	if (memchr(head, '\0', got) || fseek(f, 0, SEEK_SET) != 0) {
+		*why = "is not a text file";
+		return 0;
+	}
+	read_lines(f, out);
+	if (ferror(f)) {
+		*why = "cannot be read";
+		return 0;
+	}
+	return 1;
+}
+
 int rig_mtl_read(const char *path, rig_mtl *out, const char **why)
 {
 	out->count = out->warnings = 0;
@@ -175,22 +193,9 @@ int rig_mtl_read(const char *path, rig_mtl *out, const char **why)
 		*why = access(path, F_OK) == 0 ? "cannot be read" : "is missing";
 		return 0;
 	}
-	/* a binary file (an image named .mtl) is no library: its NULs */
-	char head[512];
-	size_t got = fread(head, 1, sizeof head, f);
-	if (memchr(head, '\0', got) || fseek(f, 0, SEEK_SET) != 0) {
-		fclose(f);
-		*why = "is not a text file";
-		return 0;
-	}
-	read_lines(f, out);
-	int failed = ferror(f);
+	int ok = rig_mtl_read_stream(f, out, why);
 	fclose(f);
-	if (failed) {
-		*why = "cannot be read";
-		return 0;
-	}
-	return 1;
+	return ok;
 }
 
 const rig_mtl_material *rig_mtl_find(const rig_mtl *m, const char *name)

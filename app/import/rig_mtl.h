@@ -7,6 +7,8 @@
 #ifndef RIG_MTL_H
 #define RIG_MTL_H
 
+#include <stdio.h>
+
 #include "board_limits.h"
 
 #define RIG_MTL_MAX 64          /* materials kept (the rest are counted) */
@@ -30,6 +32,10 @@ typedef struct rig_mtl {
 /* Reads the library at path into out; 0 with *why ("is missing",
  * "cannot be read", "is not a text file") when it cannot be read at all. */
 int rig_mtl_read(const char *path, rig_mtl *out, const char **why);
+
+/* The same from an open stream (the fuzzer's, in memory), read from its
+ * start; the caller closes it. */
+int rig_mtl_read_stream(FILE *f, rig_mtl *out, const char **why);
 
 /* The material named name, or NULL. */
 const rig_mtl_material *rig_mtl_find(const rig_mtl *m, const char *name);

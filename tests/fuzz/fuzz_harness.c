@@ -1,8 +1,10 @@
 /* Harnesses for the text parsers. The state lives in static storage as in
  * the front ends; the input is streamed through an skp_mem_reader, so the
  * fixed line buffer and its chunk boundaries are exercised as with a file. */
+#define _POSIX_C_SOURCE 200809L /* fmemopen: the .mtl reader takes a stream */
 #include "fuzz_harness.h"
 
+#include <stdio.h>
 #include <string.h>
 
 #include "amc.h"
@@ -21,6 +23,7 @@
 #include "obj.h"
 #include "rig_makehuman.h"
 #include "rig_map_file.h"
+#include "rig_mtl.h"
 #include "skel_tpose.h"
 #include "skp_reader.h"
 #include "text_lines.h"
@@ -203,6 +206,41 @@ int fuzz_joint_map(const uint8_t *data, size_t size)
 	return 0;
 }
 
+/* A material library (.mtl), read from memory as from a file: what is
+ * kept has a name, Kd in [0, 1] and a texture path without backslashes,
+ * each within its array. */
+int fuzz_mtl(const uint8_t *data, size_t size)
+{
+	static rig_mtl lib;
+	const char *why;
+	if (!size)
+		return 0;
+	FILE *f = fmemopen((void *)(uintptr_t)data, size, "rb");
+	if (!f)
+		return 0;
+	int ok = rig_mtl_read_stream(f, &lib, &why);
+	fclose(f);
+	if (!ok)
+		return 0;
+	if (lib.count < 0 || lib.count > RIG_MTL_MAX)
+		__builtin_trap();
+	for (int i = 0; i < lib.count; i++) {
+		const rig_mtl_material *m = &lib.mat[i];
+		if (!memchr(m->name, '\0', sizeof m->name) || !m->name[0] ||
+		    !memchr(m->map_kd, '\0', sizeof m->map_kd) || strchr(m->map_kd, '\\'))
+			__builtin_trap();
+		for (int c = 0; c < 3 && m->has_kd; c++)
+			if (!(m->kd[c] >= 0.0f && m->kd[c] <= 1.0f))
+				__builtin_trap();
+		if (rig_mtl_find(&lib, m->name) == NULL)
+			__builtin_trap();
+	}
+	for (int w = 0; w < lib.warnings && w < RIG_MTL_WARNINGS; w++)
+		if (!memchr(lib.warning[w], '\0', sizeof lib.warning[w]))
+			__builtin_trap();
+	return 0;
+}
+
 /* MakeHuman's JSON over a fixed mesh (nine vertices of ten in the file):
  * the input read as a skeleton, then as the weights of a fixed two-bone
  * skeleton; what reads must name existing joints with weights in [0, 1]. */
@@ -307,5 +345,6 @@ const fuzz_target fuzz_targets[] = {
 	{ "makehuman", fuzz_makehuman },
 	{ "mesh_format", fuzz_mesh_format },
 	{ "codec", fuzz_codec },
+	{ "mtl", fuzz_mtl },
 	{ NULL, NULL },
 };

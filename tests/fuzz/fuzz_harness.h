@@ -26,6 +26,7 @@ int fuzz_joint_map(const uint8_t *data, size_t size);
 int fuzz_makehuman(const uint8_t *data, size_t size);
 int fuzz_mesh_format(const uint8_t *data, size_t size);
 int fuzz_codec(const uint8_t *data, size_t size);
+int fuzz_mtl(const uint8_t *data, size_t size);
 
 /* Every harness, NULL-terminated. */
 extern const fuzz_target fuzz_targets[];
