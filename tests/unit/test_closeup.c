@@ -62,15 +62,15 @@ static void test_camera_glides(void **state)
 static void test_span_wants(void **state)
 {
 	(void)state;
-	vec3 x = vec3_make(10, 0, 0), y = vec3_make(0, 8, 0), back = vec3_make(-6, 1, 0);
+	vec3 x = vec3_make(10, 0, 0), y = vec3_make(0, 8, 0), back = vec3_make(-9, 1, 0);
 	float h = 100.0f;
 	assert_float_equal(closeup_span_want(3.0f, x, x, h), CLOSEUP_REACH * 3.0f, 1e-5f);
 	assert_float_equal(closeup_span_want(0.0f, x, x, h), CLOSEUP_SPAN * h, 1e-5f);
 	assert_float_equal(closeup_span_want(0.1f, x, x, h), CLOSEUP_SPAN_MIN * h, 1e-5f);
 	assert_float_equal(closeup_span_want(50.0f, x, x, h), CLOSEUP_SPAN_MAX * h, 1e-5f);
-	/* bent 90 degrees: the shorter bone (8) sets it; folded back: 6.08 */
-	assert_float_equal(closeup_span_want(3.0f, x, y, h), CLOSEUP_FOLD_SHOWN * 8.0f, 1e-4f);
-	assert_float_equal(closeup_span_want(3.0f, back, x, h), CLOSEUP_FOLD_SHOWN * sqrtf(37.0f), 1e-4f);
+	/* bent 90 degrees: the shorter bone (8) sets it; folded back: 9.06 */
+	assert_float_equal(closeup_span_want(2.5f, x, y, h), CLOSEUP_FOLD_SHOWN * 8.0f, 1e-4f);
+	assert_float_equal(closeup_span_want(2.5f, back, x, h), CLOSEUP_FOLD_SHOWN * sqrtf(82.0f), 1e-4f);
 	/* bent 45 degrees: still round the parting */
 	assert_float_equal(closeup_span_want(3.0f, vec3_make(1, 1, 0), x, h), CLOSEUP_REACH * 3.0f, 1e-5f);
 }
