@@ -221,9 +221,12 @@ static quat moved(const skel_pose *bind, const skel_pose *pose, int b)
 	return quat_mul(pose->rot[b], quat_conj(bind->rot[b]));
 }
 
-static float turned_most(skel_joint_turn t)
+/* Whether the joint moved since the bind pose: what the close-up's choice
+ * of joint goes by (not how bent it is: an elbow bound bent is no reason
+ * to tell of it rather than the wrist). */
+static float moved_most(skel_joint_turn t)
 {
-	return t.bend > t.twist ? t.bend : t.twist;
+	return t.swing > t.twist ? t.swing : t.twist;
 }
 
 int skel_joint_turning(const skel *s, const skel_joints *j, const skel_pose *bind, const skel_pose *pose, int bone,
@@ -231,10 +234,10 @@ int skel_joint_turning(const skel *s, const skel_joints *j, const skel_pose *bin
 {
 	*t = skel_joint_turned(s, j, bind, pose, bone);
 	int up = bone > 0 && bone < s->count ? s->bone[bone].parent : -1;
-	if (up <= 0 || turned_most(*t) >= 30.0f)
+	if (up <= 0 || moved_most(*t) >= 30.0f)
 		return bone;
 	skel_joint_turn u = skel_joint_turned(s, j, bind, pose, up);
-	if (turned_most(u) < 30.0f)
+	if (moved_most(u) < 30.0f)
 		return bone;
 	*t = u;
 	return up;
@@ -253,10 +256,63 @@ skel_turn_kind skel_joint_turn_say(skel_joint_turn t, char *buf, size_t cap, int
 	return k;
 }
 
+static float angle_deg(vec3 a, vec3 b)
+{
+	float c = fmaxf(-1.0f, fminf(1.0f, vec3_dot(a, b)));
+	return acosf(c) * 57.29578f;
+}
+
+/* The bone's direction in pose p, or 0 when it has no length. */
+static int direction(const skel_pose *p, int b, vec3 *d)
+{
+	vec3 v = vec3_sub(p->tip[b], p->head[b]);
+	if (vec3_dot(v, v) < 1e-12f)
+		return 0;
+	*d = vec3_normalize(v);
+	return 1;
+}
+
+/* The torso's bone above a limb: the first ancestor on the spine (a
+ * collar bone and CMU's hipjoint, the pelvis, are the limb's). */
+static int torso_above(const skel *s, const skel_joints *j, int bone)
+{
+	int a = s->bone[bone].parent;
+	while (a > 0 && (j->side[a] != SIDE_NONE || j->kind[a] == JOINT_PELVIS))
+		a = s->bone[a].parent;
+	return a < 0 ? 0 : a;
+}
+
+/* How bent the joint is as a visitor measures it, or -1 to go by the
+ * swing since the bind pose. An elbow or knee: the angle between its two
+ * bones now, 0 the limb straight (not since the bind pose: the mesh's rest
+ * pose may be bent, MakeHuman's elbows by 47 degrees, and a curl to 150
+ * then read 103). A shoulder or hip: the limb's angle from hanging down
+ * the torso (the bind pose's down turned with the torso since), 0 at the
+ * side, 170 an arm raised 80 degrees above the horizontal (the swing from
+ * MakeHuman's A-pose read 112). */
+static float visitor_bend(const skel *s, const skel_joints *j, const skel_pose *bind, const skel_pose *pose,
+			  int bone, int up)
+{
+	vec3 d, u;
+	if (!j->biped || !direction(pose, bone, &d))
+		return -1.0f;
+	switch (j->kind[bone]) {
+	case JOINT_ELBOW:
+	case JOINT_KNEE:
+		return up >= 0 && direction(pose, up, &u) ? angle_deg(u, d) : -1.0f;
+	case JOINT_SHOULDER:
+	case JOINT_HIP:
+		u = quat_rotate(moved(bind, pose, torso_above(s, j, bone)), vec3_make(0.0f, -1.0f, 0.0f));
+		return angle_deg(u, d);
+	default:
+		return -1.0f;
+	}
+}
+
 skel_joint_turn skel_joint_turned(const skel *s, const skel_joints *j, const skel_pose *bind, const skel_pose *pose,
 				  int bone)
 {
-	skel_joint_turn t = { 0.0f, 0.0f };
+	skel_joint_turn t = { 0.0f, 0.0f, 0.0f };
 	if (bone <= 0 || bone >= s->count)
 		return t;
 	int up = s->bone[bone].parent;
@@ -264,16 +320,15 @@ skel_joint_turn skel_joint_turned(const skel *s, const skel_joints *j, const ske
 		up = s->bone[up].parent;
 	/* the turn in the bind pose's world axes: the parent's motion undone */
 	quat q = quat_mul(quat_conj(moved(bind, pose, up < 0 ? 0 : up)), moved(bind, pose, bone));
-	vec3 axis = vec3_sub(bind->tip[bone], bind->head[bone]);
-	if (vec3_dot(axis, axis) < 1e-12f)
+	vec3 axis;
+	if (!direction(bind, bone, &axis))
 		return t;
-	axis = vec3_normalize(axis);
 	if (q.w < 0.0f)
 		q = (quat){ -q.w, -q.x, -q.y, -q.z };
 	float along = q.x * axis.x + q.y * axis.y + q.z * axis.z;
 	t.twist = fabsf(2.0f * atan2f(along, q.w)) * 57.29578f;
-	vec3 turned = quat_rotate(q, axis);
-	float c = fmaxf(-1.0f, fminf(1.0f, vec3_dot(turned, axis)));
-	t.bend = acosf(c) * 57.29578f;
+	t.swing = angle_deg(quat_rotate(q, axis), axis);
+	float bend = visitor_bend(s, j, bind, pose, bone, up);
+	t.bend = bend >= 0.0f ? bend : t.swing;
 	return t;
 }

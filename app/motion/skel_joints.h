@@ -39,21 +39,29 @@ void skel_joints_find(const skel *s, const skel_pose *p, skel_joints *out);
  * out of range. Returns buf. */
 const char *skel_joint_name(const skel_joints *j, int bone, char *buf, size_t cap);
 
-/* How far the joint at bone b's head has turned from the bind pose: the
- * bone against the nearest ancestor that is another joint (the neck's
- * bones count as one), split into the bend of the bone's axis and the
- * twist about it, in degrees (0..180). */
+/* How far the joint at bone b's head has turned, as a visitor would
+ * check it with a protractor, in degrees (0..180). The twist: about the
+ * bone's axis since the bind pose, against the nearest ancestor that is
+ * another joint (the neck's bones count as one). The bend of a person's
+ * elbow or knee: the angle between its two bones now (0 straight, 150 a
+ * tight curl), whatever the bind pose's; of a shoulder or hip: the limb's
+ * angle from hanging down the torso (0 at the side); of any other joint,
+ * and on a skeleton that is not a human's, the swing of the bone's axis
+ * since the bind pose against that ancestor's. The swing as well, for
+ * every joint: whether it moved. */
 typedef struct skel_joint_turn {
 	float bend, twist;
+	float swing;
 } skel_joint_turn;
 
 skel_joint_turn skel_joint_turned(const skel *s, const skel_joints *j, const skel_pose *bind, const skel_pose *pose,
 				  int bone);
 
 /* The joint to tell of where the skin at bone's joint changed: that
- * joint, or its parent joint when that one turned 30 degrees or more and
- * it did not (the skin between CMU's wrist and hand is nearest the hand's
- * joint, the twist is the wrist's). Its turn into *t. */
+ * joint, or its parent joint when that one moved (swing or twist since
+ * the bind pose) 30 degrees or more and it did not (the skin between
+ * CMU's wrist and hand is nearest the hand's joint, the twist is the
+ * wrist's). Its turn into *t. */
 int skel_joint_turning(const skel *s, const skel_joints *j, const skel_pose *bind, const skel_pose *pose, int bone,
 		       skel_joint_turn *t);
 
