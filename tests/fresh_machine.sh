@@ -216,11 +216,13 @@ if [ "$deb" = 1 ]; then
 		DEBIAN_FRONTEND=noninteractive apt-get install -y -qq ./root/$pkg >/dev/null &&
 		! command -v skintool >/dev/null && ! dpkg -l 'libassimp*' 2>/dev/null | grep -q '^ii' &&
 		echo \"package: \$(dpkg-query -W -f='\${Package} \${Version} \${Architecture}' skinplay) installed, without skintool or Assimp\""
-	step package "package-play" "skinplay --version | head -n 1 &&
+	# (a program's status decides, not that of the head or tail it is piped
+	# to, which would pass a program that failed)
+	step package "package-play" "v=\$(skinplay --version) && echo \"\$v\" | head -n 1 &&
 		skinplay --image /usr/share/skinplay/demo.skn --platform surfaceless --size 320x180 &&
 		test -f /usr/share/man/man1/skinplay.1.gz && echo 'package: played the demo to its end'"
 	step package "package-tools" "DEBIAN_FRONTEND=noninteractive apt-get install -y -qq ./root/$tools >/dev/null &&
-		skintool info /usr/share/skinplay/demo.skn | tail -n 1 &&
+		info=\$(skintool info /usr/share/skinplay/demo.skn) && echo \"\$info\" | tail -n 1 &&
 		test -f /usr/share/man/man1/skintool.1.gz && test -f /usr/share/man/man1/skintool-pack.1.gz &&
 		echo \"package: \$(dpkg-query -W -f='\${Package} \${Version}' skinplay-tools) installed; info: all good\""
 	# left behind: a path the purge did not take back that no installed package

@@ -148,9 +148,15 @@ static void test_every_block_damaged_plays_the_same(void **state)
 	assert_true(ref != 0);
 	assert_int_equal(clips, 1);
 	int saved = quiet_stderr();
-	long blocks = (long)(n / BS), differ = 0;
+	long blocks = (long)(n / BS), differ = 0, runs = 0;
+	/* under the sanitizers or an emulator every block one way, the way
+	 * turning with the block (a third of the runs); natively all three */
+	const int slow = test_slow();
 	for (long b = 0; b < blocks; b++) {
 		for (int how = 0; how < 3; how++) {
+			if (slow && how != b % 3)
+				continue;
+			runs++;
 			static const char *const hows[] = { "flipped", "zeroed", "forged (its CRC made good)" };
 			memcpy(copy, orig, n);
 			if (how == 1)
@@ -168,7 +174,8 @@ static void test_every_block_damaged_plays_the_same(void **state)
 	}
 	loud_stderr(saved);
 	assert_int_equal(differ, 0);
-	print_message("%ld blocks, each flipped, zeroed and forged: playback identical (%ld runs)\n", blocks, 3 * blocks);
+	print_message("%ld blocks, each %s: playback identical (%ld runs)\n", blocks,
+		      slow ? "flipped, zeroed or forged in turn" : "flipped, zeroed and forged", runs);
 	/* skinplay itself, on a sample: exit 0, the same frames */
 	for (long b = 0; b < blocks; b += blocks / 8) {
 		memcpy(copy, orig, n);

@@ -296,9 +296,15 @@ static void all_kd(int kd)
 		assert_true(m.colour[v][0] == 124 && m.colour[v][1] == 188 && m.colour[v][2] == 231);
 }
 
-/* skintool bind says the warning and exits 0. */
+/* skintool bind says the warning and exits 0. Each case's warning is
+ * checked in this process (colour()); the tool prints them all alike, so
+ * under the sanitizers or an emulator (a bind a minute under qemu) the
+ * first case alone goes through it. */
 static void tool_warns(const char *obj, const char *text)
 {
+	static int ran;
+	if (test_slow() && ran++)
+		return;
 	const char *csv = test_scratch("w.csv"), *err = test_scratch("bind_err.txt");
 	assert_int_equal(test_run("%s bind -q assets/cmu/02.asf '%s' --rig '%s' --weights mesh -o '%s' 2>'%s'",
 				  test_tool_path("skintool"), obj, test_scratch("default.mhskel"), csv, err), 0);
