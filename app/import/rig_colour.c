@@ -137,6 +137,25 @@ static int decode_stream(rig_colour_work *w, FILE *f, const char **why)
 	return 0;
 }
 
+/* 1: key's texture is the cached one; 0: the cache emptied for it; -1:
+ * key is too long to be cached (*why says so). */
+static int cache_lookup(rig_colour_work *w, const char *key, const char **why)
+{
+	if (w->rgba && !strcmp(w->cached, key))
+		return 1;
+	drop_cache(w);
+	if (strlen(key) >= sizeof w->cached) {
+		*why = "has too long a path";
+		return -1;
+	}
+	return 0;
+}
+
+static void cache_keep(rig_colour_work *w, const char *key)
+{
+	memcpy(w->cached, key, strlen(key) + 1);
+}
+
 static int decode_file(rig_colour_work *w, const char *file, const char **why)
 {
 	FILE *f = fopen(file, "rb");
@@ -153,15 +172,12 @@ static int decode_file(rig_colour_work *w, const char *file, const char **why)
  * the cache; 0, noted, when it cannot be read. */
 static int load_texture(rig_colour_work *w, const struct aiScene *sc, const char *path, const char *material)
 {
-	if (w->rgba && !strcmp(w->cached, path))
-		return 1;
-	drop_cache(w);
-	if (strlen(path) >= sizeof w->cached) {
-		note(w, material, path, "has too long a path");
-		return 0;
-	}
 	const char *why = NULL;
-	int ok = 0;
+	int ok = 0, hit = cache_lookup(w, path, &why);
+	if (hit < 0)
+		note(w, material, path, why);
+	if (hit)
+		return hit > 0;
 	if (path[0] == '*') {
 		unsigned i = (unsigned)strtoul(path + 1, NULL, 10);
 		const struct aiTexture *t = i < sc->mNumTextures ? sc->mTextures[i] : NULL;
@@ -184,7 +200,7 @@ static int load_texture(rig_colour_work *w, const struct aiScene *sc, const char
 		note(w, material, path, why);
 		return 0;
 	}
-	memcpy(w->cached, path, strlen(path) + 1);
+	cache_keep(w, path);
 	return 1;
 }
 
@@ -338,16 +354,12 @@ void rig_colour_bake(const uint8_t *rgba, int w, int h, const float (*uv)[2], ui
 
 int rig_colour_file(rig_colour_work *w, const char *file, const char **why)
 {
-	if (w->rgba && !strcmp(w->cached, file))
-		return 1;
-	drop_cache(w);
-	if (strlen(file) >= sizeof w->cached) {
-		*why = "has too long a path";
-		return 0;
-	}
+	int hit = cache_lookup(w, file, why);
+	if (hit)
+		return hit > 0;
 	if (!decode_file(w, file, why))
 		return 0;
-	memcpy(w->cached, file, strlen(file) + 1);
+	cache_keep(w, file);
 	return 1;
 }
 

@@ -10,10 +10,6 @@
 #include "rig_mtl.h"
 #include "skp_format.h"
 
-/* The renderer's skin colour (render_body.c's 0.86 0.67 0.56) as sRGB
- * bytes: the vertices of a material that says nothing, beside ones that do. */
-static const uint8_t skin_srgb[3] = { 219, 171, 143 };
-
 typedef struct obj_colour_work {
 	const obj_work *w;
 	rig_scene *r;
@@ -78,6 +74,17 @@ typedef struct corner_look {
 	float uv[2];
 } corner_look;
 
+/* The skin colour (MESH_SKIN_RGB, the renderer's), unsampled: the
+ * vertices of a material that says nothing, beside ones that do. */
+static corner_look skin_look(void)
+{
+	static const float skin[3] = MESH_SKIN_RGB;
+	corner_look c = { { 0, 0, 0 }, 0, { 0.0f, 0.0f } };
+	for (int ch = 0; ch < 3; ch++)
+		c.colour[ch] = (uint8_t)(skin[ch] * 255.0f + 0.5f);
+	return c;
+}
+
 static int same_surface(const mesh *m, int v, const corner_look *c)
 {
 	if (m->sampled[v] != c->sampled)
@@ -136,13 +143,14 @@ static void colour_material(obj_colour_work *o, int i, int textured)
 	float base[3] = { 1.0f, 1.0f, 1.0f };
 	if (mat && mat->has_kd)
 		memcpy(base, mat->kd, sizeof base);
+	const corner_look skin = skin_look();
 	int tris = m->tri_count;
 	for (int t = 0; t < tris; t++) {
 		if (w->tri_mtl[t] != i)
 			continue;
 		for (int k = 0; k < 3; k++) {
 			int v = (int)m->tri[t][k], vt = w->tri_vt[t][k];
-			corner_look c = { { skin_srgb[0], skin_srgb[1], skin_srgb[2] }, 0, { 0.0f, 0.0f } };
+			corner_look c = skin;
 			if (own) {
 				float rgb[3] = { base[0], base[1], base[2] }, tex[3];
 				if (textured && vt >= 0 && !gpu) {
@@ -257,9 +265,10 @@ void rig_obj_colour(const char *obj_path, const obj_work *w, rig_scene *r, rig_o
 	}
 	for (int v = 0; v < SKP_MAX_VERTS; v++)
 		o.twin[v] = -1;
+	const corner_look skin = skin_look();
 	for (int v = 0; v < m->vert_count; v++) {
 		r->seam_lead[v] = v;
-		set_vertex(m, v, &(corner_look){ { skin_srgb[0], skin_srgb[1], skin_srgb[2] }, 0, { 0.0f, 0.0f } });
+		set_vertex(m, v, &skin);
 	}
 	r->seams = 0;
 	o.gpu = choose_gpu(&o);

@@ -8,6 +8,11 @@
 #include "board_limits.h"
 #include "vec3.h"
 
+/* The skin colour a body, or a vertex, without a base colour of its own
+ * is drawn in (0..1 a channel, as colour's bytes over 255): the
+ * renderer's, and the importer's for vertices beside coloured ones. */
+#define MESH_SKIN_RGB { 0.86f, 0.67f, 0.56f }
+
 typedef struct mesh {
 	int vert_count;
 	int tri_count;

@@ -5,7 +5,7 @@
 
 #include "render_internal.h"
 
-static const float skin_rgb[3] = { 0.86f, 0.67f, 0.56f };
+static const float skin_rgb[3] = MESH_SKIN_RGB;
 
 /* Bone uniforms in the layout the skinning shaders read. */
 static int bone_uniforms(renderer *r, const skin_bones *b, int as_dq)
