@@ -59,9 +59,9 @@ VIDEO_CFLAGS := $(if $(VIDEO_ON),$(shell $(PKG_CONFIG) --cflags $(PC_video) 2>/d
 VIDEO_LIBS   := $(if $(VIDEO_ON),$(shell $(PKG_CONFIG) --libs $(PC_video) 2>/dev/null))
 BACKEND_DEFS := $(foreach d,$(DISPLAYS),-DSKP_DISPLAY_$(d)) $(foreach i,$(INPUTS),-DSKP_INPUT_$(i)) \
                 -DSKP_GPIOD_API=$(GPIOD_API) $(if $(VIDEO_ON),-DSKP_VIDEO)
-# HARDEN=1: this build with Debian's hardening flags, as `make deb` builds
-# the packages (platform/debian/harden.mk), so that `make HARDEN=1 deb`
-# packages it without compiling everything again in a build of its own.
+# Debian's hardening flags, as the packages are built (HARDEN=1, the
+# default where dpkg-buildflags is: platform/debian/harden.mk), so that
+# `make deb` packages this build without compiling everything again.
 include platform/debian/harden.mk
 CPPFLAGS    := -Iboard/$(BOARD) $(SIMD_DEFS) -MMD -MP
 CFLAGS_CORE := -std=c11 $(WARN) $(BOARD_CFLAGS) $(SAN_FLAGS) $(EXTRA_CFLAGS)
@@ -420,7 +420,7 @@ help:
 	@echo "make deps               check (and as root install) the Debian packages"
 	@echo "make install PREFIX=/usr/local DESTDIR="
 	@echo "make deb                skinplay and skinplay-tools_$(VERSION)_$(DEB_ARCH).deb (dpkg-deb; lintian when installed)"
-	@echo "make HARDEN=1 ...       build with the packages' hardening flags: a later make HARDEN=1 deb packages that build"
+	@echo "make HARDEN=0 ...       build without the packages' hardening flags (on by default: make deb packages the build)"
 
 # fuzz, fuzz-smoke, lint, soak
 include tests/hardening.mk

@@ -23,9 +23,9 @@
 #
 # --cross=BOARD then cross-builds that board in the same root, as its README
 # (board/rpi4/README.md) says: `make deps BOARD=rpi4`, `make BOARD=rpi4
-# HARDEN=1 test-unit` (the unit tier under qemu-user, built with the
-# package's flags), `make BOARD=rpi4 HARDEN=1 deb` (that build packaged,
-# lintian): on trixie, the system Raspberry Pi OS trixie is built from.
+# test-unit` (the unit tier under qemu-user, built with the package's
+# hardening flags, as every build is), `make BOARD=rpi4 deb` (that build
+# packaged, lintian): on trixie, the system Raspberry Pi OS trixie is built from.
 #
 # Needs root (debootstrap, chroot, mounts), util-linux's unshare, overlayfs
 # and the network to the mirror. The minbase root is made once per suite and
@@ -244,11 +244,11 @@ if [ -n "$cross" ]; then
 	step build "cross-$cross-deps" "cd /root/work/main && make deps BOARD=$cross"
 	# the unit tier under qemu-user: the board's code as this release's
 	# compiler builds it (gcc 14 on trixie); the host's CI runs every tier
-	# (HARDEN=1: built with the package's flags, so that the package below
+	# (built with the package's flags, as every build is: the package below
 	# is the build tested here, not compiled again)
-	step build "cross-$cross-test" "cd /root/work/main && make BOARD=$cross HARDEN=1 test-unit"
+	step build "cross-$cross-test" "cd /root/work/main && make BOARD=$cross test-unit"
 	# its demo image packed by this root's own skintool (the image format is
 	# one on every architecture; under qemu-user the pack takes minutes)
-	step build "cross-$cross-deb" "cd /root/work/main && make BOARD=$cross HARDEN=1 DEMO_PACKER=build/skintool deb"
+	step build "cross-$cross-deb" "cd /root/work/main && make BOARD=$cross DEMO_PACKER=build/skintool deb"
 fi
 say "all steps passed"

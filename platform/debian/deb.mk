@@ -1,9 +1,10 @@
 # `make deb`: two packages for the board (host: amd64, rpi4: arm64,
 # cross-built), skinplay (the device program, its demo, config, unit and
 # udev rule) and skinplay-tools (skintool: the host tool, which alone needs
-# Assimp), made with dpkg-deb from one `make install` tree: objects rebuilt
-# with Debian's hardening flags (dpkg-buildflags, harden.mk) in their own
-# directory (or, with HARDEN=1, the build as it is: it has them),
+# Assimp), made with dpkg-deb from one `make install` tree: the build as it
+# is, which has Debian's hardening flags (dpkg-buildflags, harden.mk;
+# HARDEN=1, the default), or else objects rebuilt with them in their own
+# directory,
 # Depends computed from each package's binary (dpkg-shlibdeps), so the same
 # recipe gives libgpiod2 on bookworm and libgpiod3 on trixie. lintian, when
 # installed, checks both (errors fail the build).
@@ -11,8 +12,8 @@ DEB_MAINTAINER ?= skinplay developers <skinplay@example.org>
 DEB_PACKAGES   := skinplay skinplay-tools
 DEB_FILES      := $(foreach p,$(DEB_PACKAGES),$(BUILD)/$(p)_$(VERSION)_$(DEB_ARCH).deb)
 DEB_DIR        := $(BUILD)/deb
-# With HARDEN=1 the build itself has the flags: it is packaged as it is.
-DEB_SUB_MAKE    = $(if $(filter 1,$(HARDEN)),$(SUB_MAKE),$(SUB_MAKE) BUILD=$(DEB_DIR)/build \
+# A hardened build has the flags: it is packaged as it is.
+DEB_SUB_MAKE    = $(if $(HARDENED),$(SUB_MAKE),$(SUB_MAKE) BUILD=$(DEB_DIR)/build \
                   EXTRA_CFLAGS="$(DEB_CFLAGS)" EXTRA_LDFLAGS="$(DEB_LDFLAGS)")
 # dpkg 1.22 (trixie) packages units and udev rules under /usr/lib; 1.21
 # (bookworm) under /lib, as each release's debhelper and lintian expect.
