@@ -46,7 +46,12 @@ int codec_test_load(const char *asf, const char *amc, codec_test_clip *c)
 
 void codec_test_encode(const codec_test_clip *c, encode_result *r)
 {
-	encode_opts o = { CODEC_TEST_BUDGET_CM * 0.999 / c->cm, CODEC_TEST_SHELL_CM / c->cm, 0, NULL, NULL };
+	codec_test_encode_segments(c, 0, r);
+}
+
+void codec_test_encode_segments(const codec_test_clip *c, int segment_frames, encode_result *r)
+{
+	encode_opts o = { CODEC_TEST_BUDGET_CM * 0.999 / c->cm, CODEC_TEST_SHELL_CM / c->cm, segment_frames, NULL, NULL };
 	skp_error err;
 	skp_status rc = encode_clip(&c->s, c->frames, c->n, &o, r, &err);
 	if (rc)

@@ -22,6 +22,8 @@ typedef struct codec_test_clip {
 /* -1 (and nothing loaded) when the shared data is not there. */
 int codec_test_load(const char *asf, const char *amc, codec_test_clip *c);
 void codec_test_encode(const codec_test_clip *c, encode_result *r);
+/* The same in segments of segment_frames (0: CODEC_SEGMENT_FRAMES). */
+void codec_test_encode_segments(const codec_test_clip *c, int segment_frames, encode_result *r);
 const uint8_t *codec_test_segment(const encode_result *r, uint32_t s, uint32_t *n);
 /* Decodes every frame, checking each against the source (keeping the
  * values in keep, when given); the worst error in cm. */

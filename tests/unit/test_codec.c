@@ -34,12 +34,15 @@ static void test_seek_lands_on_the_same_frame(void **state)
 	clip *c = &clip_of;
 	if (codec_test_load("mocap/cmu/kick.asf", "mocap/cmu/kick.amc", c))
 		skip();
-	/* under an emulator the encoder's search is minutes: four segments' worth */
-	if (test_emulator() && c->n > 4 * CODEC_SEGMENT_FRAMES - 40)
-		c->n = 4 * CODEC_SEGMENT_FRAMES - 40;
+	/* under the sanitizers or an emulator (the encoder's search: 22 s
+	 * under qemu for four segments' worth) three segments of 32 frames,
+	 * the last half full: the same seeks; the native run takes the clip */
+	const int seg = test_slow() ? CODEC_SEGMENT_FRAMES / 8 : 0;
+	if (seg && c->n > 2 * seg + seg / 2)
+		c->n = 2 * seg + seg / 2;
 	encode_result r;
 	skp_error err;
-	codec_test_encode(c, &r);
+	codec_test_encode_segments(c, seg, &r);
 	assert_true(r.segments >= 3);
 	float *all = malloc(sizeof(float) * (size_t)c->n * (size_t)c->s.dof_count);
 	codec_test_decode_all(c, &r, all);
@@ -64,9 +67,11 @@ static void test_still_and_single_frame(void **state)
 	clip *c = &clip_of;
 	if (codec_test_load("mocap/cmu/02.asf", "mocap/cmu/02_01.amc", c))
 		skip();
-	for (long f = 1; f < 100; f++)
+	/* under the sanitizers or an emulator 10 frames (100: 4 s under qemu) */
+	const long still = test_slow() ? 10 : 100;
+	for (long f = 1; f < still; f++)
 		memcpy(c->frames + (size_t)f * (size_t)c->s.dof_count, c->frames, sizeof(float) * (size_t)c->s.dof_count);
-	c->n = 100;
+	c->n = still;
 	encode_result r;
 	codec_test_encode(c, &r);
 	for (int t = 0; t < r.clip.tracks; t++)
@@ -111,8 +116,13 @@ static void test_damaged_segments(void **state)
 	clip *c = &clip_of;
 	if (codec_test_load("mocap/cmu/09.asf", "mocap/cmu/09_06.amc", c))
 		skip();
-	if (c->n > CODEC_SEGMENT_FRAMES) /* segment 0 is the one damaged: the clip's first */
-		c->n = CODEC_SEGMENT_FRAMES;
+	/* segment 0 is the one damaged: the clip's first (under the sanitizers
+	 * or an emulator 32 frames of it and a quarter of the bit flips: the
+	 * encoder's search and the cuts took 6 s under qemu) */
+	const int slow = test_slow();
+	const long frames = slow ? CODEC_SEGMENT_FRAMES / 8 : CODEC_SEGMENT_FRAMES;
+	if (c->n > frames)
+		c->n = frames;
 	encode_result r;
 	codec_test_encode(c, &r);
 	uint32_t n;
@@ -129,7 +139,7 @@ static void test_damaged_segments(void **state)
 	print_message("segment 0 (%lu bytes) cut at every length: %d refused\n", (unsigned long)n, errors);
 	assert_true(errors > (int)n / 2);
 	unsigned seed = 12345;
-	for (int i = 0; i < 2000; i++) {
+	for (int i = 0; i < (slow ? 500 : 2000); i++) {
 		memcpy(copy, b, n);
 		for (int k = 0; k < 3; k++) {
 			seed = seed * 1103515245u + 12345u;
