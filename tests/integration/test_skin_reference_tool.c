@@ -25,11 +25,15 @@
 
 static skinref_kernels kern;
 static skinref_cmu02 cmu;
+static int have_skel;
 
+/* The skeleton only: the test binds the body skintool writes (a bind of
+ * the generated body here went unused, seconds under qemu). */
 static int setup(void **state)
 {
 	(void)state;
-	return skinref_cmu02_setup(&cmu);
+	have_skel = !skinref_cmu02_skel(&cmu);
+	return 0;
 }
 
 /* ---- skintool skin writes the kernel's output ---- */
@@ -91,7 +95,7 @@ static void test_skintool_skin_output(void **state)
 {
 	(void)state;
 	const char *asf = test_data_path("mocap/cmu/02.asf"), *amc = test_data_path("mocap/cmu/02_01.amc");
-	if (!cmu.have || !amc)
+	if (!have_skel || !amc)
 		skip();
 	static mesh in, out;
 	static skin_weights w;
@@ -124,9 +128,10 @@ static void test_skintool_skin_output(void **state)
 	skinref_run_kernels(&kern, &tool, &pose, in.vert_count);
 	for (int a = 0; a < SKIN_ALGO_COUNT; a++) {
 		/* under the sanitizers or an emulator (each run binds the body
-		 * again: minutes under qemu) the two DQBS kernels, float and
-		 * fixed-point; the native run checks LBS too */
-		if (test_slow() && a == SKIN_LBS)
+		 * again: 12 s under qemu) the float DQBS kernel, whose float
+		 * behaviour the arm64 build could change (test_skin_reference
+		 * checks every kernel there); the native run checks them all */
+		if (test_slow() && a != SKIN_DQBS)
 			continue;
 		snprintf(cmd, sizeof cmd, "%s skin %s %s %s --frame 100 --algo %s -o %s", test_tool_path("skintool"),
 			 asf, amc, body_obj, skin_algo_name((skin_algo)a), out_obj);

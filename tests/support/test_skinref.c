@@ -13,13 +13,21 @@
 #include "test_paths.h"
 #include "test_skinref.h"
 
-int skinref_cmu02_setup(skinref_cmu02 *c)
+int skinref_cmu02_skel(skinref_cmu02 *c)
 {
 	skp_error err;
 	const char *asf = test_data_path("mocap/cmu/02.asf");
 	if (!asf || test_parse_asf_file(asf, &c->skel, &err) != SKP_OK)
-		return 0;
+		return -1;
 	fk_pose(&c->skel, NULL, &c->rest);
+	return 0;
+}
+
+int skinref_cmu02_setup(skinref_cmu02 *c)
+{
+	skp_error err;
+	if (skinref_cmu02_skel(c))
+		return 0;
 	if (manq_build(&c->skel, 0, &c->work, &c->body, &err) != SKP_OK)
 		return -1;
 	bind_prepare(&c->rig, &c->skel, &c->rest, NULL);

@@ -27,6 +27,9 @@ typedef struct skinref_cmu02 {
 /* cmocka group setup of c: 0, with c->have 0 when the shared data is not
  * there; -1 when the body or its weights cannot be built. */
 int skinref_cmu02_setup(skinref_cmu02 *c);
+/* Only the skeleton and its rest pose (c->have stays 0): -1 when the
+ * shared data is not there. */
+int skinref_cmu02_skel(skinref_cmu02 *c);
 
 typedef struct skinref_kernels {
 	_Alignas(SKIN_ALIGN) unsigned char block[SKIN_SOA_BYTES(SKP_MAX_VERTS)];
