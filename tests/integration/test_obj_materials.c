@@ -253,8 +253,16 @@ static void test_makehuman_packed_and_played(void **state)
 	const char *obj = makehuman(CHECKER_MTL);
 	checker("skin_diffuse.png");
 	const char *img = test_scratch("mh.skn"), *err = test_scratch("mh_err.txt"), *out = test_scratch("frames");
-	assert_int_equal(test_run("%s pack -q assets/cmu/02.asf assets/cmu/02_01.amc --mesh '%s' --rig '%s' "
-				  "--weights mesh -o '%s' 2>'%s'", test_tool_path("skintool"), obj,
+	/* under the sanitizers or an emulator the clip's first 30 frames (the
+	 * whole clip's pack took 23 s under qemu, 6 s so): the texture is the
+	 * same; natively the whole clip */
+	const char *amc = "assets/cmu/02_01.amc";
+	if (test_slow()) {
+		amc = test_scratch("short.amc");
+		assert_int_equal(test_run("awk '/^31\r?$/ { exit } { print }' assets/cmu/02_01.amc >'%s'", amc), 0);
+	}
+	assert_int_equal(test_run("%s pack -q assets/cmu/02.asf '%s' --mesh '%s' --rig '%s' "
+				  "--weights mesh -o '%s' 2>'%s'", test_tool_path("skintool"), amc, obj,
 				  test_scratch("default.mhskel"), img, err), 0);
 	const char *info = test_scratch("mh_info.txt");
 	assert_int_equal(test_run("%s info '%s' > '%s' 2>&1", test_tool_path("skintool"), img, info), 0);
