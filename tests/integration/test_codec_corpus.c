@@ -11,23 +11,10 @@
 
 #include <math.h>
 #include <stdlib.h>
-#include <string.h>
 
 #include "test_clips.h"
 #include "test_codec_clip.h"
 #include "test_paths.h"
-
-/* Is clip i's source (its directory: cmu, hdm05, endorphin) an earlier
- * clip's? */
-static int source_seen(int i)
-{
-	const char *a = test_clips[i].asf;
-	size_t n = (size_t)(strrchr(a, '/') - a) + 1;
-	for (int k = 0; k < i; k++)
-		if (!strncmp(test_clips[k].asf, a, n))
-			return 1;
-	return 0;
-}
 
 static void test_every_shared_clip(void **state)
 {
@@ -40,7 +27,7 @@ static void test_every_shared_clip(void **state)
 		 * a frame under qemu) the first clip of each source (their units
 		 * and skeletons differ), its first second: the same code, and
 		 * make test natively checks every clip whole */
-		if (slow && source_seen(i))
+		if (slow && test_clip_source_seen(i))
 			continue;
 		static codec_test_clip c;
 		encode_result r;

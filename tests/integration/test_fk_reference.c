@@ -110,7 +110,13 @@ static void test_all_clips_match_reference(void **state)
 	(void)state;
 	if (!test_data_path("mocap"))
 		skip();
-	for (size_t i = 0; i < (size_t)test_clip_count; i++) {
+	const int slow = test_slow();
+	for (int i = 0; i < test_clip_count; i++) {
+		/* under the sanitizers or an emulator (skintool fk's 10,500
+		 * frames took 14 s under qemu) the first clip of each source,
+		 * whose skeletons and units differ; natively every clip */
+		if (slow && test_clip_source_seen(i))
+			continue;
 		result r = { 0, 0, 0, 0, 0 };
 		compare_clip(&test_clips[i], &r);
 		print_message("%-45s %5ld frames, height %7.3f, max position error %.3g (%.2g of height), max rotation error %.3g\n",

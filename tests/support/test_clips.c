@@ -1,3 +1,5 @@
+#include <string.h>
+
 #include "test_clips.h"
 
 const test_clip test_clips[] = {
@@ -14,3 +16,13 @@ const test_clip test_clips[] = {
 };
 
 const int test_clip_count = (int)(sizeof test_clips / sizeof test_clips[0]);
+
+int test_clip_source_seen(int i)
+{
+	const char *a = test_clips[i].asf;
+	size_t n = (size_t)(strrchr(a, '/') - a) + 1;
+	for (int k = 0; k < i; k++)
+		if (!strncmp(test_clips[k].asf, a, n))
+			return 1;
+	return 0;
+}

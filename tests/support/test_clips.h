@@ -11,4 +11,9 @@ typedef struct test_clip {
 extern const test_clip test_clips[];
 extern const int test_clip_count;
 
+/* 1 when clip i's source (its directory: cmu, hdm05, endorphin) is an
+ * earlier clip's: the first of each is the sample that sweeps take under
+ * the sanitizers or an emulator. */
+int test_clip_source_seen(int i);
+
 #endif
