@@ -42,6 +42,11 @@ static void expect_help(const char *tool, const char *cmd)
 	assert_non_null(strstr(out, "  -h, --help "));
 	free(out);
 	free(err);
+	/* under the sanitizers or an emulator --version (the same code for
+	 * every command) for the programs and their first command only */
+	static int versions;
+	if (test_slow() && versions++ >= 3)
+		return;
 	snprintf(args, sizeof args, "%s --version", cmd);
 	assert_int_equal(run_tool(tool, args), 0);
 	out = slurp("out.txt");
@@ -157,6 +162,10 @@ static void test_quiet_everywhere(void **state)
 		for (const char *p = runs[i].args; (p = strstr(p, "%s")); p += 2)
 			uses++;
 		for (int form = 0; form < 3; form++) {
+			/* under the sanitizers or an emulator (39 runs, 9 s under
+			 * qemu) -q before and --quiet after take turns */
+			if (test_slow() && form && form != 1 + (int)(i % 2))
+				continue;
 			/* compare writes a new folder each time */
 			if (uses == 2)
 				snprintf(args, sizeof args, runs[i].args, dir, dir);
