@@ -52,9 +52,9 @@ static long info_number(const char *path, const char *prefix, const char *fmt)
 }
 
 /* What pack binds: under the sanitizers or an emulator a coarser
- * generated body (pack binds the default one in 8 s under qemu, and the
- * kiosk's handling of its slots and clips does not depend on the body);
- * natively the default one. */
+ * generated body (a pack took 8 s under qemu on the default one, 2 s on
+ * it; the kiosk's handling of its slots and clips does not depend on the
+ * body); natively the default one. */
 static char body[600];
 
 static int make_body(void)
