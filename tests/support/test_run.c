@@ -96,6 +96,17 @@ const char *test_scratch(const char *name)
 	return out;
 }
 
+const char *test_bvh_head(const char *path, int frames)
+{
+	static char out[512];
+	const char *name = strrchr(path, '/');
+	snprintf(out, sizeof out, "%s/head/%s", dir, name ? name + 1 : path);
+	if (test_run("mkdir -p '%s/head' && awk -v n=%d 'f && ++k > n { exit } /^Frames:/ { $0 = \"Frames: \" n } "
+		     "{ print } /^Frame Time:/ { f = 1 }' '%s' > '%s'", dir, frames, path, out) != 0)
+		fail_msg("cannot cut %s to %d frames", path, frames);
+	return out;
+}
+
 int test_run(const char *fmt, ...)
 {
 	char cmd[4096];

@@ -13,6 +13,12 @@ const char *test_scratch_dir(void);
 /* "<scratch>/<name>" in one of 64 rotating static buffers */
 const char *test_scratch(const char *name);
 
+/* The BVH at path cut to its first `frames` frames, under its own name in
+ * the scratch directory's head/ (in one static buffer): the short clip a
+ * test packs under the sanitizers or an emulator, where the encoder takes
+ * about 12 ms a frame. */
+const char *test_bvh_head(const char *path, int frames);
+
 /* Polls the file at path for text for up to seconds (a log a program
  * writes as it runs); 1 when it came. */
 int test_wait_for_text(const char *path, const char *text, double seconds);
