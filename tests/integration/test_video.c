@@ -129,9 +129,14 @@ static void test_rates_and_codecs(void **state)
 {
 	(void)state;
 	need_video(1);
+	/* under the sanitizers or an emulator one rate a codec (each video
+	 * of the walk took 5 to 6.5 s there); natively both rates for both */
+	const int all = !test_slow();
 	play_into("walk30.mp4", 30, 1, "h264");
-	play_into("walk24.mp4", 24, 1, "h264");
-	play_into("walk30.webm", 30, 1, "vp9");
+	if (all)
+		play_into("walk24.mp4", 24, 1, "h264");
+	if (all)
+		play_into("walk30.webm", 30, 1, "vp9");
 	play_into("walk24.webm", 24, 1, "vp9");
 	play_into("walk60every4.mp4", 60, 4, "h264");
 }
