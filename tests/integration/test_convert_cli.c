@@ -101,7 +101,13 @@ static void test_every_clip_converts_to_bvh_and_back(void **state)
 	(void)state;
 	if (!test_data_path(test_clips[0].asf))
 		skip();
+	const int slow = test_slow();
 	for (int c = 0; c < test_clip_count; c++) {
+		/* under the sanitizers or an emulator the clips of 400 frames or
+		 * fewer, as test_codec_corpus (two conversions and three fk runs
+		 * a clip, a frame's cost the same); natively every one */
+		if (slow && test_clips[c].frames > 400)
+			continue;
 		char asf[4096], amc[4096], args[8192];
 		snprintf(asf, sizeof asf, "%s", test_data_path(test_clips[c].asf));
 		snprintf(amc, sizeof amc, "%s", test_data_path(test_clips[c].amc));
@@ -329,8 +335,14 @@ static void test_bvh_packs_and_plays(void **state)
 	if (!shared_bvh(src))
 		skip();
 	const char *skn = test_scratch("bvh.skn"), *out = test_scratch("bvh_frames");
-	assert_int_equal(test_run("%s pack %s --block-size 4096 -o %s > /dev/null", test_tool_path("skintool"), src, skn), 0);
-	assert_int_equal(test_run("%s info %s | grep -q '131_01.*994 frames.*120'", test_tool_path("skintool"), skn), 0);
+	/* under the sanitizers or an emulator its first 100 frames are packed
+	 * (the encoder took 12 s of the test's 24 there on all 994) */
+	const int slow = test_slow();
+	const char *packed = slow ? test_bvh_head(src, 100) : src;
+	assert_int_equal(test_run("%s pack %s --block-size 4096 -o %s > /dev/null", test_tool_path("skintool"), packed, skn),
+			 0);
+	assert_int_equal(test_run("%s info %s | grep -q '131_01.*%d frames.*120'", test_tool_path("skintool"), skn,
+				  slow ? 100 : 994), 0);
 	assert_int_equal(test_run("%s --bvh %s --platform surfaceless --size 160x120 --frames 2 --start 400 --out %s"
 				  " > /dev/null 2>&1", test_tool_path("skinplay"), src, out), 0);
 	char png[4200];
