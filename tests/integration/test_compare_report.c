@@ -376,6 +376,11 @@ static void test_short_clips(void **state)
 	if (!test_data_path("mocap/cmu/09.asf"))
 		skip();
 	for (size_t i = 0; i < sizeof clips / sizeof clips[0]; i++) {
+		/* under the sanitizers or an emulator 09_06 (skin through itself
+		 * at DQBS's worst frame) and backflip (joints past their limits),
+		 * not 02_01 (past its limits too): 10 to 13 s a clip there */
+		if (test_slow() && !strcmp(clips[i][1], "02_01"))
+			continue;
 		char rel[256], asf[1024], amc[1024];
 		snprintf(rel, sizeof rel, "mocap/cmu/%s.asf", clips[i][0]);
 		snprintf(asf, sizeof asf, "%s", test_data_path(rel));
