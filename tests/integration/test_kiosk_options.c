@@ -152,11 +152,13 @@ static void test_show_plays_its_clips_in_turn(void **state)
 	char amc[512]; /* test_tool_path's buffer is shared */
 	snprintf(amc, sizeof amc, "%s", test_tool_path("assets/demo.amc"));
 	/* the demo's first 9.5 s and its first 1 s: lengths of their own, not
-	 * the demo's, which changes with the tour */
+	 * the demo's, which changes with the tour; under the sanitizers or an
+	 * emulator packed raw (the encoder took 9.6 s of this case's 19
+	 * there; the show plays raw clips alike) */
 	snprintf(cmd, sizeof cmd, "awk '/^[0-9]+$/ { n = $1 } n <= 1140' %s > %s && "
 		 "awk '/^[0-9]+$/ { n = $1 } n <= 120' %s > %s && "
-		 "%s pack -q assets/demo.asf %s %s -o %s >/dev/null", amc, clip_a, clip_a, clip_b,
-		 test_tool_path("skintool"), clip_a, clip_b, show);
+		 "%s pack%s -q assets/demo.asf %s %s -o %s >/dev/null", amc, clip_a, clip_a, clip_b,
+		 test_tool_path("skintool"), test_slow() ? " --raw" : "", clip_a, clip_b, show);
 	assert_int_equal(system(cmd), 0);
 	long frames;
 	/* 9.5 s and 1 s at 30 frames a second: 285 + 30 frames */
