@@ -2,7 +2,7 @@
 # The DQBS kernels on the Cortex-M cores that run them (make BOARD=cortex-m0
 # bench): the fixed-point kernel and the float one (soft-float on the M0,
 # the FPU's single precision on the M4F), each built for its board
-# (tests/embedded/emb_bench.c), skinning the test body for two frames.
+# (tests/embedded/emb_bench.c), skinning the test body for one frame.
 #   - instructions a vertex: counted under qemu-system-arm
 #     (tests/embedded/mcu_count.sh), exact for the code the compiler made;
 #   - cycles a vertex, a model, not a measurement: for the M4, llvm-mca's
