@@ -16,7 +16,11 @@ DEB_FLAGS    = $(shell $(DEB_ENV) dpkg-buildflags --get $(1))
 DEB_CFLAGS   = $(call DEB_FLAGS,CFLAGS) $(call DEB_FLAGS,CPPFLAGS)
 DEB_LDFLAGS  = $(call DEB_FLAGS,LDFLAGS)
 HARDENED    := $(if $(filter 1:,$(HARDEN):$(SANITIZE)),1)
+# Asked once (simple variables): EXTRA_CFLAGS is read by more than one
+# flags variable, and each dpkg-buildflags is a Perl start.
 ifeq ($(HARDENED),1)
-  EXTRA_CFLAGS  += $(DEB_CFLAGS)
-  EXTRA_LDFLAGS += $(DEB_LDFLAGS)
+  HARDEN_CFLAGS  := $(DEB_CFLAGS)
+  HARDEN_LDFLAGS := $(DEB_LDFLAGS)
+  EXTRA_CFLAGS   += $(HARDEN_CFLAGS)
+  EXTRA_LDFLAGS  += $(HARDEN_LDFLAGS)
 endif

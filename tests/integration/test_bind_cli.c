@@ -106,7 +106,7 @@ static void bind_mannequin(const char *asf_rel)
 	/* under the sanitizers or an emulator a coarser body (the default
 	 * one's two binds took 10 s under qemu): the same report and balance */
 	assert_int_equal(test_run("%s mannequin %s %s -o %s >/dev/null 2>&1", test_tool_path("skintool"), asf,
-				  test_slow() ? "--detail 36" : "", obj), 0);
+				  test_mannequin_detail(), obj), 0);
 	long verts = count_obj_verts(obj);
 	assert_true(verts > 100);
 	const char *rep = test_scratch("body.txt"), *plain = test_scratch("plain.csv");

@@ -30,7 +30,7 @@ static const char *body_obj(void)
 	if (!path[0]) {
 		snprintf(path, sizeof path, "%s", test_scratch("demo_body.obj"));
 		assert_int_equal(test_run("%s mannequin " ASF " %s -o %s 2> /dev/null", test_tool_path("skintool"),
-					  test_slow() ? "--detail 36" : "", path), 0);
+					  test_mannequin_detail(), path), 0);
 	}
 	return path;
 }

@@ -25,6 +25,7 @@
 #include "png_writer.h"
 #include "test_paths.h"
 #include "test_report.h"
+#include "test_run.h"
 
 static char last_report[1024]; /* backflip's report, for the page in Chromium */
 
@@ -380,20 +381,6 @@ static void paragraph(const char *page, const char *id, char *out, size_t cap)
 	out[n] = '\0';
 }
 
-/* Under the sanitizers or an emulator the clip at amc is cut to its first
- * seconds (at 120 Hz), under its name in the report's directory: the
- * measurement's time grows with the frames (131_04's 1,086 took 13 s
- * there), the renders' and the page's does not. */
-static void first_seconds(char *amc, size_t size, int seconds)
-{
-	char head[2200], cmd[8192];
-	snprintf(head, sizeof head, "%s/%s", test_report_dir(), strrchr(amc, '/') ? strrchr(amc, '/') + 1 : amc);
-	snprintf(cmd, sizeof cmd, "awk '/^[0-9]+$/ { n = $1 } n <= %d' %s", 120 * seconds, amc);
-	assert_int_equal(test_report_sh(cmd, head), 0);
-	assert_true(strlen(head) < size);
-	strcpy(amc, head);
-}
-
 /* The MakeHuman body on 131_04: the summary names where DQBS keeps more
  * volume around a joint than LBS and where it swells more, with figures;
  * the renders are of different joint regions; the page's total time is
@@ -409,8 +396,11 @@ static void test_joint_truths(void **state)
 	snprintf(amc, sizeof amc, "%s", test_data_path("mocap/cmu/131_04.amc"));
 	snprintf(mesh, sizeof mesh, "%s", test_data_path("mesh/makehuman/base.obj"));
 	snprintf(dir, sizeof dir, "%s/truths", test_report_dir());
+	/* under the sanitizers or an emulator its first 3 s (at 120 Hz), under
+	 * its name: the measurement's time grows with the frames (131_04's
+	 * 1,086 took 13 s there), the renders' and the page's does not */
 	if (test_slow())
-		first_seconds(amc, sizeof amc, 3);
+		snprintf(amc, sizeof amc, "%s", test_clip_head(amc, 3 * 120, test_report_dir()));
 	snprintf(cmd, sizeof cmd, "%s compare %s %s --mesh %s --renders 3 -o %s", test_tool_path("skintool"), asf_path,
 		 amc, mesh, dir);
 	assert_int_equal(test_report_sh(cmd, NULL), 0);

@@ -63,7 +63,8 @@ static int make_body(void)
 		return 0;
 	const char *obj = test_scratch("body.obj");
 	snprintf(body, sizeof body, "--mesh '%s'", obj);
-	return test_run("%s mannequin assets/demo.asf --detail 36 -q -o '%s'", test_tool_path("skintool"), obj);
+	return test_run("%s mannequin assets/demo.asf %s -q -o '%s'", test_tool_path("skintool"), test_mannequin_detail(),
+			obj);
 }
 
 static int setup(void **state)

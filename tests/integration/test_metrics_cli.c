@@ -16,6 +16,7 @@
 #include <unistd.h>
 
 #include "test_paths.h"
+#include "test_run.h"
 
 #define HEADER "frame,algo,volume_ratio,min_radius_ratio,max_radius_ratio"
 
@@ -120,7 +121,7 @@ static void test_cmu_clip_rows(void **state)
 	/* under the sanitizers or an emulator a coarser body (the default
 	 * one's bind and 423 skinned frames took 20 s under qemu) */
 	snprintf(cmd, sizeof cmd, "%s mannequin %s %s -o %s", test_tool_path("skintool"), asf,
-		 test_slow() ? "--detail 36" : "", body);
+		 test_mannequin_detail(), body);
 	free(run(cmd, &status));
 	assert_int_equal(status, 0);
 	snprintf(cmd, sizeof cmd, "%s metrics %s %s %s", test_tool_path("skintool"), asf, amc, body);

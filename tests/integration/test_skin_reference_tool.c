@@ -21,6 +21,7 @@
 #include "skin.h"
 #include "test_parse.h"
 #include "test_paths.h"
+#include "test_run.h"
 #include "test_skinref.h"
 
 static skinref_kernels kern;
@@ -112,7 +113,7 @@ static void test_skintool_skin_output(void **state)
 	 * default one's binds, here and in each skintool skin, took 8 and 12 s
 	 * under qemu) */
 	snprintf(cmd, sizeof cmd, "%s mannequin %s %s -o %s >/dev/null", test_tool_path("skintool"), asf,
-		 test_slow() ? "--detail 36" : "", body_obj);
+		 test_mannequin_detail(), body_obj);
 	sh(cmd);
 	/* the tool's inputs, loaded and bound as it does */
 	parse_obj(body_obj, &in);

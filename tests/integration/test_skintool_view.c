@@ -34,7 +34,7 @@ static void test_rig_and_bvh_in_one_command(void **state)
 	/* under the sanitizers or an emulator its first 120 frames, under its
 	 * name: each view packed all 994 in about 18 s there */
 	if (test_slow())
-		bvh = test_bvh_head(bvh, 120);
+		bvh = test_clip_head(bvh, 120, NULL);
 	size_t before = left_behind();
 	const char *out = test_scratch("frames"), *log = test_scratch("view.log");
 	assert_int_equal(test_run("%s view '%s' '%s' -- --platform surfaceless --size 160x90 --frames 40 --every 20 "

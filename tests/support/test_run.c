@@ -13,6 +13,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <strings.h>
 #include <sys/stat.h>
 #include <sys/wait.h>
 #include <time.h>
@@ -96,15 +97,31 @@ const char *test_scratch(const char *name)
 	return out;
 }
 
-const char *test_bvh_head(const char *path, int frames)
+/* The awk program that keeps a clip's first n frames: a BVH's MOTION
+ * lines after "Frame Time:" (its "Frames:" rewritten), an AMC's frames
+ * numbered up to n (CRLF files too). */
+static const char *head_program(const char *path)
 {
-	static char out[512];
+	size_t len = strlen(path);
+	if (len > 4 && !strcasecmp(path + len - 4, ".bvh"))
+		return "f && ++k > n { exit } /^Frames:/ { $0 = \"Frames: \" n } { print } /^Frame Time:/ { f = 1 }";
+	return "/^[0-9]+\r?$/ { k = $1 + 0 } k <= n";
+}
+
+const char *test_clip_head(const char *path, int frames, const char *in)
+{
+	static char out[1024];
 	const char *name = strrchr(path, '/');
-	snprintf(out, sizeof out, "%s/head/%s", dir, name ? name + 1 : path);
-	if (test_run("mkdir -p '%s/head' && awk -v n=%d 'f && ++k > n { exit } /^Frames:/ { $0 = \"Frames: \" n } "
-		     "{ print } /^Frame Time:/ { f = 1 }' '%s' > '%s'", dir, frames, path, out) != 0)
+	snprintf(out, sizeof out, "%s/head/%s", in ? in : dir, name ? name + 1 : path);
+	if (test_run("mkdir -p '%s/head' && awk -v n=%d '%s' '%s' > '%s'", in ? in : dir, frames, head_program(path), path,
+		     out) != 0)
 		fail_msg("cannot cut %s to %d frames", path, frames);
 	return out;
+}
+
+const char *test_mannequin_detail(void)
+{
+	return test_slow() ? "--detail 36" : "";
 }
 
 int test_run(const char *fmt, ...)

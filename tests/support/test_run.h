@@ -13,11 +13,17 @@ const char *test_scratch_dir(void);
 /* "<scratch>/<name>" in one of 64 rotating static buffers */
 const char *test_scratch(const char *name);
 
-/* The BVH at path cut to its first `frames` frames, under its own name in
- * the scratch directory's head/ (in one static buffer): the short clip a
- * test packs under the sanitizers or an emulator, where the encoder takes
- * about 12 ms a frame. */
-const char *test_bvh_head(const char *path, int frames);
+/* The clip (BVH or AMC) at path cut to its first `frames` frames, under
+ * its own name in head/ of directory in (NULL: the scratch directory), in
+ * one static buffer: the short clip a test packs or measures under the
+ * sanitizers or an emulator, where the encoder takes about 12 ms a frame. */
+const char *test_clip_head(const char *path, int frames, const char *in);
+
+/* skintool mannequin's option for the generated body a test binds only to
+ * run a command on it: natively none (the default body); under the
+ * sanitizers or an emulator "--detail 36", a coarser one (2814 vertices
+ * for CMU subject 02, not 11702: a quarter of the time to bind or skin). */
+const char *test_mannequin_detail(void);
 
 /* Polls the file at path for text for up to seconds (a log a program
  * writes as it runs); 1 when it came. */
