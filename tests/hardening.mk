@@ -1,7 +1,7 @@
 # Hardening targets, included by the Makefile for Linux boards:
 #   make fuzz [SECONDS=600]   libFuzzer (clang) on every tests/fuzz/fuzz_*.c
 #   make fuzz-smoke           the same for 10 s each (CI, when clang is there)
-#   make lint                 cppcheck and clang-tidy over app/ and platform/
+#   make lint [LINT_NODES=225000]  cppcheck and clang-tidy over app/ and platform/
 #   make soak [SOAK_FRAMES=1000000]   a long headless run of skinplay, then a week of faults
 #   make import-sweep         every assimp-testmodels sample through skintool bind (ASan+UBSan)
 #   make damage-sweep [DAMAGE_EVERY=2]  damaged images by class through skinplay, info and repair
