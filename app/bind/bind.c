@@ -225,21 +225,23 @@ float bind_segment_weight(const bind_segment *g, vec3 p, int *inside)
 
 float bind_segment_distance(const bind_segment *g, vec3 p)
 {
-	vec3 q = vec3_sub(p, g->head);
-	float s = clampf(vec3_dot(q, g->dir), 0.0f, g->length);
-	return vec3_length(vec3_madd(q, g->dir, -s));
+	return sqrtf(bind_segment_distance2(g, p));
 }
 
+/* A segment whose square is not below the nearest's cannot be nearer
+ * (sqrtf is monotonic); the others are compared by their roots, as
+ * before, so that segments whose roots tie keep the first. */
 static int nearest_bone(const bind_rig *rig, vec3 p, float *dist)
 {
 	int best = 0;
-	float best_d = INFINITY;
+	float best_d = INFINITY, best_d2 = INFINITY;
 	for (int b = 1; b < rig->bone_count; b++) {
 		if (rig->seg[b].length <= 0.0f)
 			continue;
-		float d = bind_segment_distance(&rig->seg[b], p);
-		if (d < best_d) {
+		float d2 = bind_segment_distance2(&rig->seg[b], p), d;
+		if (d2 < best_d2 && (d = sqrtf(d2)) < best_d) {
 			best_d = d;
+			best_d2 = d2;
 			best = b;
 		}
 	}

@@ -47,12 +47,14 @@ static void set_segments(bind_gate_work *w, const skel_pose *p)
 /* Distance to the nearest bone of the current segments; *bone gets it (0: none). */
 static float nearest(const bind_gate_work *w, vec3 q, int *bone)
 {
-	float best = INFINITY;
+	float best = INFINITY, best2 = INFINITY;
 	*bone = 0;
+	/* roots only below the nearest square so far, as nearest_bone */
 	for (int k = 0; k < w->seg_count; k++) {
-		float d = bind_segment_distance(&w->seg[k], q);
-		if (d < best) {
+		float d2 = bind_segment_distance2(&w->seg[k], q), d;
+		if (d2 < best2 && (d = sqrtf(d2)) < best) {
 			best = d;
+			best2 = d2;
 			*bone = w->seg_bone[k];
 		}
 	}

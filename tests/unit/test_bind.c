@@ -71,6 +71,22 @@ static void test_segments_and_ramps(void **state)
 	assert_float_equal(rig.seg[0].length, 0.0f, 0.0f);
 }
 
+/* The distance to a bone's segment, beside, before its head and past its
+ * tip; bit for bit the root of its square (the nearest-bone searches
+ * compare squares and take one root). */
+static void test_segment_distance(void **state)
+{
+	(void)state;
+	two_bones();
+	const vec3 p[] = { { 3, 4, 0 }, { 0, -2, 0 }, { 0, 13, 4 }, { 1e-3f, 7.3f, -2.9f } };
+	const float want[] = { 3.0f, 2.0f, 5.0f, 2.9f };
+	for (int i = 0; i < 4; i++) {
+		float d = bind_segment_distance(&rig.seg[1], p[i]), d2 = bind_segment_distance2(&rig.seg[1], p[i]);
+		assert_float_equal(d, want[i], 1e-5f);
+		assert_memory_equal(&d, &(float){ sqrtf(d2) }, sizeof d);
+	}
+}
+
 static void test_mid_bone_gets_one(void **state)
 {
 	(void)state;
@@ -477,6 +493,7 @@ int main(void)
 {
 	const struct CMUnitTest tests[] = {
 		cmocka_unit_test(test_segments_and_ramps),
+		cmocka_unit_test(test_segment_distance),
 		cmocka_unit_test(test_mid_bone_gets_one),
 		cmocka_unit_test(test_joint_is_half_half),
 		cmocka_unit_test(test_ramp_past_joint_is_linear),
