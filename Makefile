@@ -20,7 +20,13 @@ else
 include app/sources.mk
 
 ifeq ($(SANITIZE),1)
-  SAN_FLAGS := -fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=undefined
+  # Line tables only (-g1, after the board's -g): the file and line a
+  # report names, without the variables' debug information, which cost
+  # a fifth of the compile time (six of the heaviest files: 5.7 processor
+  # seconds against 6.9). -O1, ASan's own advice, halves the compile time
+  # but slows the sanitized tests by about as much (547 processor seconds
+  # against 494).
+  SAN_FLAGS := -g1 -fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=undefined
   OUT       := $(BUILD)/san
 else
   SAN_FLAGS :=
