@@ -88,10 +88,7 @@ awk -v n=500 -v span="$span_ms" 'BEGIN {
 
 echo "soak: $frames frames, image $dir/damaged.skn (bad blocks: $rebuilt rebuilt from parity, $lost beyond repair), buttons $dir/buttons.txt"
 start=$(date +%s)
-# Mesa's llvmpipe draws in skinplay's own thread: at 160x90 its rasterizer
-# threads cost a third of the processor time (2,000 frames: 4.8 s without,
-# 6.9 s with), and they are Mesa's, not the kiosk's (a board draws on its GPU).
-LP_NUM_THREADS=0 "$play" --image "$dir/damaged.skn" --platform surfaceless --size 160x90 --frames "$frames" \
+"$play" --image "$dir/damaged.skn" --platform surfaceless --size 160x90 --frames "$frames" \
 	--hud-fps off --input "script:$dir/buttons.txt" >"$dir/skinplay.log" 2>&1 &
 pid=$!
 : >"$dir/rss.txt"
