@@ -223,26 +223,34 @@ float bind_segment_weight(const bind_segment *g, vec3 p, int *inside)
 	return w;
 }
 
+float bind_segment_distance2(const bind_segment *g, vec3 p)
+{
+	vec3 q = vec3_sub(p, g->head);
+	float s = clampf(vec3_dot(q, g->dir), 0.0f, g->length);
+	vec3 r = vec3_madd(q, g->dir, -s);
+	return vec3_dot(r, r);
+}
+
 float bind_segment_distance(const bind_segment *g, vec3 p)
 {
 	return sqrtf(bind_segment_distance2(g, p));
 }
 
 /* A segment whose square is not below the nearest's cannot be nearer
- * (sqrtf is monotonic); the others are compared by their roots, as
- * before, so that segments whose roots tie keep the first. */
-static int nearest_bone(const bind_rig *rig, vec3 p, float *dist)
+ * (sqrtf is monotonic); the others are compared by their roots, so that
+ * segments whose roots tie keep the first. */
+int bind_segment_nearest(const bind_segment *seg, int n, vec3 p, float *dist)
 {
-	int best = 0;
+	int best = -1;
 	float best_d = INFINITY, best_d2 = INFINITY;
-	for (int b = 1; b < rig->bone_count; b++) {
-		if (rig->seg[b].length <= 0.0f)
+	for (int k = 0; k < n; k++) {
+		if (seg[k].length <= 0.0f)
 			continue;
-		float d2 = bind_segment_distance2(&rig->seg[b], p), d;
+		float d2 = bind_segment_distance2(&seg[k], p), d;
 		if (d2 < best_d2 && (d = sqrtf(d2)) < best_d) {
 			best_d = d;
 			best_d2 = d2;
-			best = b;
+			best = k;
 		}
 	}
 	*dist = best_d;
@@ -307,7 +315,7 @@ static int bind_vertex(const bind_rig *rig, const uint16_t *bone, vec3 p, skin_w
 	 * the crotch or the armpit a box may reach a limb the vertex does not
 	 * belong to */
 	float dist;
-	int nearest = nearest_bone(rig, p, &dist);
+	int nearest = bind_segment_nearest(rig->seg + 1, rig->bone_count - 1, p, &dist) + 1; /* 0: none */
 	float w[SKP_MAX_BONES];
 	int outside = !(near_weights(rig, nearest, p, 0.0f, w) > 0.0f);
 	/* beyond the boxes' radius (the flanks of a wide trunk around short

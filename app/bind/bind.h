@@ -136,17 +136,12 @@ float bind_segment_weight(const bind_segment *g, vec3 p, int *inside);
 
 /* Distance from p to the segment H-T. */
 float bind_segment_distance(const bind_segment *g, vec3 p);
-/* Its square: a search for the nearest segment takes the root of the
- * nearest only (bind_segment_distance is exactly sqrtf of it). Inline:
- * the bind gate asks it for every vertex, bone and frame it samples. */
-static inline float bind_segment_distance2(const bind_segment *g, vec3 p)
-{
-	vec3 q = vec3_sub(p, g->head);
-	float s = vec3_dot(q, g->dir);
-	s = s < 0.0f ? 0.0f : s > g->length ? g->length : s;
-	vec3 r = vec3_madd(q, g->dir, -s);
-	return vec3_dot(r, r);
-}
+/* Its square (bind_segment_distance is exactly sqrtf of it). */
+float bind_segment_distance2(const bind_segment *g, vec3 p);
+/* The nearest of the n segments seg[] with a length to p: its index, its
+ * distance in *dist; -1 and INFINITY when none has a length (or every
+ * distance is NaN). Of two at the same distance, the first. */
+int bind_segment_nearest(const bind_segment *seg, int n, vec3 p, float *dist);
 
 /* Weights of n vertices (n <= SKP_MAX_VERTS); info may be NULL. Fails on
  * too many vertices or a non-finite position. */

@@ -47,18 +47,10 @@ static void set_segments(bind_gate_work *w, const skel_pose *p)
 /* Distance to the nearest bone of the current segments; *bone gets it (0: none). */
 static float nearest(const bind_gate_work *w, vec3 q, int *bone)
 {
-	float best = INFINITY, best2 = INFINITY;
-	*bone = 0;
-	/* roots only below the nearest square so far, as nearest_bone */
-	for (int k = 0; k < w->seg_count; k++) {
-		float d2 = bind_segment_distance2(&w->seg[k], q), d;
-		if (d2 < best2 && (d = sqrtf(d2)) < best) {
-			best = d;
-			best2 = d2;
-			*bone = w->seg_bone[k];
-		}
-	}
-	return w->seg_count ? best : 0.0f;
+	float d;
+	int k = bind_segment_nearest(w->seg, w->seg_count, q, &d);
+	*bone = k < 0 ? 0 : w->seg_bone[k];
+	return w->seg_count ? d : 0.0f;
 }
 
 static float extent_of(const skel *s, const skel_pose *p)
