@@ -136,8 +136,8 @@ static void forearm_twist(pose *p, double s)
  * the body and the close-up both see the fold in profile: from the front
  * the forearm hides it, and the close-up, kept within 60 degrees of the
  * main view, saw it half from the front (0.7% of the panels differed;
- * 1.5% turned, 5.2% with the close-up on the fold's point,
- * render_closeup.h). Not rolled: a roll of the upper arm parts the
+ * 1.5% turned, 5.2% with the close-up on the fold's point, 11.1%
+ * aimed at the fold's outside, render_closeup.h). Not rolled: a roll of the upper arm parts the
  * methods more at the shoulder than the bend does at the elbow, and the
  * close-up shows the shoulder. */
 static void elbow_bend(pose *p, double s)

@@ -12,14 +12,18 @@
 #define CLOSEUP_HOLD_S 2.0f    /* seconds a joint is shown at least */
 #define CLOSEUP_SWITCH 1.25f   /* another joint must differ this much more */
 #define CLOSEUP_SPAN 0.09f     /* the inset shows a sphere this radius (of the body's size), */
-#define CLOSEUP_REACH 1.25f    /* or round where the methods part: this times that reach, */
-#define CLOSEUP_SPAN_MIN 0.028f /* within these (of the body's size) */
+#define CLOSEUP_REACH 1.1f     /* or round where the methods part: this times that reach, */
+#define CLOSEUP_SPAN_MIN 0.024f /* within these (of the body's size) */
 #define CLOSEUP_SPAN_MAX 0.14f
 /* A joint bent past 60 degrees is framed this much of its shorter bone at
  * least: the fold's point with the two bones leaving it. 0.85 showed both
  * bones whole, and the elbow's parting (21 mm at the fold's point) in a
- * sliver of the inset (1.5% of the panels differed, 5.2% at 0.45). */
-#define CLOSEUP_FOLD_SHOWN 0.45f
+ * sliver of the inset (1.5% of the panels differed); 0.45 5.2%, aimed
+ * within the arm, between the hidden crease and the point. Aimed at the
+ * fold's outside (skin_diff_focus), 0.26 shows the point whole and
+ * the arm above it (11%; the generated body's elbow is framed at about
+ * CLOSEUP_SPAN_MIN). */
+#define CLOSEUP_FOLD_SHOWN 0.26f
 /* The glide's time constant, in seconds: half the main camera's, so that
  * the close-up settles on a joint within the first second of its hold.
  * Between two joints its view may pass through the body (the elbow's

@@ -25,11 +25,13 @@ static float to_segment(vec3 p, vec3 head, vec3 tip)
 	return vec3_length(vec3_sub(ap, vec3_scale(ab, t)));
 }
 
-void skin_diff_init(skin_diff *d, const skel *s, const skel_pose *bind, const skin_soa *soa)
+void skin_diff_init(skin_diff *d, const skel *s, const skel_pose *bind, const skel_joints *joints,
+		    const skin_soa *soa)
 {
 	d->count = soa->count;
 	d->bone_count = s->count;
 	memset(d->score, 0, sizeof d->score);
+	d->joints = joints;
 	for (int v = 0; v < soa->count; v++) {
 		vec3 p = vec3_make(soa->px[v], soa->py[v], soa->pz[v]);
 		int b = soa->bone[0][v]; /* the largest weight comes first */
@@ -89,39 +91,88 @@ float skin_diff_from_bind(skin_diff *d, const skel_pose *pose, const float *pos,
 	return most;
 }
 
-vec3 skin_diff_focus(const skin_diff *d, const float *a, const float *b, int joint, int *found, float *reach)
+vec3 skin_fold_outside(vec3 axis, vec3 parent)
 {
-	/* the weights' sum, the weighted midpoints and their squared lengths:
-	 * the centroid and the spread round it from the one pass */
-	double w = 0.0, m[3] = { 0.0, 0.0, 0.0 }, m2 = 0.0;
+	float la = vec3_length(axis), lp = vec3_length(parent);
+	if (la <= 0.0f || lp <= 0.0f || vec3_dot(axis, parent) >= SKIN_FOLD_COS * la * lp)
+		return vec3_make(0.0f, 0.0f, 0.0f);
+	return vec3_normalize(vec3_sub(vec3_scale(parent, 1.0f / lp), vec3_scale(axis, 1.0f / la)));
+}
+
+/* The weights' sum, the weighted midpoints and their squared lengths:
+ * the centroid and the spread round it from the one pass. */
+typedef struct focus_sum {
+	double w, m[3], m2;
+} focus_sum;
+
+static void focus_add(focus_sum *s, double e, const double mid[3], double mid2)
+{
+	s->w += e;
+	for (int k = 0; k < 3; k++)
+		s->m[k] += e * mid[k];
+	s->m2 += e * mid2;
+}
+
+static vec3 focus_centre(const focus_sum *s, float *reach)
+{
+	double w = s->w;
+	vec3 at = vec3_make((float)(s->m[0] / w), (float)(s->m[1] / w), (float)(s->m[2] / w));
+	if (reach) {
+		double spread = s->m2 / w - (s->m[0] * s->m[0] + s->m[1] * s->m[1] + s->m[2] * s->m[2]) / (w * w);
+		*reach = spread > 0.0 ? (float)sqrt(spread) : 0.0f;
+	}
+	return at;
+}
+
+/* The way out of the fold of joint, an elbow or knee, in pose
+ * (skin_fold_outside); zero for any other joint. */
+static vec3 fold_of(const skin_diff *d, const skel_pose *pose, int joint)
+{
+	const skel_joints *j = d->joints;
+	vec3 none = vec3_make(0.0f, 0.0f, 0.0f);
+	if (!j || (j->kind[joint] != JOINT_ELBOW && j->kind[joint] != JOINT_KNEE))
+		return none;
+	int up = j->skel->bone[joint].parent;
+	if (up < 0)
+		return none;
+	return skin_fold_outside(vec3_sub(pose->tip[joint], pose->head[joint]), vec3_sub(pose->tip[up], pose->head[up]));
+}
+
+/* A vertex's weight in the focus, the squared distance between p and q,
+ * and their midpoint with its squared length. */
+static double parting(const float *p, const float *q, double mid[3], double *mid2)
+{
+	double e2 = 0.0;
+	*mid2 = 0.0;
+	for (int k = 0; k < 3; k++) {
+		double dk = (double)p[k] - q[k];
+		mid[k] = 0.5 * ((double)p[k] + q[k]);
+		e2 += dk * dk;
+		*mid2 += mid[k] * mid[k];
+	}
+	return e2;
+}
+
+vec3 skin_diff_focus(const skin_diff *d, const skel_pose *pose, const float *a, const float *b, int joint, int *found,
+		     float *reach)
+{
+	vec3 out = fold_of(d, pose, joint), head = pose->head[joint];
+	focus_sum all = { 0 }, outside = { 0 };
 	for (int v = 0; v < d->count; v++) {
 		if (d->joint[v] != joint)
 			continue;
-		const float *p = a + 3 * v, *q = b + 3 * v;
-		double e = 0.0, mid2 = 0.0, mid[3];
-		for (int k = 0; k < 3; k++) {
-			double dk = (double)p[k] - q[k];
-			mid[k] = 0.5 * ((double)p[k] + q[k]);
-			e += dk * dk;
-			mid2 += mid[k] * mid[k];
-		}
-		w += e;
-		for (int k = 0; k < 3; k++)
-			m[k] += e * mid[k];
-		m2 += e * mid2;
+		double mid[3], mid2, e = parting(a + 3 * v, b + 3 * v, mid, &mid2);
+		focus_add(&all, e, mid, mid2);
+		if ((mid[0] - head.x) * out.x + (mid[1] - head.y) * out.y + (mid[2] - head.z) * out.z > 0.0)
+			focus_add(&outside, e, mid, mid2);
 	}
-	*found = w > 0.0;
+	*found = all.w > 0.0;
 	if (!*found) {
 		if (reach)
 			*reach = 0.0f;
 		return vec3_make(0.0f, 0.0f, 0.0f);
 	}
-	vec3 at = vec3_make((float)(m[0] / w), (float)(m[1] / w), (float)(m[2] / w));
-	if (reach) {
-		double spread = m2 / w - (m[0] * m[0] + m[1] * m[1] + m[2] * m[2]) / (w * w);
-		*reach = spread > 0.0 ? (float)sqrt(spread) : 0.0f;
-	}
-	return at;
+	return focus_centre(outside.w > 0.0 ? &outside : &all, reach);
 }
 
 int skin_diff_worst(const skin_diff *d)

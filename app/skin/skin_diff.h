@@ -12,10 +12,12 @@
 
 #include <stdint.h>
 
+#include "skel_joints.h"
 #include "skin.h"
 
 typedef struct skin_diff {
 	int count, bone_count;
+	const skel_joints *joints;       /* as given to skin_diff_init (kept; NULL: none) */
 	uint8_t joint[SKP_MAX_VERTS];    /* the joint nearest each vertex as bound */
 	uint8_t bone[SKP_MAX_VERTS];     /* its heaviest bone (SKP_MAX_BONES: none) */
 	float radius[SKP_MAX_VERTS];     /* its distance to that bone as bound */
@@ -23,8 +25,10 @@ typedef struct skin_diff {
 } skin_diff;
 
 /* Sorts the vertices of soa (bound in pose bind) to their joints and
- * bones. */
-void skin_diff_init(skin_diff *d, const skel *s, const skel_pose *bind, const skin_soa *soa);
+ * bones. joints (s's, found in bind; NULL when unknown) must outlive d:
+ * the focus asks which joints are elbows and knees. */
+void skin_diff_init(skin_diff *d, const skel *s, const skel_pose *bind, const skel_joints *joints,
+		    const skin_soa *soa);
 
 /* How far each vertex of a (xyz triples) lies from b's: into dist when
  * not NULL, the largest per joint into d->score. Returns the largest. */
@@ -36,13 +40,29 @@ float skin_diff_between(skin_diff *d, const float *a, const float *b, float *dis
  * Returns the largest magnitude. */
 float skin_diff_from_bind(skin_diff *d, const skel_pose *pose, const float *pos, float *dist);
 
-/* Where joint's vertices of a (xyz triples) lie furthest from b's: their
- * midpoints' centroid weighted by the squared distance, so the close-up
- * centres on the change, not on the joint's head (a shoulder's differ at
- * the armpit); into *reach (when not NULL) how far round it they part,
- * their root-mean-squared distance from it with the same weights, which
- * the close-up frames. *found 0 when they do not part at all. One pass. */
-vec3 skin_diff_focus(const skin_diff *d, const float *a, const float *b, int joint, int *found, float *reach);
+/* An elbow or knee is folded when its two bones are bent past a right
+ * angle: the inside of the fold, where LBS's crease collapses, then lies
+ * hidden between the two bones' flesh, and the fold's point outside it
+ * is what the close-up can show. */
+#define SKIN_FOLD_COS 0.0f
+
+/* From the head of a joint whose bone points along axis, its parent's
+ * along parent, towards the outside of the fold they make (unit); zero
+ * when they are not bent past SKIN_FOLD_COS. */
+vec3 skin_fold_outside(vec3 axis, vec3 parent);
+
+/* Where joint's vertices of a (xyz triples, skinned in pose) lie furthest
+ * from b's: their midpoints' centroid weighted by the squared distance,
+ * so the close-up centres on the change, not on the joint's head (a
+ * shoulder's differ at the armpit). Of a folded elbow or knee only the
+ * vertices on the outside of the fold count, when any part there: the
+ * inside is hidden, and the centroid of both would lie within the limb
+ * (a curled elbow's: between its hidden crease and its point). Into *reach
+ * (when not NULL) how far round it they part, their root-mean-squared
+ * distance from it with the same weights, which the close-up frames.
+ * *found 0 when they do not part at all. One pass. */
+vec3 skin_diff_focus(const skin_diff *d, const skel_pose *pose, const float *a, const float *b, int joint, int *found,
+		     float *reach);
 
 /* The joint of the largest score (-1 when every score is 0). */
 int skin_diff_worst(const skin_diff *d);

@@ -14,8 +14,8 @@
 
 void closeup_setup(skinplay *p)
 {
-	skin_diff_init(&p->diff, &p->body.skel, &p->body.pose, &p->skin.soa);
 	skel_joints_find(&p->body.skel, &p->body.pose, &p->joints);
+	skin_diff_init(&p->diff, &p->body.skel, &p->body.pose, &p->joints, &p->skin.soa);
 	closeup_pick_init(&p->pick);
 	if (p->render_ready)
 		render_set_units(&p->r, (float)(10.0 * skel_unit_cm(&p->body.skel)));
@@ -59,7 +59,7 @@ static void fill_closeup(skinplay *p, render_frame *f, int joint)
 	if (joint < 0)
 		return;
 	int found;
-	vec3 at = skin_diff_focus(&p->diff, p->pos[0], p->pos[1], joint, &found, &c->span);
+	vec3 at = skin_diff_focus(&p->diff, &p->skin.pose, p->pos[0], p->pos[1], joint, &found, &c->span);
 	c->focus = found ? at : p->skin.pose.head[joint];
 	skel_joint_turn t;
 	int deg, named = skel_joint_turning(&p->body.skel, &p->joints, &p->body.pose, &p->skin.pose, joint, &t);

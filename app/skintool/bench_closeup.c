@@ -52,7 +52,7 @@ int bench_closeup(const skin_soa *soa, const skin_bones *bones, double kernels_n
 	}
 	float *b = a + 3 * pad, *nrm = b + 3 * pad;
 	make_skeleton(&s, &bind);
-	skin_diff_init(&d, &s, &bind, soa);
+	skin_diff_init(&d, &s, &bind, NULL, soa);
 	skin_run(SKIN_LBS, soa, bones, 0, soa->padded, &(skin_out){ .pos = a, .nrm = nrm });
 	skin_run(SKIN_DQBS, soa, bones, 0, soa->padded, &(skin_out){ .pos = b, .nrm = nrm });
 	double best[3] = { 1e30, 1e30, 1e30 };
@@ -62,7 +62,7 @@ int bench_closeup(const skin_soa *soa, const skin_bones *bones, double kernels_n
 		skin_diff_between(&d, a, b, NULL);
 		uint64_t t1 = clock_now_ns();
 		float reach;
-		skin_diff_focus(&d, a, b, skin_diff_worst(&d), &found, &reach);
+		skin_diff_focus(&d, &bind, a, b, skin_diff_worst(&d), &found, &reach);
 		uint64_t t2 = clock_now_ns();
 		skin_diff_between(&d, a, b, dist);
 		render_diff_colours(dist, n, 25.4f, 0, rgba);

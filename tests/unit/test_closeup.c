@@ -68,9 +68,13 @@ static void test_span_wants(void **state)
 	assert_float_equal(closeup_span_want(0.0f, x, x, h), CLOSEUP_SPAN * h, 1e-5f);
 	assert_float_equal(closeup_span_want(0.1f, x, x, h), CLOSEUP_SPAN_MIN * h, 1e-5f);
 	assert_float_equal(closeup_span_want(50.0f, x, x, h), CLOSEUP_SPAN_MAX * h, 1e-5f);
-	/* bent 90 degrees: the shorter bone (8) sets it; folded back: 9.06 */
-	assert_float_equal(closeup_span_want(2.5f, x, y, h), CLOSEUP_FOLD_SHOWN * 8.0f, 1e-4f);
-	assert_float_equal(closeup_span_want(2.5f, back, x, h), CLOSEUP_FOLD_SHOWN * sqrtf(82.0f), 1e-4f);
+	/* bent 90 degrees: the shorter bone (8) sets it; folded back: 9.06
+	 * (on a body whose smallest close-up is under either) */
+	float small = 0.5f * h;
+	assert_float_equal(closeup_span_want(1.0f, x, y, small), CLOSEUP_FOLD_SHOWN * 8.0f, 1e-4f);
+	assert_float_equal(closeup_span_want(1.0f, back, x, small), CLOSEUP_FOLD_SHOWN * sqrtf(82.0f), 1e-4f);
+	/* 60 degrees is not yet folded */
+	assert_float_equal(closeup_span_want(1.2f, vec3_make(1, sqrtf(3.0f), 0), x, small), CLOSEUP_REACH * 1.2f, 1e-4f);
 	/* bent 45 degrees: still round the parting */
 	assert_float_equal(closeup_span_want(3.0f, vec3_make(1, 1, 0), x, h), CLOSEUP_REACH * 3.0f, 1e-5f);
 }
@@ -104,7 +108,7 @@ static void test_diff_scores_and_focus(void **state)
 		for (int k = 1; k < SKP_MAX_INFLUENCES; k++)
 			soa.bone[k][v] = 0, soa.weight[k][v] = 0.0f;
 	}
-	skin_diff_init(&d, &sk, &bind, &soa);
+	skin_diff_init(&d, &sk, &bind, NULL, &soa);
 	float a[24], b[24];
 	for (int v = 0; v < 8; v++) {
 		a[3 * v] = b[3 * v] = soa.px[v];
@@ -119,16 +123,76 @@ static void test_diff_scores_and_focus(void **state)
 	assert_int_equal(skin_diff_worst(&d), 0);
 	int found;
 	float reach;
-	vec3 at = skin_diff_focus(&d, a, b, 0, &found, &reach);
+	vec3 at = skin_diff_focus(&d, &bind, a, b, 0, &found, &reach);
 	assert_true(found);
-	assert_true(fabsf(at.x - (0.09f * 0.2f + 0.01f * 0.3f) / 0.1f) < 1e-4f);
-	/* the spread round it: the midpoints (0.2, 0.35) and (0.3, 0.45)
-	 * weighing 0.9 and 0.1, from (0.21, 0.36) */
-	assert_true(fabsf(reach - sqrtf(0.9f * 0.0002f + 0.1f * 0.0162f)) < 1e-4f);
+	/* weighed by the squared distance: 0.09 and 0.01 */
+	float w2 = 0.09f, w3 = 0.01f, w = w2 + w3;
+	assert_true(fabsf(at.x - (w2 * 0.2f + w3 * 0.3f) / w) < 1e-5f);
+	/* the spread round it: of the midpoints (0.2, 0.35) and (0.3, 0.45),
+	 * 0.02 apart squared, the root of the weights' product times that */
+	assert_true(fabsf(reach - sqrtf(w2 / w * w3 / w * 0.02f)) < 1e-5f);
 	/* the skin's distance from its bone: vertex 2 came 0.3 nearer */
 	float dist[8];
 	skin_diff_from_bind(&d, &bind, b, dist);
 	assert_true(fabsf(dist[2] + 0.3f) < 1e-5f && fabsf(dist[0]) < 1e-6f);
+}
+
+/* An elbow folded past a right angle: its vertices part on both sides,
+ * more on the inside (hidden between the bones), and the focus is the
+ * outside's alone; straight, or any joint but an elbow or knee, it is the
+ * weighted centre of all. */
+static skel_joints joints;
+
+static void test_focus_outside_fold(void **state)
+{
+	(void)state;
+	static skin_diff d;
+	skin_soa soa;
+	memset(&sk, 0, sizeof sk);
+	sk.count = 2;
+	sk.bone[0].parent = -1;
+	sk.bone[1].parent = 0;
+	bind.head[0] = vec3_make(-4, 0, 0);
+	bind.tip[0] = bind.head[1] = vec3_make(0, 0, 0);
+	bind.tip[1] = vec3_make(-1, 3, 0); /* back past a right angle from bone 0's +x */
+	memset(&joints, 0, sizeof joints);
+	joints.count = 2;
+	joints.skel = &sk;
+	joints.kind[1] = JOINT_ELBOW;
+	vec3 out = skin_fold_outside(vec3_sub(bind.tip[1], bind.head[1]), vec3_sub(bind.tip[0], bind.head[0]));
+	assert_true(out.x > 0.5f && out.y < -0.5f && fabsf(vec3_length(out) - 1.0f) < 1e-5f);
+	out = skin_fold_outside(vec3_make(0.2f, 1, 0), vec3_make(1, 0, 0)); /* 79 degrees: not folded */
+	assert_true(vec3_dot(out, out) == 0.0f);
+	skin_soa_attach(&soa, block, 2);
+	float at_x[2] = { 0.3f, -0.3f }, at_y[2] = { -0.3f, 0.3f }; /* outside, inside */
+	for (int v = 0; v < 2; v++) {
+		soa.px[v] = at_x[v], soa.py[v] = at_y[v], soa.pz[v] = 0.0f;
+		soa.bone[0][v] = 1, soa.weight[0][v] = 1.0f;
+		for (int k = 1; k < SKP_MAX_INFLUENCES; k++)
+			soa.bone[k][v] = 0, soa.weight[k][v] = 0.0f;
+	}
+	skin_diff_init(&d, &sk, &bind, &joints, &soa);
+	float a[6] = { 0.3f, -0.3f, 0, -0.3f, 0.3f, 0 }, b[6] = { 0.3f, -0.4f, 0, -0.3f, 0.6f, 0 };
+	int found;
+	vec3 at = skin_diff_focus(&d, &bind, a, b, 1, &found, NULL);
+	assert_true(found);
+	assert_float_equal(at.x, 0.3f, 1e-5f);
+	assert_float_equal(at.y, -0.35f, 1e-5f);
+	/* a shoulder so bent: both, weighed 0.01 and 0.09 */
+	float both = (0.01f * 0.3f - 0.09f * 0.3f) / 0.1f;
+	joints.kind[1] = JOINT_SHOULDER;
+	at = skin_diff_focus(&d, &bind, a, b, 1, &found, NULL);
+	assert_float_equal(at.x, both, 1e-5f);
+	/* the elbow straight: both */
+	joints.kind[1] = JOINT_ELBOW;
+	bind.tip[1] = vec3_make(4, 0, 0);
+	at = skin_diff_focus(&d, &bind, a, b, 1, &found, NULL);
+	assert_float_equal(at.x, both, 1e-5f);
+	/* folded, with nothing parting outside: all of them */
+	bind.tip[1] = vec3_make(-1, 3, 0);
+	b[1] = -0.3f;
+	at = skin_diff_focus(&d, &bind, a, b, 1, &found, NULL);
+	assert_float_equal(at.x, -0.3f, 1e-5f);
 }
 
 int main(void)
@@ -138,6 +202,7 @@ int main(void)
 		cmocka_unit_test(test_camera_glides),
 		cmocka_unit_test(test_span_wants),
 		cmocka_unit_test(test_diff_scores_and_focus),
+		cmocka_unit_test(test_focus_outside_fold),
 	};
 	return cmocka_run_group_tests(tests, NULL, NULL);
 }

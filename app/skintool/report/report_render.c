@@ -59,8 +59,8 @@ int report_view_open(report_view *v, const runtime_skin *sk, const mesh *m, cons
 	v->scene = 0;
 	render_set_units(&v->r, (float)(10.0 * skel_unit_cm(sk->skel)));
 	v->span = CLOSEUP_SPAN * v->r.cam.height;
-	skin_diff_init(&v->diff, sk->skel, sk->bind, &sk->soa);
 	skel_joints_find(sk->skel, sk->bind, &v->joints);
+	skin_diff_init(&v->diff, sk->skel, sk->bind, &v->joints, &sk->soa);
 	return 0;
 }
 
@@ -140,7 +140,7 @@ const report_part *report_view_pose(report_view *v, runtime_skin *sk)
 	p->reach = 0.0f;
 	if (p->joint >= 0) {
 		int found;
-		vec3 at = skin_diff_focus(&v->diff, v->pos[0], v->pos[1], p->joint, &found, NULL);
+		vec3 at = skin_diff_focus(&v->diff, &sk->pose, v->pos[0], v->pos[1], p->joint, &found, NULL);
 		p->focus = found ? at : sk->pose.head[p->joint];
 		p->reach = reach(v, p->joint, p->focus);
 	}
