@@ -11,7 +11,9 @@
 #define CLAMP_ROUNDS 6
 
 /* (L + eps I) x on the free slots: neighbours outside the band or clamped
- * count as 0 (the field vanishes at the border). */
+ * count as 0 (the field vanishes at the border). x is 0 on the clamped
+ * slots (solve_field keeps it so), so a clamped neighbour needs no test:
+ * subtracting its +0.0 leaves the sum as it was, bit for bit. */
 static void apply_laplacian(const bind_balance_work *w, int m, const double *x, double *out)
 {
 	for (int i = 0; i < m; i++) {
@@ -23,7 +25,7 @@ static void apply_laplacian(const bind_balance_work *w, int m, const double *x, 
 		double s = ((double)(b - a) + SOLVE_EPS) * x[i];
 		for (uint32_t k = a; k < b; k++) {
 			int32_t j = w->slot[w->adj[k]];
-			if (j >= 0 && !w->clamped[j])
+			if (j >= 0)
 				s -= x[j];
 		}
 		out[i] = s;
@@ -39,7 +41,8 @@ static double dot(const double *a, const double *b, int m)
 }
 
 /* Conjugate gradients for (L + eps I) x = component k of the arm, on the
- * free slots. */
+ * free slots. The direction p starts and stays +0.0 on the clamped ones
+ * (their residual is 0, and so is their row of the product). */
 static void solve_field(bind_balance_work *w, int m, int k, double *x)
 {
 	double *r = w->cg_r, *p = w->cg_p, *kp = w->cg_kp;
