@@ -136,7 +136,7 @@ static void forearm_twist(pose *p, double s)
  * the body and the close-up both see the fold in profile: from the front
  * the forearm hides it, and the close-up, kept within 60 degrees of the
  * main view, saw it half from the front (0.7% of the panels differed;
- * 1.5% turned, 5.2% with the close-up on the fold's point, 11.1%
+ * 1.5% turned, 5.3% framed closer but aimed within the arm, 11.1%
  * aimed at the fold's outside, render_closeup.h). Not rolled: a roll of the upper arm parts the
  * methods more at the shoulder than the bend does at the elbow, and the
  * close-up shows the shoulder. */

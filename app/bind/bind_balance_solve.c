@@ -10,11 +10,12 @@
 #define CG_TOL2 1e-12              /* squared residual, relative: 1e-6 of the right side */
 #define CLAMP_ROUNDS 6
 
-/* (L + eps I) x on the free slots: neighbours outside the band or clamped
- * count as 0 (the field vanishes at the border). x is 0 on the clamped
- * slots (solve_field keeps it so), so a clamped neighbour needs no test:
- * subtracting its +0.0 leaves the sum as it was, bit for bit. */
-static void apply_laplacian(const bind_balance_work *w, int m, const double *x, double *out)
+/* (L + eps I) dir on the free slots: neighbours outside the band or
+ * clamped count as 0 (the field vanishes at the border). dir, the CG
+ * direction, is +0.0 on the clamped slots (solve_field keeps it so), so a
+ * clamped neighbour needs no test: subtracting its +0.0 leaves the sum as
+ * it was, bit for bit. */
+static void apply_laplacian(const bind_balance_work *w, int m, const double *dir, double *out)
 {
 	for (int i = 0; i < m; i++) {
 		if (w->clamped[i]) {
@@ -22,11 +23,11 @@ static void apply_laplacian(const bind_balance_work *w, int m, const double *x, 
 			continue;
 		}
 		uint32_t v = w->band[i], a = w->adj_start[v], b = w->adj_start[v + 1];
-		double s = ((double)(b - a) + SOLVE_EPS) * x[i];
+		double s = ((double)(b - a) + SOLVE_EPS) * dir[i];
 		for (uint32_t k = a; k < b; k++) {
 			int32_t j = w->slot[w->adj[k]];
 			if (j >= 0)
-				s -= x[j];
+				s -= dir[j];
 		}
 		out[i] = s;
 	}

@@ -16,9 +16,9 @@
 #define CLOSEUP_SPAN_MIN 0.024f /* within these (of the body's size) */
 #define CLOSEUP_SPAN_MAX 0.14f
 /* A joint bent past 60 degrees is framed this much of its shorter bone at
- * least: the fold's point with the two bones leaving it. 0.85 showed both
+ * least: the fold's point whole, with the limb leaving it. 0.85 showed both
  * bones whole, and the elbow's parting (21 mm at the fold's point) in a
- * sliver of the inset (1.5% of the panels differed); 0.45 5.2%, aimed
+ * sliver of the inset (1.5% of the panels differed); 0.45 5.3%, aimed
  * within the arm, between the hidden crease and the point. Aimed at the
  * fold's outside (skin_diff_focus), 0.26 shows the point whole and
  * the arm above it (11%; the generated body's elbow is framed at about

@@ -116,21 +116,19 @@ static void focus_add(focus_sum *s, double e, const double mid[3], double mid2)
 static vec3 focus_centre(const focus_sum *s, float *reach)
 {
 	double w = s->w;
-	vec3 at = vec3_make((float)(s->m[0] / w), (float)(s->m[1] / w), (float)(s->m[2] / w));
-	if (reach) {
-		double spread = s->m2 / w - (s->m[0] * s->m[0] + s->m[1] * s->m[1] + s->m[2] * s->m[2]) / (w * w);
-		*reach = spread > 0.0 ? (float)sqrt(spread) : 0.0f;
-	}
-	return at;
+	double spread = s->m2 / w - (s->m[0] * s->m[0] + s->m[1] * s->m[1] + s->m[2] * s->m[2]) / (w * w);
+	*reach = spread > 0.0 ? (float)sqrt(spread) : 0.0f;
+	return vec3_make((float)(s->m[0] / w), (float)(s->m[1] / w), (float)(s->m[2] / w));
 }
 
-/* The way out of the fold of joint, an elbow or knee, in pose
- * (skin_fold_outside); zero for any other joint. */
-static vec3 fold_of(const skin_diff *d, const skel_pose *pose, int joint)
+/* The way out of the fold of joint, a human's elbow or knee, in pose
+ * (skin_fold_outside); zero for any other joint, or any joint of a
+ * skeleton that is not a human's (its limbs need not hinge). */
+static vec3 fold_outward(const skin_diff *d, const skel_pose *pose, int joint)
 {
 	const skel_joints *j = d->joints;
 	vec3 none = vec3_make(0.0f, 0.0f, 0.0f);
-	if (!j || (j->kind[joint] != JOINT_ELBOW && j->kind[joint] != JOINT_KNEE))
+	if (!j || !j->biped || (j->kind[joint] != JOINT_ELBOW && j->kind[joint] != JOINT_KNEE))
 		return none;
 	int up = j->skel->bone[joint].parent;
 	if (up < 0)
@@ -153,26 +151,43 @@ static double parting(const float *p, const float *q, double mid[3], double *mid
 	return e2;
 }
 
-vec3 skin_diff_focus(const skin_diff *d, const skel_pose *pose, const float *a, const float *b, int joint, int *found,
-		     float *reach)
+static int beyond(vec3 head, vec3 outward, const double mid[3])
 {
-	vec3 out = fold_of(d, pose, joint), head = pose->head[joint];
+	return (mid[0] - head.x) * outward.x + (mid[1] - head.y) * outward.y + (mid[2] - head.z) * outward.z > 0.0;
+}
+
+skin_focus skin_diff_focus(const skin_diff *d, const skel_pose *pose, const float *a, const float *b, int joint)
+{
+	skin_focus f = { 0 };
+	if (joint < 0 || joint >= d->bone_count)
+		return f;
+	f.head = pose->head[joint];
+	f.outward = fold_outward(d, pose, joint);
 	focus_sum all = { 0 }, outside = { 0 };
 	for (int v = 0; v < d->count; v++) {
 		if (d->joint[v] != joint)
 			continue;
 		double mid[3], mid2, e = parting(a + 3 * v, b + 3 * v, mid, &mid2);
 		focus_add(&all, e, mid, mid2);
-		if ((mid[0] - head.x) * out.x + (mid[1] - head.y) * out.y + (mid[2] - head.z) * out.z > 0.0)
+		if (beyond(f.head, f.outward, mid))
 			focus_add(&outside, e, mid, mid2);
 	}
-	*found = all.w > 0.0;
-	if (!*found) {
-		if (reach)
-			*reach = 0.0f;
-		return vec3_make(0.0f, 0.0f, 0.0f);
-	}
-	return focus_centre(outside.w > 0.0 ? &outside : &all, reach);
+	f.found = all.w > 0.0;
+	if (!f.found)
+		return f;
+	if (outside.w < SKIN_FOLD_SHARE_MIN * all.w)
+		f.outward = vec3_make(0.0f, 0.0f, 0.0f);
+	f.at = focus_centre(vec3_dot(f.outward, f.outward) > 0.0f ? &outside : &all, &f.reach);
+	return f;
+}
+
+int skin_focus_counts(const skin_focus *f, const float *a, const float *b, int v)
+{
+	if (vec3_dot(f->outward, f->outward) <= 0.0f)
+		return 1;
+	double mid[3], mid2;
+	parting(a + 3 * v, b + 3 * v, mid, &mid2);
+	return beyond(f->head, f->outward, mid);
 }
 
 int skin_diff_worst(const skin_diff *d)

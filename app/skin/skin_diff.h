@@ -45,24 +45,43 @@ float skin_diff_from_bind(skin_diff *d, const skel_pose *pose, const float *pos,
  * hidden between the two bones' flesh, and the fold's point outside it
  * is what the close-up can show. */
 #define SKIN_FOLD_COS 0.0f
+/* The outside counts alone when it holds at least this share of the
+ * joint's squared parting: else it barely parts, and showing it would
+ * show nothing. */
+#define SKIN_FOLD_SHARE_MIN 0.01
 
 /* From the head of a joint whose bone points along axis, its parent's
  * along parent, towards the outside of the fold they make (unit); zero
  * when they are not bent past SKIN_FOLD_COS. */
 vec3 skin_fold_outside(vec3 axis, vec3 parent);
 
+/* Where on a joint the close-up looks, and which of its vertices that
+ * choice counts. */
+typedef struct skin_focus {
+	int found;      /* 0: the joint's vertices do not part at all */
+	vec3 at;        /* where they part */
+	float reach;    /* how far round it */
+	vec3 head;      /* a folded elbow's or knee's head */
+	vec3 outward;   /* and the way out of its fold: the vertices beyond
+			 * the plane through head square to it count; zero:
+			 * every vertex of the joint */
+} skin_focus;
+
 /* Where joint's vertices of a (xyz triples, skinned in pose) lie furthest
  * from b's: their midpoints' centroid weighted by the squared distance,
  * so the close-up centres on the change, not on the joint's head (a
- * shoulder's differ at the armpit). Of a folded elbow or knee only the
- * vertices on the outside of the fold count, when any part there: the
- * inside is hidden, and the centroid of both would lie within the limb
- * (a curled elbow's: between its hidden crease and its point). Into *reach
- * (when not NULL) how far round it they part, their root-mean-squared
- * distance from it with the same weights, which the close-up frames.
- * *found 0 when they do not part at all. One pass. */
-vec3 skin_diff_focus(const skin_diff *d, const skel_pose *pose, const float *a, const float *b, int joint, int *found,
-		     float *reach);
+ * shoulder's differ at the armpit), and how far round it they part, their
+ * root-mean-squared distance from it with the same weights, which the
+ * close-up frames. Of a folded elbow or knee of a human's skeleton only
+ * the vertices on the outside of the fold count (SKIN_FOLD_SHARE_MIN):
+ * the inside is hidden, and the centroid of both would lie within the
+ * limb, between a curled elbow's crease and its point. One pass; not found
+ * for a joint out of range. */
+skin_focus skin_diff_focus(const skin_diff *d, const skel_pose *pose, const float *a, const float *b, int joint);
+
+/* Whether vertex v of a and b lies where f counts (on f's side of a
+ * fold; which joint it belongs to is the caller's to check). */
+int skin_focus_counts(const skin_focus *f, const float *a, const float *b, int v);
 
 /* The joint of the largest score (-1 when every score is 0). */
 int skin_diff_worst(const skin_diff *d);

@@ -58,9 +58,9 @@ static void fill_closeup(skinplay *p, render_frame *f, int joint)
 	c->joint = joint;
 	if (joint < 0)
 		return;
-	int found;
-	vec3 at = skin_diff_focus(&p->diff, &p->skin.pose, p->pos[0], p->pos[1], joint, &found, &c->span);
-	c->focus = found ? at : p->skin.pose.head[joint];
+	skin_focus at = skin_diff_focus(&p->diff, &p->skin.pose, p->pos[0], p->pos[1], joint);
+	c->focus = at.found ? at.at : p->skin.pose.head[joint];
+	c->span = at.reach;
 	skel_joint_turn t;
 	int deg, named = skel_joint_turning(&p->body.skel, &p->joints, &p->body.pose, &p->skin.pose, joint, &t);
 	c->title = skel_joint_name(&p->joints, named, p->closeup_title, sizeof p->closeup_title);

@@ -5,8 +5,8 @@
  * SEEN_LEVELS in a channel: at least 2% in a quarter of the frames (the
  * goal, held), and while the tour holds each of its staged artifacts at
  * least the floor below. The goal there is 8% for every one, and each
- * passes it: the shoulder 19.8% (17.4% before the close-up framed closer
- * still, 9.9% before the first time), the twist 13.7% (10.9%, 7.2%), the
+ * passes it: the shoulder 19.8% (17.4% before the close-up last framed
+ * closer, 9.9% before it first did), the twist 13.7% (10.9%, 7.2%), the
  * neck 12.7% (11.0%; 4.2% before the head turned right), the hip 11.4%
  * (8.7%, 6.3%) and the elbow 11.1% (5.3% while the close-up aimed at the
  * centre of the elbow's whole parting, within the arm, where its fold's

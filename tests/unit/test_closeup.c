@@ -73,8 +73,10 @@ static void test_span_wants(void **state)
 	float small = 0.5f * h;
 	assert_float_equal(closeup_span_want(1.0f, x, y, small), CLOSEUP_FOLD_SHOWN * 8.0f, 1e-4f);
 	assert_float_equal(closeup_span_want(1.0f, back, x, small), CLOSEUP_FOLD_SHOWN * sqrtf(82.0f), 1e-4f);
-	/* 60 degrees is not yet folded */
-	assert_float_equal(closeup_span_want(1.2f, vec3_make(1, sqrtf(3.0f), 0), x, small), CLOSEUP_REACH * 1.2f, 1e-4f);
+	/* bent 55 degrees: round the parting; 65: the fold's 0.26 of 10 */
+	vec3 at55 = vec3_make(10 * cosf(0.96f), 10 * sinf(0.96f), 0), at65 = vec3_make(10 * cosf(1.134f), 10 * sinf(1.134f), 0);
+	assert_float_equal(closeup_span_want(1.5f, at55, x, small), CLOSEUP_REACH * 1.5f, 1e-4f);
+	assert_float_equal(closeup_span_want(1.5f, at65, x, small), CLOSEUP_FOLD_SHOWN * 10.0f, 1e-4f);
 	/* bent 45 degrees: still round the parting */
 	assert_float_equal(closeup_span_want(3.0f, vec3_make(1, 1, 0), x, h), CLOSEUP_REACH * 3.0f, 1e-5f);
 }
@@ -121,10 +123,10 @@ static void test_diff_scores_and_focus(void **state)
 	assert_true(fabsf(most - 0.3f) < 1e-5f);
 	/* every vertex is nearest the joint at the origin (bone 0's and 1's heads coincide: the first) */
 	assert_int_equal(skin_diff_worst(&d), 0);
-	int found;
-	float reach;
-	vec3 at = skin_diff_focus(&d, &bind, a, b, 0, &found, &reach);
-	assert_true(found);
+	skin_focus f = skin_diff_focus(&d, &bind, a, b, 0);
+	vec3 at = f.at;
+	float reach = f.reach;
+	assert_true(f.found);
 	/* weighed by the squared distance: 0.09 and 0.01 */
 	float w2 = 0.09f, w3 = 0.01f, w = w2 + w3;
 	assert_true(fabsf(at.x - (w2 * 0.2f + w3 * 0.3f) / w) < 1e-5f);
@@ -137,62 +139,81 @@ static void test_diff_scores_and_focus(void **state)
 	assert_true(fabsf(dist[2] + 0.3f) < 1e-5f && fabsf(dist[0]) < 1e-6f);
 }
 
-/* An elbow folded past a right angle: its vertices part on both sides,
- * more on the inside (hidden between the bones), and the focus is the
- * outside's alone; straight, or any joint but an elbow or knee, it is the
- * weighted centre of all. */
-static skel_joints joints;
+/* An elbow folded past a right angle (its head away from the origin):
+ * its vertices part on both sides, more on the inside (hidden between the
+ * bones), and the focus and its reach are the outside's alone; straight,
+ * a shoulder, a skeleton not a human's, or an outside that barely parts,
+ * they are all the vertices'. */
+static void place_fold(skin_soa *soa, vec3 o, float *a, float *b)
+{
+	/* outside, outside, inside the fold; parting by 0.1, 0.1, 0.3 */
+	static const float at[3][2] = { { 0.3f, -0.3f }, { 0.5f, -0.1f }, { -0.3f, 0.3f } }, part[3] = { 0.1f, 0.1f, 0.3f };
+	for (int v = 0; v < 3; v++) {
+		soa->px[v] = o.x + at[v][0], soa->py[v] = o.y + at[v][1], soa->pz[v] = o.z;
+		soa->bone[0][v] = 1, soa->weight[0][v] = 1.0f;
+		for (int k = 1; k < SKP_MAX_INFLUENCES; k++)
+			soa->bone[k][v] = 0, soa->weight[k][v] = 0.0f;
+		a[3 * v] = b[3 * v] = soa->px[v];
+		a[3 * v + 1] = soa->py[v], b[3 * v + 1] = soa->py[v] - part[v];
+		a[3 * v + 2] = b[3 * v + 2] = o.z;
+	}
+}
 
 static void test_focus_outside_fold(void **state)
 {
 	(void)state;
 	static skin_diff d;
+	static skel_joints joints;
 	skin_soa soa;
+	vec3 o = vec3_make(5, 2, 1);
 	memset(&sk, 0, sizeof sk);
 	sk.count = 2;
 	sk.bone[0].parent = -1;
 	sk.bone[1].parent = 0;
-	bind.head[0] = vec3_make(-4, 0, 0);
-	bind.tip[0] = bind.head[1] = vec3_make(0, 0, 0);
-	bind.tip[1] = vec3_make(-1, 3, 0); /* back past a right angle from bone 0's +x */
+	bind.head[0] = vec3_add(o, vec3_make(-4, 0, 0));
+	bind.tip[0] = bind.head[1] = o;
+	bind.tip[1] = vec3_add(o, vec3_make(-1, 3, 0)); /* back past a right angle from bone 0's +x */
 	memset(&joints, 0, sizeof joints);
 	joints.count = 2;
+	joints.biped = 1;
 	joints.skel = &sk;
 	joints.kind[1] = JOINT_ELBOW;
-	vec3 out = skin_fold_outside(vec3_sub(bind.tip[1], bind.head[1]), vec3_sub(bind.tip[0], bind.head[0]));
+	vec3 out = skin_fold_outside(vec3_make(-1, 3, 0), vec3_make(4, 0, 0));
 	assert_true(out.x > 0.5f && out.y < -0.5f && fabsf(vec3_length(out) - 1.0f) < 1e-5f);
 	out = skin_fold_outside(vec3_make(0.2f, 1, 0), vec3_make(1, 0, 0)); /* 79 degrees: not folded */
 	assert_true(vec3_dot(out, out) == 0.0f);
-	skin_soa_attach(&soa, block, 2);
-	float at_x[2] = { 0.3f, -0.3f }, at_y[2] = { -0.3f, 0.3f }; /* outside, inside */
-	for (int v = 0; v < 2; v++) {
-		soa.px[v] = at_x[v], soa.py[v] = at_y[v], soa.pz[v] = 0.0f;
-		soa.bone[0][v] = 1, soa.weight[0][v] = 1.0f;
-		for (int k = 1; k < SKP_MAX_INFLUENCES; k++)
-			soa.bone[k][v] = 0, soa.weight[k][v] = 0.0f;
-	}
+	float a[9], b[9];
+	skin_soa_attach(&soa, block, 3);
+	place_fold(&soa, o, a, b);
 	skin_diff_init(&d, &sk, &bind, &joints, &soa);
-	float a[6] = { 0.3f, -0.3f, 0, -0.3f, 0.3f, 0 }, b[6] = { 0.3f, -0.4f, 0, -0.3f, 0.6f, 0 };
-	int found;
-	vec3 at = skin_diff_focus(&d, &bind, a, b, 1, &found, NULL);
-	assert_true(found);
-	assert_float_equal(at.x, 0.3f, 1e-5f);
-	assert_float_equal(at.y, -0.35f, 1e-5f);
-	/* a shoulder so bent: both, weighed 0.01 and 0.09 */
-	float both = (0.01f * 0.3f - 0.09f * 0.3f) / 0.1f;
+	/* the outside's midpoints (0.3, -0.35) and (0.5, -0.15), equally
+	 * weighed: their centre, each 0.1 * sqrt(2) from it */
+	skin_focus f = skin_diff_focus(&d, &bind, a, b, 1);
+	assert_true(f.found);
+	assert_float_equal(f.at.x, o.x + 0.4f, 1e-5f);
+	assert_float_equal(f.at.y, o.y - 0.25f, 1e-5f);
+	assert_float_equal(f.reach, 0.1f * sqrtf(2.0f), 1e-5f);
+	assert_true(skin_focus_counts(&f, a, b, 0) && skin_focus_counts(&f, a, b, 1) && !skin_focus_counts(&f, a, b, 2));
+	/* all three, weighed 0.01, 0.01 and 0.09 */
+	float all_x = o.x + (0.01f * 0.3f + 0.01f * 0.5f - 0.09f * 0.3f) / 0.11f;
 	joints.kind[1] = JOINT_SHOULDER;
-	at = skin_diff_focus(&d, &bind, a, b, 1, &found, NULL);
-	assert_float_equal(at.x, both, 1e-5f);
-	/* the elbow straight: both */
+	f = skin_diff_focus(&d, &bind, a, b, 1);
+	assert_float_equal(f.at.x, all_x, 1e-5f);
+	assert_true(skin_focus_counts(&f, a, b, 2));
 	joints.kind[1] = JOINT_ELBOW;
-	bind.tip[1] = vec3_make(4, 0, 0);
-	at = skin_diff_focus(&d, &bind, a, b, 1, &found, NULL);
-	assert_float_equal(at.x, both, 1e-5f);
-	/* folded, with nothing parting outside: all of them */
-	bind.tip[1] = vec3_make(-1, 3, 0);
-	b[1] = -0.3f;
-	at = skin_diff_focus(&d, &bind, a, b, 1, &found, NULL);
-	assert_float_equal(at.x, -0.3f, 1e-5f);
+	joints.biped = 0;
+	assert_float_equal(skin_diff_focus(&d, &bind, a, b, 1).at.x, all_x, 1e-5f);
+	joints.biped = 1;
+	bind.tip[1] = vec3_add(o, vec3_make(4, 0, 0)); /* straight */
+	assert_float_equal(skin_diff_focus(&d, &bind, a, b, 1).at.x, all_x, 1e-5f);
+	/* folded, the outside parting by 0.001 only: under SKIN_FOLD_SHARE_MIN */
+	bind.tip[1] = vec3_add(o, vec3_make(-1, 3, 0));
+	b[1] = a[1] - 0.001f, b[4] = a[4] - 0.001f;
+	f = skin_diff_focus(&d, &bind, a, b, 1);
+	assert_true(f.at.x < o.x - 0.29f && skin_focus_counts(&f, a, b, 2));
+	/* no joint: nothing found */
+	assert_false(skin_diff_focus(&d, &bind, a, b, -1).found);
+	assert_false(skin_diff_focus(&d, &bind, a, b, 2).found);
 }
 
 int main(void)

@@ -93,12 +93,14 @@ static vec3 vertex(const float *xyz, int k)
 }
 
 /* How far from the focus the joint's vertices that part by half its
- * largest distance or more lie, on either body. */
-static float reach(const report_view *v, int joint, vec3 focus)
+ * largest distance or more lie, on either body: of those the focus
+ * counts (not a folded elbow's hidden crease, which the ring would reach
+ * round). */
+static float reach(const report_view *v, int joint, const skin_focus *at, vec3 focus)
 {
 	float far = 0.0f, half = 0.5f * v->diff.score[joint];
 	for (int k = 0; k < v->diff.count; k++) {
-		if (v->diff.joint[k] != joint || !(v->dist[k] >= half))
+		if (v->diff.joint[k] != joint || !(v->dist[k] >= half) || !skin_focus_counts(at, v->pos[0], v->pos[1], k))
 			continue;
 		for (int i = 0; i < 2; i++)
 			far = fmaxf(far, vec3_length(vec3_sub(vertex(v->pos[i], k), focus)));
@@ -139,10 +141,9 @@ const report_part *report_view_pose(report_view *v, runtime_skin *sk)
 	p->focus = sk->pose.tip[0];
 	p->reach = 0.0f;
 	if (p->joint >= 0) {
-		int found;
-		vec3 at = skin_diff_focus(&v->diff, &sk->pose, v->pos[0], v->pos[1], p->joint, &found, NULL);
-		p->focus = found ? at : sk->pose.head[p->joint];
-		p->reach = reach(v, p->joint, p->focus);
+		skin_focus at = skin_diff_focus(&v->diff, &sk->pose, v->pos[0], v->pos[1], p->joint);
+		p->focus = at.found ? at.at : sk->pose.head[p->joint];
+		p->reach = reach(v, p->joint, &at, p->focus);
 	}
 	describe(v, sk, p);
 	if (v->scene)
