@@ -220,6 +220,18 @@ static int status_due(skinplay *p, uint64_t now, int last)
 	return 1;
 }
 
+/* What the summary line says was played: the clip, or the clips a show
+ * went through in turn (counting a clip again when the show looped). */
+static const char *played_what(const skinplay *p, char *buf, size_t cap)
+{
+	if (p->o.amc)
+		return p->o.amc;
+	if (p->clips_started < 2)
+		return p->clip;
+	snprintf(buf, cap, "%d clips in turn (%s first, %s last)", p->clips_started, p->first_clip, p->clip);
+	return buf;
+}
+
 /* The stages in the status and summary lines: decode (and pose), skin
  * (bone transforms and kernels), upload, draw. */
 #define TIMES_FMT "decode %.2f ms, skin %.2f ms, upload %.2f ms, draw %.2f ms"
@@ -382,8 +394,9 @@ static int play(skinplay *p)
 		return -1;
 	log_second(p, clock_now_ns(), 1);
 	double secs = (double)(clock_now_ns() - p->stages.start_ns) * 1e-9;
+	char what[192];
 	fprintf(cli_note(), "played %ld frames of %s in %.2f s: %.1f fps; per frame " TIMES_FMT " (%s, %dx%d, %s skinning%s%s)\n",
-		shown, p->o.amc ? p->o.amc : p->clip, secs, shown / secs, TIMES(&p->stages, stage_run_ms),
+		shown, played_what(p, what, sizeof what), secs, shown / secs, TIMES(&p->stages, stage_run_ms),
 		p->disp ? p->disp->name : "none", p->info.width, p->info.height, p->gpu[0] ? "GPU" : "CPU",
 		threads_note(p), drawn_note(p, shown));
 	if (p->o.pose_digest)

@@ -68,6 +68,8 @@ typedef struct skinplay {
 	uint8_t rgba[SKP_DISPLAY_MAX_W * SKP_DISPLAY_MAX_H * 4]; /* one frame read back for --out */
 	video_writer *video;     /* --out F.mp4 or F.webm (skinplay_output.c), NULL: none or PNG frames */
 	char clip[64];
+	char first_clip[64];     /* and the first, of clips_started, for the summary line */
+	int clips_started;
 	sheet contact;
 	kiosk_shell kiosk;       /* --board, --input, signals, systemd */
 	skin_diff diff;          /* where the panels part, where the skin left its bone */

@@ -108,6 +108,8 @@ static int start_clip(skinplay *p, const char *name, int new_clip)
 	char *dot = strrchr(p->clip, '.');
 	if (dot && !p->o.image_count)
 		*dot = '\0';
+	if (new_clip && p->clips_started++ == 0)
+		snprintf(p->first_clip, sizeof p->first_clip, "%s", p->clip);
 	return 0;
 }
 

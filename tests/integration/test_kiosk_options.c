@@ -166,17 +166,21 @@ static void test_show_plays_its_clips_in_turn(void **state)
 	clips_played(log, order, sizeof order, &frames);
 	if (strcmp(order, "ab") || frames != 315)
 		fail_msg("clips %s, %ld frames; log:\n%s", order, frames, log);
+	/* the summary names what was played, not the last clip alone */
+	assert_non_null(strstr(log, "played 315 frames of 2 clips in turn (a first, b last)"));
 	free(log);
 	/* on past the end, the show starts over */
 	log = play_image(show, "--frames 330");
 	clips_played(log, order, sizeof order, &frames);
 	if (strcmp(order, "aba"))
 		fail_msg("clips %s; log:\n%s", order, log);
+	assert_non_null(strstr(log, "of 3 clips in turn (a first, a last)"));
 	free(log);
 	log = play_image(show, "--loop clip");
 	clips_played(log, order, sizeof order, &frames);
 	if (strcmp(order, "a") || frames != 286)
 		fail_msg("--loop clip: clips %s, %ld frames; log:\n%s", order, frames, log);
+	assert_non_null(strstr(log, "played 286 frames of a in"));
 	free(log);
 }
 
