@@ -173,6 +173,7 @@ skin_focus skin_diff_focus(const skin_diff *d, const skel_pose *pose, const floa
 			focus_add(&outside, e, mid, mid2);
 	}
 	f.found = all.w > 0.0;
+	f.at = f.head;
 	if (!f.found)
 		return f;
 	if (outside.w < SKIN_FOLD_SHARE_MIN * all.w)

@@ -59,7 +59,7 @@ vec3 skin_fold_outside(vec3 axis, vec3 parent);
  * choice counts. */
 typedef struct skin_focus {
 	int found;      /* 0: the joint's vertices do not part at all */
-	vec3 at;        /* where they part */
+	vec3 at;        /* where they part (not found: the joint's head) */
 	float reach;    /* how far round it */
 	vec3 head;      /* a folded elbow's or knee's head */
 	vec3 outward;   /* and the way out of its fold: the vertices beyond

@@ -75,6 +75,8 @@ typedef struct skinplay {
 	skin_diff diff;          /* where the panels part, where the skin left its bone */
 	skel_joints joints;      /* the joints' names */
 	closeup_pick pick;       /* the compare view's close-up */
+	skin_focus focus;        /* where on its joint, as last measured */
+	int focus_joint;         /* the joint of focus (-1: none yet) */
 	float diff_value[SKP_MAX_VERTS]; /* the difference view's, per vertex */
 	char closeup_title[32], closeup_note[48];
 	char closeup_apart[48];

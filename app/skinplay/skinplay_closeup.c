@@ -17,6 +17,7 @@ void closeup_setup(skinplay *p)
 	skel_joints_find(&p->body.skel, &p->body.pose, &p->joints);
 	skin_diff_init(&p->diff, &p->body.skel, &p->body.pose, &p->joints, &p->skin.soa);
 	closeup_pick_init(&p->pick);
+	p->focus_joint = -1;
 	if (p->render_ready)
 		render_set_units(&p->r, (float)(10.0 * skel_unit_cm(&p->body.skel)));
 }
@@ -52,15 +53,21 @@ static void apart_note(skinplay *p, int joint, float mm)
 		 (int)lroundf(p->diff.score[joint] * mm));
 }
 
-static void fill_closeup(skinplay *p, render_frame *f, int joint)
+/* The close-up on joint; measured: the panels' positions are this
+ * frame's, else the focus of the frame last measured stands (it came from
+ * the same positions). */
+static void fill_closeup(skinplay *p, render_frame *f, int joint, int measured)
 {
 	render_closeup *c = &f->closeup;
 	c->joint = joint;
 	if (joint < 0)
 		return;
-	skin_focus at = skin_diff_focus(&p->diff, &p->skin.pose, p->pos[0], p->pos[1], joint);
-	c->focus = at.found ? at.at : p->skin.pose.head[joint];
-	c->span = at.reach;
+	if (measured || joint != p->focus_joint) {
+		p->focus = skin_diff_focus(&p->diff, &p->skin.pose, p->pos[0], p->pos[1], joint);
+		p->focus_joint = joint;
+	}
+	c->focus = p->focus.at;
+	c->span = p->focus.reach;
 	skel_joint_turn t;
 	int deg, named = skel_joint_turning(&p->body.skel, &p->joints, &p->body.pose, &p->skin.pose, joint, &t);
 	c->title = skel_joint_name(&p->joints, named, p->closeup_title, sizeof p->closeup_title);
@@ -79,13 +86,13 @@ void closeup_frame(skinplay *p, render_frame *f)
 	f->closeup.joint = -1;
 	if (p->hold || !positions(p, diff_view)) {
 		if (p->panel_count > 1 && !p->hold)
-			fill_closeup(p, f, p->pick.joint); /* between the frames measured: the last choice */
+			fill_closeup(p, f, p->pick.joint, 0); /* between the frames measured: the last choice */
 		return;
 	}
 	float *dist = diff_view ? p->diff_value : NULL;
 	if (p->panel_count > 1) {
 		skin_diff_between(&p->diff, p->pos[0], p->pos[1], dist);
-		fill_closeup(p, f, closeup_pick_update(&p->pick, p->diff.score, p->body.skel.count, f->dt));
+		fill_closeup(p, f, closeup_pick_update(&p->pick, p->diff.score, p->body.skel.count, f->dt), 1);
 	} else if (diff_view) {
 		skin_diff_from_bind(&p->diff, &p->skin.pose, p->pos[0], dist);
 	}

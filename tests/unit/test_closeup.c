@@ -211,6 +211,10 @@ static void test_focus_outside_fold(void **state)
 	b[1] = a[1] - 0.001f, b[4] = a[4] - 0.001f;
 	f = skin_diff_focus(&d, &bind, a, b, 1);
 	assert_true(f.at.x < o.x - 0.29f && skin_focus_counts(&f, a, b, 2));
+	/* nothing parts: not found, the joint's head */
+	f = skin_diff_focus(&d, &bind, a, a, 1);
+	assert_false(f.found);
+	assert_true(f.at.x == o.x && f.at.y == o.y && f.at.z == o.z);
 	/* no joint: nothing found */
 	assert_false(skin_diff_focus(&d, &bind, a, b, -1).found);
 	assert_false(skin_diff_focus(&d, &bind, a, b, 2).found);

@@ -96,14 +96,14 @@ static vec3 vertex(const float *xyz, int k)
  * largest distance or more lie, on either body: of those the focus
  * counts (not a folded elbow's hidden crease, which the ring would reach
  * round). */
-static float reach(const report_view *v, int joint, const skin_focus *at, vec3 focus)
+static float reach(const report_view *v, int joint, const skin_focus *at)
 {
 	float far = 0.0f, half = 0.5f * v->diff.score[joint];
 	for (int k = 0; k < v->diff.count; k++) {
 		if (v->diff.joint[k] != joint || !(v->dist[k] >= half) || !skin_focus_counts(at, v->pos[0], v->pos[1], k))
 			continue;
 		for (int i = 0; i < 2; i++)
-			far = fmaxf(far, vec3_length(vec3_sub(vertex(v->pos[i], k), focus)));
+			far = fmaxf(far, vec3_length(vec3_sub(vertex(v->pos[i], k), at->at)));
 	}
 	return far;
 }
@@ -142,8 +142,8 @@ const report_part *report_view_pose(report_view *v, runtime_skin *sk)
 	p->reach = 0.0f;
 	if (p->joint >= 0) {
 		skin_focus at = skin_diff_focus(&v->diff, &sk->pose, v->pos[0], v->pos[1], p->joint);
-		p->focus = at.found ? at.at : sk->pose.head[p->joint];
-		p->reach = reach(v, p->joint, &at, p->focus);
+		p->focus = at.at;
+		p->reach = reach(v, p->joint, &at);
 	}
 	describe(v, sk, p);
 	if (v->scene)
